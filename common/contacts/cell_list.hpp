@@ -1,0 +1,104 @@
+#pragma once
+// Periodic cell list of a cubic box: visits each unordered pair of particles closer than an
+// interaction range exactly once, in O(N) (STYLE.md: the neighbour structure that picks pairs).
+
+#include "packing/packing.hpp"
+
+#include <Eigen/Core>
+
+#include <array>
+#include <vector>
+
+namespace sbpack {
+
+/// Cells of edge >= range in a cubic periodic box of edge L. With at least 3 cells per side each
+/// cell is paired with itself and 13 of its 26 neighbours (a half shell); smaller boxes use a
+/// single cell. Pairs are found by minimum image, which is unambiguous only for range <= L / 2.
+class CellList {
+  public:
+    /// Bins the positions (wrapped into [0, L) for binning only). Throws std::invalid_argument
+    /// unless 0 < L < inf, 0 < range <= L / 2, the positions are finite and N fits an int.
+    CellList(const std::vector<Vector3d>& positions, double boxLength, double range);
+
+    int cellsPerSide() const { return cellsPerSide_; }
+
+    /// Calls callback(i, j, d) once for each pair i < j with |d| < range, where
+    /// d = minimumImage(r_j - r_i, L).
+    template <class Callback> void forEachNeighbourPair(Callback&& callback) const;
+
+  private:
+    /// Calls callback for the pair if it is within range, ordered so that i < j.
+    template <class Callback> void visitPair(int a, int b, Callback& callback) const;
+
+    std::vector<Vector3d> positions_;
+    double boxLength_;
+    double rangeSquared_;
+    int cellsPerSide_;
+    std::vector<int> cellStart_; ///< cell c: [cellStart_[c], cellStart_[c + 1])
+    std::vector<int> particlesInCellOrder_;
+};
+
+/// Each unordered pair with |minimumImage(r_j - r_i, L)| < range, once, as callback(i, j, d), i <
+/// j.
+template <class Callback>
+void forEachNeighbourPair(const std::vector<Vector3d>& positions, double boxLength, double range,
+                          Callback&& callback) {
+    CellList(positions, boxLength, range).forEachNeighbourPair(callback);
+}
+
+// --- implementation of the templates ---
+
+template <class Callback> void CellList::visitPair(int a, int b, Callback& callback) const {
+    const int i = a < b ? a : b;
+    const int j = a < b ? b : a;
+    const Vector3d d = minimumImage(positions_[j] - positions_[i], boxLength_);
+    if (d.squaredNorm() < rangeSquared_) callback(i, j, d);
+}
+
+template <class Callback> void CellList::forEachNeighbourPair(Callback&& callback) const {
+    const int n = cellsPerSide_;
+    const int* order = particlesInCellOrder_.data();
+    if (n == 1) {
+        const int count = static_cast<int>(particlesInCellOrder_.size());
+        for (int a = 0; a < count; ++a)
+            for (int b = a + 1; b < count; ++b)
+                visitPair(order[a], order[b], callback);
+        return;
+    }
+    // Half shell: the 13 neighbour offsets whose first non-zero component is positive.
+    static constexpr std::array<std::array<int, 3>, 13> halfShell = {{{1, -1, -1},
+                                                                      {1, -1, 0},
+                                                                      {1, -1, 1},
+                                                                      {1, 0, -1},
+                                                                      {1, 0, 0},
+                                                                      {1, 0, 1},
+                                                                      {1, 1, -1},
+                                                                      {1, 1, 0},
+                                                                      {1, 1, 1},
+                                                                      {0, 1, -1},
+                                                                      {0, 1, 0},
+                                                                      {0, 1, 1},
+                                                                      {0, 0, 1}}};
+    auto wrap = [n](int k) { return k < 0 ? k + n : (k >= n ? k - n : k); };
+    for (int cx = 0; cx < n; ++cx)
+        for (int cy = 0; cy < n; ++cy)
+            for (int cz = 0; cz < n; ++cz) {
+                const int cell = (cx * n + cy) * n + cz;
+                const int begin = cellStart_[cell];
+                const int end = cellStart_[cell + 1];
+                for (int a = begin; a < end; ++a)
+                    for (int b = a + 1; b < end; ++b)
+                        visitPair(order[a], order[b], callback);
+                for (const auto& offset : halfShell) {
+                    const int other = (wrap(cx + offset[0]) * n + wrap(cy + offset[1])) * n +
+                                      wrap(cz + offset[2]);
+                    const int otherBegin = cellStart_[other];
+                    const int otherEnd = cellStart_[other + 1];
+                    for (int a = begin; a < end; ++a)
+                        for (int b = otherBegin; b < otherEnd; ++b)
+                            visitPair(order[a], order[b], callback);
+                }
+            }
+}
+
+} // namespace sbpack

@@ -1,0 +1,138 @@
+#include "contacts/contact_network.hpp"
+
+#include "contacts/cell_list.hpp"
+#include "pair/pair_geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace sbpack {
+
+namespace {
+
+/// Slack, in units of D, of the check of a pair solve against the exact bounds
+/// |d| - 2 circumradius <= s <= |d| - 2 inradius: far above round-off, far below any real error.
+constexpr double boundSlack = 1e-9;
+
+std::string pairName(int i, int j) {
+    return "(" + std::to_string(i) + ", " + std::to_string(j) + ")";
+}
+
+/// Iterative removal of the particles with fewer than threshold contacts among the remaining
+/// ones (DESIGN.md §3): the threshold-core of the contact graph. Returns the rattler flags.
+std::vector<bool> findRattlers(int count, const std::vector<std::pair<int, int>>& contacts,
+                               const std::vector<int>& counts, int threshold) {
+    std::vector<int> neighbourStart(count + 1, 0);
+    for (int i = 0; i < count; ++i)
+        neighbourStart[i + 1] = neighbourStart[i] + counts[i];
+    std::vector<int> neighbours(neighbourStart[count]);
+    std::vector<int> next(neighbourStart.begin(), neighbourStart.end() - 1);
+    for (const auto& [i, j] : contacts) {
+        neighbours[next[i]++] = j;
+        neighbours[next[j]++] = i;
+    }
+
+    std::vector<int> remainingContacts = counts;
+    std::vector<bool> rattler(count, false);
+    std::vector<int> toRemove;
+    for (int i = 0; i < count; ++i)
+        if (remainingContacts[i] < threshold) {
+            rattler[i] = true;
+            toRemove.push_back(i);
+        }
+    while (!toRemove.empty()) {
+        const int i = toRemove.back();
+        toRemove.pop_back();
+        for (int k = neighbourStart[i]; k < neighbourStart[i + 1]; ++k) {
+            const int j = neighbours[k];
+            if (rattler[j]) continue;
+            if (--remainingContacts[j] < threshold) {
+                rattler[j] = true;
+                toRemove.push_back(j);
+            }
+        }
+    }
+    return rattler;
+}
+
+} // namespace
+
+ContactNetwork::ContactNetwork(ContactParameters parameters) : parameters_(parameters) {
+    if (!std::isfinite(parameters_.tolerance) || parameters_.tolerance < 0.0)
+        throw std::invalid_argument("contact network: tolerance " +
+                                    std::to_string(parameters_.tolerance) +
+                                    " must be finite and non-negative");
+    if (parameters_.rattlerThreshold < 1)
+        throw std::invalid_argument("contact network: rattler threshold " +
+                                    std::to_string(parameters_.rattlerThreshold) +
+                                    " must be at least 1");
+}
+
+ContactResult ContactNetwork::compute(const Packing& packing) const {
+    const std::size_t size = packing.size();
+    if (packing.orientations.size() != size)
+        throw std::invalid_argument("contact network: packing has " + std::to_string(size) +
+                                    " positions but " +
+                                    std::to_string(packing.orientations.size()) + " orientations");
+    const Superball shape = packing.shape();
+    const double diameter = shape.diameter();
+    const double contactGap = parameters_.tolerance * diameter;
+    const double circumradius = shape.circumradius();
+    const double inradius = shape.inradius();
+    // Beyond this centre distance the gap is at least contactGap.
+    const double range = 2.0 * circumradius + contactGap;
+
+    std::vector<Matrix3d> rotations(size);
+    for (std::size_t i = 0; i < size; ++i)
+        rotations[i] = packing.orientations[i].normalized().toRotationMatrix();
+
+    ContactResult result;
+    result.parameters = parameters_;
+    result.counts.assign(size, 0);
+    result.worstGap = std::numeric_limits<double>::infinity();
+    const CellList cells(packing.positions, packing.boxLength, range);
+    cells.forEachNeighbourPair([&](int i, int j, const Vector3d& d) {
+        const SignedDistanceResult pair =
+            signedDistance(SuperballPair{shape, rotations[i], rotations[j], d});
+        const double s = pair.signedDistance;
+        const double centreDistance = d.norm();
+        // Exact bounds; below 2 inradius the pair certainly touches or overlaps.
+        if (!std::isfinite(s) || s > centreDistance - 2.0 * inradius + boundSlack * diameter ||
+            s < centreDistance - 2.0 * circumradius - boundSlack * diameter)
+            throw std::runtime_error("contact network: signed distance " + std::to_string(s) +
+                                     " of pair " + pairName(i, j) + " at centre distance " +
+                                     std::to_string(centreDistance) +
+                                     " violates the inradius/circumradius bounds");
+        result.pairIterations += pair.iterations;
+        if (s < result.worstGap) {
+            result.worstGap = s;
+            result.worstPairA = i;
+            result.worstPairB = j;
+        }
+        if (s < -contactGap) ++result.overlappingPairs;
+        if (s < contactGap) { // paper Sec. III A
+            result.contacts.emplace_back(i, j);
+            ++result.counts[i];
+            ++result.counts[j];
+        }
+    });
+    std::sort(result.contacts.begin(), result.contacts.end());
+
+    const int count = static_cast<int>(size);
+    result.rattler =
+        findRattlers(count, result.contacts, result.counts, parameters_.rattlerThreshold);
+    const long rattlers = std::count(result.rattler.begin(), result.rattler.end(), true);
+    long contactsAmongRemaining = 0;
+    for (const auto& [i, j] : result.contacts)
+        if (!result.rattler[i] && !result.rattler[j]) ++contactsAmongRemaining;
+    const long remaining = count - rattlers;
+    result.meanContactNumber =
+        remaining > 0 ? 2.0 * static_cast<double>(contactsAmongRemaining) / remaining : 0.0;
+    result.rattlerFraction = count > 0 ? static_cast<double>(rattlers) / count : 0.0;
+    return result;
+}
+
+} // namespace sbpack

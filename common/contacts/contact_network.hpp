@@ -1,0 +1,55 @@
+#pragma once
+// Contact network, rattlers and mean contact number of a packing (paper Secs. III A, IV A, IV C;
+// DESIGN.md §2 and §3).
+
+#include "packing/packing.hpp"
+
+#include <utility>
+#include <vector>
+
+namespace sbpack {
+
+struct ContactParameters {
+    /// Two particles are in contact if their gap is below tolerance * D (paper Sec. III A).
+    double tolerance = 1e-10;
+    /// Particles with fewer contacts than this among the non-rattlers are rattlers: d + 1 = 4.
+    int rattlerThreshold = 4;
+};
+
+struct ContactResult {
+    std::vector<std::pair<int, int>> contacts; ///< pairs (i, j), i < j, sorted
+    std::vector<int> counts;                   ///< per particle, all contacts (rattlers included)
+    std::vector<bool> rattler;                 ///< per particle
+    /// Z: mean over the non-rattlers of their contacts with non-rattlers; 0 if all are rattlers.
+    double meanContactNumber = 0.0;
+    /// phi_R: fraction of the particles removed as rattlers.
+    double rattlerFraction = 0.0;
+    /// Smallest signed distance (length units) over the pairs within the contact range: minus
+    /// the worst penetration depth, or the smallest gap; +inf and pair (-1, -1) if there is none.
+    double worstGap = 0.0;
+    int worstPairA = -1;
+    int worstPairB = -1;
+    int overlappingPairs = 0; ///< pairs with signed distance < -tolerance * D
+    long pairIterations = 0;  ///< Newton iterations of all pair solves, to monitor stiffness
+    ContactParameters parameters;
+};
+
+/// Compute object: validates its parameters at construction, compute() returns a result.
+class ContactNetwork {
+  public:
+    /// Throws std::invalid_argument unless tolerance is finite and >= 0 and rattlerThreshold >= 1.
+    explicit ContactNetwork(ContactParameters parameters);
+
+    /// Signed distances of all pairs whose centres are closer than 2 circumradius + tolerance D,
+    /// then iterative rattler removal (DESIGN.md §3). Throws std::invalid_argument for a packing
+    /// with mismatched positions and orientations or a contact range above L / 2, and
+    /// std::runtime_error if a pair solve returns a non-finite distance.
+    ContactResult compute(const Packing& packing) const;
+
+    const ContactParameters& parameters() const { return parameters_; }
+
+  private:
+    ContactParameters parameters_;
+};
+
+} // namespace sbpack

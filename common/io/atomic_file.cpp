@@ -1,0 +1,77 @@
+#include "io/atomic_file.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <string>
+#include <system_error>
+#include <unistd.h>
+
+namespace sbpack {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path directoryOf(const fs::path& file) {
+    return file.has_parent_path() ? file.parent_path() : fs::path(".");
+}
+
+/// fsync so that a crash after the rename cannot leave an empty file behind.
+void syncToDisk(const fs::path& path, int flags, const fs::path& reportAs) {
+    const int fd = ::open(path.c_str(), flags);
+    if (fd < 0 || ::fsync(fd) != 0) {
+        const std::string reason = std::strerror(errno);
+        if (fd >= 0) ::close(fd);
+        throw OutputPathError("cannot flush '" + path.string() + "' while writing '" +
+                              reportAs.string() + "': " + reason);
+    }
+    ::close(fd);
+}
+
+} // namespace
+
+void checkWritable(const fs::path& file) {
+    if (file.empty() || !file.has_filename())
+        throw OutputPathError("output path '" + file.string() + "' does not name a file");
+    const fs::path dir = directoryOf(file);
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec))
+        throw OutputPathError("cannot write '" + file.string() + "': directory '" + dir.string() +
+                              "' does not exist");
+    if (::access(dir.c_str(), W_OK | X_OK) != 0)
+        throw OutputPathError("cannot write '" + file.string() + "': directory '" + dir.string() +
+                              "' is not writable");
+    if (fs::is_directory(file, ec))
+        throw OutputPathError("cannot write '" + file.string() + "': it is a directory");
+}
+
+AtomicOutput::AtomicOutput(fs::path finalPath) : final_(std::move(finalPath)) {
+    checkWritable(final_);
+    std::string name = "."; // appended piecewise: GCC 12 misreports "." + string (-Wrestrict)
+    name += final_.filename().string();
+    name += ".tmp-" + std::to_string(::getpid());
+    temporary_ = directoryOf(final_) / name;
+    std::error_code ec;
+    fs::remove(temporary_, ec); // a stale temporary of an earlier process with our pid
+}
+
+AtomicOutput::~AtomicOutput() {
+    if (committed_) return;
+    std::error_code ec;
+    fs::remove(temporary_, ec);
+}
+
+void AtomicOutput::commit() {
+    if (committed_) throw OutputPathError("'" + final_.string() + "' was already committed");
+    syncToDisk(temporary_, O_RDONLY, final_);
+    std::error_code ec;
+    fs::rename(temporary_, final_, ec);
+    if (ec)
+        throw OutputPathError("cannot rename '" + temporary_.string() + "' to '" + final_.string() +
+                              "': " + ec.message());
+    committed_ = true;
+    syncToDisk(directoryOf(final_), O_RDONLY | O_DIRECTORY, final_);
+}
+
+} // namespace sbpack

@@ -1,0 +1,43 @@
+#pragma once
+// Write-to-temporary-then-rename output, used by every writer (DESIGN.md §4, §6): a reader never
+// sees a half-written packing, results file or checkpoint, and a failed run leaves no debris.
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace sbpack {
+
+/// An output path that cannot be written, or a commit that failed.
+class OutputPathError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Throws OutputPathError unless `file` could be created or replaced: its directory exists and
+/// is writable, and `file` is not itself a directory. Lets a program reject a bad output path
+/// before any work starts.
+void checkWritable(const std::filesystem::path& file);
+
+/// A temporary file `.NAME.tmp-<pid>` next to `NAME`; commit() renames it onto `NAME`
+/// atomically (same directory). Destroying an uncommitted AtomicOutput removes the temporary.
+class AtomicOutput {
+  public:
+    /// Checks the destination with checkWritable().
+    explicit AtomicOutput(std::filesystem::path finalPath);
+    AtomicOutput(const AtomicOutput&) = delete;
+    AtomicOutput& operator=(const AtomicOutput&) = delete;
+    ~AtomicOutput();
+
+    const std::filesystem::path& finalPath() const { return final_; }
+    /// Where the writer writes; it must close the file before commit().
+    const std::filesystem::path& temporaryPath() const { return temporary_; }
+    /// Flushes the temporary to disk and renames it onto finalPath(); throws OutputPathError.
+    void commit();
+
+  private:
+    std::filesystem::path final_;
+    std::filesystem::path temporary_;
+    bool committed_ = false;
+};
+
+} // namespace sbpack

@@ -1,0 +1,194 @@
+#include "io/packing_io.hpp"
+
+#include "io/atomic_file.hpp"
+#include "io/hdf5_handles.hpp"
+#include "packing/validation.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <type_traits>
+
+namespace sbpack {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Relative tolerance between the stored phi and N v1 / L^3 recomputed on reading.
+constexpr double kPhiTolerance = 1e-9;
+
+/// Shortest text that reads back as the same double.
+std::string exact(double x) {
+    char buffer[32];
+    return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, x).ptr);
+}
+
+std::vector<double> flatten(const std::vector<Vector3d>& rows) {
+    std::vector<double> values;
+    values.reserve(3 * rows.size());
+    for (const Vector3d& r : rows)
+        values.insert(values.end(), {r.x(), r.y(), r.z()});
+    return values;
+}
+
+std::vector<Vector3d> unflatten(const std::vector<double>& values) {
+    std::vector<Vector3d> rows(values.size() / 3);
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        rows[i] = Vector3d(values[3 * i], values[3 * i + 1], values[3 * i + 2]);
+    return rows;
+}
+
+void writeProvenance(hid_t root, const std::map<std::string, ProvenanceValue>& provenance) {
+    const Hdf5Handle group = createGroup(root, "provenance");
+    for (const auto& [name, value] : provenance) {
+        std::visit(
+            [&, &name = name](const auto& v) {
+                using T = std::decay_t<decltype(v)>;
+                if constexpr (std::is_same_v<T, std::int64_t>)
+                    writeInt64Attribute(group.get(), name, v);
+                else if constexpr (std::is_same_v<T, double>)
+                    writeDoubleAttribute(group.get(), name, v);
+                else
+                    writeStringAttribute(group.get(), name, v);
+            },
+            value);
+    }
+}
+
+std::map<std::string, ProvenanceValue> readProvenance(hid_t root, const std::string& file) {
+    std::map<std::string, ProvenanceValue> provenance;
+    const Hdf5Handle group = openGroup(root, "provenance");
+    for (const std::string& name : attributeNames(group.get())) {
+        switch (attributeKind(group.get(), name)) {
+        case AttributeKind::Integer:
+            provenance[name] = readInt64Attribute(group.get(), name);
+            break;
+        case AttributeKind::Float:
+            provenance[name] = readDoubleAttribute(group.get(), name);
+            break;
+        case AttributeKind::String:
+            provenance[name] = readStringAttribute(group.get(), name);
+            break;
+        case AttributeKind::Other:
+            throw PackingFileError("'" + file + "': provenance attribute '" + name +
+                                   "' has an unsupported type (need integer, float or string)");
+        }
+    }
+    return provenance;
+}
+
+void writeContents(const Packing& packing, const fs::path& temporary) {
+    Hdf5Handle file = createFile(temporary);
+    const hid_t root = file.get();
+    writeStringAttribute(root, "format", kPackingFormat);
+    writeInt64Attribute(root, "format_version", kPackingFormatVersion);
+    writeDoubleAttribute(root, "p", packing.p);
+    writeDoubleAttribute(root, "box_length", packing.boxLength);
+    writeDoubleAttribute(root, "semi_axis", packing.semiAxis);
+    writeInt64Attribute(root, "n_particles", static_cast<std::int64_t>(packing.size()));
+    writeDoubleAttribute(root, "phi", packing.packingFraction());
+    if (packing.reducedPressure)
+        writeDoubleAttribute(root, "reduced_pressure", *packing.reducedPressure);
+    if (packing.seed) writeUint64Attribute(root, "seed", *packing.seed);
+    if (!packing.generatorVersion.empty())
+        writeStringAttribute(root, "generator_version", packing.generatorVersion);
+
+    std::vector<Vector3d> wrapped(packing.positions);
+    for (Vector3d& r : wrapped)
+        r = wrapIntoBox(r, packing.boxLength);
+    writeMatrixDataset(root, "positions", flatten(wrapped), 3);
+    std::vector<double> quaternions;
+    quaternions.reserve(4 * packing.size());
+    for (const Quaterniond& q : packing.orientations)
+        quaternions.insert(quaternions.end(), {q.w(), q.x(), q.y(), q.z()});
+    writeMatrixDataset(root, "orientations", quaternions, 4);
+    if (!packing.velocities.empty())
+        writeMatrixDataset(root, "velocities", flatten(packing.velocities), 3);
+    if (!packing.angularVelocities.empty())
+        writeMatrixDataset(root, "angular_velocities", flatten(packing.angularVelocities), 3);
+    if (!packing.provenance.empty()) writeProvenance(root, packing.provenance);
+    file.close();
+}
+
+Packing readContents(hid_t root, const std::string& file) {
+    const std::string format = readStringAttribute(root, "format");
+    if (format != kPackingFormat)
+        throw PackingFileError("'" + file + "': format is '" + format + "', expected '" +
+                               kPackingFormat + "' (not an sbpack packing file)");
+    const std::int64_t version = readInt64Attribute(root, "format_version");
+    if (version != kPackingFormatVersion)
+        throw PackingFileError("'" + file + "': format_version " + std::to_string(version) +
+                               " is not supported (this build reads version " +
+                               std::to_string(kPackingFormatVersion) + ")");
+
+    Packing packing;
+    packing.p = readDoubleAttribute(root, "p");
+    packing.boxLength = readDoubleAttribute(root, "box_length");
+    packing.semiAxis = readDoubleAttribute(root, "semi_axis");
+    const std::int64_t n = readInt64Attribute(root, "n_particles");
+    if (n <= 0)
+        throw InvalidPacking("'" + file + "': invalid packing: n_particles = " + std::to_string(n) +
+                             " (no particles)");
+    const double phi = readDoubleAttribute(root, "phi");
+    if (hasAttribute(root, "reduced_pressure"))
+        packing.reducedPressure = readDoubleAttribute(root, "reduced_pressure");
+    if (hasAttribute(root, "seed")) packing.seed = readUint64Attribute(root, "seed");
+    if (hasAttribute(root, "generator_version"))
+        packing.generatorVersion = readStringAttribute(root, "generator_version");
+
+    const auto rows = static_cast<std::size_t>(n);
+    packing.positions = unflatten(readMatrixDataset(root, "positions", rows, 3));
+    const std::vector<double> q = readMatrixDataset(root, "orientations", rows, 4);
+    packing.orientations.resize(rows);
+    for (std::size_t i = 0; i < rows; ++i)
+        packing.orientations[i] = Quaterniond(q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]);
+    if (hasLink(root, "velocities"))
+        packing.velocities = unflatten(readMatrixDataset(root, "velocities", rows, 3));
+    if (hasLink(root, "angular_velocities"))
+        packing.angularVelocities =
+            unflatten(readMatrixDataset(root, "angular_velocities", rows, 3));
+    if (hasLink(root, "provenance")) packing.provenance = readProvenance(root, file);
+
+    validatePacking(packing, file);
+    const double expectedPhi = packing.packingFraction();
+    if (!(std::abs(phi - expectedPhi) <= kPhiTolerance * expectedPhi))
+        throw InvalidPacking("'" + file + "': invalid packing: phi = " + exact(phi) +
+                             " disagrees with N v1 / L^3 = " + exact(expectedPhi));
+    canonicalizePacking(packing);
+    return packing;
+}
+
+} // namespace
+
+Packing readPacking(const fs::path& file) {
+    const std::string name = file.string();
+    std::error_code ec;
+    if (!fs::exists(file, ec)) throw PackingFileError("'" + name + "': no such file");
+    if (fs::is_directory(file, ec))
+        throw PackingFileError("'" + name + "': is a directory, not a packing file");
+    if (!std::ifstream(file)) throw PackingFileError("'" + name + "': cannot open for reading");
+    if (!isHdf5File(file))
+        throw PackingFileError("'" + name + "': not an HDF5 file (no HDF5 signature)");
+    try {
+        Hdf5Handle h5;
+        try {
+            h5 = openFileReadOnly(file);
+        } catch (const Hdf5Error& e) {
+            throw PackingFileError(std::string(e.what()) + "; the file is truncated or corrupt");
+        }
+        return readContents(h5.get(), name);
+    } catch (const Hdf5Error& e) {
+        throw PackingFileError(e.what());
+    }
+}
+
+void writePacking(const Packing& packing, const fs::path& file) {
+    validatePacking(packing, file.string());
+    AtomicOutput output(file);
+    writeContents(packing, output.temporaryPath());
+    output.commit();
+}
+
+} // namespace sbpack

@@ -1,0 +1,31 @@
+#pragma once
+// The HDF5 packing file shared by every tool (DESIGN.md §4).
+
+#include "packing/packing.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+
+namespace sbpack {
+
+/// A file that cannot be read as a packing (missing, not HDF5, truncated, wrong format or
+/// version, missing or misshapen data); the message names the file and the problem. Invalid
+/// contents of a well-formed file are reported as InvalidPacking (packing/validation.hpp).
+class PackingFileError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+inline constexpr const char* kPackingFormat = "sbpack.packing";
+inline constexpr std::int64_t kPackingFormatVersion = 1;
+
+/// Reads and validates a packing file; normalises the quaternions and wraps positions into
+/// [0, L). Throws PackingFileError or InvalidPacking.
+Packing readPacking(const std::filesystem::path& file);
+
+/// Validates `packing` (InvalidPacking) and writes it atomically through AtomicOutput
+/// (OutputPathError, Hdf5Error); positions are written wrapped into [0, L).
+void writePacking(const Packing& packing, const std::filesystem::path& file);
+
+} // namespace sbpack

@@ -1,0 +1,197 @@
+#include "io/text_io.hpp"
+
+#include "io/atomic_file.hpp"
+#include "packing/validation.hpp"
+
+#include <charconv>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sbpack {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kTextMagic = "# sbpack text packing v1";
+
+/// 17 significant digits (%.17g): every double reads back bit for bit.
+std::string full(double x) {
+    char buffer[32];
+    return std::string(
+        buffer,
+        std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::general, 17).ptr);
+}
+
+/// Writes `body` through AtomicOutput; throws OutputPathError if the stream fails.
+template <typename Body> void writeTextFile(const fs::path& file, Body body) {
+    AtomicOutput output(file);
+    {
+        std::ofstream out(output.temporaryPath());
+        body(out);
+        out.close();
+        if (!out)
+            throw OutputPathError("cannot write '" + output.temporaryPath().string() + "' (for '" +
+                                  file.string() + "')");
+    }
+    output.commit();
+}
+
+std::vector<std::string> splitWhitespace(const std::string& line) {
+    std::istringstream in(line);
+    std::vector<std::string> tokens;
+    for (std::string token; in >> token;)
+        tokens.push_back(token);
+    return tokens;
+}
+
+/// Reads the text file line by line and names the file and line in every error.
+class LineReader {
+  public:
+    explicit LineReader(const fs::path& file) : name_(file.string()), in_(file) {
+        std::error_code ec;
+        if (!fs::exists(file, ec)) throw PackingFileError("'" + name_ + "': no such file");
+        if (!in_) throw PackingFileError("'" + name_ + "': cannot open for reading");
+    }
+
+    bool next(std::string& line) {
+        if (!std::getline(in_, line)) return false;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        ++number_;
+        return true;
+    }
+
+    [[noreturn]] void fail(const std::string& problem) const {
+        throw PackingFileError("'" + name_ + "', line " + std::to_string(number_) + ": " + problem);
+    }
+
+    double parseDouble(std::string token) const {
+        if (!token.empty() && token.front() == '+') token.erase(0, 1);
+        double value = 0.0;
+        const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+        if (ec != std::errc() || end != token.data() + token.size())
+            fail("'" + token + "' is not a number");
+        return value;
+    }
+
+    long long parseCount(const std::string& token) const {
+        long long value = 0;
+        const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+        if (ec != std::errc() || end != token.data() + token.size() || value <= 0)
+            fail("'" + token + "' is not a positive particle count");
+        return value;
+    }
+
+    const std::string& name() const { return name_; }
+
+  private:
+    std::string name_;
+    std::ifstream in_;
+    int number_ = 0;
+};
+
+} // namespace
+
+void writeTextPacking(const Packing& packing, const fs::path& file) {
+    validatePacking(packing, file.string());
+    writeTextFile(file, [&](std::ofstream& out) {
+        out << kTextMagic << "\n# p " << full(packing.p) << "\n# semi_axis "
+            << full(packing.semiAxis) << "\n# box_length " << full(packing.boxLength)
+            << "\n# n_particles " << packing.size() << "\n# columns x y z qw qx qy qz\n";
+        for (std::size_t i = 0; i < packing.size(); ++i) {
+            const Vector3d r = wrapIntoBox(packing.positions[i], packing.boxLength);
+            const Quaterniond& q = packing.orientations[i];
+            out << full(r.x()) << ' ' << full(r.y()) << ' ' << full(r.z()) << ' ' << full(q.w())
+                << ' ' << full(q.x()) << ' ' << full(q.y()) << ' ' << full(q.z()) << '\n';
+        }
+    });
+}
+
+Packing readTextPacking(const fs::path& file) {
+    LineReader reader(file);
+    std::string line;
+    if (!reader.next(line) || line != kTextMagic)
+        reader.fail("not an sbpack text packing (the first line must be '" +
+                    std::string(kTextMagic) + "')");
+
+    std::map<std::string, std::optional<double>> header = {
+        {"p", std::nullopt}, {"semi_axis", std::nullopt}, {"box_length", std::nullopt}};
+    std::optional<long long> count;
+    const auto requireHeader = [&] {
+        for (const auto& [key, value] : header)
+            if (!value) reader.fail("missing header key '" + key + "' before the particles");
+        if (!count) reader.fail("missing header key 'n_particles' before the particles");
+    };
+    Packing packing;
+    while (reader.next(line)) {
+        const std::vector<std::string> tokens = splitWhitespace(line);
+        if (tokens.empty()) continue;
+        if (tokens.front().starts_with('#')) {
+            if (!packing.positions.empty() || tokens.front() != "#" || tokens.size() != 3)
+                continue; // a free comment
+            const std::string& key = tokens[1];
+            if (key == "n_particles") {
+                if (count) reader.fail("header key 'n_particles' is repeated");
+                count = reader.parseCount(tokens[2]);
+            } else if (const auto it = header.find(key); it != header.end()) {
+                if (it->second) reader.fail("header key '" + key + "' is repeated");
+                it->second = reader.parseDouble(tokens[2]);
+            }
+            continue;
+        }
+        if (packing.positions.empty()) requireHeader();
+        if (tokens.size() != 7)
+            reader.fail("expected 7 numbers (x y z qw qx qy qz), found " +
+                        std::to_string(tokens.size()));
+        double v[7];
+        for (int k = 0; k < 7; ++k)
+            v[k] = reader.parseDouble(tokens[k]);
+        packing.positions.emplace_back(v[0], v[1], v[2]);
+        packing.orientations.emplace_back(v[3], v[4], v[5], v[6]);
+    }
+    requireHeader();
+    if (static_cast<long long>(packing.positions.size()) != *count)
+        throw PackingFileError("'" + reader.name() + "': header says n_particles " +
+                               std::to_string(*count) + " but the file has " +
+                               std::to_string(packing.positions.size()) +
+                               " particle lines (wrong particle count)");
+    packing.p = *header["p"];
+    packing.semiAxis = *header["semi_axis"];
+    packing.boxLength = *header["box_length"];
+    validatePacking(packing, reader.name());
+    canonicalizePacking(packing);
+    return packing;
+}
+
+void writeExtendedXyz(const Packing& packing, const fs::path& file) {
+    validatePacking(packing, file.string());
+    const std::string length = full(packing.boxLength);
+    const std::string semiAxis = full(packing.semiAxis);
+    // OVITO's superquadric (howto "Non-spherical particle shapes"):
+    // (|x/a|^(2/phi) + |y/b|^(2/phi))^(phi/theta) + |z/c|^(2/theta) = 1, with (phi, theta) the
+    // "Superquadric Roundness" and (a, b, c) the "Aspherical Shape" semi-axes; our superball
+    // |x|^2p + |y|^2p + |z|^2p = R^2p is phi = theta = 1/p, a = b = c = R. OVITO's
+    // "Orientation" is the quaternion (x, y, z, w) rotating the shape into the lab frame.
+    const std::string roundness = full(1.0 / packing.p);
+    writeTextFile(file, [&](std::ofstream& out) {
+        out << packing.size() << "\nLattice=\"" << length << " 0 0 0 " << length << " 0 0 0 "
+            << length << "\" Origin=\"0 0 0\" pbc=\"T T T\" "
+            << "Properties=species:S:1:pos:R:3:orientation:R:4:aspherical_shape:R:3:"
+            << "superquadric_roundness:R:2 p=" << full(packing.p) << " semi_axis=" << semiAxis
+            << "\n";
+        for (std::size_t i = 0; i < packing.size(); ++i) {
+            const Vector3d r = wrapIntoBox(packing.positions[i], packing.boxLength);
+            const Quaterniond q = packing.orientations[i].normalized();
+            out << "Superball " << full(r.x()) << ' ' << full(r.y()) << ' ' << full(r.z()) << ' '
+                << full(q.x()) << ' ' << full(q.y()) << ' ' << full(q.z()) << ' ' << full(q.w())
+                << ' ' << semiAxis << ' ' << semiAxis << ' ' << semiAxis << ' ' << roundness << ' '
+                << roundness << '\n';
+        }
+    });
+}
+
+} // namespace sbpack

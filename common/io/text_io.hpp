@@ -1,0 +1,34 @@
+#pragma once
+// Plain-text import/export of packings and an extended-XYZ export for OVITO (DESIGN.md §4
+// conventions: quaternions (w, x, y, z) body to lab, positions in [0, L)).
+
+#include "io/packing_io.hpp"
+#include "packing/packing.hpp"
+
+#include <filesystem>
+
+namespace sbpack {
+
+/// Writes the text format, atomically:
+///   # sbpack text packing v1
+///   # p 1.5
+///   # semi_axis 0.5
+///   # box_length 10
+///   # n_particles N
+///   # columns x y z qw qx qy qz
+/// then one particle per line at full precision (17 significant digits). Velocities, seed and
+/// provenance are not part of the text format.
+void writeTextPacking(const Packing& packing, const std::filesystem::path& file);
+
+/// Reads the text format. Other comment lines and blank lines are ignored. Throws
+/// PackingFileError (naming the file and line) for a malformed line, a missing or repeated
+/// header key, or a wrong particle count, and InvalidPacking for invalid contents; normalises
+/// the quaternions and wraps positions into [0, L).
+Packing readTextPacking(const std::filesystem::path& file);
+
+/// Writes an extended-XYZ file that OVITO opens with the periodic cell, orientations and
+/// superquadric shapes (Properties species, pos, orientation, aspherical_shape,
+/// superquadric_roundness).
+void writeExtendedXyz(const Packing& packing, const std::filesystem::path& file);
+
+} // namespace sbpack

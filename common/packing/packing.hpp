@@ -1,0 +1,60 @@
+#pragma once
+// The packing model shared by sbgen and sbanalyze (DESIGN.md §4).
+
+#include "geometry/superball.hpp"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace sbpack {
+
+using Eigen::Quaterniond;
+
+/// A provenance value: the generator's parameters and run log (group `provenance`).
+using ProvenanceValue = std::variant<std::int64_t, double, std::string>;
+
+/// Identical superballs in a cubic periodic box of edge L.
+struct Packing {
+    double p = 1.0;
+    double semiAxis = 0.5;
+    double boxLength = 1.0;
+    std::vector<Vector3d> positions;         ///< in [0, L)
+    std::vector<Quaterniond> orientations;   ///< unit (w, x, y, z), body to lab
+    std::vector<Vector3d> velocities;        ///< optional: empty or N entries
+    std::vector<Vector3d> angularVelocities; ///< optional: empty or N entries
+    std::optional<double> reducedPressure;
+    std::optional<std::uint64_t> seed;
+    std::string generatorVersion;
+    std::map<std::string, ProvenanceValue> provenance;
+
+    std::size_t size() const { return positions.size(); }
+    Superball shape() const { return Superball(p, semiAxis); }
+    /// phi = N v1 / L^3.
+    double packingFraction() const;
+};
+
+/// Minimum-image displacement in a cubic periodic box of edge L.
+inline Vector3d minimumImage(Vector3d d, double boxLength) {
+    for (int k = 0; k < 3; ++k)
+        d[k] -= boxLength * std::nearbyint(d[k] / boxLength);
+    return d;
+}
+
+/// Wraps a position into [0, L).
+inline Vector3d wrapIntoBox(Vector3d r, double boxLength) {
+    for (int k = 0; k < 3; ++k) {
+        r[k] -= boxLength * std::floor(r[k] / boxLength);
+        if (r[k] >= boxLength) r[k] = 0.0; // floor rounding at the upper edge
+    }
+    return r;
+}
+
+} // namespace sbpack

@@ -1,0 +1,90 @@
+#include "packing/validation.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <limits>
+
+namespace sbpack {
+
+namespace {
+
+[[noreturn]] void reject(const std::string& source, const std::string& problem) {
+    throw InvalidPacking("'" + source + "': invalid packing: " + problem);
+}
+
+/// Shortest text that reads back as the same double.
+std::string formatDouble(double x) {
+    char buffer[32];
+    return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, x).ptr);
+}
+
+std::string formatVector(const auto& v) {
+    std::string text = "(";
+    for (int k = 0; k < v.size(); ++k)
+        text += (k ? ", " : "") + formatDouble(v[k]);
+    return text + ")";
+}
+
+void checkFiniteRows(const std::vector<Vector3d>& rows, const std::string& what,
+                     const std::string& source) {
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        if (!rows[i].allFinite())
+            reject(source, "particle " + std::to_string(i) + " has a non-finite (NaN or inf) " +
+                               what + " " + formatVector(rows[i]));
+}
+
+void checkOptionalRows(const std::vector<Vector3d>& rows, const std::string& what,
+                       const std::string& source, std::size_t n) {
+    if (!rows.empty() && rows.size() != n)
+        reject(source, what + " array has " + std::to_string(rows.size()) + " rows for " +
+                           std::to_string(n) + " particles (count mismatch)");
+    checkFiniteRows(rows, what, source);
+}
+
+} // namespace
+
+void validatePacking(const Packing& packing, const std::string& source) {
+    if (!(packing.p >= 0.5 && std::isfinite(packing.p)))
+        reject(source, "p = " + formatDouble(packing.p) + " (must be finite and >= 0.5)");
+    if (!(packing.boxLength > 0.0 && std::isfinite(packing.boxLength)))
+        reject(source,
+               "box_length = " + formatDouble(packing.boxLength) + " (must be finite and > 0)");
+    if (!(packing.semiAxis > 0.0 && std::isfinite(packing.semiAxis)))
+        reject(source,
+               "semi_axis = " + formatDouble(packing.semiAxis) + " (must be finite and > 0)");
+    if (packing.reducedPressure && !std::isfinite(*packing.reducedPressure))
+        reject(source, "reduced_pressure = " + formatDouble(*packing.reducedPressure) +
+                           " (must be finite)");
+
+    const std::size_t n = packing.positions.size();
+    if (n == 0) reject(source, "no particles");
+    if (packing.orientations.size() != n)
+        reject(source, std::to_string(n) + " positions but " +
+                           std::to_string(packing.orientations.size()) +
+                           " orientations (count mismatch)");
+    checkFiniteRows(packing.positions, "position", source);
+    for (std::size_t i = 0; i < n; ++i) {
+        const Quaterniond& q = packing.orientations[i];
+        if (!q.coeffs().allFinite())
+            reject(source, "particle " + std::to_string(i) +
+                               " has a non-finite (NaN or inf) orientation quaternion");
+        const double norm = q.norm();
+        if (std::abs(norm - 1.0) > kQuaternionNormTolerance)
+            reject(source, "particle " + std::to_string(i) + " has an orientation quaternion " +
+                               "of norm " + formatDouble(norm) + " (must be 1 within " +
+                               formatDouble(kQuaternionNormTolerance) + ")");
+    }
+    checkOptionalRows(packing.velocities, "velocity", source, n);
+    checkOptionalRows(packing.angularVelocities, "angular velocity", source, n);
+}
+
+void canonicalizePacking(Packing& packing) {
+    // Quaternions already unit to rounding stay bit-exact, so write/read round trips are exact.
+    constexpr double kUnitToRounding = 8.0 * std::numeric_limits<double>::epsilon();
+    for (Quaterniond& q : packing.orientations)
+        if (std::abs(q.squaredNorm() - 1.0) > kUnitToRounding) q.normalize();
+    for (Vector3d& r : packing.positions)
+        r = wrapIntoBox(r, packing.boxLength);
+}
+
+} // namespace sbpack

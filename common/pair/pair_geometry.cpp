@@ -1,0 +1,412 @@
+#include "pair/pair_geometry.hpp"
+
+#include <Eigen/Dense>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace sbpack {
+
+namespace {
+
+using Vector2d = Eigen::Vector2d;
+using Matrix2d = Eigen::Matrix2d;
+
+/// H(u) = h_A(u) + h_B(u) and its derivatives in the lab frame (u need not be unit).
+class MinkowskiSum {
+  public:
+    explicit MinkowskiSum(const SuperballPair& pair) : pair_(pair) {}
+
+    double support(const Vector3d& u) const {
+        ++evaluations;
+        return shape().support(ra().transpose() * u) + shape().support(rb().transpose() * u);
+    }
+    /// grad H = s_A(u) + s_B(u): the sum of the support points.
+    Vector3d supportPoint(const Vector3d& u) const {
+        ++evaluations;
+        return supportPointA(u) + rb() * shape().supportPoint(rb().transpose() * u);
+    }
+    Vector3d supportPointA(const Vector3d& u) const {
+        return ra() * shape().supportPoint(ra().transpose() * u);
+    }
+    Vector3d supportPointB(const Vector3d& u) const {
+        return rb() * shape().supportPoint(rb().transpose() * u);
+    }
+    Matrix3d supportHessian(const Vector3d& u) const {
+        return ra() * shape().supportHessian(ra().transpose() * u) * ra().transpose() +
+               rb() * shape().supportHessian(rb().transpose() * u) * rb().transpose();
+    }
+
+    const Superball& shape() const { return pair_.shape; }
+    const Matrix3d& ra() const { return pair_.rotationA; }
+    const Matrix3d& rb() const { return pair_.rotationB; }
+    const Vector3d& displacement() const { return pair_.displacement; }
+
+    mutable int evaluations = 0;
+
+  private:
+    const SuperballPair& pair_;
+};
+
+/// Orthonormal tangent basis (columns) of the plane orthogonal to the unit vector n.
+Eigen::Matrix<double, 3, 2> tangentBasis(const Vector3d& n) {
+    const Vector3d helper = std::abs(n.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
+    Eigen::Matrix<double, 3, 2> basis;
+    basis.col(0) = n.cross(helper).normalized();
+    basis.col(1) = n.cross(basis.col(0));
+    return basis;
+}
+
+/// Solves phi'(t) = 0 for 0 < t <= tMax along a search direction, given phi'(0) < 0 and
+/// phi' nondecreasing past its root (convex phi, or a local maximum of -phi): the full
+/// Newton step t = 1 is tried first; otherwise the root is bracketed and refined by Illinois
+/// regula falsi with bisection safeguards. tTolerance is absolute in t.
+template <class Derivative>
+double exactLineSearch(Derivative&& derivative, double slope0, double tTolerance, double tMax,
+                       int maxIterations) {
+    double lo = 0.0, dlo = slope0;
+    double hi = std::min(1.0, tMax), dhi = derivative(hi);
+    if (std::abs(dhi) <= 1e-2 * std::abs(slope0)) return hi; // Newton's step is good enough
+    int iteration = 0;
+    while (dhi < 0.0 && hi < tMax && iteration++ < maxIterations) { // bracket the root
+        lo = hi;
+        dlo = dhi;
+        hi = std::min(2.0 * hi, tMax);
+        dhi = derivative(hi);
+    }
+    if (dhi < 0.0) return hi;
+    int side = 0; // Illinois: which end was kept last time
+    while (hi - lo > tTolerance && iteration++ < maxIterations) {
+        double t = lo - dlo * (hi - lo) / (dhi - dlo);
+        const double width = hi - lo;
+        if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
+        const double dt = derivative(t);
+        if (dt == 0.0) return t;
+        if (dt < 0.0) {
+            lo = t;
+            dlo = dt;
+            if (side == -1) dhi *= 0.5;
+            side = -1;
+        } else {
+            hi = t;
+            dhi = dt;
+            if (side == 1) dlo *= 0.5;
+            side = 1;
+        }
+        if (hi - lo > 0.5 * width) { // slow secant progress: bisect once
+            const double mid = 0.5 * (lo + hi);
+            const double dm = derivative(mid);
+            if (dm == 0.0) return mid;
+            (dm < 0.0 ? lo : hi) = mid;
+            (dm < 0.0 ? dlo : dhi) = dm;
+            side = 0;
+        }
+    }
+    return 0.5 * (lo + hi);
+}
+
+/// Largest t with |c + t v| <= radius, for |c| <= radius.
+double rayExit(const Vector2d& c, const Vector2d& v, double radius) {
+    const double a = v.squaredNorm(), b = c.dot(v), e = c.squaredNorm() - radius * radius;
+    return (-b + std::sqrt(std::max(0.0, b * b - a * e))) / a;
+}
+
+/// Newton direction for minimising a function with 2x2 Hessian h and gradient g; a tiny
+/// shift keeps the octahedral (singular) Hessians solvable, steepest descent otherwise.
+Vector2d newtonDirection(const Matrix2d& h, const Vector2d& g, double shift) {
+    const Matrix2d m = h + shift * Matrix2d::Identity();
+    const double det = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
+    Vector2d direction(-(m(1, 1) * g[0] - m(0, 1) * g[1]) / det,
+                       -(m(0, 0) * g[1] - m(1, 0) * g[0]) / det);
+    if (!(direction.dot(g) < 0.0) || !direction.allFinite()) direction = -g;
+    return direction;
+}
+
+// ---- Octahedron p = 0.5: K = A + B is a polytope --------------------------------------
+
+/// Unit vectors containing every face normal of K (faces of A, of B, and the cross
+/// products of their edge directions), up to sign.
+std::vector<Vector3d> octahedronFaceNormalCandidates(const MinkowskiSum& k) {
+    static const std::array<Vector3d, 4> faces = {Vector3d(1, 1, 1), Vector3d(1, 1, -1),
+                                                  Vector3d(1, -1, 1), Vector3d(-1, 1, 1)};
+    static const std::array<Vector3d, 6> edges = {Vector3d(1, 1, 0), Vector3d(1, -1, 0),
+                                                  Vector3d(1, 0, 1), Vector3d(1, 0, -1),
+                                                  Vector3d(0, 1, 1), Vector3d(0, 1, -1)};
+    std::vector<Vector3d> normals;
+    for (const Vector3d& f : faces) {
+        normals.push_back((k.ra() * f).normalized());
+        normals.push_back((k.rb() * f).normalized());
+    }
+    for (const Vector3d& ea : edges)
+        for (const Vector3d& eb : edges) {
+            const Vector3d n = (k.ra() * ea).cross(k.rb() * eb);
+            if (n.norm() > 1e-12) normals.push_back(n.normalized());
+        }
+    return normals;
+}
+
+ScaleFactorResult octahedronScaleFactor(const MinkowskiSum& k) {
+    // The gauge of a polytope is its largest n.d / h(n) over the face normals (exact).
+    ScaleFactorResult result;
+    const Vector3d& d = k.displacement();
+    for (Vector3d n : octahedronFaceNormalCandidates(k)) {
+        if (n.dot(d) < 0.0) n = -n;
+        const double mu = n.dot(d) / k.support(n);
+        if (mu > result.scaleFactor) {
+            result.scaleFactor = mu;
+            result.normal = n;
+        }
+    }
+    result.evaluations = k.evaluations;
+    return result;
+}
+
+/// s = max_n n.d - H(n) over directions that contain its maximiser: the face normals of K
+/// (nearest feature a face, or d inside K), the directions to its vertices, and to the
+/// nearest points of the segments between vertices (nearest feature an edge). Exact.
+void octahedronSignedDistance(const MinkowskiSum& k, SignedDistanceResult& result) {
+    const Vector3d& d = k.displacement();
+    double best = -std::numeric_limits<double>::infinity();
+    auto consider = [&](Vector3d n) {
+        const double length = n.norm();
+        if (!(length > 0.0)) return;
+        n /= length;
+        const double s = n.dot(d) - k.support(n);
+        if (s > best) {
+            best = s;
+            result.normal = n;
+        }
+    };
+    for (const Vector3d& n : octahedronFaceNormalCandidates(k))
+        consider(n.dot(d) < 0 ? -n : n);
+    if (result.scaleFactor > 1.0) {
+        std::vector<Vector3d> vertices;
+        const double r = k.shape().semiAxis();
+        for (int i = 0; i < 6; ++i)
+            for (int j = 0; j < 6; ++j) {
+                const Vector3d a = k.ra().col(i % 3) * (i < 3 ? r : -r);
+                const Vector3d b = k.rb().col(j % 3) * (j < 3 ? r : -r);
+                vertices.push_back(a + b);
+            }
+        for (std::size_t i = 0; i < vertices.size(); ++i) {
+            consider(d - vertices[i]);
+            for (std::size_t j = i + 1; j < vertices.size(); ++j) {
+                const Vector3d e = vertices[j] - vertices[i];
+                const double t = std::clamp(e.dot(d - vertices[i]) / e.squaredNorm(), 0.0, 1.0);
+                consider(d - vertices[i] - t * e);
+            }
+        }
+    }
+    result.signedDistance = best;
+}
+
+// ---- General superballs 0.5 < p < inf ---------------------------------------------------
+
+/// Golden-section minimum of a unimodal function on [lo, hi]: derivative-free, so it cannot
+/// stall on the kinks that the support functions of near-cubes and near-octahedra have in
+/// floating point. Returns the argument; the value is returned through `value`.
+template <class F>
+double goldenSection(F&& f, double lo, double hi, int iterations, double& value) {
+    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+    double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
+    double f1 = f(x1), f2 = f(x2);
+    for (int i = 0; i < iterations && hi - lo > 1e-16 * (1.0 + std::abs(lo)); ++i) {
+        if (f1 <= f2) {
+            hi = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = hi - ratio * (hi - lo);
+            f1 = f(x1);
+        } else {
+            lo = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = lo + ratio * (hi - lo);
+            f2 = f(x2);
+        }
+    }
+    value = std::min(f1, f2);
+    return f1 <= f2 ? x1 : x2;
+}
+
+/// Minimum of f(c) over the square |c_i| <= radius by nested golden sections: exact for
+/// convex (and quasi-convex) f whatever its kinks. Returns the minimiser; value through `value`.
+template <class F>
+Vector2d nestedGoldenMinimum(F&& f, double radius, int iterations, double& value) {
+    auto inner = [&](double a, double& innerValue) {
+        return goldenSection([&](double b) { return f(Vector2d(a, b)); }, -radius, radius,
+                             iterations, innerValue);
+    };
+    const double a = goldenSection(
+        [&](double x) {
+            double innerValue = 0.0;
+            inner(x, innerValue);
+            return innerValue;
+        },
+        -radius, radius, iterations, value);
+    return Vector2d(a, inner(a, value));
+}
+
+/// 1/mu = min H(u) / |d| over the plane u . d_hat = 1 (DESIGN.md §2): a convex problem in
+/// the two tangent coordinates c, u = d_hat + P c.
+ScaleFactorResult generalScaleFactor(const MinkowskiSum& k, const Vector3d& warmNormal,
+                                     const PairTolerances& tolerances) {
+    const Vector3d& d = k.displacement();
+    const double distance = d.norm();
+    const Vector3d dHat = d / distance;
+    const Eigen::Matrix<double, 3, 2> basis = tangentBasis(dHat);
+
+    Vector2d c = Vector2d::Zero();
+    const double cosine = warmNormal.dot(dHat);
+    if (cosine > 0.1 * warmNormal.norm()) c = basis.transpose() * (warmNormal / cosine);
+
+    ScaleFactorResult result;
+    const double curvatureShift = 1e-12 * k.shape().semiAxis();
+    // The minimiser lies in the disc |c| <= sqrt(2): H(u) >= 2 r_in |u|, H(d_hat) <= 2 r_out
+    // and r_out / r_in <= sqrt(3). Steps stay inside a slightly larger disc, which also
+    // bounds them on the flat stretches of H (cube vertices seen along their diagonal).
+    const double radius = 1.5;
+    if (c.norm() > radius) c.setZero();
+    for (result.iterations = 0; result.iterations < tolerances.maxNewtonIterations;) {
+        ++result.iterations;
+        const Vector3d u = dHat + basis * c;
+        const Vector2d gradient = basis.transpose() * k.supportPoint(u);
+        if (gradient.isZero(0.0)) break;
+        const Matrix2d hessian = basis.transpose() * k.supportHessian(u) * basis;
+        const Vector2d direction = newtonDirection(hessian, gradient, curvatureShift);
+        const double length = direction.norm();
+        const double t = exactLineSearch(
+            [&](double s) {
+                return direction.dot(basis.transpose() *
+                                     k.supportPoint(u + basis * (s * direction)));
+            },
+            direction.dot(gradient), tolerances.normalTolerance / length,
+            rayExit(c, direction, radius), tolerances.maxLineSearchIterations);
+        c += t * direction;
+        if (t * length <= tolerances.normalTolerance * (1.0 + c.norm())) break;
+    }
+    Vector3d u = dHat + basis * c;
+    double h = k.support(u);
+    // Certificate: the bodies scaled by mu = |d|/H must meet at mu s_A(n) (primal point).
+    const double mu = distance / h;
+    const Vector3d meeting = mu * k.supportPointA(u);
+    const double gaugeB = k.shape().gauge(k.rb().transpose() * (meeting - d));
+    if (gaugeB > mu * (1.0 + tolerances.certificateTolerance)) {
+        // Newton stalled on a kink: minimise H exactly over the square holding the disc.
+        ++result.fallbacks;
+        double best = 0.0;
+        const Vector2d cBest =
+            nestedGoldenMinimum([&](const Vector2d& x) { return k.support(dHat + basis * x); },
+                                radius, tolerances.maxLineSearchIterations, best);
+        if (best < h) {
+            u = dHat + basis * cBest;
+            h = best;
+        }
+    }
+    result.scaleFactor = distance / h;
+    result.normal = u.normalized();
+    result.evaluations = k.evaluations;
+    return result;
+}
+
+/// Ascent of f(n) = n.d - H(n) on the unit sphere from the normal of mu, which is exact
+/// at contact: Newton on the tangent plane of the current normal, f(u/|u|) = f~(u)/|u|.
+void generalSignedDistance(const MinkowskiSum& k, const PairTolerances& tolerances,
+                           SignedDistanceResult& result) {
+    const Vector3d& d = k.displacement();
+    Vector3d n = result.normal;
+    double f = n.dot(d) - k.support(n);
+    // Derivative of f(normalize(u)) along direction v at u: (grad f~ - f~ u / |u|^2) . v / |u|.
+    auto slope = [&](const Vector3d& u, const Vector3d& v) {
+        const double r2 = u.squaredNorm();
+        const double fu = u.dot(d) - k.support(u);
+        return (d - k.supportPoint(u) - fu * u / r2).dot(v) / std::sqrt(r2);
+    };
+    const double curvatureShift = 1e-12 * k.shape().semiAxis();
+    for (int iteration = 0; iteration < tolerances.maxNewtonIterations; ++iteration) {
+        ++result.iterations;
+        const Eigen::Matrix<double, 3, 2> basis = tangentBasis(n);
+        const Vector2d gradient = basis.transpose() * (d - k.supportPoint(n)); // of f
+        if (gradient.isZero(0.0)) break;
+        // Tangent Hessian of -f: P^T d2H P + f I.
+        const Matrix2d hessian =
+            basis.transpose() * k.supportHessian(n) * basis + f * Matrix2d::Identity();
+        Matrix2d shifted = hessian;
+        const double smallest = Eigen::SelfAdjointEigenSolver<Matrix2d>(hessian).eigenvalues()[0];
+        if (smallest < curvatureShift)
+            shifted += (curvatureShift - smallest) * Matrix2d::Identity();
+        const Vector2d direction = newtonDirection(shifted, -gradient, 0.0);
+        const Vector3d v = basis * direction;
+        const double length = direction.norm();
+        const double t = exactLineSearch(
+            [&](double s) { return -slope(n + s * v, v); }, -gradient.dot(direction),
+            tolerances.normalTolerance / length, 1.0 / length, tolerances.maxLineSearchIterations);
+        const Vector3d candidate = (n + t * v).normalized();
+        const double fCandidate = candidate.dot(d) - k.support(candidate);
+        if (!(fCandidate >= f)) break; // no further ascent at rounding level
+        n = candidate;
+        f = fCandidate;
+        if (t * length <= tolerances.normalTolerance) break;
+    }
+    // Certificate: the contact points are separated by s along n (d - grad H(n) = s n).
+    const Vector3d residual = d - k.supportPoint(n) - f * n;
+    if (residual.norm() > tolerances.certificateTolerance * k.shape().diameter()) {
+        // Newton stalled on a kink: maximise f over the tangent plane of n, where f is
+        // quasi-concave for s >= 0 (a local maximum, i.e. a bound on the depth, below).
+        ++result.fallbacks;
+        const Eigen::Matrix<double, 3, 2> basis = tangentBasis(n);
+        auto fOnSphere = [&](const Vector2d& c) {
+            const Vector3d m = (n + basis * c).normalized();
+            return -(m.dot(d) - k.support(m));
+        };
+        double best = 0.0;
+        const Vector2d c =
+            nestedGoldenMinimum(fOnSphere, 0.6, tolerances.maxLineSearchIterations, best);
+        if (-best > f) {
+            n = (n + basis * c).normalized();
+            f = -best;
+        }
+    }
+    result.normal = n;
+    result.signedDistance = f;
+}
+
+} // namespace
+
+ScaleFactorResult scaleFactor(const SuperballPair& pair, const Vector3d& warmNormal,
+                              const PairTolerances& tolerances) {
+    const Vector3d& d = pair.displacement;
+    const double distance = d.norm();
+    if (distance == 0.0) return {0.0, Vector3d::UnitX(), 0, 0, 0};
+    if (pair.shape.isSphere()) return {distance / pair.shape.diameter(), d / distance, 0, 0, 0};
+    const MinkowskiSum k(pair);
+    if (pair.shape.isOctahedron()) return octahedronScaleFactor(k);
+    return generalScaleFactor(k, warmNormal, tolerances);
+}
+
+SignedDistanceResult signedDistance(const SuperballPair& pair, const Vector3d& warmNormal,
+                                    const PairTolerances& tolerances) {
+    const ScaleFactorResult mu = scaleFactor(pair, warmNormal, tolerances);
+    SignedDistanceResult result;
+    result.scaleFactor = mu.scaleFactor;
+    result.normal = mu.normal;
+    result.iterations = mu.iterations;
+    result.fallbacks = mu.fallbacks;
+    const MinkowskiSum k(pair);
+    const Vector3d& d = pair.displacement;
+    if (pair.shape.isSphere()) {
+        result.signedDistance = d.norm() - pair.shape.diameter();
+    } else if (pair.shape.isOctahedron()) {
+        octahedronSignedDistance(k, result);
+    } else {
+        generalSignedDistance(k, tolerances, result);
+    }
+    result.contactA = k.supportPointA(result.normal);
+    result.contactB = d - k.supportPointB(result.normal);
+    result.evaluations = mu.evaluations + k.evaluations;
+    return result;
+}
+
+} // namespace sbpack

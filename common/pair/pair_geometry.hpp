@@ -1,0 +1,68 @@
+#pragma once
+// Pair geometry of two identical oriented superballs (DESIGN.md §2).
+//
+// With K = A + B the Minkowski sum (both bodies centrally symmetric) and d = r_B - r_A:
+//   scale factor     mu = max_{|n|=1} n.d / (h_A(n) + h_B(n))   (gauge of K at d)
+//   signed distance  s  = max_{|n|=1} n.d - h_A(n) - h_B(n)      (gap > 0, -depth < 0)
+// mu is found from its dual, a two-dimensional convex minimisation:
+//   1 / mu = min { H(u) / |d| : u . d = |d| },  H = h_A + h_B,
+// by Newton steps with an exact line search, checked by a primal certificate (the scaled
+// bodies meet) and finished by a derivative-free search where Newton stalls on the kinks
+// of near-cubes; the octahedron p = 0.5 is exact over its candidate face normals.
+
+#include "geometry/superball.hpp"
+
+namespace sbpack {
+
+/// Iteration limits and tolerances of the pair solvers, in one place.
+struct PairTolerances {
+    int maxNewtonIterations = 60;
+    int maxLineSearchIterations = 100;
+    /// Newton stops when a step moves the normal by less than this (radians).
+    double normalTolerance = 1e-15;
+    /// Relative excess of the primal meeting point's gauge over mu that sends the scale
+    /// factor to the derivative-free fallback.
+    double certificateTolerance = 1e-12;
+};
+
+/// One pair: the two orientations (rotation body -> lab) and the displacement d = r_B - r_A.
+struct SuperballPair {
+    Superball shape;
+    Matrix3d rotationA;
+    Matrix3d rotationB;
+    Vector3d displacement;
+};
+
+struct ScaleFactorResult {
+    double scaleFactor = 0.0; ///< mu; < 1 overlap, 1 touching
+    Vector3d normal;          ///< unit, from A towards B
+    int iterations = 0;       ///< Newton iterations
+    int evaluations = 0;      ///< support-function evaluations, line searches included
+    int fallbacks = 0;        ///< 1 if Newton stalled and the golden-section search finished
+};
+
+struct SignedDistanceResult {
+    /// Gap if > 0, minus the penetration depth if < 0. Exact near contact; for deep overlaps
+    /// (where f is not concave on the sphere) the local maximum from mu's normal, a lower
+    /// bound on s, so it never understates a depth.
+    double signedDistance = 0.0;
+    double scaleFactor = 0.0; ///< mu of the same pair
+    Vector3d normal;          ///< unit contact normal, from A towards B
+    Vector3d contactA;        ///< support point of A along normal, relative to r_A
+    Vector3d contactB;        ///< support point of B along -normal, relative to r_A
+    int iterations = 0;       ///< Newton iterations (scale factor and distance together)
+    int evaluations = 0;
+    int fallbacks = 0; ///< derivative-free finishes (scale factor and distance together)
+};
+
+/// mu of the pair. warmNormal, if non-zero, is a previous normal of the same pair.
+ScaleFactorResult scaleFactor(const SuperballPair& pair,
+                              const Vector3d& warmNormal = Vector3d::Zero(),
+                              const PairTolerances& tolerances = {});
+
+/// Signed distance, normal and contact points; starts from the normal of mu.
+SignedDistanceResult signedDistance(const SuperballPair& pair,
+                                    const Vector3d& warmNormal = Vector3d::Zero(),
+                                    const PairTolerances& tolerances = {});
+
+} // namespace sbpack

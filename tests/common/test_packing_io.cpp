@@ -1,0 +1,502 @@
+// Packing file I/O (DESIGN.md §4): HDF5 and text round trips, the OVITO export, every rejected
+// input, and the atomic output helper.
+
+#include "io/atomic_file.hpp"
+#include "io/hdf5_handles.hpp"
+#include "io/packing_io.hpp"
+#include "io/text_io.hpp"
+#include "packing/validation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <random>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+namespace sbpack {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A packing with every optional field set; fixed seed.
+Packing makePacking(std::size_t n = 6) {
+    std::mt19937_64 rng(20240611);
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    std::normal_distribution<double> gauss(0.0, 1.0);
+    Packing packing;
+    packing.p = 1.7;
+    packing.semiAxis = 0.5;
+    packing.boxLength = 10.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        packing.positions.emplace_back(10.0 * uniform(rng), 10.0 * uniform(rng),
+                                       10.0 * uniform(rng));
+        packing.orientations.push_back(
+            Quaterniond(gauss(rng), gauss(rng), gauss(rng), gauss(rng)).normalized());
+        packing.velocities.emplace_back(gauss(rng), gauss(rng), gauss(rng));
+        packing.angularVelocities.emplace_back(gauss(rng), gauss(rng), gauss(rng));
+    }
+    packing.reducedPressure = 1.0e14 / 3.0;
+    packing.seed = std::numeric_limits<std::uint64_t>::max() - 12345; // beyond int64
+    packing.generatorVersion = "0.1.0";
+    packing.provenance["gamma"] = 0.001;
+    packing.provenance["n_collisions"] = std::int64_t{-123456789012345};
+    packing.provenance["command"] = std::string("sbgen --p 1.7 --n 6");
+    packing.provenance["log"] = std::string(200000, 'x'); // beyond the 64 KiB compact limit
+    return packing;
+}
+
+/// Runs `action`, expects an E whose message contains every word.
+template <typename E, typename F>
+void expectError(F&& action, std::initializer_list<std::string> words) {
+    try {
+        action();
+        ADD_FAILURE() << "no exception thrown";
+    } catch (const E& e) {
+        const std::string message = e.what();
+        for (const std::string& word : words)
+            EXPECT_NE(message.find(word), std::string::npos)
+                << "message \"" << message << "\" lacks \"" << word << "\"";
+    }
+}
+
+class TemporaryDirectoryTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() / ("sbpack_io_" + std::to_string(::getpid()) + "_" +
+                                            info->test_suite_name() + "_" + info->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path file(const std::string& name) const { return dir_ / name; }
+    std::size_t entries() const {
+        return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir_), {}));
+    }
+
+  private:
+    fs::path dir_;
+};
+
+/// Opens a packing file for editing, to build malformed inputs.
+Hdf5Handle openForEditing(const fs::path& file) {
+    return Hdf5Handle(H5Fopen(file.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
+}
+
+class PackingIo : public TemporaryDirectoryTest {
+  protected:
+    /// Writes a good file and returns its path.
+    fs::path goodFile(const std::string& name = "packing.h5") {
+        const fs::path path = file(name);
+        writePacking(makePacking(), path);
+        return path;
+    }
+    /// Overwrites the positions with `edit` applied to the good ones.
+    template <typename Edit> fs::path withPositions(Edit edit) {
+        const fs::path path = goodFile();
+        std::vector<double> values =
+            readMatrixDataset(openFileReadOnly(path).get(), "positions", makePacking().size(), 3);
+        edit(values);
+        writeMatrixDataset(openForEditing(path).get(), "positions", values, 3);
+        return path;
+    }
+};
+
+TEST_F(PackingIo, RoundTripIsBitExact) {
+    const Packing original = makePacking();
+    const fs::path path = file("round_trip.h5");
+    writePacking(original, path);
+    const Packing read = readPacking(path);
+
+    EXPECT_EQ(read.p, original.p);
+    EXPECT_EQ(read.semiAxis, original.semiAxis);
+    EXPECT_EQ(read.boxLength, original.boxLength);
+    ASSERT_EQ(read.size(), original.size());
+    for (std::size_t i = 0; i < original.size(); ++i) {
+        EXPECT_EQ(read.positions[i], original.positions[i]) << i;
+        EXPECT_EQ(read.orientations[i].coeffs(), original.orientations[i].coeffs()) << i;
+        EXPECT_EQ(read.velocities[i], original.velocities[i]) << i;
+        EXPECT_EQ(read.angularVelocities[i], original.angularVelocities[i]) << i;
+    }
+    EXPECT_EQ(read.reducedPressure, original.reducedPressure);
+    EXPECT_EQ(read.seed, original.seed);
+    EXPECT_EQ(read.generatorVersion, original.generatorVersion);
+    EXPECT_EQ(read.provenance, original.provenance);
+}
+
+TEST_F(PackingIo, OptionalFieldsStayAbsent) {
+    Packing original = makePacking();
+    original.velocities.clear();
+    original.angularVelocities.clear();
+    original.reducedPressure.reset();
+    original.seed.reset();
+    original.generatorVersion.clear();
+    original.provenance.clear();
+    const fs::path path = file("minimal.h5");
+    writePacking(original, path);
+    const Packing read = readPacking(path);
+    EXPECT_TRUE(read.velocities.empty());
+    EXPECT_TRUE(read.angularVelocities.empty());
+    EXPECT_FALSE(read.reducedPressure);
+    EXPECT_FALSE(read.seed);
+    EXPECT_TRUE(read.provenance.empty());
+    EXPECT_FALSE(hasLink(openFileReadOnly(path).get(), "velocities"));
+}
+
+TEST_F(PackingIo, WritesTheSchemaAttributes) {
+    const Packing packing = makePacking();
+    const fs::path path = goodFile();
+    const Hdf5Handle h5 = openFileReadOnly(path);
+    EXPECT_EQ(readStringAttribute(h5.get(), "format"), "sbpack.packing");
+    EXPECT_EQ(readInt64Attribute(h5.get(), "format_version"), 1);
+    EXPECT_EQ(readInt64Attribute(h5.get(), "n_particles"), 6);
+    EXPECT_EQ(readDoubleAttribute(h5.get(), "phi"), packing.packingFraction());
+    EXPECT_EQ(attributeKind(h5.get(), "seed"), AttributeKind::Integer);
+}
+
+TEST_F(PackingIo, ReaderWrapsPositionsAndNormalisesQuaternions) {
+    const fs::path path = withPositions([](std::vector<double>& v) {
+        v[0] = -0.25; // particle 0, x
+        v[4] = 10.5;  // particle 1, y
+    });
+    std::vector<double> q = readMatrixDataset(openFileReadOnly(path).get(), "orientations", 6, 4);
+    for (int k = 0; k < 4; ++k)
+        q[4 + k] *= 1.0 + 5e-7; // particle 1, within the tolerance
+    writeMatrixDataset(openForEditing(path).get(), "orientations", q, 4);
+
+    const Packing read = readPacking(path);
+    EXPECT_DOUBLE_EQ(read.positions[0].x(), 9.75);
+    EXPECT_DOUBLE_EQ(read.positions[1].y(), 0.5);
+    EXPECT_NEAR(read.orientations[1].norm(), 1.0, 1e-15);
+}
+
+TEST_F(PackingIo, MissingFile) {
+    const fs::path path = file("absent.h5");
+    expectError<PackingFileError>([&] { readPacking(path); }, {"absent.h5", "no such file"});
+}
+
+TEST_F(PackingIo, NotHdf5) {
+    const fs::path path = file("text.h5");
+    std::ofstream(path) << "this is not HDF5\n";
+    expectError<PackingFileError>([&] { readPacking(path); }, {"text.h5", "not an HDF5 file"});
+}
+
+TEST_F(PackingIo, TruncatedFile) {
+    const fs::path path = goodFile("cut.h5");
+    fs::resize_file(path, fs::file_size(path) / 2);
+    expectError<PackingFileError>([&] { readPacking(path); }, {"cut.h5", "truncated"});
+}
+
+TEST_F(PackingIo, WrongFormatString) {
+    const fs::path path = goodFile();
+    writeStringAttribute(openForEditing(path).get(), "format", "sbpack.results");
+    expectError<PackingFileError>([&] { readPacking(path); },
+                                  {"packing.h5", "format", "sbpack.results"});
+}
+
+TEST_F(PackingIo, WrongFormatVersion) {
+    const fs::path path = goodFile();
+    writeInt64Attribute(openForEditing(path).get(), "format_version", 2);
+    expectError<PackingFileError>([&] { readPacking(path); }, {"packing.h5", "format_version 2"});
+}
+
+TEST_F(PackingIo, MissingDataset) {
+    const fs::path path = goodFile();
+    H5Ldelete(openForEditing(path).get(), "orientations", H5P_DEFAULT);
+    expectError<PackingFileError>([&] { readPacking(path); },
+                                  {"packing.h5", "orientations", "missing"});
+}
+
+TEST_F(PackingIo, MissingAttribute) {
+    const fs::path path = goodFile();
+    H5Adelete(openForEditing(path).get(), "semi_axis");
+    expectError<PackingFileError>([&] { readPacking(path); },
+                                  {"packing.h5", "semi_axis", "missing"});
+}
+
+TEST_F(PackingIo, ShapeNotMatchingParticleCount) {
+    const fs::path path = goodFile();
+    writeInt64Attribute(openForEditing(path).get(), "n_particles", 7);
+    expectError<PackingFileError>([&] { readPacking(path); },
+                                  {"packing.h5", "positions", "shape 6 x 3", "7 x 3"});
+}
+
+TEST_F(PackingIo, WrongSecondDimension) {
+    const fs::path path = goodFile();
+    const std::vector<double> wide(6 * 4, 0.5);
+    writeMatrixDataset(openForEditing(path).get(), "positions", wide, 4);
+    expectError<PackingFileError>([&] { readPacking(path); },
+                                  {"packing.h5", "positions", "shape 6 x 4"});
+}
+
+TEST_F(PackingIo, NanCoordinate) {
+    const fs::path path =
+        withPositions([](std::vector<double>& v) { v[3 * 3 + 1] = std::nan(""); });
+    expectError<InvalidPacking>([&] { readPacking(path); },
+                                {"packing.h5", "particle 3", "non-finite", "position"});
+}
+
+TEST_F(PackingIo, QuaternionFarFromUnit) {
+    const fs::path path = goodFile();
+    std::vector<double> q = readMatrixDataset(openFileReadOnly(path).get(), "orientations", 6, 4);
+    for (int k = 0; k < 4; ++k)
+        q[4 * 2 + k] *= 1.5;
+    writeMatrixDataset(openForEditing(path).get(), "orientations", q, 4);
+    expectError<InvalidPacking>([&] { readPacking(path); },
+                                {"packing.h5", "particle 2", "quaternion", "norm 1.5"});
+}
+
+TEST_F(PackingIo, PBelowOneHalf) {
+    const fs::path path = goodFile();
+    writeDoubleAttribute(openForEditing(path).get(), "p", 0.4);
+    expectError<InvalidPacking>([&] { readPacking(path); }, {"packing.h5", "p = 0.4"});
+}
+
+TEST_F(PackingIo, PNotANumber) {
+    const fs::path path = goodFile();
+    writeDoubleAttribute(openForEditing(path).get(), "p", std::nan(""));
+    expectError<InvalidPacking>([&] { readPacking(path); }, {"packing.h5", "p = nan"});
+}
+
+TEST_F(PackingIo, BoxLengthNotPositive) {
+    const fs::path path = goodFile();
+    writeDoubleAttribute(openForEditing(path).get(), "box_length", 0.0);
+    expectError<InvalidPacking>([&] { readPacking(path); }, {"packing.h5", "box_length = 0"});
+}
+
+TEST_F(PackingIo, SemiAxisNotPositive) {
+    const fs::path path = goodFile();
+    writeDoubleAttribute(openForEditing(path).get(), "semi_axis", -0.5);
+    expectError<InvalidPacking>([&] { readPacking(path); }, {"packing.h5", "semi_axis = -0.5"});
+}
+
+TEST_F(PackingIo, PhiDisagreeingWithContents) {
+    const fs::path path = goodFile();
+    writeDoubleAttribute(openForEditing(path).get(), "phi", 0.6);
+    expectError<InvalidPacking>([&] { readPacking(path); }, {"packing.h5", "phi = 0.6"});
+}
+
+TEST_F(PackingIo, WriteIntoMissingDirectory) {
+    const fs::path path = file("no_such_dir") / "out.h5";
+    expectError<OutputPathError>([&] { writePacking(makePacking(), path); },
+                                 {"no_such_dir", "does not exist"});
+}
+
+TEST_F(PackingIo, WriteRejectsInvalidPackingAndLeavesNothing) {
+    Packing packing = makePacking();
+    packing.orientations.pop_back();
+    expectError<InvalidPacking>([&] { writePacking(packing, file("bad.h5")); },
+                                {"bad.h5", "count mismatch"});
+    EXPECT_EQ(entries(), 0u);
+}
+
+class PackingValidation : public ::testing::Test {};
+
+TEST_F(PackingValidation, AcceptsAGoodPackingWithPositionsOutsideTheBox) {
+    Packing packing = makePacking();
+    packing.positions[0] = Vector3d(-1.0, 11.0, 25.0);
+    EXPECT_NO_THROW(validatePacking(packing, "src"));
+}
+
+TEST_F(PackingValidation, RejectsNoParticles) {
+    Packing packing = makePacking();
+    packing.positions.clear();
+    packing.orientations.clear();
+    packing.velocities.clear();
+    packing.angularVelocities.clear();
+    expectError<InvalidPacking>([&] { validatePacking(packing, "src.h5"); },
+                                {"src.h5", "no particles"});
+}
+
+TEST_F(PackingValidation, RejectsVelocityArraysOfTheWrongLength) {
+    Packing packing = makePacking();
+    packing.angularVelocities.pop_back();
+    expectError<InvalidPacking>([&] { validatePacking(packing, "src.h5"); },
+                                {"src.h5", "angular velocity", "count mismatch"});
+}
+
+TEST_F(PackingValidation, RejectsInfiniteVelocityAndInfiniteP) {
+    Packing packing = makePacking();
+    packing.velocities[4].z() = std::numeric_limits<double>::infinity();
+    expectError<InvalidPacking>([&] { validatePacking(packing, "src.h5"); },
+                                {"src.h5", "particle 4", "velocity", "non-finite"});
+    packing = makePacking();
+    packing.p = std::numeric_limits<double>::infinity();
+    expectError<InvalidPacking>([&] { validatePacking(packing, "src.h5"); }, {"p = inf"});
+}
+
+TEST_F(PackingValidation, RejectsNanQuaternion) {
+    Packing packing = makePacking();
+    packing.orientations[5].x() = std::nan("");
+    expectError<InvalidPacking>([&] { validatePacking(packing, "src.h5"); },
+                                {"particle 5", "non-finite", "quaternion"});
+}
+
+class TextIo : public TemporaryDirectoryTest {
+  protected:
+    fs::path textFile(const std::string& body, const std::string& name = "packing.txt") {
+        const fs::path path = file(name);
+        std::ofstream(path) << body;
+        return path;
+    }
+    static constexpr const char* kHeader = "# sbpack text packing v1\n# p 1.5\n# semi_axis 0.5\n"
+                                           "# box_length 10\n";
+};
+
+TEST_F(TextIo, RoundTripIsBitExact) {
+    const Packing original = makePacking();
+    const fs::path path = file("round_trip.txt");
+    writeTextPacking(original, path);
+    const Packing read = readTextPacking(path);
+    EXPECT_EQ(read.p, original.p);
+    EXPECT_EQ(read.semiAxis, original.semiAxis);
+    EXPECT_EQ(read.boxLength, original.boxLength);
+    ASSERT_EQ(read.size(), original.size());
+    for (std::size_t i = 0; i < original.size(); ++i) {
+        EXPECT_EQ(read.positions[i], original.positions[i]) << i;
+        EXPECT_EQ(read.orientations[i].coeffs(), original.orientations[i].coeffs()) << i;
+    }
+}
+
+TEST_F(TextIo, ReadsCommentsBlankLinesAndCarriageReturns) {
+    const fs::path path =
+        textFile(std::string(kHeader) + "# n_particles 2\n# a free comment\n\r\n"
+                                        "1 2 3 1 0 0 0\r\n-1 +2 3e0 0 1 0 0\n# trailing\n");
+    const Packing read = readTextPacking(path);
+    ASSERT_EQ(read.size(), 2u);
+    EXPECT_EQ(read.p, 1.5);
+    EXPECT_EQ(read.positions[1], Vector3d(9.0, 2.0, 3.0)); // wrapped
+    EXPECT_EQ(read.orientations[1].x(), 1.0);
+}
+
+TEST_F(TextIo, MalformedLineNamesTheLine) {
+    const fs::path path =
+        textFile(std::string(kHeader) + "# n_particles 2\n1 2 3 1 0 0 0\n1 2 3 1 0 0\n");
+    expectError<PackingFileError>([&] { readTextPacking(path); },
+                                  {"packing.txt", "line 7", "expected 7 numbers", "found 6"});
+}
+
+TEST_F(TextIo, NonNumberNamesTheLine) {
+    const fs::path path = textFile(std::string(kHeader) + "# n_particles 1\n1 2 x 1 0 0 0\n");
+    expectError<PackingFileError>([&] { readTextPacking(path); },
+                                  {"packing.txt", "line 6", "'x' is not a number"});
+}
+
+TEST_F(TextIo, MissingHeaderKey) {
+    const fs::path path = textFile("# sbpack text packing v1\n# p 1.5\n# box_length 10\n"
+                                   "# n_particles 1\n1 2 3 1 0 0 0\n");
+    expectError<PackingFileError>([&] { readTextPacking(path); },
+                                  {"packing.txt", "missing header key 'semi_axis'"});
+}
+
+TEST_F(TextIo, WrongParticleCount) {
+    const fs::path path = textFile(std::string(kHeader) + "# n_particles 3\n1 2 3 1 0 0 0\n");
+    expectError<PackingFileError>([&] { readTextPacking(path); },
+                                  {"packing.txt", "n_particles 3", "1 particle lines"});
+}
+
+TEST_F(TextIo, NotATextPacking) {
+    const fs::path path = textFile("3\nLattice=\"1 0 0 0 1 0 0 0 1\"\n");
+    expectError<PackingFileError>([&] { readTextPacking(path); },
+                                  {"packing.txt", "line 1", "not an sbpack text packing"});
+}
+
+TEST_F(TextIo, NanCoordinateNamesTheParticle) {
+    const fs::path path =
+        textFile(std::string(kHeader) + "# n_particles 2\n1 2 3 1 0 0 0\n1 nan 3 1 0 0 0\n");
+    expectError<InvalidPacking>([&] { readTextPacking(path); },
+                                {"packing.txt", "particle 1", "non-finite"});
+}
+
+TEST_F(TextIo, MissingFile) {
+    expectError<PackingFileError>([&] { readTextPacking(file("absent.txt")); },
+                                  {"absent.txt", "no such file"});
+}
+
+TEST_F(TextIo, ExtendedXyzForOvito) {
+    const Packing packing = makePacking();
+    const fs::path path = file("packing.xyz");
+    writeExtendedXyz(packing, path);
+
+    std::ifstream in(path);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "6");
+    std::getline(in, line);
+    EXPECT_NE(line.find("Lattice=\"10 0 0 0 10 0 0 0 10\""), std::string::npos) << line;
+    EXPECT_NE(line.find("Origin=\"0 0 0\""), std::string::npos) << line;
+    EXPECT_NE(line.find("pbc=\"T T T\""), std::string::npos) << line;
+    EXPECT_NE(line.find("Properties=species:S:1:pos:R:3:orientation:R:4:aspherical_shape:R:3:"
+                        "superquadric_roundness:R:2"),
+              std::string::npos)
+        << line;
+    for (std::size_t i = 0; i < packing.size(); ++i) {
+        ASSERT_TRUE(std::getline(in, line)) << i;
+        std::istringstream fields(line);
+        std::string species;
+        double v[12];
+        fields >> species;
+        for (double& x : v)
+            fields >> x;
+        ASSERT_TRUE(fields) << line;
+        EXPECT_EQ(species, "Superball");
+        const Quaterniond& q = packing.orientations[i];
+        const double expected[12] = {packing.positions[i].x(),
+                                     packing.positions[i].y(),
+                                     packing.positions[i].z(),
+                                     q.x(),
+                                     q.y(),
+                                     q.z(),
+                                     q.w(),
+                                     0.5,
+                                     0.5,
+                                     0.5,
+                                     1.0 / 1.7,
+                                     1.0 / 1.7};
+        for (int k = 0; k < 12; ++k)
+            EXPECT_EQ(v[k], expected[k]) << "particle " << i << " " << k;
+    }
+    EXPECT_FALSE(std::getline(in, line) && !line.empty());
+}
+
+class AtomicOutputTest : public TemporaryDirectoryTest {};
+
+TEST_F(AtomicOutputTest, LeavesNothingWhenNotCommitted) {
+    {
+        AtomicOutput output(file("result.h5"));
+        std::ofstream(output.temporaryPath()) << "partial";
+        EXPECT_EQ(output.temporaryPath().parent_path(), file("result.h5").parent_path());
+        EXPECT_TRUE(fs::exists(output.temporaryPath()));
+    }
+    EXPECT_EQ(entries(), 0u);
+}
+
+TEST_F(AtomicOutputTest, LeavesNoTemporaryWhenCommitted) {
+    std::ofstream(file("result.txt")) << "old";
+    {
+        AtomicOutput output(file("result.txt"));
+        std::ofstream(output.temporaryPath()) << "new";
+        output.commit();
+    }
+    EXPECT_EQ(entries(), 1u);
+    std::string content;
+    std::ifstream(file("result.txt")) >> content;
+    EXPECT_EQ(content, "new");
+}
+
+TEST_F(AtomicOutputTest, CheckWritableRejectsMissingDirectoryAndDirectoryTarget) {
+    expectError<OutputPathError>([&] { checkWritable(file("missing") / "x.h5"); },
+                                 {"missing", "does not exist"});
+    fs::create_directory(file("sub"));
+    expectError<OutputPathError>([&] { checkWritable(file("sub")); }, {"sub", "is a directory"});
+    EXPECT_NO_THROW(checkWritable(file("fine.h5")));
+}
+
+} // namespace
+} // namespace sbpack
