@@ -1,0 +1,52 @@
+#include "info/packing_info.hpp"
+
+#include "io/packing_io.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+
+namespace sbpack {
+
+PackingInfo packingInfo(const std::filesystem::path& file, const ContactParameters& parameters) {
+    Packing packing = readPacking(file);
+    const Superball shape = packing.shape();
+    ContactResult contacts = ContactNetwork(parameters).compute(packing);
+    const double phi = packing.packingFraction();
+    return {std::move(packing), phi, shape.meanWidth(), std::move(contacts)};
+}
+
+void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info,
+                      std::ostream& out) {
+    const Packing& packing = info.packing;
+    const ContactResult& c = info.contacts;
+    const double diameter = 2.0 * packing.semiAxis;
+    out << std::setprecision(10) << file.string() << '\n'
+        << "  particles          N = " << packing.size() << '\n'
+        << "  exponent           p = " << packing.p << '\n'
+        << "  box edge           L = " << packing.boxLength << '\n'
+        << "  semi-axis          R = " << packing.semiAxis << '\n'
+        << "  packing fraction phi = " << info.packingFraction << '\n'
+        << "  mean width         w = " << info.meanWidth << "  (w/D = " << info.meanWidth / diameter
+        << ")\n";
+    if (packing.reducedPressure)
+        out << "  reduced pressure     = " << std::setprecision(4) << *packing.reducedPressure
+            << std::setprecision(10) << '\n';
+    if (c.worstPairA >= 0)
+        out << "  smallest gap         = " << std::setprecision(4) << c.worstGap / diameter
+            << " D  (pair " << c.worstPairA << ", " << c.worstPairB << ")\n";
+    else
+        out << "  smallest gap         > " << c.parameters.tolerance
+            << " D  (no pair within reach)\n";
+    out << std::setprecision(6) << "  contacts (gap < " << c.parameters.tolerance
+        << " D): " << c.contacts.size() << '\n'
+        << "  mean contacts    Z   = " << c.meanContactNumber << "  (non-rattlers)\n"
+        << "  rattler fraction phi_R = " << c.rattlerFraction << "  (fewer than "
+        << c.parameters.rattlerThreshold << " contacts, removed iteratively)\n";
+    if (c.overlappingPairs > 0)
+        out << "  warning: " << c.overlappingPairs << " overlapping pair(s); worst is ("
+            << c.worstPairA << ", " << c.worstPairB << ") with depth " << std::setprecision(4)
+            << -c.worstGap / diameter << " D\n";
+}
+
+} // namespace sbpack

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs the Debian packages sbpack needs, only those missing (apt-get update first).
+set -euo pipefail
+packages=(build-essential cmake pkg-config python3 libeigen3-dev libhdf5-dev libfftw3-dev
+          libtbb-dev libopenvdb-dev libboost-iostreams-dev libimath-dev libgtest-dev
+          libbenchmark-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  sudo=""; [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "installing: ${missing[*]}" >&2
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
