@@ -352,7 +352,7 @@ void generalSignedDistance(const MinkowskiSum& k, const PairTolerances& toleranc
     }
     // Certificate: the contact points are separated by s along n (d - grad H(n) = s n).
     const Vector3d residual = d - k.supportPoint(n) - f * n;
-    if (residual.norm() > tolerances.certificateTolerance * k.shape().diameter()) {
+    if (residual.norm() > tolerances.distanceCertificateTolerance * k.shape().diameter()) {
         // Newton stalled on a kink: maximise f over the tangent plane of n, where f is
         // quasi-concave for s >= 0 (a local maximum, i.e. a bound on the depth, below).
         ++result.fallbacks;

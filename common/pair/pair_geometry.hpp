@@ -23,6 +23,10 @@ struct PairTolerances {
     /// Relative excess of the primal meeting point's gauge over mu that sends the scale
     /// factor to the derivative-free fallback.
     double certificateTolerance = 1e-12;
+    /// Residual |d - grad H(n) - s n| / D above which the signed distance goes to the
+    /// fallback. s is stationary in n, so a residual r costs about r^2 / curvature in s:
+    /// 1e-7 D keeps s exact to ~1e-14 D, while stalls on kinks leave residuals ~0.1 D.
+    double distanceCertificateTolerance = 1e-7;
 };
 
 /// One pair: the two orientations (rotation body -> lab) and the displacement d = r_B - r_A.
