@@ -26,7 +26,7 @@ class MinkowskiSum {
     /// grad H = s_A(u) + s_B(u): the sum of the support points.
     Vector3d supportPoint(const Vector3d& u) const {
         ++evaluations;
-        return supportPointA(u) + rb() * shape().supportPoint(rb().transpose() * u);
+        return supportPointA(u) + supportPointB(u);
     }
     Vector3d supportPointA(const Vector3d& u) const {
         return ra() * shape().supportPoint(ra().transpose() * u);
