@@ -89,7 +89,7 @@ const std::vector<PoolEntry>& poolFor(double p) {
 enum class Start { cold, warm };
 
 /// Times `solve(pair, warmNormal)` over whole passes of the pool, so that every figure is an
-/// exact pool average: seconds per call (ns_per_call is shown in seconds with an SI prefix),
+/// exact pool average: seconds per call (s_per_call, shown with an SI prefix),
 /// Newton iterations per call and derivative-free fallbacks per call.
 template <class Solve> void benchPair(benchmark::State& state, double p, Start start, Solve solve) {
     const std::vector<PoolEntry>& pool = poolFor(p);

@@ -2,7 +2,6 @@
 
 #include "io/packing_io.hpp"
 
-#include <cmath>
 #include <iomanip>
 #include <ostream>
 
@@ -10,10 +9,9 @@ namespace sbpack {
 
 PackingInfo packingInfo(const std::filesystem::path& file, const ContactParameters& parameters) {
     Packing packing = readPacking(file);
-    const Superball shape = packing.shape();
+    const double meanWidth = packing.shape().meanWidth();
     ContactResult contacts = ContactNetwork(parameters).compute(packing);
-    const double phi = packing.packingFraction();
-    return {std::move(packing), phi, shape.meanWidth(), std::move(contacts)};
+    return {std::move(packing), meanWidth, std::move(contacts)};
 }
 
 void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info,
@@ -26,7 +24,7 @@ void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info
         << "  exponent           p = " << packing.p << '\n'
         << "  box edge           L = " << packing.boxLength << '\n'
         << "  semi-axis          R = " << packing.semiAxis << '\n'
-        << "  packing fraction phi = " << info.packingFraction << '\n'
+        << "  packing fraction phi = " << packing.packingFraction() << '\n'
         << "  mean width         w = " << info.meanWidth << "  (w/D = " << info.meanWidth / diameter
         << ")\n";
     if (packing.reducedPressure)

@@ -11,7 +11,6 @@ namespace sbpack {
 
 struct PackingInfo {
     Packing packing;
-    double packingFraction; ///< phi = N v1 / L^3 (closed-form volume)
     double meanWidth;
     ContactResult contacts; ///< Z, phi_R and the worst overlap
 };
