@@ -1,26 +1,122 @@
-// sbgen: Donev-Torquato-Stillinger event-driven MD generator of jammed superball packings.
+// sbgen: serial generator of MRJ packings (Donev-Torquato-Stillinger event-driven MD).
+#include "cli/options.hpp"
+#include "contacts/contact_network.hpp"
+#include "io/packing_io.hpp"
+#include "protocol/jamming_protocol.hpp"
 #include "version.hpp"
 
+#include <chrono>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <iostream>
-#include <string>
 
 namespace {
-constexpr const char* kUsage = R"(usage: sbgen --help | --version
 
-sbgen will generate maximally random jammed packings of superballs by the
-Donev-Torquato-Stillinger event-driven molecular dynamics algorithm. The event-driven
-engine is not part of this version yet: this build answers --help and --version only.
-Stored packings are analysed with sbanalyze (sbanalyze --help).
-)";
+volatile std::sig_atomic_t stopSignal = 0;
+
+void requestStop(int signal) { stopSignal = signal; }
+
+const char* phaseName(sbpack::Phase phase) {
+    switch (phase) {
+    case sbpack::Phase::Fast: return "fast";
+    case sbpack::Phase::Slow: return "slow";
+    case sbpack::Phase::Done: return "done";
+    }
+    return "?";
+}
+
+void printProgress(const sbpack::ProtocolStatus& s, double runSeconds, std::uint64_t runCollisions) {
+    std::fprintf(stderr,
+                 "sbgen: %s  phi %.6f  P %.3e  collisions %.4g  (%.3g M/s)  wall %.1f s\n",
+                 phaseName(s.phase), s.packingFraction, s.reducedPressure,
+                 static_cast<double>(s.collisions),
+                 runSeconds > 0.0 ? runCollisions / runSeconds * 1e-6 : 0.0, s.wallSeconds);
+}
+
+std::filesystem::path interruptCheckpointPath(const sbpack::GeneratorOptions& o) {
+    if (o.checkpoint) return *o.checkpoint;
+    std::filesystem::path path = o.out;
+    return path.replace_extension(".checkpoint.h5");
+}
+
+/// The final packing with the contact analysis of common/ in its provenance.
+sbpack::Packing finalPacking(const sbpack::JammingProtocol& protocol) {
+    sbpack::Packing packing = protocol.checkpoint();
+    const sbpack::ContactResult contacts = sbpack::ContactNetwork({}).compute(packing);
+    packing.provenance["z_mean"] = contacts.meanContactNumber;
+    packing.provenance["rattler_fraction"] = contacts.rattlerFraction;
+    packing.provenance["contact_tolerance"] = contacts.parameters.tolerance;
+    packing.provenance["worst_gap_over_d"] = contacts.worstGap / (2.0 * packing.semiAxis);
+    packing.provenance["overlapping_pairs"] = static_cast<std::int64_t>(contacts.overlappingPairs);
+    return packing;
+}
+
+int generate(const sbpack::GeneratorOptions& o) {
+    using Clock = std::chrono::steady_clock;
+    sbpack::JammingProtocol protocol =
+        o.resume ? sbpack::JammingProtocol(sbpack::readPacking(*o.resume), o.resume->string())
+                 : sbpack::JammingProtocol(o.protocol);
+    if (o.resume && o.pressureFinal) protocol.setPressureFinal(*o.pressureFinal);
+    std::signal(SIGINT, requestStop);
+    std::signal(SIGTERM, requestStop);
+
+    const auto start = Clock::now();
+    auto lastProgress = start, lastCheckpoint = start;
+    const std::uint64_t startCollisions = protocol.status().collisions;
+    const bool done = protocol.run(&stopSignal, [&](const sbpack::ProtocolStatus& s) {
+        const auto now = Clock::now();
+        if (!o.quiet && (now - lastProgress > std::chrono::seconds(2) ||
+                         s.phase == sbpack::Phase::Done)) {
+            printProgress(s, std::chrono::duration<double>(now - start).count(),
+                          s.collisions - startCollisions);
+            lastProgress = now;
+        }
+        if (o.checkpoint &&
+            std::chrono::duration<double>(now - lastCheckpoint).count() >= o.checkpointInterval) {
+            sbpack::writePacking(protocol.checkpoint(), *o.checkpoint);
+            lastCheckpoint = now;
+        }
+    });
+    if (!done) {
+        const std::filesystem::path path = interruptCheckpointPath(o);
+        sbpack::writePacking(protocol.checkpoint(), path);
+        std::cerr << "sbgen: stopped by signal " << stopSignal << "; checkpoint written to "
+                  << path.string() << " (continue with --resume " << path.string() << ")\n";
+        return 128 + stopSignal;
+    }
+    const sbpack::Packing packing = finalPacking(protocol);
+    sbpack::writePacking(packing, o.out);
+    if (!o.quiet)
+        std::fprintf(stderr, "sbgen: wrote %s: phi %.6f  P %.3e  Z %.4f  phi_R %.4f\n",
+                     o.out.c_str(), packing.packingFraction(), *packing.reducedPressure,
+                     std::get<double>(packing.provenance.at("z_mean")),
+                     std::get<double>(packing.provenance.at("rattler_fraction")));
+    return EXIT_SUCCESS;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
-    const std::string arg = argc > 1 ? argv[1] : "";
-    if (arg == "--version") {
-        std::cout << "sbgen " << sbpack::kVersion << '\n';
-        return EXIT_SUCCESS;
+    if (argc == 1) {
+        std::cerr << sbpack::kGeneratorUsage;
+        return EXIT_FAILURE;
     }
-    std::cout << kUsage;
-    return arg == "--help" || arg == "-h" ? EXIT_SUCCESS : EXIT_FAILURE;
+    try {
+        const sbpack::GeneratorOptions o =
+            sbpack::parseGeneratorOptions(std::vector<std::string>(argv + 1, argv + argc));
+        if (o.help) {
+            std::cout << sbpack::kGeneratorUsage;
+            return EXIT_SUCCESS;
+        }
+        if (o.version) {
+            std::cout << "sbgen " << sbpack::kVersion << '\n';
+            return EXIT_SUCCESS;
+        }
+        return generate(o);
+    } catch (const std::exception& e) {
+        std::cerr << "sbgen: error: " << e.what() << '\n';
+        return EXIT_FAILURE;
+    }
 }

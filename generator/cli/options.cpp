@@ -1,0 +1,136 @@
+#include "cli/options.hpp"
+
+#include "io/atomic_file.hpp"
+
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+namespace sbpack {
+
+const char* const kGeneratorUsage = R"(usage: sbgen --out FILE.h5 [options]
+       sbgen --resume CHECKPOINT.h5 --out FILE.h5 [--pressure-final P] [--checkpoint FILE.h5]
+
+Generates a maximally random jammed packing with the Donev-Torquato-Stillinger event-driven
+molecular dynamics: N particles start at random (phi-init), fly, collide elastically and grow
+at rate gamma (dD/dt = gamma sqrt(kT/m)) until the reduced pressure P = PV/(NkT) diverges.
+
+  --p P                   superball exponent (default 1: spheres; this version: spheres only)
+  --n N                   number of particles (default 1000)
+  --seed S                random seed (default 1); same seed and options: identical packing
+  --phi-init PHI          initial packing fraction in (0, 0.5) (default 0.2, as the paper)
+  --gamma-fast G          growth rate until --pressure-switch (default 0.01)
+  --gamma-slow G          growth rate from there to --pressure-final (default 0.001)
+  --pressure-switch P     reduced pressure at which growth slows (default 1e6)
+  --pressure-final P      reduced pressure at which the packing is jammed (default 1e12)
+  --window W              collisions per particle between thermostat rescalings and
+                          pressure estimates (default 10)
+  --out FILE.h5           the packing (sbpack.packing format; see README), written atomically
+  --checkpoint FILE.h5    write a checkpoint there every --checkpoint-interval seconds
+  --checkpoint-interval S wall-clock seconds between checkpoints (default 600)
+  --resume FILE.h5        continue from a checkpoint (or a finished sbgen output, e.g. with a
+                          higher --pressure-final); the protocol options come from the file
+  --quiet                 no progress lines on stderr
+  --help, --version
+
+SIGINT or SIGTERM writes a checkpoint (to --checkpoint, else OUT with .checkpoint.h5) and exits.
+)";
+
+namespace {
+
+double number(const std::string& option, const std::string& text) {
+    try {
+        std::size_t used = 0;
+        const double value = std::stod(text, &used);
+        if (used == text.size()) return value;
+    } catch (const std::exception&) {
+    }
+    throw std::invalid_argument("option " + option + ": '" + text + "' is not a number");
+}
+
+std::int64_t integer(const std::string& option, const std::string& text) {
+    const double value = number(option, text);
+    if (value != std::floor(value) || std::abs(value) > 9.0e15)
+        throw std::invalid_argument("option " + option + ": '" + text + "' is not an integer");
+    return static_cast<std::int64_t>(value);
+}
+
+} // namespace
+
+GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args) {
+    GeneratorOptions o;
+    std::set<std::string> protocolOptions;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (a == "--help" || a == "-h") {
+            o.help = true;
+            continue;
+        }
+        if (a == "--version") {
+            o.version = true;
+            continue;
+        }
+        if (a == "--quiet") {
+            o.quiet = true;
+            continue;
+        }
+        if (a.rfind("--", 0) != 0) throw std::invalid_argument("unexpected argument '" + a + "'");
+        if (i + 1 == args.size()) throw std::invalid_argument("option " + a + " needs a value");
+        const std::string& v = args[++i];
+        ProtocolParameters& p = o.protocol;
+        if (a == "--out") {
+            o.out = v;
+        } else if (a == "--checkpoint") {
+            o.checkpoint = v;
+        } else if (a == "--checkpoint-interval") {
+            o.checkpointInterval = number(a, v);
+            if (!(o.checkpointInterval > 0.0))
+                throw std::invalid_argument("option " + a + ": must be positive");
+        } else if (a == "--resume") {
+            o.resume = v;
+        } else if (a == "--pressure-final") {
+            o.pressureFinal = p.pressureFinal = number(a, v);
+        } else {
+            protocolOptions.insert(a);
+            if (a == "--p") {
+                p.p = number(a, v);
+            } else if (a == "--n") {
+                const std::int64_t n = integer(a, v);
+                if (n < 2 || n > 100000000)
+                    throw std::invalid_argument("option --n: need at least 2 particles");
+                p.particles = static_cast<int>(n);
+            } else if (a == "--seed") {
+                const std::int64_t s = integer(a, v);
+                if (s < 0) throw std::invalid_argument("option --seed: must be non-negative");
+                p.seed = static_cast<std::uint64_t>(s);
+            } else if (a == "--phi-init") {
+                p.phiInit = number(a, v);
+            } else if (a == "--gamma-fast") {
+                p.gammaFast = number(a, v);
+            } else if (a == "--gamma-slow") {
+                p.gammaSlow = number(a, v);
+            } else if (a == "--pressure-switch") {
+                p.pressureSwitch = number(a, v);
+            } else if (a == "--window") {
+                p.collisionsPerWindow = number(a, v);
+            } else {
+                throw std::invalid_argument("unknown option " + a + " (see sbgen --help)");
+            }
+        }
+    }
+    if (o.help || o.version) return o;
+    if (o.out.empty()) throw std::invalid_argument("option --out: an output file is required");
+    if (o.resume) {
+        if (!protocolOptions.empty())
+            throw std::invalid_argument("option " + *protocolOptions.begin() +
+                                        ": the protocol comes from the --resume file and cannot "
+                                        "change (only --pressure-final can)");
+    } else {
+        o.protocol.validate();
+    }
+    checkWritable(o.out);
+    if (o.checkpoint) checkWritable(*o.checkpoint);
+    return o;
+}
+
+} // namespace sbpack

@@ -1,0 +1,30 @@
+#pragma once
+// sbgen's command line: parsing and validation before any work starts.
+
+#include "protocol/jamming_protocol.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sbpack {
+
+struct GeneratorOptions {
+    ProtocolParameters protocol;
+    std::filesystem::path out;
+    std::optional<std::filesystem::path> checkpoint;
+    double checkpointInterval = 600.0; ///< seconds of wall time between checkpoints
+    std::optional<std::filesystem::path> resume;
+    std::optional<double> pressureFinal; ///< given explicitly (the only change allowed on resume)
+    bool quiet = false;
+    bool help = false;
+    bool version = false;
+};
+
+extern const char* const kGeneratorUsage;
+
+/// Throws std::invalid_argument naming the option and the problem.
+GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args);
+
+} // namespace sbpack

@@ -1,0 +1,248 @@
+#pragma once
+// Event-driven molecular dynamics of identical growing hard bodies in a cubic periodic box
+// (Donev-Torquato-Stillinger; DESIGN.md §3). Layers (STYLE.md): EventQueue (no physics),
+// NeighbourLists (which pairs to test), the Shape (predictor and contact), resolveCollision
+// (impulse). Each particle holds its earliest predicted collision and the time it leaves its
+// neighbour-list sphere; a collision is stale when the partner's event counter has moved on
+// since the prediction.
+//
+// Particles are advanced lazily (each has its own time stamp). run() ends synchronised: every
+// particle is advanced to the final time, wrapped into [0, L), and that time becomes the new time
+// origin, folded into the growth clock. The synchronised state plus the clock is the whole state:
+// rebuilding the events from it is deterministic, which makes checkpoints exact.
+
+#include "engine/collision_resolver.hpp"
+#include "engine/growth_clock.hpp"
+#include "events/event_queue.hpp"
+#include "neighbours/neighbour_lists.hpp"
+#include "packing/packing.hpp"
+#include "shapes/pair_motion.hpp"
+
+#include <csignal>
+#include <cstdint>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace sbpack {
+
+struct ParticleState {
+    Vector3d position;
+    Vector3d velocity;
+};
+
+struct EngineParameters {
+    /// Lists are built for diameters up to D (1 + growthMargin); the engine synchronises and
+    /// rebuilds them when the growing diameter gets there.
+    double growthMargin = 0.02;
+    /// Neighbour-list skin in units of D: a particle is relisted after moving skin D / 2.
+    double skin = 0.1;
+};
+
+/// What one run() did.
+struct RunReport {
+    double duration = 0.0; ///< engine time advanced
+    std::uint64_t collisions = 0;
+    std::uint64_t relists = 0; ///< neighbour-list exits
+    std::uint64_t staleEvents = 0;
+    /// sum over collisions of r_ij . Delta p_j (the collision virial, DESIGN.md §3)
+    double virial = 0.0;
+    bool interrupted = false;
+};
+
+template <class Shape> class EventDrivenMd {
+  public:
+    EventDrivenMd(Shape shape, double boxLength, std::vector<ParticleState> particles,
+                  GrowthClock clock, EngineParameters parameters = {})
+        : shape_(shape), box_(boxLength), state_(std::move(particles)), clock_(clock),
+          parameters_(parameters) {}
+
+    int size() const { return static_cast<int>(state_.size()); }
+    double boxLength() const { return box_; }
+    const GrowthClock& clock() const { return clock_; }
+    double diameter() const { return clock_.diameter(); }
+    /// The synchronised particles (valid between runs).
+    const std::vector<ParticleState>& particles() const { return state_; }
+
+    /// kT = m <v^2> / 3 with m = 1.
+    double kineticTemperature() const {
+        double sum = 0.0;
+        for (const ParticleState& s : state_) sum += s.velocity.squaredNorm();
+        return sum / (3.0 * size());
+    }
+    void scaleVelocities(double factor) {
+        for (ParticleState& s : state_) s.velocity *= factor;
+        dirty_ = true;
+    }
+    void setGrowthRate(double gamma) {
+        clock_.setRate(gamma);
+        dirty_ = true;
+    }
+
+    /// Processes events until `maxCollisions` collisions, engine time `maxDuration`, or *stop
+    /// becomes nonzero (checked every event); then synchronises. Growth past the lists' design
+    /// diameter synchronises and rebuilds them on the way.
+    RunReport run(std::uint64_t maxCollisions, double maxDuration = kNever,
+                  const volatile std::sig_atomic_t* stop = nullptr) {
+        RunReport report;
+        while (report.collisions < maxCollisions && !report.interrupted) {
+            if (dirty_) rebuild();
+            const double limit = std::min(horizon_, maxDuration - report.duration);
+            double now = 0.0;
+            bool limitReached = false;
+            while (report.collisions < maxCollisions) {
+                if (stop != nullptr && *stop != 0) {
+                    report.interrupted = true;
+                    break;
+                }
+                const int i = queue_.top();
+                const double t = queue_.topTime();
+                if (t > limit) {
+                    limitReached = true;
+                    if (limit != kNever) now = limit;
+                    break;
+                }
+                now = t;
+                if (exit_[i] <= collision_[i].time) {
+                    relist(i, t);
+                    ++report.relists;
+                } else {
+                    collide(i, t, report);
+                }
+            }
+            synchronize(now);
+            report.duration += now;
+            if (limitReached && (limit < horizon_ || limit == kNever)) break; // maxDuration, or no event ever
+        }
+        return report;
+    }
+
+  private:
+    static constexpr double kNever = std::numeric_limits<double>::infinity();
+
+    struct PredictedCollision {
+        double time = kNever;
+        int partner = -1;
+        std::uint64_t partnerCounter = 0;
+    };
+    void advance(int i, double t) {
+        state_[i].position += state_[i].velocity * (t - time_[i]);
+        time_[i] = t;
+    }
+
+    /// The pair at time t in its local frame: the minimum-image displacement of the stored
+    /// positions first, then each particle's own flight since its time stamp.
+    PairMotion motion(int i, int j, double t) const {
+        PairMotion m;
+        m.displacement = minimumImage(state_[j].position - state_[i].position, box_) +
+                         state_[j].velocity * (t - time_[j]) - state_[i].velocity * (t - time_[i]);
+        m.relativeVelocity = state_[j].velocity - state_[i].velocity;
+        m.diameter = clock_.diameter(t);
+        m.growthRate = clock_.rate;
+        return m;
+    }
+
+    void schedule(int i) { queue_.set(i, std::min(collision_[i].time, exit_[i])); }
+
+    void consider(int i, int j, double t) {
+        const double when = t + shape_.collisionTime(motion(i, j, t));
+        if (when < collision_[i].time) collision_[i] = {when, j, counter_[j]};
+    }
+
+    /// i's earliest collision with any listed neighbour, predicted at time t.
+    void predict(int i, double t) {
+        collision_[i] = {};
+        for (const int j : lists_.of(i)) consider(i, j, t);
+        schedule(i);
+    }
+
+    /// When i gets skin D / 2 away from its anchor: |e + v tau| = s with e = r_i - anchor, the
+    /// positive root of v.v tau^2 + 2 e.v tau + (e.e - s^2) = 0 in cancellation-free form.
+    void predictExit(int i) {
+        const Vector3d e = state_[i].position - lists_.anchor(i);
+        const Vector3d& v = state_[i].velocity;
+        const double a = v.squaredNorm(), b = e.dot(v), c = e.squaredNorm() - exitRadius_ * exitRadius_;
+        const double root = std::sqrt(std::max(0.0, b * b - a * c));
+        exit_[i] = a == 0.0 ? kNever
+                            : time_[i] + (b > 0.0 ? std::max(0.0, -c) / (b + root) : (root - b) / a);
+    }
+
+    void relist(int i, double t) {
+        advance(i, t);
+        lists_.reanchor(i, state_[i].position);
+        predictExit(i);
+        predict(i, t);
+    }
+
+    void collide(int i, double t, RunReport& report) {
+        const PredictedCollision event = collision_[i];
+        const int j = event.partner;
+        if (counter_[j] != event.partnerCounter) {
+            ++report.staleEvents;
+            predict(i, t);
+            return;
+        }
+        advance(i, t);
+        advance(j, t);
+        const PairMotion m = motion(i, j, t);
+        const PairContact contact = shape_.contact(m);
+        const double impulse =
+            resolveCollision(m, contact, state_[i].velocity, state_[j].velocity);
+        report.virial += impulse * contact.normal.dot(m.displacement);
+        ++report.collisions;
+        ++counter_[i];
+        ++counter_[j];
+        predictExit(i);
+        predictExit(j);
+        predict(i, t);
+        predict(j, t);
+    }
+
+    void synchronize(double t) {
+        for (int i = 0; i < size(); ++i) {
+            advance(i, t);
+            state_[i].position = wrapIntoBox(state_[i].position, box_);
+        }
+        clock_.advance(t);
+        dirty_ = true;
+    }
+
+    /// Lists and every prediction from the synchronised state (time origin 0).
+    void rebuild() {
+        const double d = clock_.diameter();
+        const double maximum = d * (1.0 + parameters_.growthMargin);
+        if (!(2.0 * maximum < box_))
+            throw std::runtime_error("the particle diameter reached half the box length: too few "
+                                     "particles for a periodic packing (use more)");
+        horizon_ = clock_.rate > 0.0 ? (maximum - d) / clock_.rate : kNever;
+        exitRadius_ = 0.5 * parameters_.skin * d;
+        std::vector<Vector3d> anchors(size());
+        for (int i = 0; i < size(); ++i) anchors[i] = state_[i].position;
+        lists_ = NeighbourLists(box_, maximum + 2.0 * exitRadius_, std::move(anchors));
+        time_.assign(size(), 0.0);
+        counter_.assign(size(), 0);
+        collision_.assign(size(), {});
+        exit_.assign(size(), kNever);
+        queue_ = EventQueue(size());
+        for (int i = 0; i < size(); ++i) predictExit(i);
+        for (int i = 0; i < size(); ++i) predict(i, 0.0);
+        dirty_ = false;
+    }
+
+    Shape shape_;
+    double box_;
+    std::vector<ParticleState> state_;
+    GrowthClock clock_;
+    EngineParameters parameters_;
+    NeighbourLists lists_;
+    EventQueue queue_;
+    std::vector<double> time_;
+    std::vector<std::uint64_t> counter_;
+    std::vector<PredictedCollision> collision_;
+    std::vector<double> exit_; ///< time each particle leaves its neighbour-list sphere
+    double horizon_ = kNever;
+    double exitRadius_ = 0.0;
+    bool dirty_ = true;
+};
+
+} // namespace sbpack

@@ -1,0 +1,189 @@
+#include "protocol/jamming_protocol.hpp"
+
+#include "geometry/superball.hpp"
+#include "initial/random_start.hpp"
+#include "version.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace sbpack {
+namespace {
+
+constexpr const char* kStateFormat = "sbgen.state/1";
+
+void require(bool ok, const std::string& option, const std::string& problem) {
+    if (!ok) throw std::invalid_argument("option " + option + ": " + problem);
+}
+
+bool positiveFinite(double x) { return std::isfinite(x) && x > 0.0; }
+
+EventDrivenMd<SphereShape> freshEngine(const ProtocolParameters& parameters) {
+    Random random(parameters.seed);
+    const double box = boxLengthFor(parameters.particles, Superball(1.0, 0.5).volume(),
+                                    parameters.phiInit);
+    const std::vector<Vector3d> positions =
+        randomSpherePositions(parameters.particles, box, random);
+    const std::vector<Vector3d> velocities = maxwellVelocities(parameters.particles, random);
+    std::vector<ParticleState> state(parameters.particles);
+    for (int i = 0; i < parameters.particles; ++i) state[i] = {positions[i], velocities[i]};
+    return EventDrivenMd<SphereShape>(SphereShape{}, box, std::move(state),
+                                      GrowthClock{1.0, 0.0, parameters.gammaFast});
+}
+
+template <class T> T stateValue(const Packing& packing, const std::string& key,
+                                const std::string& source) {
+    const auto found = packing.provenance.find(key);
+    if (found == packing.provenance.end() || !std::holds_alternative<T>(found->second))
+        throw std::invalid_argument("'" + source + "': not an sbgen checkpoint (provenance '" +
+                                    key + "' missing or of the wrong type)");
+    return std::get<T>(found->second);
+}
+
+std::uint64_t counterValue(const Packing& packing, const std::string& key,
+                           const std::string& source) {
+    return static_cast<std::uint64_t>(stateValue<std::int64_t>(packing, key, source));
+}
+
+} // namespace
+
+void ProtocolParameters::validate() const {
+    require(particles >= 2, "--n", "need at least 2 particles");
+    require(p == 1.0, "--p", "sbgen generates spheres (p = 1) only in this version");
+    require(std::isfinite(phiInit) && phiInit > 0.0 && phiInit < 0.5, "--phi-init",
+            "must be in (0, 0.5)");
+    require(positiveFinite(gammaFast), "--gamma-fast", "must be positive and finite");
+    require(positiveFinite(gammaSlow), "--gamma-slow", "must be positive and finite");
+    require(positiveFinite(pressureSwitch), "--pressure-switch", "must be positive and finite");
+    require(positiveFinite(pressureFinal), "--pressure-final", "must be positive and finite");
+    require(pressureFinal > pressureSwitch, "--pressure-final",
+            "must be larger than --pressure-switch");
+    require(positiveFinite(collisionsPerWindow), "--window", "must be positive and finite");
+}
+
+JammingProtocol::JammingProtocol(const ProtocolParameters& parameters)
+    : parameters_((parameters.validate(), parameters)), engine_(freshEngine(parameters)) {
+    status_.packingFraction = checkpoint().packingFraction();
+}
+
+JammingProtocol::JammingProtocol(const Packing& packing, const std::string& source)
+    : engine_(SphereShape{}, packing.boxLength, {}, {}) {
+    if (stateValue<std::string>(packing, "state_format", source) != kStateFormat)
+        throw std::invalid_argument("'" + source + "': checkpoint state format is not " +
+                                    std::string(kStateFormat));
+    if (packing.velocities.size() != packing.size())
+        throw std::invalid_argument("'" + source + "': checkpoint without velocities");
+    parameters_.particles = static_cast<int>(packing.size());
+    parameters_.p = packing.p;
+    parameters_.seed = counterValue(packing, "seed", source);
+    parameters_.phiInit = stateValue<double>(packing, "phi_init", source);
+    parameters_.gammaFast = stateValue<double>(packing, "gamma_fast", source);
+    parameters_.gammaSlow = stateValue<double>(packing, "gamma_slow", source);
+    parameters_.pressureSwitch = stateValue<double>(packing, "pressure_switch", source);
+    parameters_.pressureFinal = stateValue<double>(packing, "pressure_final", source);
+    parameters_.collisionsPerWindow = stateValue<double>(packing, "collisions_per_window", source);
+    parameters_.validate();
+    status_.phase = static_cast<Phase>(stateValue<std::int64_t>(packing, "state_phase", source));
+    status_.reducedPressure = stateValue<double>(packing, "final_reduced_pressure", source);
+    status_.collisions = counterValue(packing, "collisions", source);
+    status_.relists = counterValue(packing, "relists", source);
+    status_.staleEvents = counterValue(packing, "stale_events", source);
+    status_.windows = counterValue(packing, "windows", source);
+    status_.wallSeconds = stateValue<double>(packing, "wall_time_s", source);
+    status_.packingFraction = packing.packingFraction();
+    const GrowthClock clock{stateValue<double>(packing, "state_base_diameter", source),
+                            stateValue<double>(packing, "state_growth_elapsed", source),
+                            stateValue<double>(packing, "state_growth_rate", source)};
+    std::vector<ParticleState> state(packing.size());
+    for (std::size_t i = 0; i < packing.size(); ++i)
+        state[i] = {packing.positions[i], packing.velocities[i]};
+    engine_ = EventDrivenMd<SphereShape>(SphereShape{}, packing.boxLength, std::move(state),
+                                         clock);
+}
+
+void JammingProtocol::setPressureFinal(double pressure) {
+    ProtocolParameters changed = parameters_;
+    changed.pressureFinal = pressure;
+    changed.validate();
+    parameters_ = changed;
+    if (status_.phase == Phase::Done && status_.reducedPressure < pressure)
+        status_.phase = Phase::Slow;
+}
+
+bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
+                          const std::function<void(const ProtocolStatus&)>& onWindow) {
+    using Clock = std::chrono::steady_clock;
+    const std::uint64_t perWindow = static_cast<std::uint64_t>(
+        std::ceil(parameters_.collisionsPerWindow * parameters_.particles));
+    while (status_.phase != Phase::Done) {
+        const auto start = Clock::now();
+        const RunReport report = engine_.run(perWindow, INFINITY, stop);
+        status_.collisions += report.collisions;
+        status_.relists += report.relists;
+        status_.staleEvents += report.staleEvents;
+        status_.wallSeconds += std::chrono::duration<double>(Clock::now() - start).count();
+        if (report.interrupted) return false;
+        finishWindow(report.virial, report.duration);
+        onWindow(status_);
+    }
+    return true;
+}
+
+void JammingProtocol::finishWindow(double virial, double duration) {
+    // The window started at kT = 1 (rescaled); average with its end for the virial (DESIGN.md §3).
+    const double kT = 0.5 * (1.0 + engine_.kineticTemperature());
+    const int n = parameters_.particles;
+    status_.reducedPressure = 1.0 + virial / (3.0 * n * kT * duration);
+    ++status_.windows;
+    engine_.scaleVelocities(1.0 / std::sqrt(engine_.kineticTemperature()));
+    if (status_.phase == Phase::Fast && status_.reducedPressure >= parameters_.pressureSwitch) {
+        status_.phase = Phase::Slow;
+        engine_.setGrowthRate(parameters_.gammaSlow);
+    }
+    if (status_.phase == Phase::Slow && status_.reducedPressure >= parameters_.pressureFinal)
+        status_.phase = Phase::Done;
+    status_.packingFraction =
+        n * Superball(parameters_.p, 0.5 * engine_.diameter()).volume() /
+        std::pow(engine_.boxLength(), 3);
+}
+
+Packing JammingProtocol::checkpoint() const {
+    Packing packing;
+    packing.p = parameters_.p;
+    packing.semiAxis = 0.5 * engine_.diameter();
+    packing.boxLength = engine_.boxLength();
+    for (const ParticleState& s : engine_.particles()) {
+        packing.positions.push_back(s.position);
+        packing.orientations.push_back(Quaterniond::Identity());
+        packing.velocities.push_back(s.velocity);
+    }
+    packing.reducedPressure = status_.reducedPressure;
+    packing.seed = parameters_.seed;
+    packing.generatorVersion = kVersion;
+    auto& log = packing.provenance;
+    log["generator"] = std::string("sbgen (DTS event-driven MD)");
+    log["seed"] = static_cast<std::int64_t>(parameters_.seed);
+    log["phi_init"] = parameters_.phiInit;
+    log["gamma_fast"] = parameters_.gammaFast;
+    log["gamma_slow"] = parameters_.gammaSlow;
+    log["pressure_switch"] = parameters_.pressureSwitch;
+    log["pressure_final"] = parameters_.pressureFinal;
+    log["collisions_per_window"] = parameters_.collisionsPerWindow;
+    log["final_reduced_pressure"] = status_.reducedPressure;
+    log["collisions"] = static_cast<std::int64_t>(status_.collisions);
+    log["relists"] = static_cast<std::int64_t>(status_.relists);
+    log["stale_events"] = static_cast<std::int64_t>(status_.staleEvents);
+    log["events"] = static_cast<std::int64_t>(status_.collisions + status_.relists +
+                                              status_.staleEvents);
+    log["windows"] = static_cast<std::int64_t>(status_.windows);
+    log["wall_time_s"] = status_.wallSeconds;
+    log["state_format"] = std::string(kStateFormat);
+    log["state_phase"] = static_cast<std::int64_t>(status_.phase);
+    log["state_base_diameter"] = engine_.clock().baseDiameter;
+    log["state_growth_elapsed"] = engine_.clock().elapsed;
+    log["state_growth_rate"] = engine_.clock().rate;
+    return packing;
+}
+
+} // namespace sbpack

@@ -1,0 +1,77 @@
+#pragma once
+// The DTS jamming protocol (paper Sec. III A, DESIGN.md §3): grow fast (gamma_fast) until the
+// reduced pressure reaches pressureSwitch, then slowly (gamma_slow) until pressureFinal. Work
+// proceeds in windows of `collisionsPerWindow * N` collisions; after each window the collision
+// virial gives the reduced pressure, velocities are rescaled to kT = 1, and the whole state is
+// synchronised, so it can be checkpointed and resumed bit for bit.
+
+#include "engine/event_driven_md.hpp"
+#include "packing/packing.hpp"
+#include "shapes/sphere.hpp"
+
+#include <csignal>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+namespace sbpack {
+
+struct ProtocolParameters {
+    int particles = 1000;
+    double p = 1.0;
+    std::uint64_t seed = 1;
+    double phiInit = 0.2;
+    double gammaFast = 0.01;
+    double gammaSlow = 0.001;
+    double pressureSwitch = 1e6;
+    double pressureFinal = 1e12;
+    double collisionsPerWindow = 10.0; ///< per particle, between thermostat rescalings
+
+    /// Throws std::invalid_argument naming the command-line option of the first bad value.
+    void validate() const;
+};
+
+enum class Phase { Fast, Slow, Done };
+
+struct ProtocolStatus {
+    Phase phase = Phase::Fast;
+    double reducedPressure = 0.0;
+    double packingFraction = 0.0;
+    std::uint64_t collisions = 0;
+    std::uint64_t relists = 0; ///< neighbour-list rebuilds of single particles
+    std::uint64_t staleEvents = 0;
+    std::uint64_t windows = 0;
+    double wallSeconds = 0.0; ///< summed over the run and every resumed part
+};
+
+class JammingProtocol {
+  public:
+    /// A fresh run: random start from the seed.
+    explicit JammingProtocol(const ProtocolParameters& parameters);
+    /// Continues from a checkpoint written by checkpoint(); throws std::invalid_argument naming
+    /// `source` if the packing carries no sbgen state.
+    JammingProtocol(const Packing& checkpoint, const std::string& source);
+
+    /// Runs windows until Phase::Done or *stop; calls onWindow after every window (with the
+    /// protocol synchronised, so checkpoint() may be called there). Returns true when done.
+    bool run(const volatile std::sig_atomic_t* stop,
+             const std::function<void(const ProtocolStatus&)>& onWindow);
+
+    const ProtocolParameters& parameters() const { return parameters_; }
+    /// Only the final pressure may change on resume (e.g. to continue from 1e12 to 1e14).
+    void setPressureFinal(double pressure);
+    const ProtocolStatus& status() const { return status_; }
+
+    /// The synchronised state as a packing whose provenance holds every parameter and the exact
+    /// engine state (readable by the resume constructor).
+    Packing checkpoint() const;
+
+  private:
+    void finishWindow(double virial, double duration);
+
+    ProtocolParameters parameters_;
+    ProtocolStatus status_;
+    EventDrivenMd<SphereShape> engine_;
+};
+
+} // namespace sbpack

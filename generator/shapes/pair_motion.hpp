@@ -1,0 +1,31 @@
+#pragma once
+// What a shape's predictor and contact function see of a pair: everything in the pair's local
+// frame (displacement first, then motion), so gaps of 1e-13 D survive (DESIGN.md §2).
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+namespace sbpack {
+
+using Eigen::Quaterniond;
+using Eigen::Vector3d;
+
+/// Two identical bodies i and j at the current time.
+struct PairMotion {
+    Vector3d displacement;     ///< r_j - r_i (minimum image)
+    Vector3d relativeVelocity; ///< v_j - v_i
+    Quaterniond orientationI = Quaterniond::Identity(), orientationJ = Quaterniond::Identity();
+    Vector3d angularVelocityI = Vector3d::Zero(), angularVelocityJ = Vector3d::Zero();
+    double diameter;   ///< D now
+    double growthRate; ///< dD/dt = gamma
+};
+
+/// Where two touching bodies meet.
+struct PairContact {
+    Vector3d normal; ///< unit, from i towards j
+    Vector3d armI;   ///< contact point minus r_i
+    Vector3d armJ;   ///< contact point minus r_j
+    double centreDistance;
+};
+
+} // namespace sbpack
