@@ -1,0 +1,110 @@
+// The protocol: bad parameters, determinism, and exact checkpoint/resume through the HDF5 file.
+#include "io/packing_io.hpp"
+#include "protocol/jamming_protocol.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <optional>
+
+namespace sbpack {
+namespace {
+
+ProtocolParameters smallRun(std::uint64_t seed) {
+    ProtocolParameters p;
+    p.particles = 64;
+    p.seed = seed;
+    p.gammaFast = 0.05;
+    p.gammaSlow = 0.01;
+    p.pressureSwitch = 1e3;
+    p.pressureFinal = 1e7;
+    return p;
+}
+
+void expectIdentical(const Packing& a, const Packing& b) {
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ(a.semiAxis, b.semiAxis);
+    EXPECT_EQ(*a.reducedPressure, *b.reducedPressure);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a.positions[i], b.positions[i]) << i;
+        EXPECT_EQ(a.velocities[i], b.velocities[i]) << i;
+    }
+    for (const auto& [key, value] : a.provenance)
+        if (key != "wall_time_s") {
+            EXPECT_EQ(value, b.provenance.at(key)) << key;
+        }
+}
+
+TEST(JammingProtocol, RejectsBadParametersNamingTheOption) {
+    const auto expectBad = [](auto change, const char* option) {
+        ProtocolParameters p;
+        change(p);
+        try {
+            p.validate();
+            ADD_FAILURE() << option << " accepted";
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find(option), std::string::npos) << e.what();
+        }
+    };
+    expectBad([](auto& p) { p.particles = 1; }, "--n");
+    expectBad([](auto& p) { p.phiInit = 0.5; }, "--phi-init");
+    expectBad([](auto& p) { p.phiInit = 0.0; }, "--phi-init");
+    expectBad([](auto& p) { p.gammaFast = -0.01; }, "--gamma-fast");
+    expectBad([](auto& p) { p.gammaSlow = NAN; }, "--gamma-slow");
+    expectBad([](auto& p) { p.pressureSwitch = INFINITY; }, "--pressure-switch");
+    expectBad([](auto& p) { p.pressureFinal = p.pressureSwitch; }, "--pressure-final");
+}
+
+TEST(JammingProtocol, SameSeedGivesIdenticalPacking) {
+    JammingProtocol a(smallRun(5)), b(smallRun(5)), c(smallRun(6));
+    ASSERT_TRUE(a.run(nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(b.run(nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(c.run(nullptr, [](const ProtocolStatus&) {}));
+    expectIdentical(a.checkpoint(), b.checkpoint());
+    EXPECT_NE(a.checkpoint().positions[0], c.checkpoint().positions[0]);
+    EXPECT_GE(a.status().reducedPressure, 1e7);
+}
+
+TEST(JammingProtocol, ResumingFromACheckpointFileGivesTheUninterruptedResult) {
+    JammingProtocol uninterrupted(smallRun(9));
+    std::optional<Packing> saved;
+    ASSERT_TRUE(uninterrupted.run(nullptr, [&](const ProtocolStatus& s) {
+        if (s.windows == 40) saved = uninterrupted.checkpoint();
+    }));
+    ASSERT_TRUE(saved.has_value());
+    const auto file = std::filesystem::temp_directory_path() / "sbgen-test-checkpoint.h5";
+    writePacking(*saved, file);
+    JammingProtocol resumed(readPacking(file), file.string());
+    std::filesystem::remove(file);
+    EXPECT_EQ(resumed.status().windows, 40u);
+    ASSERT_TRUE(resumed.run(nullptr, [](const ProtocolStatus&) {}));
+    expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
+}
+
+TEST(JammingProtocol, AFinishedRunContinuesToAHigherFinalPressure) {
+    JammingProtocol run(smallRun(3));
+    ASSERT_TRUE(run.run(nullptr, [](const ProtocolStatus&) {}));
+    JammingProtocol more(run.checkpoint(), "memory");
+    more.setPressureFinal(1e9);
+    ASSERT_TRUE(more.run(nullptr, [](const ProtocolStatus&) {}));
+    EXPECT_GE(more.status().reducedPressure, 1e9);
+    EXPECT_GT(more.status().collisions, run.status().collisions);
+}
+
+TEST(JammingProtocol, APackingWithoutGeneratorStateIsNotACheckpoint) {
+    Packing plain;
+    plain.positions = {{0.1, 0.1, 0.1}, {0.6, 0.6, 0.6}};
+    plain.orientations.assign(2, Quaterniond::Identity());
+    plain.velocities.assign(2, Vector3d::Zero());
+    plain.semiAxis = 0.1;
+    try {
+        JammingProtocol(plain, "plain.h5");
+        FAIL() << "accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("plain.h5': not an sbgen checkpoint"), std::string::npos)
+            << e.what();
+    }
+}
+
+} // namespace
+} // namespace sbpack
