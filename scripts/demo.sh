@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Sets everything up and runs the main job on a small default scene: sbgen jams 250 spheres
+# (a quick slow phase, gamma-slow 1e-3)
 # (seed 1) to reduced pressure 1e12 in about ten seconds; sbanalyze validates the packing and reports
 # phi, the mean width, contacts Z and rattlers, and exports it for OVITO.
 set -euo pipefail
@@ -7,6 +8,6 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 scripts/build.sh
 mkdir -p build/demo
-build/generator/sbgen --n 250 --seed 1 --pressure-final 1e12 --out build/demo/mrj-spheres-250.h5
+build/generator/sbgen --n 250 --seed 1 --gamma-slow 1e-3 --pressure-final 1e12 --out build/demo/mrj-spheres-250.h5
 build/analysis/sbanalyze info build/demo/mrj-spheres-250.h5
 build/analysis/sbanalyze convert build/demo/mrj-spheres-250.h5 build/demo/mrj-spheres-250.xyz

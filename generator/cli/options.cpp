@@ -20,7 +20,7 @@ at rate gamma (dD/dt = gamma sqrt(kT/m)) until the reduced pressure P = PV/(NkT)
   --seed S                random seed (default 1); same seed and options: identical packing
   --phi-init PHI          initial packing fraction in (0, 0.5) (default 0.2, as the paper)
   --gamma-fast G          growth rate until --pressure-switch (default 0.01)
-  --gamma-slow G          growth rate from there to --pressure-final (default 0.001)
+  --gamma-slow G          growth rate from there to --pressure-final (default 1e-4)
   --pressure-switch P     reduced pressure at which growth slows (default 1e6)
   --pressure-final P      reduced pressure at which the packing is jammed (default 1e12)
   --window W              collisions per particle between thermostat rescalings and

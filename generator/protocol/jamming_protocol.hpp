@@ -22,7 +22,7 @@ struct ProtocolParameters {
     std::uint64_t seed = 1;
     double phiInit = 0.2;
     double gammaFast = 0.01;
-    double gammaSlow = 0.001;
+    double gammaSlow = 1e-4;
     double pressureSwitch = 1e6;
     double pressureFinal = 1e12;
     double collisionsPerWindow = 10.0; ///< per particle, between thermostat rescalings
