@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Sets everything up and runs the main job on a small default scene: sbgen jams 250 spheres
-# (a quick slow phase, gamma-slow 1e-3)
-# (seed 1) to reduced pressure 1e12 in about ten seconds; sbanalyze validates the packing and reports
-# phi, the mean width, contacts Z and rattlers, and exports it for OVITO.
+# (seed 1, a quick slow phase with gamma-slow 1e-3) to reduced pressure 1e12 in about ten
+# seconds; sbanalyze validates the packing, reports phi, the mean width, contacts Z and
+# rattlers, and exports it for OVITO.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
