@@ -43,14 +43,22 @@ Options parse(int argc, char** argv) {
             if (i + 1 == argc) throw std::invalid_argument(a + " needs a value");
             return argv[++i];
         };
-        if (a == "--threads") o.threads = std::stoi(value());
-        else if (a == "--voxels") o.voxels = std::stoi(value());
-        else if (a == "--sq-shell") o.sqShell = std::stoi(value());
-        else if (a == "--repeats") o.repeats = std::stoi(value());
-        else if (a == "--memory-voxels") o.memoryVoxels = std::stoi(value());
-        else if (a == "--fft-wisdom") o.wisdom = value();
-        else if (o.packing.empty()) o.packing = a;
-        else throw std::invalid_argument("unexpected argument " + a);
+        if (a == "--threads")
+            o.threads = std::stoi(value());
+        else if (a == "--voxels")
+            o.voxels = std::stoi(value());
+        else if (a == "--sq-shell")
+            o.sqShell = std::stoi(value());
+        else if (a == "--repeats")
+            o.repeats = std::stoi(value());
+        else if (a == "--memory-voxels")
+            o.memoryVoxels = std::stoi(value());
+        else if (a == "--fft-wisdom")
+            o.wisdom = value();
+        else if (o.packing.empty())
+            o.packing = a;
+        else
+            throw std::invalid_argument("unexpected argument " + a);
     }
     if (o.packing.empty()) throw std::invalid_argument("no packing file");
     return o;

@@ -50,7 +50,8 @@ constexpr const char* kOptionsUsage = R"(        all       every analysis above 
       or interrupt (Ctrl-C) no output file is left behind and the exit status is 1.
 )";
 
-constexpr const char* kOtherUsage = R"(  sbanalyze info [--tolerance T] [--rattler-threshold K] FILE.h5...
+constexpr const char* kOtherUsage =
+    R"(  sbanalyze info [--tolerance T] [--rattler-threshold K] FILE.h5...
       Validate each packing and print N, p, L, R, phi (closed form), the mean width,
       the smallest gap or worst overlap, the mean contact number Z over non-rattlers
       and the rattler fraction phi_R. Contacts: gap < T * D (default 1e-10, as the
@@ -170,7 +171,8 @@ RunSettings parseAnalyzeArguments(const std::vector<std::string>& args) {
             s.fft.planning = fftPlanningFromName(in.value(a));
         } else if (a == "--fft-wisdom") {
             const std::string file = in.value(a);
-            s.fft.wisdomFile = file == "none" ? std::filesystem::path() : std::filesystem::path(file);
+            s.fft.wisdomFile =
+                file == "none" ? std::filesystem::path() : std::filesystem::path(file);
         } else if (a == "--quiet") {
             s.quiet = true;
         } else if (a.rfind("--", 0) == 0) {

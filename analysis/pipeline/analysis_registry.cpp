@@ -10,16 +10,24 @@ namespace {
 constexpr std::array<Analysis, 1> kSpectralNeeds{Analysis::Voxels};
 
 constexpr std::array<AnalysisInfo, 4> kRegistry{{
-    {Analysis::Contacts, "contacts",
+    {Analysis::Contacts,
+     "contacts",
      "contact network: mean contact number Z, rattler fraction, contacts per particle",
-     VoxelGrid::None, {}},
-    {Analysis::StructureFactor, "sq", "structure factor S(Q) of the centroids (Eq. 4)",
-     VoxelGrid::None, {}},
+     VoxelGrid::None,
+     {}},
+    {Analysis::StructureFactor,
+     "sq",
+     "structure factor S(Q) of the centroids (Eq. 4)",
+     VoxelGrid::None,
+     {}},
     {Analysis::SpectralDensity, "chi",
      "spectral density chi_V(Q) from the voxels by FFT (Eq. 12); exact too for spheres",
      VoxelGrid::Spectral, kSpectralNeeds},
-    {Analysis::Voxels, "voxels", "voxelization on the --voxels grid: phi_voxel against phi",
-     VoxelGrid::Spectral, {}},
+    {Analysis::Voxels,
+     "voxels",
+     "voxelization on the --voxels grid: phi_voxel against phi",
+     VoxelGrid::Spectral,
+     {}},
 }};
 
 void addWithNeeds(Analysis analysis, AnalysisSet& set) {
@@ -64,9 +72,9 @@ AnalysisSet resolveAnalyses(std::string_view list) {
             if (info.name == name) found = &info;
         if (found == nullptr)
             throw std::invalid_argument("option --compute: " +
-                                        (name.empty() ? std::string("empty analysis name")
-                                                      : "unknown analysis '" + std::string(name) +
-                                                            "'") +
+                                        (name.empty()
+                                             ? std::string("empty analysis name")
+                                             : "unknown analysis '" + std::string(name) + "'") +
                                         " (known: " + knownNames() + ")");
         addWithNeeds(found->analysis, set);
     }

@@ -26,8 +26,7 @@ EnsembleScalar ensembleScalar(std::span<const double> values) {
 EnsembleCurve ensembleCurve(std::span<const ShellAverage> curves,
                             std::span<const double> meanWidths,
                             std::span<const double> boxLengths) {
-    if (curves.empty() || curves.size() != meanWidths.size() ||
-        curves.size() != boxLengths.size())
+    if (curves.empty() || curves.size() != meanWidths.size() || curves.size() != boxLengths.size())
         throw std::invalid_argument("ensemble curve: one mean width and box length per curve");
     EnsembleCurve out;
     for (std::size_t f = 0; f < curves.size(); ++f)
@@ -133,9 +132,8 @@ EnsembleResults computeEnsemble(std::span<const FileResults> files) {
             curves.push_back(f.spectralDensity->shells);
         EnsembleGroup& g = e.groups["spectral_density"] =
             EnsembleGroup{{}, ensembleCurve(curves, widths, lengths), std::string("chi")};
-        g.scalars["phi_voxel"] = over(files, [](const FileResults& f) {
-            return std::optional(f.spectralDensity->phiVoxel);
-        });
+        g.scalars["phi_voxel"] = over(
+            files, [](const FileResults& f) { return std::optional(f.spectralDensity->phiVoxel); });
         g.scalars["exact_error"] = over(files, [](const FileResults& f) {
             return f.spectralDensity->exactSphere
                        ? std::optional(f.spectralDensity->exactSphere->maxErrorOverPeak)

@@ -25,12 +25,12 @@ struct EnsembleScalar {
 /// A file with several shells in one bin contributes their count-weighted mean.
 struct EnsembleCurve {
     double binWidthQw = 0.0;
-    std::vector<double> qw;    ///< mean Q w of the files' shells in the bin
-    std::vector<double> q;     ///< mean Q
-    std::vector<double> mean;  ///< mean over files of the value
-    std::vector<double> std;   ///< sample standard deviation over files
+    std::vector<double> qw;          ///< mean Q w of the files' shells in the bin
+    std::vector<double> q;           ///< mean Q
+    std::vector<double> mean;        ///< mean over files of the value
+    std::vector<double> std;         ///< sample standard deviation over files
     std::vector<std::int64_t> count; ///< wave vectors, all files together
-    std::vector<int> files;    ///< files with a shell in the bin
+    std::vector<int> files;          ///< files with a shell in the bin
 };
 
 /// One results group ("" for the per-file root attributes): scalars and at most one curve.
@@ -49,8 +49,7 @@ struct EnsembleResults {
 EnsembleScalar ensembleScalar(std::span<const double> values);
 /// Curves (Q w, value) of several files on the common grid.
 EnsembleCurve ensembleCurve(std::span<const ShellAverage> curves,
-                            std::span<const double> meanWidths,
-                            std::span<const double> boxLengths);
+                            std::span<const double> meanWidths, std::span<const double> boxLengths);
 
 EnsembleResults computeEnsemble(std::span<const FileResults> files);
 

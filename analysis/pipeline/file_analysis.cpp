@@ -54,16 +54,16 @@ FileResults analyzeFile(const Packing& packing, const std::filesystem::path& inp
     if (settings.runs(Analysis::StructureFactor)) {
         r.structureFactor = StructureFactor({settings.maxQw}).compute(packing, progress);
         progress.stageDone("structure factor", r.structureFactor->runtimeSeconds,
-                           std::to_string(r.structureFactor->maxShell) + " shells up to Q w = " +
-                               describe(settings.maxQw));
+                           std::to_string(r.structureFactor->maxShell) +
+                               " shells up to Q w = " + describe(settings.maxQw));
     }
     if (settings.grids().count(VoxelGrid::Spectral) != 0) {
         const Voxelization voxels = Voxelizer({settings.voxels}).compute(packing, progress);
         r.voxelization = recordOf(voxels);
         progress.stageDone("voxelization", voxels.runtimeSeconds(),
-                           std::to_string(settings.voxels) + "^3, phi_voxel = " +
-                               describe(voxels.phiVoxel()) + " (phi = " +
-                               describe(voxels.phiExact()) + "), OpenVDB tree " +
+                           std::to_string(settings.voxels) +
+                               "^3, phi_voxel = " + describe(voxels.phiVoxel()) +
+                               " (phi = " + describe(voxels.phiExact()) + "), OpenVDB tree " +
                                formatBytes(static_cast<double>(voxels.memoryBytes())));
         if (vdb) {
             const Stopwatch clock;

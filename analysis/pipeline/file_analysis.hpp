@@ -25,7 +25,7 @@ struct VoxelizationRecord {
     double phiVoxel = 0.0;
     double phiExact = 0.0;
     std::int64_t solidCount = 0;
-    std::size_t memoryBytes = 0; ///< OpenVDB tree
+    std::size_t memoryBytes = 0;   ///< OpenVDB tree
     std::filesystem::path vdbFile; ///< where it was exported; empty: not exported
     double runtimeSeconds = 0.0;
 };

@@ -46,8 +46,8 @@ MemoryEstimate estimateMemory(const Packing& packing, const RunSettings& setting
     MemoryEstimate estimate;
     auto add = [&](const std::string& what, double bytes) {
         estimate.bytes += bytes;
-        estimate.breakdown += (estimate.breakdown.empty() ? "" : ", ") + what + " " +
-                              formatBytes(bytes);
+        estimate.breakdown +=
+            (estimate.breakdown.empty() ? "" : ", ") + what + " " + formatBytes(bytes);
     };
     const double meanWidth = packing.shape().meanWidth();
     const int sqShell = StructureFactor::maxShellFor(settings.maxQw, packing.boxLength, meanWidth);
@@ -69,14 +69,14 @@ MemoryEstimate estimateMemory(const Packing& packing, const RunSettings& setting
         consider("S(Q) tables", collectiveDensityBytes(packing, std::max(sqShell, 1)));
     if (settings.runs(Analysis::SpectralDensity)) {
         const int m = settings.voxels;
-        const int shell = SpectralDensity::maxShellFor(settings.maxQw, packing.boxLength,
-                                                       meanWidth, m);
+        const int shell =
+            SpectralDensity::maxShellFor(settings.maxQw, packing.boxLength, meanWidth, m);
         double bytes = SpectralDensity::memoryEstimateBytes(m);
-        if (packing.shape().isSphere()) bytes += collectiveDensityBytes(packing, std::max(shell, 1));
+        if (packing.shape().isSphere())
+            bytes += collectiveDensityBytes(packing, std::max(shell, 1));
         consider("FFT grid " + std::to_string(m) + "^3", bytes);
     }
-    if (!settings.vdbDirectory.empty())
-        consider(".vdb export", vdbExportBytes(settings.voxels));
+    if (!settings.vdbDirectory.empty()) consider(".vdb export", vdbExportBytes(settings.voxels));
     if (stage > 0.0) add(stageName, stage);
     return estimate;
 }
@@ -96,11 +96,10 @@ void checkMemory(const Packing& packing, const RunSettings& settings, const std:
     if (!available) return;
     const MemoryEstimate estimate = estimateMemory(packing, settings);
     if (estimate.bytes > *available)
-        throw std::invalid_argument(source + ": the analyses need about " +
-                                    formatBytes(estimate.bytes) + " of memory (" +
-                                    estimate.breakdown + "), more than the " +
-                                    formatBytes(*available) +
-                                    " available; use a smaller --voxels or --qmax");
+        throw std::invalid_argument(
+            source + ": the analyses need about " + formatBytes(estimate.bytes) + " of memory (" +
+            estimate.breakdown + "), more than the " + formatBytes(*available) +
+            " available; use a smaller --voxels or --qmax");
 }
 
 } // namespace sbpack

@@ -10,7 +10,8 @@ namespace sbpack {
 namespace {
 
 /// A one-dimensional dataset of `values` (float64 or int64 in the file).
-template <class T> void writeVector(hid_t parent, const std::string& name, const std::vector<T>& values) {
+template <class T>
+void writeVector(hid_t parent, const std::string& name, const std::vector<T>& values) {
     static_assert(std::is_same_v<T, double> || std::is_same_v<T, std::int64_t>);
     const hid_t fileType = std::is_same_v<T, double> ? H5T_IEEE_F64LE : H5T_STD_I64LE;
     const hid_t memoryType = std::is_same_v<T, double> ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64;

@@ -135,7 +135,8 @@ RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostr
     if (jsonFile) jsonFile->commit();
     if (resultsFile) {
         resultsFile->commit();
-        progress.stageDone("wrote " + settings.output.string(), clock.seconds() - results.runtimeSeconds);
+        progress.stageDone("wrote " + settings.output.string(),
+                           clock.seconds() - results.runtimeSeconds);
     }
     return results;
 }

@@ -59,11 +59,10 @@ class Object {
 
 /// The largest value of a curve and its Q w: the principal peak.
 Object peak(const ShellAverage& shells, double meanWidth) {
-    const auto top = std::max_element(shells.value.begin(), shells.value.end()) -
-                     shells.value.begin();
-    return std::move(Object()
-                         .add("Q_w", shells.q[top] * meanWidth)
-                         .add("value", shells.value[top]));
+    const auto top =
+        std::max_element(shells.value.begin(), shells.value.end()) - shells.value.begin();
+    return std::move(
+        Object().add("Q_w", shells.q[top] * meanWidth).add("value", shells.value[top]));
 }
 
 std::string fileSummary(const FileResults& f, int indent) {
@@ -88,14 +87,14 @@ std::string fileSummary(const FileResults& f, int indent) {
                   .add("runtime_s", f.structureFactor->runtimeSeconds)
                   .str(inner));
     if (f.voxelization)
-        o.add("voxelization", Object()
-                                  .add("voxels", f.voxelization->parameters.voxels)
-                                  .add("phi_voxel", f.voxelization->phiVoxel)
-                                  .add("phi_exact", f.voxelization->phiExact)
-                                  .add("memory_bytes",
-                                       static_cast<double>(f.voxelization->memoryBytes))
-                                  .add("runtime_s", f.voxelization->runtimeSeconds)
-                                  .str(inner));
+        o.add("voxelization",
+              Object()
+                  .add("voxels", f.voxelization->parameters.voxels)
+                  .add("phi_voxel", f.voxelization->phiVoxel)
+                  .add("phi_exact", f.voxelization->phiExact)
+                  .add("memory_bytes", static_cast<double>(f.voxelization->memoryBytes))
+                  .add("runtime_s", f.voxelization->runtimeSeconds)
+                  .str(inner));
     if (f.spectralDensity) {
         const SpectralDensityResult& s = *f.spectralDensity;
         Object chi;

@@ -25,9 +25,12 @@ FftPlanning fftPlanningFromName(std::string_view name) {
 
 std::string_view fftPlanningName(FftPlanning planning) {
     switch (planning) {
-    case FftPlanning::Estimate: return "estimate";
-    case FftPlanning::Measure: return "measure";
-    case FftPlanning::Patient: return "patient";
+    case FftPlanning::Estimate:
+        return "estimate";
+    case FftPlanning::Measure:
+        return "measure";
+    case FftPlanning::Patient:
+        return "patient";
     }
     return "?";
 }

@@ -74,9 +74,9 @@ SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Vox
     result.maxShell =
         maxShellFor(parameters_.maxQw, packing.boxLength, result.meanWidth, voxels.voxels());
     if (result.maxShell < 1)
-        throw std::invalid_argument("spectral density: no shell with Q w <= " +
-                                    std::to_string(parameters_.maxQw) + " on a " +
-                                    std::to_string(voxels.voxels()) + "^3 grid of this box");
+        throw std::invalid_argument(
+            "spectral density: no shell with Q w <= " + std::to_string(parameters_.maxQw) +
+            " on a " + std::to_string(voxels.voxels()) + "^3 grid of this box");
 
     const VoxelFourierTransform transform(voxels, parameters_.fft, progress);
     result.planSeconds = transform.planSeconds();
@@ -159,10 +159,10 @@ ShellAverage sphereSpectralDensity(const Packing& packing, int maxShell, const P
     ShellAccumulator shells(packing.boxLength, maxShell);
     for (std::size_t i = 0; i < modes.size(); ++i) {
         const auto& n = modes.n[i];
-        const std::int64_t n2 = std::int64_t{n[0]} * n[0] + std::int64_t{n[1]} * n[1] +
-                                std::int64_t{n[2]} * n[2];
-        const double q = 2.0 * std::numbers::pi * std::sqrt(static_cast<double>(n2)) /
-                         packing.boxLength;
+        const std::int64_t n2 =
+            std::int64_t{n[0]} * n[0] + std::int64_t{n[1]} * n[1] + std::int64_t{n[2]} * n[2];
+        const double q =
+            2.0 * std::numbers::pi * std::sqrt(static_cast<double>(n2)) / packing.boxLength;
         const double m = sphereFormFactor(q, packing.semiAxis);
         shells.add(n2, modes.intensity[i] * m * m / volume, 2); // Eq. 12; chi(Q) = chi(-Q)
     }

@@ -14,9 +14,12 @@ namespace {
 
 unsigned plannerFlags(FftPlanning planning) {
     switch (planning) {
-    case FftPlanning::Estimate: return FFTW_ESTIMATE;
-    case FftPlanning::Measure: return FFTW_MEASURE;
-    case FftPlanning::Patient: return FFTW_PATIENT;
+    case FftPlanning::Estimate:
+        return FFTW_ESTIMATE;
+    case FftPlanning::Measure:
+        return FFTW_MEASURE;
+    case FftPlanning::Patient:
+        return FFTW_PATIENT;
     }
     return FFTW_ESTIMATE;
 }
@@ -49,9 +52,9 @@ VoxelFourierTransform::VoxelFourierTransform(const Voxelization& voxels, const F
     // Plan first: FFTW_MEASURE overwrites the array while it measures.
     Stopwatch clock;
     importWisdom(fft.wisdomFile, progress);
-    const std::unique_ptr<fftw_plan_s, PlanDeleter> plan(fftw_plan_dft_r2c_3d(
-        voxels_, voxels_, voxels_, data, reinterpret_cast<fftw_complex*>(data),
-        plannerFlags(fft.planning)));
+    const std::unique_ptr<fftw_plan_s, PlanDeleter> plan(
+        fftw_plan_dft_r2c_3d(voxels_, voxels_, voxels_, data, reinterpret_cast<fftw_complex*>(data),
+                             plannerFlags(fft.planning)));
     if (!plan)
         throw std::runtime_error("FFTW: cannot plan a " + std::to_string(m) + "^3 transform");
     if (fft.planning != FftPlanning::Estimate) exportWisdom(fft.wisdomFile, progress);

@@ -20,8 +20,10 @@ constexpr int kRecurrenceRestart = 16;
 /// floor(sqrt(m)) for m >= 0, exact.
 int isqrt(std::int64_t m) {
     auto r = static_cast<std::int64_t>(std::sqrt(static_cast<double>(m)));
-    while (r * r > m) --r;
-    while ((r + 1) * (r + 1) <= m) ++r;
+    while (r * r > m)
+        --r;
+    while ((r + 1) * (r + 1) <= m)
+        ++r;
     return static_cast<int>(r);
 }
 
@@ -128,8 +130,7 @@ DensityModes plane(int nx, std::int64_t maxN2, std::int64_t particles, int kmax,
         const int zl = length[ny];
         const double* a = &acc[offset[ny]];
         for (int nz = 0; nz < zl; ++nz) {
-            const double auR = a[nz], auI = a[zl + nz], buR = a[2 * zl + nz],
-                         buI = a[3 * zl + nz];
+            const double auR = a[nz], auI = a[zl + nz], buR = a[2 * zl + nz], buI = a[3 * zl + nz];
             const double avR = a[4 * zl + nz], avI = a[5 * zl + nz], bvR = a[6 * zl + nz],
                          bvI = a[7 * zl + nz];
             // rho(n_x, +-n_y, n_z) = A - i B, rho(n_x, +-n_y, -n_z) = A + i B.

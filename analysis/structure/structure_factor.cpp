@@ -28,11 +28,10 @@ StructureFactorResult StructureFactor::compute(const Packing& packing,
     result.meanWidth = packing.shape().meanWidth();
     result.maxShell = maxShellFor(parameters_.maxQw, packing.boxLength, result.meanWidth);
     if (result.maxShell < 1)
-        throw std::invalid_argument("structure factor: qmax = " +
-                                    std::to_string(parameters_.maxQw) +
-                                    " is below the smallest wave number of the box, 2 pi w / L = " +
-                                    std::to_string(2.0 * std::numbers::pi * result.meanWidth /
-                                                   packing.boxLength));
+        throw std::invalid_argument(
+            "structure factor: qmax = " + std::to_string(parameters_.maxQw) +
+            " is below the smallest wave number of the box, 2 pi w / L = " +
+            std::to_string(2.0 * std::numbers::pi * result.meanWidth / packing.boxLength));
     const DensityModes modes =
         collectiveDensity(packing.positions, packing.boxLength, maxSquaredIndex(result.maxShell),
                           progress, parameters_.serial);

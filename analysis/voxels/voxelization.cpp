@@ -14,7 +14,9 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <iomanip>
 #include <mutex>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,6 +60,134 @@ std::vector<double> imageShifts(double c, double rc, double boxLength) {
     if (c - rc < 0.0) shifts.push_back(boxLength);
     if (c + rc > boxLength) shifts.push_back(-boxLength);
     return shifts;
+}
+
+/// Superball::contains for body-frame points, mostly without std::pow. With y = |x| / R and the
+/// integers lo = floor(2p) <= 2p <= hi = ceil(2p), sum y_i^hi <= sum y_i^2p <= sum y_i^lo while
+/// every y_i < 1 (norms decrease with the exponent), so integer powers decide most points; then
+/// single-precision powers, accurate to ~1e-6; only points closer than that to the surface
+/// take the exact test. Margins keep every shortcut's answer that of Superball::contains.
+class ContainmentTest {
+  public:
+    explicit ContainmentTest(const Superball& shape)
+        : shape_(shape), inverseRadius_(1.0 / shape.semiAxis()),
+          lo_(static_cast<int>(std::floor(2.0 * shape.p()))),
+          hi_(static_cast<int>(std::ceil(2.0 * shape.p()))),
+          exponent_(static_cast<float>(2.0 * shape.p())) {}
+
+    bool operator()(const Vector3d& x) const {
+        const Vector3d y = x.cwiseAbs() * inverseRadius_;
+        const double largest = y.maxCoeff();
+        if (largest > 1.0 + kExactMargin) return false; // one term alone exceeds 1
+        if (largest < 1.0 - kExactMargin) {
+            if (powerSum(y, lo_) < 1.0 - kExactMargin) return true;
+            if (powerSum(y, hi_) > 1.0 + kExactMargin) return false;
+            if (lo_ != hi_) {
+                float sum = 0.0f;
+                for (int i = 0; i < 3; ++i)
+                    sum += std::exp(exponent_ * std::log(static_cast<float>(y[i])));
+                if (sum < 1.0f - kFloatMargin) return true;
+                if (sum > 1.0f + kFloatMargin) return false;
+            }
+        }
+        return shape_.contains(x);
+    }
+
+  private:
+    static constexpr double kExactMargin = 1e-12;
+    static constexpr float kFloatMargin = 1e-5f;
+
+    /// sum of y_i^n by repeated squaring (n >= 1).
+    static double powerSum(const Vector3d& y, int n) {
+        double sum = 0.0;
+        for (int i = 0; i < 3; ++i) {
+            double power = 1.0, base = y[i];
+            for (int e = n; e > 0; e >>= 1, base *= base)
+                if (e & 1) power *= base;
+            sum += power;
+        }
+        return sum;
+    }
+
+    Superball shape_;
+    double inverseRadius_;
+    int lo_, hi_;
+    float exponent_;
+};
+
+/// Bits z0..z1 (inclusive, within one 8-voxel row) of a block word, the row starting at `shift`.
+std::uint64_t rowBits(int z0, int z1, int shift) {
+    return ((std::uint64_t{1} << (z1 - z0 + 1)) - 1) << (shift + z0);
+}
+
+/// The geometry shared by all blocks.
+struct BlockGeometry {
+    int m;         ///< voxels per edge
+    double a;      ///< voxel edge
+    double rc, ri; ///< circumscribed and inscribed radii, with the shortcut margin
+};
+
+/// The 8 words of block (ox, oy, oz) from its candidates. Per row (x, y) the solid voxels of one
+/// particle form an interval (the body is convex): the inscribed sphere's part is solid without
+/// a test, and the exact test runs from each end of the circumscribed sphere's part inwards up to
+/// the first solid voxel.
+std::array<std::uint64_t, kBlock> voxelizeBlock(int ox, int oy, int oz,
+                                                std::span<const Candidate> candidates,
+                                                const std::vector<Eigen::Matrix3d>& toBody,
+                                                const ContainmentTest& inside,
+                                                const BlockGeometry& g) {
+    const int lastX = std::min(g.m, ox + kBlock) - 1;
+    const int lastY = std::min(g.m, oy + kBlock) - 1;
+    const int lastZ = std::min(g.m, oz + kBlock) - 1;
+    const double rc2 = g.rc * g.rc, ri2 = g.ri * g.ri;
+    std::array<std::uint64_t, kBlock> words{};
+    for (const Candidate& candidate : candidates) {
+        const Vector3d& c = candidate.centre;
+        const Eigen::Matrix3d& rotation = toBody[candidate.particle];
+        const auto [x0, x1] = voxelRange(c.x(), g.rc, g.a, ox, lastX);
+        const auto [y0, y1] = voxelRange(c.y(), g.rc, g.a, oy, lastY);
+        for (int x = x0; x <= x1; ++x) {
+            const double dx = (x + 0.5) * g.a - c.x();
+            for (int y = y0; y <= y1; ++y) {
+                const double dy = (y + 0.5) * g.a - c.y();
+                const double rxy2 = dx * dx + dy * dy;
+                if (rxy2 >= rc2) continue;
+                const auto [z0, z1] = voxelRange(c.z(), std::sqrt(rc2 - rxy2), g.a, oz, lastZ);
+                if (z0 > z1) continue;
+                std::uint64_t& word = words[x - ox];
+                const int shift = (y - oy) * kBlock - oz;
+                auto solidAt = [&](int z) {
+                    return inside(rotation * Vector3d(dx, dy, (z + 0.5) * g.a - c.z()));
+                };
+                const auto [in0, in1] = rxy2 < ri2
+                                            ? voxelRange(c.z(), std::sqrt(ri2 - rxy2), g.a, z0, z1)
+                                            : std::pair<int, int>{z1 + 1, z1};
+                if (in0 <= in1) {
+                    word |= rowBits(in0, in1, shift);
+                    for (int z = z0; z < in0; ++z)
+                        if (solidAt(z)) {
+                            word |= rowBits(z, in0 - 1, shift);
+                            break;
+                        }
+                    for (int z = z1; z > in1; --z)
+                        if (solidAt(z)) {
+                            word |= rowBits(in1 + 1, z, shift);
+                            break;
+                        }
+                } else {
+                    int first = z0;
+                    while (first <= z1 && !solidAt(first))
+                        ++first;
+                    if (first > z1) continue;
+                    int last = z1;
+                    while (last > first && !solidAt(last))
+                        --last;
+                    word |= rowBits(first, last, shift);
+                }
+            }
+        }
+    }
+    return words;
 }
 
 /// Writes block (ox, oy, oz) of the tree into values[(x * m + y) * rowStride + z] as 0 or 1.
@@ -154,8 +284,8 @@ void Voxelization::writeVdb(const std::filesystem::path& file) const {
     density->setGridClass(openvdb::GRID_FOG_VOLUME);
     density->setTransform(grid_->grid->transform().copy());
     density->tree().topologyUnion(grid_->grid->tree());
-    openvdb::tools::foreach(density->beginValueOn(),
-                            [](const openvdb::FloatGrid::ValueOnIter& it) { it.setValue(1.0f); });
+    openvdb::tools::foreach (density->beginValueOn(),
+                             [](const openvdb::FloatGrid::ValueOnIter& it) { it.setValue(1.0f); });
     density->insertMeta("p", openvdb::DoubleMetadata(p_));
     density->insertMeta("box_length", openvdb::DoubleMetadata(boxLength_));
     density->insertMeta("voxels", openvdb::Int64Metadata(voxels_));
@@ -185,17 +315,19 @@ int Voxelizer::minimumVoxels(const Packing& packing) {
 void Voxelizer::checkResolution(const Packing& packing, int voxels) {
     const Superball shape = packing.shape();
     if (2.0 * shape.circumradius() > packing.boxLength)
-        throw VoxelResolutionError("voxel grid: the particles (circumdiameter " +
-                                   std::to_string(2.0 * shape.circumradius()) +
-                                   ") are larger than the box (L = " +
-                                   std::to_string(packing.boxLength) + ")");
-    const double across = voxels * 2.0 * shape.inradius() / packing.boxLength;
-    if (across < kMinVoxelsAcross)
         throw VoxelResolutionError(
-            "voxel grid: M = " + std::to_string(voxels) + " gives " + std::to_string(across) +
-            " voxels across the narrowest width of a particle, fewer than " +
-            std::to_string(static_cast<int>(kMinVoxelsAcross)) + "; use M >= " +
-            std::to_string(minimumVoxels(packing)));
+            "voxel grid: the particles (circumdiameter " +
+            std::to_string(2.0 * shape.circumradius()) +
+            ") are larger than the box (L = " + std::to_string(packing.boxLength) + ")");
+    const double across = voxels * 2.0 * shape.inradius() / packing.boxLength;
+    if (across < kMinVoxelsAcross) {
+        std::ostringstream message;
+        message << std::setprecision(3) << "voxel grid: M = " << voxels << " puts " << across
+                << " voxels across the narrowest width of a particle (2 r_in = "
+                << 2.0 * shape.inradius() << " in L = " << packing.boxLength << "), fewer than "
+                << kMinVoxelsAcross << "; use M >= " << minimumVoxels(packing);
+        throw VoxelResolutionError(message.str());
+    }
 }
 
 double Voxelizer::memoryEstimateBytes(const Packing& packing, int voxels) {
@@ -206,7 +338,7 @@ double Voxelizer::memoryEstimateBytes(const Packing& packing, int voxels) {
     const double tree = leaves * (100.0 + 16.0);
     const double blocksAcross =
         2.0 * packing.shape().circumradius() / (packing.boxLength / m) / kBlock + 2.0;
-    const double candidates = static_cast<double>(packing.size()) * 8.0 *
+    const double candidates = static_cast<double>(packing.size()) * 2.0 * // periodic images
                               std::pow(blocksAcross, 3) * sizeof(Candidate);
     return tree + candidates;
 }
@@ -220,7 +352,6 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
     const double a = boxLength / m;
     const double rc = shape.circumradius() * (1.0 + kSphereMargin);
     const double ri = shape.inradius() * (1.0 - kSphereMargin);
-    const double rc2 = rc * rc, ri2 = ri * ri;
     const int blocks = (m + kBlock - 1) / kBlock;
     const std::int64_t blockCount = std::int64_t{blocks} * blocks * blocks;
 
@@ -261,6 +392,8 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
     }
 
     // Each block: its 8 words, then a leaf (some solid), a tile (all solid) or nothing.
+    const ContainmentTest inside(shape);
+    const BlockGeometry geometry{m, a, rc, ri};
     std::vector<std::unique_ptr<MaskLeaf>> leaves(blockCount);
     std::vector<std::uint8_t> fullBlock(blockCount, 0);
     std::vector<int> solidInBlock(blockCount, 0);
@@ -269,60 +402,14 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
         [&](std::int64_t begin, std::int64_t end) {
             progress.checkInterrupt();
             for (std::int64_t b = begin; b < end; ++b) {
-                const int bx = static_cast<int>(b / (std::int64_t{blocks} * blocks));
-                const int by = static_cast<int>((b / blocks) % blocks);
-                const int bz = static_cast<int>(b % blocks);
-                const int ox = bx * kBlock, oy = by * kBlock, oz = bz * kBlock;
-                const int lastX = std::min(m, ox + kBlock) - 1;
-                const int lastY = std::min(m, oy + kBlock) - 1;
-                const int lastZ = std::min(m, oz + kBlock) - 1;
-                std::array<std::uint64_t, kBlock> words{};
-                for (std::int64_t e = start[b]; e < start[b + 1]; ++e) {
-                    const Vector3d& c = candidates[e].centre;
-                    const Eigen::Matrix3d& rotation = toBody[candidates[e].particle];
-                    const auto [x0, x1] = voxelRange(c.x(), rc, a, ox, lastX);
-                    const auto [y0, y1] = voxelRange(c.y(), rc, a, oy, lastY);
-                    for (int x = x0; x <= x1; ++x) {
-                        const double dx = (x + 0.5) * a - c.x();
-                        for (int y = y0; y <= y1; ++y) {
-                            const double dy = (y + 0.5) * a - c.y();
-                            const double rxy2 = dx * dx + dy * dy;
-                            if (rxy2 >= rc2) continue;
-                            const auto [z0, z1] =
-                                voxelRange(c.z(), std::sqrt(rc2 - rxy2), a, oz, lastZ);
-                            if (z0 > z1) continue;
-                            std::uint64_t& word = words[x - ox];
-                            const int shift = (y - oy) * kBlock - oz;
-                            // Inside the inscribed sphere: solid without a test.
-                            int in0 = z1 + 1, in1 = z1;
-                            if (rxy2 < ri2) {
-                                const auto inner =
-                                    voxelRange(c.z(), std::sqrt(ri2 - rxy2), a, z0, z1);
-                                in0 = inner.first;
-                                in1 = inner.second;
-                                if (in0 <= in1)
-                                    word |= ((std::uint64_t{1} << (in1 - in0 + 1)) - 1)
-                                            << (shift + in0);
-                                else
-                                    in0 = z1 + 1, in1 = z1;
-                            }
-                            // The shell up to the circumscribed sphere: the exact test.
-                            for (int z = z0; z <= z1; ++z) {
-                                if (z == in0) {
-                                    z = in1;
-                                    continue;
-                                }
-                                const std::uint64_t bit = std::uint64_t{1} << (shift + z);
-                                if (word & bit) continue;
-                                const Vector3d d(dx, dy, (z + 0.5) * a - c.z());
-                                if (shape.contains(rotation * d)) word |= bit;
-                            }
-                        }
-                    }
-                }
+                const int ox = static_cast<int>(b / (std::int64_t{blocks} * blocks)) * kBlock;
+                const int oy = static_cast<int>((b / blocks) % blocks) * kBlock;
+                const int oz = static_cast<int>(b % blocks) * kBlock;
+                const std::span<const Candidate> mine(candidates.data() + start[b],
+                                                      candidates.data() + start[b + 1]);
+                const auto words = voxelizeBlock(ox, oy, oz, mine, toBody, inside, geometry);
                 int count = 0;
-                bool full = lastX - ox == kBlock - 1 && lastY - oy == kBlock - 1 &&
-                            lastZ - oz == kBlock - 1;
+                bool full = ox + kBlock <= m && oy + kBlock <= m && oz + kBlock <= m;
                 for (std::uint64_t w : words) {
                     count += std::popcount(w);
                     full = full && w == ~std::uint64_t{0};
@@ -344,8 +431,7 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
     auto grid = std::make_unique<Voxelization::Grid>();
     grid->grid = openvdb::MaskGrid::create(false);
     grid->grid->setName("solid");
-    openvdb::math::Transform::Ptr transform =
-        openvdb::math::Transform::createLinearTransform(a);
+    openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(a);
     transform->postTranslate(openvdb::Vec3d(0.5 * a)); // index (i, j, k) -> centre (i + 1/2) a
     grid->grid->setTransform(transform);
     MaskTree& tree = grid->grid->tree();
