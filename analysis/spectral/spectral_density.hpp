@@ -1,6 +1,7 @@
 #pragma once
-// Spectral density chi_V(Q) of the particle phase (paper Eq. 12 with the cube form factor,
-// DESIGN.md §5): from the voxel indicator by FFT, and for spheres exactly from the centroids.
+// Spectral density chi_V(Q) of the particle phase (paper Eq. 12, eq:spD, with the cube form
+// factor, DESIGN.md §5): from the voxel indicator by FFT, and for spheres exactly from the
+// centroids.
 
 #include "packing/packing.hpp"
 #include "progress/progress.hpp"

@@ -1,7 +1,8 @@
 #pragma once
 // The collective density rho(Q) = sum_j exp(-i Q . r_j) of N points in a cubic periodic box, at
-// the wave vectors Q = 2 pi n / L: the kernel of S(Q) (paper Eq. 4) and of the exact spectral
-// density of spheres (paper Eq. 12).
+// the wave vectors Q = 2 pi n / L: the kernel of S(Q) (paper Eq. 4, eq:ScattInt) and of the exact
+// spectral density of spheres (paper Eq. 12, eq:spD). Equation numbers are those of the tex in
+// shared/paper, counted in order; the labels are unambiguous.
 
 #include "progress/progress.hpp"
 

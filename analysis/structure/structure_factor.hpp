@@ -1,6 +1,6 @@
 #pragma once
-// Structure factor S(Q) of the particle centroids (paper Eq. 4, the scattering intensity of one
-// periodic configuration), angular-averaged in shells (DESIGN.md §5).
+// Structure factor S(Q) of the particle centroids (paper Eq. 4, eq:ScattInt: the scattering
+// intensity of one periodic configuration), angular-averaged in shells (DESIGN.md §5).
 
 #include "packing/packing.hpp"
 #include "progress/progress.hpp"
