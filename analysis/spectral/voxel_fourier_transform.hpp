@@ -42,12 +42,12 @@ class VoxelFourierTransform {
     double transformSeconds() const { return transformSeconds_; }
 
   private:
-    struct FftwFree {
+    struct Free {
         void operator()(double* p) const;
     };
     int voxels_;
     int halfLength_; ///< M / 2 + 1 complex numbers per row
-    std::unique_ptr<double, FftwFree> data_;
+    std::unique_ptr<double, Free> data_;
     double planSeconds_ = 0.0, fillSeconds_ = 0.0, transformSeconds_ = 0.0;
 };
 
