@@ -1,6 +1,8 @@
 // bench_analysis: wall-clock timings of sbanalyze's stages on one packing (results in
 // RESULTS.md). Each stage runs --repeats times; the best and the median are printed, since the
-// machine may be shared. FFTW plans come from the wisdom file (planned once before timing).
+// machine may be shared, and for the three analyses also the best process CPU time (all
+// threads), which a busy machine inflates less. FFTW plans come from the wisdom file (planned
+// once before timing).
 //
 // usage: bench_analysis PACKING.h5 [--threads T] [--voxels M] [--sq-shell S] [--repeats R]
 //                       [--memory-voxels M2] [--fft-wisdom FILE]
@@ -15,6 +17,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <map>
 #include <numbers>
 #include <stdexcept>
@@ -62,6 +65,13 @@ Options parse(int argc, char** argv) {
     }
     if (o.packing.empty()) throw std::invalid_argument("no packing file");
     return o;
+}
+
+/// CPU seconds of this process, all threads.
+double cpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 /// Best and median of the recorded times of each stage.
@@ -113,8 +123,15 @@ int main(int argc, char** argv) {
         Timings t;
         const std::string m = std::to_string(o.voxels) + "^3";
         for (int r = 0; r < o.repeats; ++r) {
+            double cpu = cpuSeconds();
             const Voxelization voxels = voxelizer.compute(packing, progress);
+            const double voxelizeCpu = cpuSeconds() - cpu;
+            cpu = cpuSeconds();
             const SpectralDensityResult s = chi.compute(packing, voxels, progress);
+            const double chiCpu = cpuSeconds() - cpu;
+            cpu = cpuSeconds();
+            const StructureFactorResult sq = structureFactor.compute(packing, progress);
+            const double sqCpu = cpuSeconds() - cpu;
             t.add("voxelize " + m, voxels.runtimeSeconds());
             t.add("FFT plan (wisdom)", s.planSeconds);
             t.add("fill FFT grid", s.fillSeconds);
@@ -124,8 +141,12 @@ int main(int argc, char** argv) {
                                                  s.fillSeconds + s.transformSeconds +
                                                  s.shellSeconds);
             if (s.exactSphere) t.add("exact sphere chi (same shells)", s.exactSeconds);
-            const StructureFactorResult sq = structureFactor.compute(packing, progress);
             t.add("S(Q), |n| < " + std::to_string(o.sqShell) + ".5", sq.runtimeSeconds);
+            t.add("CPU time, all threads: voxelize", voxelizeCpu);
+            t.add(s.exactSphere ? "CPU time: chi (FFT, shells, exact)"
+                                : "CPU time: chi (FFT, shells)",
+                  chiCpu);
+            t.add("CPU time: S(Q)", sqCpu);
         }
         t.print();
         if (o.memoryVoxels > 0) {

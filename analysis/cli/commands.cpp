@@ -182,7 +182,7 @@ RunSettings parseAnalyzeArguments(const std::vector<std::string>& args) {
         }
     }
     if (!s.vdbDirectory.empty()) s.analyses.insert(Analysis::Voxels);
-    ContactNetwork{s.contacts}; // validates tolerance and rattler threshold
+    static_cast<void>(ContactNetwork(s.contacts)); // throws on a bad tolerance or threshold
     return s;
 }
 
