@@ -58,7 +58,7 @@ PhaseTable phaseTable(std::span<const Eigen::Vector3d> positions, int axis, doub
     return t;
 }
 
-// The hot loop is compiled twice, for AVX2/FMA and for any x86-64, and picked at run time.
+// The hot loop is compiled twice, for AVX2 (x86-64-v3) and for any x86-64, picked at run time.
 #if defined(__GNUC__) && defined(__x86_64__)
 #define SBPACK_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
 #else
