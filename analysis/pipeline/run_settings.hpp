@@ -1,0 +1,41 @@
+#pragma once
+// Everything one sbanalyze run is asked to do (filled by the command line, cli/).
+
+#include "contacts/contact_network.hpp"
+#include "pipeline/analysis_registry.hpp"
+#include "spectral/fftw_wisdom.hpp"
+
+#include <filesystem>
+#include <vector>
+
+namespace sbpack {
+
+struct RunSettings {
+    std::vector<std::filesystem::path> inputs;
+    AnalysisSet analyses;
+    std::filesystem::path output;       ///< results file (HDF5); empty: none
+    std::filesystem::path json;         ///< JSON summary; "-": standard output; empty: none
+    std::filesystem::path vdbDirectory; ///< .vdb export of each voxelization; empty: none
+    int threads = 1;
+    int voxels = 300;     ///< M of the spectral grid
+    int poreVoxels = 500; ///< M of the pore grid
+    double maxQw = 30.0;  ///< S(Q) and chi(Q) up to Q w <= maxQw
+    ContactParameters contacts;
+    FftSettings fft;
+    bool quiet = false;
+
+    bool runs(Analysis analysis) const { return analyses.count(analysis) != 0; }
+    /// M of a grid; 0 for VoxelGrid::None.
+    int voxelsOf(VoxelGrid grid) const {
+        return grid == VoxelGrid::Spectral ? voxels : grid == VoxelGrid::Pore ? poreVoxels : 0;
+    }
+    /// The grids the requested analyses work on.
+    std::set<VoxelGrid> grids() const {
+        std::set<VoxelGrid> used;
+        for (Analysis a : analyses)
+            if (analysisInfo(a).grid != VoxelGrid::None) used.insert(analysisInfo(a).grid);
+        return used;
+    }
+};
+
+} // namespace sbpack

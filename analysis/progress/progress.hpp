@@ -1,0 +1,62 @@
+#pragma once
+// Stage reports and cooperative interruption of long analyses (STYLE.md): one line per finished
+// stage, and an interrupt flag that compute loops poll once per chunk (as OpenVDB's interrupter).
+
+#include <chrono>
+#include <iosfwd>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+
+namespace sbpack {
+
+/// Thrown by Progress::checkInterrupt() once an interrupt was requested (SIGINT, SIGTERM).
+class Interrupted : public std::runtime_error {
+  public:
+    Interrupted() : std::runtime_error("interrupted") {}
+};
+
+/// Makes SIGINT and SIGTERM request an interrupt instead of killing the process, so that the
+/// running stage stops at its next chunk and unwinds (no output file is left behind).
+void installInterruptHandler();
+/// What the signal handler does; also usable from tests.
+void requestInterrupt();
+/// Clears a pending request (tests).
+void clearInterrupt();
+
+/// Wall-clock seconds since construction.
+class Stopwatch {
+  public:
+    Stopwatch() : start_(std::chrono::steady_clock::now()) {}
+    double seconds() const {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+
+  private:
+    std::chrono::steady_clock::time_point start_;
+};
+
+/// Where analyses report. Stage lines go to `log` (nullptr: quiet); warnings always go to
+/// `warnings` (nullptr: dropped). Thread-safe for checkInterrupt() only: report from the
+/// calling thread.
+class Progress {
+  public:
+    explicit Progress(std::ostream* log = nullptr, std::ostream* warnings = nullptr);
+
+    /// Prefix of the following lines, e.g. "[2/5] packing.h5".
+    void setContext(std::string context) { context_ = std::move(context); }
+    /// "sbanalyze: <context>: <stage>: <detail> (<seconds> s)".
+    void stageDone(std::string_view stage, double seconds, std::string_view detail = {}) const;
+    /// "sbanalyze: warning: <context>: <message>".
+    void warn(std::string_view message) const;
+    /// Throws Interrupted if an interrupt was requested; call once per chunk of work.
+    void checkInterrupt() const;
+
+  private:
+    std::ostream* log_;
+    std::ostream* warnings_;
+    std::string context_;
+};
+
+} // namespace sbpack

@@ -1,0 +1,72 @@
+#include "spectral/fftw_wisdom.hpp"
+
+#include "io/atomic_file.hpp"
+
+#include <fftw3.h>
+
+#include <cstdlib>
+#include <mutex>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+namespace sbpack {
+
+namespace fs = std::filesystem;
+
+FftPlanning fftPlanningFromName(std::string_view name) {
+    if (name == "estimate") return FftPlanning::Estimate;
+    if (name == "measure") return FftPlanning::Measure;
+    if (name == "patient") return FftPlanning::Patient;
+    throw std::invalid_argument("FFT planning '" + std::string(name) +
+                                "' is not one of estimate, measure, patient");
+}
+
+std::string_view fftPlanningName(FftPlanning planning) {
+    switch (planning) {
+    case FftPlanning::Estimate:
+        return "estimate";
+    case FftPlanning::Measure:
+        return "measure";
+    case FftPlanning::Patient:
+        return "patient";
+    }
+    return "?";
+}
+
+fs::path defaultWisdomFile() {
+    if (const char* cache = std::getenv("XDG_CACHE_HOME"); cache != nullptr && *cache != '\0')
+        return fs::path(cache) / "sbpack" / "fftw-wisdom";
+    if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0')
+        return fs::path(home) / ".cache" / "sbpack" / "fftw-wisdom";
+    return {};
+}
+
+void importWisdom(const fs::path& file, const Progress& progress) {
+    static std::mutex mutex;
+    static std::set<fs::path> imported;
+    const std::lock_guard lock(mutex);
+    if (file.empty() || imported.count(file) != 0) return;
+    imported.insert(file);
+    std::error_code ec;
+    if (!fs::exists(file, ec)) return; // first run: nothing remembered yet
+    if (fftw_import_wisdom_from_filename(file.c_str()) == 0)
+        progress.warn("cannot read FFTW wisdom from '" + file.string() + "'; planning afresh");
+}
+
+void exportWisdom(const fs::path& file, const Progress& progress) {
+    if (file.empty()) return;
+    try {
+        std::error_code ec;
+        if (file.has_parent_path()) fs::create_directories(file.parent_path(), ec);
+        AtomicOutput out(file);
+        if (fftw_export_wisdom_to_filename(out.temporaryPath().c_str()) == 0)
+            throw OutputPathError("FFTW could not write '" + out.temporaryPath().string() + "'");
+        out.commit();
+    } catch (const std::exception& e) {
+        progress.warn(std::string("cannot store FFTW wisdom: ") + e.what());
+    }
+}
+
+} // namespace sbpack

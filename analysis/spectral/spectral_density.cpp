@@ -1,0 +1,172 @@
+#include "spectral/spectral_density.hpp"
+
+#include "parallel/parallel.hpp"
+#include "spectral/voxel_fourier_transform.hpp"
+#include "structure/collective_density.hpp"
+#include "structure/structure_factor.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sbpack {
+
+namespace {
+
+/// sin(x) / x, with its Taylor series near 0.
+double sinc(double x) {
+    return std::abs(x) < 1e-4 ? 1.0 - x * x / 6.0 : std::sin(x) / x;
+}
+
+/// Signed wave index of DFT index k: k for k <= M/2, else k - M.
+int signedIndex(int k, int m) {
+    return 2 * k <= m ? k : k - m;
+}
+
+} // namespace
+
+double cubeFormFactor(const Eigen::Vector3d& q, double edge) {
+    return edge * sinc(0.5 * q.x() * edge) * edge * sinc(0.5 * q.y() * edge) * edge *
+           sinc(0.5 * q.z() * edge);
+}
+
+double sphereFormFactor(double q, double radius) {
+    const double x = q * radius;
+    const double volume = 4.0 * std::numbers::pi * radius * radius * radius / 3.0;
+    if (std::abs(x) < 0.1) { // 3 (sin x - x cos x) / x^3 by its series: no cancellation
+        const double x2 = x * x;
+        return volume * (1.0 - x2 / 10.0 + x2 * x2 / 280.0 - x2 * x2 * x2 / 15120.0);
+    }
+    return 4.0 * std::numbers::pi * (std::sin(x) - x * std::cos(x)) / (q * q * q);
+}
+
+SpectralDensity::SpectralDensity(SpectralDensityParameters parameters) : parameters_(parameters) {
+    if (!(parameters.maxQw > 0.0) || !std::isfinite(parameters.maxQw))
+        throw std::invalid_argument("spectral density: qmax must be positive and finite, not " +
+                                    std::to_string(parameters.maxQw));
+}
+
+int SpectralDensity::maxShellFor(double maxQw, double boxLength, double meanWidth, int voxels) {
+    return std::min(StructureFactor::maxShellFor(maxQw, boxLength, meanWidth), (voxels - 1) / 2);
+}
+
+double SpectralDensity::memoryEstimateBytes(int voxels) {
+    return VoxelFourierTransform::memoryBytes(voxels);
+}
+
+SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Voxelization& voxels,
+                                               const Progress& progress) const {
+    const Stopwatch clock;
+    if (voxels.boxLength() != packing.boxLength)
+        throw std::invalid_argument("spectral density: the voxelization is of a box of edge " +
+                                    std::to_string(voxels.boxLength()) + ", the packing's is " +
+                                    std::to_string(packing.boxLength));
+    SpectralDensityResult result;
+    result.parameters = parameters_;
+    result.voxels = voxels.voxels();
+    result.voxelSize = voxels.voxelSize();
+    result.phiVoxel = voxels.phiVoxel();
+    result.boxLength = packing.boxLength;
+    result.meanWidth = packing.shape().meanWidth();
+    result.maxShell =
+        maxShellFor(parameters_.maxQw, packing.boxLength, result.meanWidth, voxels.voxels());
+    if (result.maxShell < 1)
+        throw std::invalid_argument(
+            "spectral density: no shell with Q w <= " + std::to_string(parameters_.maxQw) +
+            " on a " + std::to_string(voxels.voxels()) + "^3 grid of this box");
+
+    const VoxelFourierTransform transform(voxels, parameters_.fft, progress);
+    result.planSeconds = transform.planSeconds();
+    result.fillSeconds = transform.fillSeconds();
+    result.transformSeconds = transform.transformSeconds();
+    const Stopwatch shellClock;
+
+    const int m = voxels.voxels();
+    const int s = result.maxShell;
+    const double a = voxels.voxelSize();
+    const double volume = std::pow(packing.boxLength, 3);
+    const std::int64_t maxN2 = maxSquaredIndex(s);
+    // [a sinc(Q_i a / 2)]^2 per axis, Q_i a / 2 = pi n_i / M, for n_i in [-s, s].
+    std::vector<double> formFactor2(2 * s + 1);
+    for (int n = -s; n <= s; ++n) {
+        const double f = a * sinc(std::numbers::pi * n / m);
+        formFactor2[n + s] = f * f;
+    }
+    // The planes kx with |n_x| <= s, each summed into its own accumulator, merged in order.
+    std::vector<int> planes;
+    for (int kx = 0; kx < m; ++kx)
+        if (std::abs(signedIndex(kx, m)) <= s) planes.push_back(kx);
+    std::vector<ShellAccumulator> partial(planes.size(), ShellAccumulator(packing.boxLength, s));
+    parallelFor(
+        0, static_cast<std::int64_t>(planes.size()), 1,
+        [&](std::int64_t begin, std::int64_t end) {
+            for (std::int64_t p = begin; p < end; ++p) {
+                progress.checkInterrupt();
+                const int kx = planes[p];
+                const int nx = signedIndex(kx, m);
+                for (int ky = 0; ky < m; ++ky) {
+                    const int ny = signedIndex(ky, m);
+                    const std::int64_t nxy2 = std::int64_t{nx} * nx + std::int64_t{ny} * ny;
+                    if (nxy2 > maxN2) continue;
+                    const double fxy = formFactor2[nx + s] * formFactor2[ny + s];
+                    for (int kz = 0; kz <= s; ++kz) {
+                        const std::int64_t n2 = nxy2 + std::int64_t{kz} * kz;
+                        if (n2 > maxN2) break;
+                        if (n2 == 0) continue;
+                        const double chi =
+                            transform.power(kx, ky, kz) * fxy * formFactor2[kz + s] / volume;
+                        partial[p].add(n2, chi, transform.weight(kz));
+                    }
+                }
+            }
+        },
+        parameters_.serial);
+    ShellAccumulator shells(packing.boxLength, s);
+    for (const ShellAccumulator& p : partial)
+        shells.merge(p);
+    result.shells = shells.average();
+    result.shellSeconds = shellClock.seconds();
+
+    if (packing.shape().isSphere()) {
+        const Stopwatch exactClock;
+        SphereComparison comparison;
+        comparison.exact = sphereSpectralDensity(packing, s, progress, parameters_.serial);
+        double peak = 0.0, worst = 0.0;
+        for (std::size_t i = 0; i < comparison.exact.size(); ++i) {
+            peak = std::max(peak, comparison.exact.value[i]);
+            worst = std::max(worst, std::abs(result.shells.value[i] - comparison.exact.value[i]));
+        }
+        comparison.maxErrorOverPeak = worst / peak;
+        result.exactSphere = std::move(comparison);
+        result.exactSeconds = exactClock.seconds();
+    }
+    result.runtimeSeconds = clock.seconds();
+    return result;
+}
+
+ShellAverage sphereSpectralDensity(const Packing& packing, int maxShell, const Progress& progress,
+                                   bool serial) {
+    if (!packing.shape().isSphere())
+        throw std::invalid_argument("exact spectral density: the particles are not spheres (p = " +
+                                    std::to_string(packing.p) + ")");
+    if (maxShell < 1) throw std::invalid_argument("exact spectral density: no shell");
+    const DensityModes modes = collectiveDensity(packing.positions, packing.boxLength,
+                                                 maxSquaredIndex(maxShell), progress, serial);
+    const double volume = std::pow(packing.boxLength, 3);
+    ShellAccumulator shells(packing.boxLength, maxShell);
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+        const auto& n = modes.n[i];
+        const std::int64_t n2 =
+            std::int64_t{n[0]} * n[0] + std::int64_t{n[1]} * n[1] + std::int64_t{n[2]} * n[2];
+        const double q =
+            2.0 * std::numbers::pi * std::sqrt(static_cast<double>(n2)) / packing.boxLength;
+        const double m = sphereFormFactor(q, packing.semiAxis);
+        shells.add(n2, modes.intensity[i] * m * m / volume, 2); // Eq. 12; chi(Q) = chi(-Q)
+    }
+    return shells.average();
+}
+
+} // namespace sbpack

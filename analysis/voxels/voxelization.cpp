@@ -1,0 +1,454 @@
+// The only translation unit of sbanalyze that includes OpenVDB's tree (each costs ~30 s to build).
+#include "voxels/voxelization.hpp"
+
+#include "io/atomic_file.hpp"
+#include "parallel/parallel.hpp"
+
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/ValueTransformer.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <iomanip>
+#include <mutex>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace sbpack {
+
+namespace {
+
+using MaskTree = openvdb::MaskTree;
+using MaskLeaf = MaskTree::LeafNodeType;
+
+/// Output blocks are the leaves of the tree: 8^3 voxels, one 64-bit word per x-slice with bit
+/// (y << 3) | z, as OpenVDB's leaf offset (x << 6) | (y << 3) | z.
+constexpr int kBlock = 8;
+static_assert(MaskLeaf::DIM == kBlock);
+/// Blocks per task of the parallel loop (and per interrupt check).
+constexpr std::int64_t kBlocksPerTask = 16;
+/// Relative margin of the inscribed- and circumscribed-sphere shortcuts: voxel centres this close
+/// to either sphere get the exact test, so the shortcuts agree with Superball::contains exactly.
+constexpr double kSphereMargin = 1e-12;
+
+/// A particle, or one of its periodic images, whose circumscribed sphere reaches a block.
+struct Candidate {
+    Vector3d centre;
+    int particle;
+};
+
+/// Voxels [lo, hi] along one axis whose centres (i + 1/2) a lie within `radius` of c, clipped
+/// to [first, last]; empty when lo > hi.
+std::pair<int, int> voxelRange(double c, double radius, double a, int first, int last) {
+    const double lo = std::ceil((c - radius) / a - 0.5);
+    const double hi = std::floor((c + radius) / a - 0.5);
+    return {static_cast<int>(std::max<double>(lo, first)),
+            static_cast<int>(std::min<double>(hi, last))};
+}
+
+/// Image shifts along one axis that bring a body of circumradius rc centred at c in [0, L)
+/// over some voxel centre: 0, and +L (-L) when it sticks out below 0 (above L).
+std::vector<double> imageShifts(double c, double rc, double boxLength) {
+    std::vector<double> shifts{0.0};
+    if (c - rc < 0.0) shifts.push_back(boxLength);
+    if (c + rc > boxLength) shifts.push_back(-boxLength);
+    return shifts;
+}
+
+/// Superball::contains for body-frame points, mostly without std::pow. With y = |x| / R and the
+/// integers lo = floor(2p) <= 2p <= hi = ceil(2p), sum y_i^hi <= sum y_i^2p <= sum y_i^lo while
+/// every y_i < 1 (norms decrease with the exponent), so integer powers decide most points; then
+/// single-precision powers, accurate to ~1e-6; only points closer than that to the surface
+/// take the exact test. Margins keep every shortcut's answer that of Superball::contains.
+class ContainmentTest {
+  public:
+    explicit ContainmentTest(const Superball& shape)
+        : shape_(shape), inverseRadius_(1.0 / shape.semiAxis()),
+          lo_(static_cast<int>(std::floor(2.0 * shape.p()))),
+          hi_(static_cast<int>(std::ceil(2.0 * shape.p()))),
+          exponent_(static_cast<float>(2.0 * shape.p())) {}
+
+    bool operator()(const Vector3d& x) const {
+        const Vector3d y = x.cwiseAbs() * inverseRadius_;
+        const double largest = y.maxCoeff();
+        if (largest > 1.0 + kExactMargin) return false; // one term alone exceeds 1
+        if (largest < 1.0 - kExactMargin) {
+            if (powerSum(y, lo_) < 1.0 - kExactMargin) return true;
+            if (powerSum(y, hi_) > 1.0 + kExactMargin) return false;
+            if (lo_ != hi_) {
+                float sum = 0.0f;
+                for (int i = 0; i < 3; ++i)
+                    sum += std::exp(exponent_ * std::log(static_cast<float>(y[i])));
+                if (sum < 1.0f - kFloatMargin) return true;
+                if (sum > 1.0f + kFloatMargin) return false;
+            }
+        }
+        return shape_.contains(x);
+    }
+
+  private:
+    static constexpr double kExactMargin = 1e-12;
+    static constexpr float kFloatMargin = 1e-5f;
+
+    /// sum of y_i^n by repeated squaring (n >= 1).
+    static double powerSum(const Vector3d& y, int n) {
+        double sum = 0.0;
+        for (int i = 0; i < 3; ++i) {
+            double power = 1.0, base = y[i];
+            for (int e = n; e > 0; e >>= 1, base *= base)
+                if (e & 1) power *= base;
+            sum += power;
+        }
+        return sum;
+    }
+
+    Superball shape_;
+    double inverseRadius_;
+    int lo_, hi_;
+    float exponent_;
+};
+
+/// Bits z0..z1 (inclusive, within one 8-voxel row) of a block word, the row starting at `shift`.
+std::uint64_t rowBits(int z0, int z1, int shift) {
+    return ((std::uint64_t{1} << (z1 - z0 + 1)) - 1) << (shift + z0);
+}
+
+/// The geometry shared by all blocks.
+struct BlockGeometry {
+    int m;         ///< voxels per edge
+    double a;      ///< voxel edge
+    double rc, ri; ///< circumscribed and inscribed radii, with the shortcut margin
+};
+
+/// The 8 words of block (ox, oy, oz) from its candidates. Per row (x, y) the solid voxels of one
+/// particle form an interval (the body is convex): the inscribed sphere's part is solid without
+/// a test, and the exact test runs from each end of the circumscribed sphere's part inwards up to
+/// the first solid voxel.
+std::array<std::uint64_t, kBlock> voxelizeBlock(int ox, int oy, int oz,
+                                                std::span<const Candidate> candidates,
+                                                const std::vector<Eigen::Matrix3d>& toBody,
+                                                const ContainmentTest& inside,
+                                                const BlockGeometry& g) {
+    const int lastX = std::min(g.m, ox + kBlock) - 1;
+    const int lastY = std::min(g.m, oy + kBlock) - 1;
+    const int lastZ = std::min(g.m, oz + kBlock) - 1;
+    const double rc2 = g.rc * g.rc, ri2 = g.ri * g.ri;
+    std::array<std::uint64_t, kBlock> words{};
+    for (const Candidate& candidate : candidates) {
+        const Vector3d& c = candidate.centre;
+        const Eigen::Matrix3d& rotation = toBody[candidate.particle];
+        const auto [x0, x1] = voxelRange(c.x(), g.rc, g.a, ox, lastX);
+        const auto [y0, y1] = voxelRange(c.y(), g.rc, g.a, oy, lastY);
+        for (int x = x0; x <= x1; ++x) {
+            const double dx = (x + 0.5) * g.a - c.x();
+            for (int y = y0; y <= y1; ++y) {
+                const double dy = (y + 0.5) * g.a - c.y();
+                const double rxy2 = dx * dx + dy * dy;
+                if (rxy2 >= rc2) continue;
+                const auto [z0, z1] = voxelRange(c.z(), std::sqrt(rc2 - rxy2), g.a, oz, lastZ);
+                if (z0 > z1) continue;
+                std::uint64_t& word = words[x - ox];
+                const int shift = (y - oy) * kBlock - oz;
+                auto solidAt = [&](int z) {
+                    return inside(rotation * Vector3d(dx, dy, (z + 0.5) * g.a - c.z()));
+                };
+                const auto [in0, in1] = rxy2 < ri2
+                                            ? voxelRange(c.z(), std::sqrt(ri2 - rxy2), g.a, z0, z1)
+                                            : std::pair<int, int>{z1 + 1, z1};
+                if (in0 <= in1) {
+                    word |= rowBits(in0, in1, shift);
+                    for (int z = z0; z < in0; ++z)
+                        if (solidAt(z)) {
+                            word |= rowBits(z, in0 - 1, shift);
+                            break;
+                        }
+                    for (int z = z1; z > in1; --z)
+                        if (solidAt(z)) {
+                            word |= rowBits(in1 + 1, z, shift);
+                            break;
+                        }
+                } else {
+                    int first = z0;
+                    while (first <= z1 && !solidAt(first))
+                        ++first;
+                    if (first > z1) continue;
+                    int last = z1;
+                    while (last > first && !solidAt(last))
+                        --last;
+                    word |= rowBits(first, last, shift);
+                }
+            }
+        }
+    }
+    return words;
+}
+
+/// Writes block (ox, oy, oz) of the tree into values[(x * m + y) * rowStride + z] as 0 or 1.
+template <class T>
+void copyBlock(const MaskTree& tree, std::int64_t ox, std::int64_t oy, std::int64_t oz,
+               std::int64_t m, T* values, std::int64_t rowStride) {
+    const openvdb::Coord origin(static_cast<openvdb::Int32>(ox), static_cast<openvdb::Int32>(oy),
+                                static_cast<openvdb::Int32>(oz));
+    const MaskLeaf* leaf = tree.probeConstLeaf(origin);
+    const bool tile = leaf == nullptr && tree.isValueOn(origin);
+    for (std::int64_t x = ox; x < std::min(m, ox + kBlock); ++x) {
+        const std::uint64_t word =
+            leaf != nullptr
+                ? leaf->getValueMask().getWord<std::uint64_t>(static_cast<openvdb::Index>(x - ox))
+                : (tile ? ~std::uint64_t{0} : 0);
+        for (std::int64_t y = oy; y < std::min(m, oy + kBlock); ++y) {
+            T* row = values + (x * m + y) * rowStride;
+            const std::int64_t shift = (y - oy) * kBlock - oz;
+            for (std::int64_t z = oz; z < std::min(m, oz + kBlock); ++z)
+                row[z] = static_cast<T>((word >> (shift + z)) & 1);
+        }
+    }
+}
+
+} // namespace
+
+struct Voxelization::Grid {
+    openvdb::MaskGrid::Ptr grid;
+};
+
+Voxelization::Voxelization(std::unique_ptr<Grid> grid, VoxelizationParameters parameters,
+                           double boxLength, double p, double phiExact, std::int64_t solidCount,
+                           double runtimeSeconds)
+    : grid_(std::move(grid)), parameters_(parameters), voxels_(parameters.voxels),
+      boxLength_(boxLength), p_(p), phiExact_(phiExact), solidCount_(solidCount),
+      runtimeSeconds_(runtimeSeconds) {}
+
+Voxelization::Voxelization(Voxelization&&) noexcept = default;
+Voxelization& Voxelization::operator=(Voxelization&&) noexcept = default;
+Voxelization::~Voxelization() = default;
+
+double Voxelization::phiVoxel() const {
+    const auto m = static_cast<double>(voxels_);
+    return static_cast<double>(solidCount_) / (m * m * m);
+}
+
+std::size_t Voxelization::memoryBytes() const {
+    return static_cast<std::size_t>(grid_->grid->memUsage());
+}
+
+bool Voxelization::solid(std::int64_t i, std::int64_t j, std::int64_t k) const {
+    auto wrap = [m = std::int64_t{voxels_}](std::int64_t v) { return ((v % m) + m) % m; };
+    return grid_->grid->tree().isValueOn(openvdb::Coord(static_cast<openvdb::Int32>(wrap(i)),
+                                                        static_cast<openvdb::Int32>(wrap(j)),
+                                                        static_cast<openvdb::Int32>(wrap(k))));
+}
+
+template <class T>
+void Voxelization::copySolid(std::span<T> values, std::int64_t rowStride, const char* what) const {
+    const std::int64_t m = voxels_;
+    if (rowStride < m || values.size() != static_cast<std::size_t>(m * m * rowStride))
+        throw std::invalid_argument(std::string(what) + ": the destination has " +
+                                    std::to_string(values.size()) + " entries, not M^2 * " +
+                                    std::to_string(rowStride) + " for M = " + std::to_string(m));
+    const MaskTree& tree = grid_->grid->tree();
+    const std::int64_t blocks = (m + kBlock - 1) / kBlock;
+    // One task per slab of 8 x-planes: contiguous output, no two tasks share a cache line.
+    parallelFor(
+        0, blocks, 1,
+        [&](std::int64_t begin, std::int64_t end) {
+            for (std::int64_t bx = begin; bx < end; ++bx)
+                for (std::int64_t by = 0; by < blocks; ++by)
+                    for (std::int64_t bz = 0; bz < blocks; ++bz)
+                        copyBlock(tree, bx * kBlock, by * kBlock, bz * kBlock, m, values.data(),
+                                  rowStride);
+        },
+        parameters_.serial);
+}
+
+void Voxelization::copySolidMask(std::span<std::uint8_t> mask) const {
+    copySolid(mask, voxels_, "copySolidMask");
+}
+
+void Voxelization::copySolidIndicator(std::span<double> values, std::int64_t rowStride) const {
+    copySolid(values, rowStride, "copySolidIndicator");
+}
+
+void Voxelization::writeVdb(const std::filesystem::path& file) const {
+    static std::once_flag initialized;
+    std::call_once(initialized, [] { openvdb::initialize(); });
+    AtomicOutput out(file);
+    openvdb::FloatGrid::Ptr density = openvdb::FloatGrid::create(0.0f);
+    density->setName("density");
+    density->setGridClass(openvdb::GRID_FOG_VOLUME);
+    density->setTransform(grid_->grid->transform().copy());
+    density->tree().topologyUnion(grid_->grid->tree());
+    openvdb::tools::foreach (density->beginValueOn(),
+                             [](const openvdb::FloatGrid::ValueOnIter& it) { it.setValue(1.0f); });
+    density->insertMeta("p", openvdb::DoubleMetadata(p_));
+    density->insertMeta("box_length", openvdb::DoubleMetadata(boxLength_));
+    density->insertMeta("voxels", openvdb::Int64Metadata(voxels_));
+    density->insertMeta("phi_voxel", openvdb::DoubleMetadata(phiVoxel()));
+    density->insertMeta("phi_exact", openvdb::DoubleMetadata(phiExact_));
+    try {
+        openvdb::io::File vdb(out.temporaryPath().string());
+        vdb.write(openvdb::GridCPtrVec{density});
+        vdb.close();
+    } catch (const openvdb::Exception& e) {
+        throw OutputPathError("cannot write '" + file.string() + "': " + e.what());
+    }
+    out.commit();
+}
+
+Voxelizer::Voxelizer(VoxelizationParameters parameters) : parameters_(parameters) {
+    if (parameters.voxels < 1 || parameters.voxels > kMaxVoxels)
+        throw VoxelResolutionError("voxel grid: M = " + std::to_string(parameters.voxels) +
+                                   " is not in [1, " + std::to_string(kMaxVoxels) + "]");
+}
+
+int Voxelizer::minimumVoxels(const Packing& packing) {
+    const double width = 2.0 * packing.shape().inradius();
+    return static_cast<int>(std::ceil(kMinVoxelsAcross * packing.boxLength / width));
+}
+
+void Voxelizer::checkResolution(const Packing& packing, int voxels) {
+    const Superball shape = packing.shape();
+    if (2.0 * shape.circumradius() > packing.boxLength)
+        throw VoxelResolutionError(
+            "voxel grid: the particles (circumdiameter " +
+            std::to_string(2.0 * shape.circumradius()) +
+            ") are larger than the box (L = " + std::to_string(packing.boxLength) + ")");
+    const double across = voxels * 2.0 * shape.inradius() / packing.boxLength;
+    if (across < kMinVoxelsAcross) {
+        std::ostringstream message;
+        message << std::setprecision(3) << "voxel grid: M = " << voxels << " puts " << across
+                << " voxels across the narrowest width of a particle (2 r_in = "
+                << 2.0 * shape.inradius() << " in L = " << packing.boxLength << "), fewer than "
+                << kMinVoxelsAcross << "; use M >= " << minimumVoxels(packing);
+        throw VoxelResolutionError(message.str());
+    }
+}
+
+double Voxelizer::memoryEstimateBytes(const Packing& packing, int voxels) {
+    const double m = voxels;
+    const double leaves = std::pow(std::ceil(m / kBlock), 3);
+    // A leaf: 64-byte mask, origin, allocation and parent-table overhead (~100 bytes in all),
+    // and one pointer, tile flag and count per block during the build.
+    const double tree = leaves * (100.0 + 16.0);
+    const double blocksAcross =
+        2.0 * packing.shape().circumradius() / (packing.boxLength / m) / kBlock + 2.0;
+    const double candidates = static_cast<double>(packing.size()) * 2.0 * // periodic images
+                              std::pow(blocksAcross, 3) * sizeof(Candidate);
+    return tree + candidates;
+}
+
+Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress) const {
+    const Stopwatch clock;
+    const int m = parameters_.voxels;
+    checkResolution(packing, m);
+    const Superball shape = packing.shape();
+    const double boxLength = packing.boxLength;
+    const double a = boxLength / m;
+    const double rc = shape.circumradius() * (1.0 + kSphereMargin);
+    const double ri = shape.inradius() * (1.0 - kSphereMargin);
+    const int blocks = (m + kBlock - 1) / kBlock;
+    const std::int64_t blockCount = std::int64_t{blocks} * blocks * blocks;
+
+    // Lab-to-body rotations: x_body = R^T (x - r).
+    std::vector<Eigen::Matrix3d> toBody(packing.size());
+    for (std::size_t j = 0; j < packing.size(); ++j)
+        toBody[j] = packing.orientations[j].toRotationMatrix().transpose();
+
+    // Candidate lists per block, by counting sort: O(N + blocks).
+    std::vector<std::int64_t> start(blockCount + 1, 0);
+    auto forEachImageBlock = [&](auto&& visit) {
+        for (std::size_t j = 0; j < packing.size(); ++j) {
+            const Vector3d& r = packing.positions[j];
+            for (double sx : imageShifts(r.x(), rc, boxLength))
+                for (double sy : imageShifts(r.y(), rc, boxLength))
+                    for (double sz : imageShifts(r.z(), rc, boxLength)) {
+                        const Vector3d c = r + Vector3d(sx, sy, sz);
+                        const auto [x0, x1] = voxelRange(c.x(), rc, a, 0, m - 1);
+                        const auto [y0, y1] = voxelRange(c.y(), rc, a, 0, m - 1);
+                        const auto [z0, z1] = voxelRange(c.z(), rc, a, 0, m - 1);
+                        if (x0 > x1 || y0 > y1 || z0 > z1) continue;
+                        for (int bx = x0 / kBlock; bx <= x1 / kBlock; ++bx)
+                            for (int by = y0 / kBlock; by <= y1 / kBlock; ++by)
+                                for (int bz = z0 / kBlock; bz <= z1 / kBlock; ++bz)
+                                    visit((std::int64_t{bx} * blocks + by) * blocks + bz,
+                                          Candidate{c, static_cast<int>(j)});
+                    }
+        }
+    };
+    forEachImageBlock([&](std::int64_t block, const Candidate&) { ++start[block + 1]; });
+    for (std::int64_t b = 0; b < blockCount; ++b)
+        start[b + 1] += start[b];
+    std::vector<Candidate> candidates(static_cast<std::size_t>(start.back()));
+    {
+        std::vector<std::int64_t> next(start.begin(), start.end() - 1);
+        forEachImageBlock(
+            [&](std::int64_t block, const Candidate& c) { candidates[next[block]++] = c; });
+    }
+
+    // Each block: its 8 words, then a leaf (some solid), a tile (all solid) or nothing.
+    const ContainmentTest inside(shape);
+    const BlockGeometry geometry{m, a, rc, ri};
+    std::vector<std::unique_ptr<MaskLeaf>> leaves(blockCount);
+    std::vector<std::uint8_t> fullBlock(blockCount, 0);
+    std::vector<int> solidInBlock(blockCount, 0);
+    parallelFor(
+        0, blockCount, kBlocksPerTask,
+        [&](std::int64_t begin, std::int64_t end) {
+            progress.checkInterrupt();
+            for (std::int64_t b = begin; b < end; ++b) {
+                const int ox = static_cast<int>(b / (std::int64_t{blocks} * blocks)) * kBlock;
+                const int oy = static_cast<int>((b / blocks) % blocks) * kBlock;
+                const int oz = static_cast<int>(b % blocks) * kBlock;
+                const std::span<const Candidate> mine(candidates.data() + start[b],
+                                                      candidates.data() + start[b + 1]);
+                const auto words = voxelizeBlock(ox, oy, oz, mine, toBody, inside, geometry);
+                int count = 0;
+                bool full = ox + kBlock <= m && oy + kBlock <= m && oz + kBlock <= m;
+                for (std::uint64_t w : words) {
+                    count += std::popcount(w);
+                    full = full && w == ~std::uint64_t{0};
+                }
+                solidInBlock[b] = count;
+                if (full) {
+                    fullBlock[b] = 1;
+                } else if (count > 0) {
+                    auto leaf = std::make_unique<MaskLeaf>(openvdb::Coord(ox, oy, oz), false);
+                    for (int x = 0; x < kBlock; ++x)
+                        leaf->getValueMask().getWord<std::uint64_t>(x) = words[x];
+                    leaves[b] = std::move(leaf);
+                }
+            }
+        },
+        parameters_.serial);
+
+    // Assemble the tree (serial, O(blocks)): leaves and leaf-sized tiles of the level-1 nodes.
+    auto grid = std::make_unique<Voxelization::Grid>();
+    grid->grid = openvdb::MaskGrid::create(false);
+    grid->grid->setName("solid");
+    openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(a);
+    transform->postTranslate(openvdb::Vec3d(0.5 * a)); // index (i, j, k) -> centre (i + 1/2) a
+    grid->grid->setTransform(transform);
+    MaskTree& tree = grid->grid->tree();
+    std::int64_t solid = 0;
+    for (std::int64_t b = 0; b < blockCount; ++b) {
+        solid += solidInBlock[b];
+        if (leaves[b]) {
+            tree.addLeaf(leaves[b].release());
+        } else if (fullBlock[b]) {
+            const int bx = static_cast<int>(b / (std::int64_t{blocks} * blocks));
+            const int by = static_cast<int>((b / blocks) % blocks);
+            const int bz = static_cast<int>(b % blocks);
+            tree.addTile(1, openvdb::Coord(bx * kBlock, by * kBlock, bz * kBlock), true, true);
+        }
+    }
+    return Voxelization(std::move(grid), parameters_, boxLength, packing.p,
+                        packing.packingFraction(), solid, clock.seconds());
+}
+
+} // namespace sbpack

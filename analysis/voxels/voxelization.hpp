@@ -1,0 +1,116 @@
+#pragma once
+// Voxelization of a packing (paper Sec. III B, DESIGN.md §5): M^3 cubic voxels of edge a = L / M
+// tile the periodic box; voxel (i, j, k) has its centre at ((i + 1/2) a, (j + 1/2) a, (k + 1/2) a)
+// and is solid when that centre lies inside a particle or one of its periodic images
+// (Superball::contains on the body-frame vector; the paper's epsilon rescaling is not applied).
+// Stored sparsely as an OpenVDB mask grid; OpenVDB stays out of this header (pimpl).
+
+#include "packing/packing.hpp"
+#include "progress/progress.hpp"
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <stdexcept>
+
+namespace sbpack {
+
+/// A grid too coarse for the particles, or too large to be represented.
+class VoxelResolutionError : public std::invalid_argument {
+  public:
+    using std::invalid_argument::invalid_argument;
+};
+
+struct VoxelizationParameters {
+    int voxels = 300; ///< M, voxels along each box edge
+    /// Execution only: run on the calling thread (the result is the same).
+    bool serial = false;
+};
+
+/// The immutable result: which voxels are solid.
+class Voxelization {
+  public:
+    Voxelization(Voxelization&&) noexcept;
+    Voxelization& operator=(Voxelization&&) noexcept;
+    ~Voxelization();
+
+    int voxels() const { return voxels_; }
+    double boxLength() const { return boxLength_; }
+    double voxelSize() const { return boxLength_ / voxels_; }
+    std::int64_t solidCount() const { return solidCount_; }
+    /// Fraction of solid voxels.
+    double phiVoxel() const;
+    /// N v1 / L^3 of the packing voxelized.
+    double phiExact() const { return phiExact_; }
+    /// Memory held by the OpenVDB tree (bytes).
+    std::size_t memoryBytes() const;
+    double runtimeSeconds() const { return runtimeSeconds_; }
+    const VoxelizationParameters& parameters() const { return parameters_; }
+
+    /// Whether voxel (i, j, k) is solid; indices are taken modulo M (periodic box).
+    bool solid(std::int64_t i, std::int64_t j, std::int64_t k) const;
+    /// Fills mask[(i * M + j) * M + k] with 1 (solid) or 0 for every voxel; parallel by blocks of
+    /// the grid. Throws std::invalid_argument unless mask.size() == M^3.
+    void copySolidMask(std::span<std::uint8_t> mask) const;
+    /// Fills values[(i * M + j) * rowStride + k] with 1.0 (solid) or 0.0 for k < M, leaving
+    /// the padding k >= M of each row alone (FFTW's in-place real-to-complex layout).
+    /// Throws std::invalid_argument unless rowStride >= M and values.size() == M^2 rowStride.
+    void copySolidIndicator(std::span<double> values, std::int64_t rowStride) const;
+
+    /// Writes the grid as an OpenVDB file (atomically, through AtomicOutput) for Blender,
+    /// Houdini or ParaView: a float fog volume "density" (1 in the particles, 0 elsewhere) in
+    /// the packing's length units, with metadata p, box_length, voxels, phi_voxel, phi_exact.
+    void writeVdb(const std::filesystem::path& file) const;
+
+  private:
+    friend class Voxelizer;
+    struct Grid; // the OpenVDB mask grid
+    Voxelization(std::unique_ptr<Grid> grid, VoxelizationParameters parameters, double boxLength,
+                 double p, double phiExact, std::int64_t solidCount, double runtimeSeconds);
+    template <class T>
+    void copySolid(std::span<T> values, std::int64_t rowStride, const char* what) const;
+
+    std::unique_ptr<Grid> grid_;
+    VoxelizationParameters parameters_;
+    int voxels_;
+    double boxLength_;
+    double p_;
+    double phiExact_;
+    std::int64_t solidCount_;
+    double runtimeSeconds_;
+};
+
+/// Compute object (STYLE.md): parameters validated at construction.
+class Voxelizer {
+  public:
+    /// Largest M accepted (OpenVDB coordinates and M^3 stay far from overflow).
+    static constexpr int kMaxVoxels = 1 << 16;
+    /// Fewest voxels across the narrowest width of a particle (twice its inradius).
+    static constexpr double kMinVoxelsAcross = 4.0;
+
+    /// Throws VoxelResolutionError unless 1 <= voxels <= kMaxVoxels.
+    explicit Voxelizer(VoxelizationParameters parameters);
+
+    /// Smallest M that puts kMinVoxelsAcross voxels across the particles of `packing`.
+    static int minimumVoxels(const Packing& packing);
+    /// Throws VoxelResolutionError if M < minimumVoxels(packing) (the message gives both), or if
+    /// a particle's circumdiameter exceeds L (it would overlap its own periodic image).
+    static void checkResolution(const Packing& packing, int voxels);
+    /// Upper bound of the memory compute() needs (bytes): one bit per voxel plus OpenVDB's
+    /// per-leaf overhead, and the per-block candidate lists.
+    static double memoryEstimateBytes(const Packing& packing, int voxels);
+
+    /// Parallel by output blocks (the 8^3 leaves of the tree): each block tests the voxels of
+    /// the particles whose circumscribed sphere reaches it (candidate lists, O(voxels + N));
+    /// voxels inside the inscribed sphere are solid without a test, only the shell up to the
+    /// circumscribed sphere needs Superball::contains. Fully solid blocks become tiles.
+    Voxelization compute(const Packing& packing, const Progress& progress) const;
+
+    const VoxelizationParameters& parameters() const { return parameters_; }
+
+  private:
+    VoxelizationParameters parameters_;
+};
+
+} // namespace sbpack

@@ -1,0 +1,52 @@
+#pragma once
+// Small packings with known geometry for the analysis tests (fixed seeds).
+
+#include "packing/packing.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+
+namespace sbpack::testing {
+
+/// cells^3 superballs of semi-axis 0.5 on a simple-cubic lattice of the given spacing (box edge
+/// cells * spacing), each displaced by up to `jitter` along each axis and, unless aligned,
+/// rotated uniformly at random; the lattice starts at `offset` so that particles cross the box
+/// faces. With spacing >= 2 circumradius + 2 sqrt(3) jitter nothing overlaps.
+inline Packing latticePacking(double p, int cells, double spacing, double jitter,
+                              std::uint64_t seed, bool aligned = false, double offset = 0.1) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    std::normal_distribution<double> normal;
+    Packing packing;
+    packing.p = p;
+    packing.semiAxis = 0.5;
+    packing.boxLength = cells * spacing;
+    for (int i = 0; i < cells; ++i)
+        for (int j = 0; j < cells; ++j)
+            for (int k = 0; k < cells; ++k) {
+                Vector3d r = Vector3d(i, j, k) * spacing + Vector3d::Constant(offset);
+                if (jitter > 0.0) r += jitter * Vector3d(uniform(rng), uniform(rng), uniform(rng));
+                packing.positions.push_back(wrapIntoBox(r, packing.boxLength));
+                Quaterniond q = Quaterniond::Identity();
+                if (!aligned)
+                    q = Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng))
+                            .normalized();
+                packing.orientations.push_back(q);
+            }
+    return packing;
+}
+
+/// One superball of semi-axis `radius` at `position` in a box of edge L.
+inline Packing singleParticle(double p, double radius, double boxLength, const Vector3d& position,
+                              const Quaterniond& orientation = Quaterniond::Identity()) {
+    Packing packing;
+    packing.p = p;
+    packing.semiAxis = radius;
+    packing.boxLength = boxLength;
+    packing.positions = {position};
+    packing.orientations = {orientation};
+    return packing;
+}
+
+} // namespace sbpack::testing

@@ -1,0 +1,272 @@
+#include "cli/commands.hpp"
+#include "io/hdf5_handles.hpp"
+#include "io/packing_io.hpp"
+#include "parallel/parallel.hpp"
+#include "pipeline/analysis_registry.hpp"
+#include "pipeline/ensemble.hpp"
+#include "pipeline/resources.hpp"
+#include "pipeline/run.hpp"
+
+#include "test_packings.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace sbpack {
+namespace {
+
+namespace fs = std::filesystem;
+
+const Progress quiet;
+
+/// A scratch directory, removed at the end of the test.
+class TempDir {
+  public:
+    explicit TempDir(const std::string& name) : path_(fs::temp_directory_path() / name) {
+        fs::remove_all(path_);
+        fs::create_directories(path_);
+    }
+    ~TempDir() { fs::remove_all(path_); }
+    fs::path operator/(const std::string& file) const { return path_ / file; }
+    std::size_t entries() const {
+        return static_cast<std::size_t>(
+            std::distance(fs::directory_iterator(path_), fs::directory_iterator()));
+    }
+
+  private:
+    fs::path path_;
+};
+
+RunSettings settingsFor(std::vector<fs::path> inputs, const fs::path& output) {
+    RunSettings s;
+    s.inputs = std::move(inputs);
+    s.output = output;
+    s.threads = 2;
+    s.voxels = 40;
+    s.maxQw = 8.0;
+    s.analyses = resolveAnalyses("all");
+    s.fft = {FftPlanning::Estimate, {}};
+    s.quiet = true;
+    return s;
+}
+
+TEST(AnalysisRegistry, ResolvesNamesAndWhatTheyNeed) {
+    EXPECT_EQ(resolveAnalyses("sq"), AnalysisSet{Analysis::StructureFactor});
+    EXPECT_EQ(resolveAnalyses("chi"), (AnalysisSet{Analysis::SpectralDensity, Analysis::Voxels}));
+    EXPECT_EQ(resolveAnalyses("all").size(), analysisRegistry().size());
+    EXPECT_EQ(analysisNames(resolveAnalyses("voxels,sq")), "sq,voxels");
+    try {
+        resolveAnalyses("sq,bogus");
+        FAIL() << "accepted an unknown analysis";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("'bogus'"), std::string::npos);
+        EXPECT_NE(std::string(e.what()).find("known: contacts, sq, chi, voxels"),
+                  std::string::npos);
+    }
+    EXPECT_THROW(resolveAnalyses("sq,"), std::invalid_argument);
+}
+
+TEST(CommandLine, ParsesTheAnalysisOptions) {
+    const RunSettings s = parseAnalyzeArguments(
+        {"a.h5",       "--compute", "sq",           "b.h5",  "--threads", "1",      "--voxels",
+         "64",         "--qmax",    "12.5",         "--out", "r.h5",      "--json", "-",
+         "--fft-plan", "estimate",  "--fft-wisdom", "none",  "--vdb",     "dir",    "--quiet"});
+    EXPECT_EQ(s.inputs, (std::vector<fs::path>{"a.h5", "b.h5"}));
+    EXPECT_EQ(s.analyses, (AnalysisSet{Analysis::StructureFactor, Analysis::Voxels})); // --vdb
+    EXPECT_EQ(s.threads, 1);
+    EXPECT_EQ(s.voxels, 64);
+    EXPECT_EQ(s.poreVoxels, 500);
+    EXPECT_DOUBLE_EQ(s.maxQw, 12.5);
+    EXPECT_EQ(s.fft.planning, FftPlanning::Estimate);
+    EXPECT_TRUE(s.fft.wisdomFile.empty());
+    EXPECT_TRUE(s.quiet);
+    const RunSettings defaults = parseAnalyzeArguments({"a.h5", "--out", "r.h5"});
+    EXPECT_EQ(defaults.voxels, 300);
+    EXPECT_DOUBLE_EQ(defaults.maxQw, 30.0);
+    EXPECT_EQ(defaults.analyses, resolveAnalyses("all"));
+    for (const std::vector<std::string>& bad :
+         {std::vector<std::string>{"a.h5", "--threads", "0"},
+          {"a.h5", "--threads", std::to_string(ThreadBudget::maxThreads() + 1)},
+          {"a.h5", "--threads", "two"},
+          {"a.h5", "--voxels", "0"},
+          {"a.h5", "--qmax", "-3"},
+          {"a.h5", "--compute", "pores?"},
+          {"a.h5", "--fft-plan", "quick"},
+          {"a.h5", "--bogus"},
+          {"a.h5", "--out"},
+          {"a.h5", "--tolerance", "-1"}})
+        EXPECT_THROW(parseAnalyzeArguments(bad), std::invalid_argument) << bad[1];
+}
+
+TEST(Pipeline, OneAndTwoThreadsAgree) {
+    // The whole chain, serial on one thread against parallel on two: the voxels exactly, the
+    // curves to 1e-12 (FFTW's threaded plans may round differently).
+    for (const Packing& packing : {testing::latticePacking(1.5, 3, 1.35, 0.03, 41),
+                                   testing::latticePacking(1.0, 3, 1.2, 0.05, 43)}) {
+        std::vector<std::uint8_t> masks[2];
+        ShellAverage sq[2], chi[2], exact[2];
+        for (const int threads : {1, 2}) {
+            const ThreadBudget budget(threads);
+            const bool serial = threads == 1;
+            const Voxelization voxels = Voxelizer({48, serial}).compute(packing, quiet);
+            masks[threads - 1].resize(48 * 48 * 48);
+            voxels.copySolidMask(masks[threads - 1]);
+            sq[threads - 1] = StructureFactor({20.0, serial}).compute(packing, quiet).shells;
+            SpectralDensityParameters parameters;
+            parameters.maxQw = 20.0;
+            parameters.fft = {FftPlanning::Estimate, {}};
+            parameters.serial = serial;
+            const SpectralDensityResult s =
+                SpectralDensity(parameters).compute(packing, voxels, quiet);
+            chi[threads - 1] = s.shells;
+            if (s.exactSphere) exact[threads - 1] = s.exactSphere->exact;
+        }
+        EXPECT_EQ(masks[0], masks[1]);
+        for (const auto* curves : {sq, chi, exact}) {
+            ASSERT_EQ(curves[0].size(), curves[1].size());
+            for (std::size_t s = 0; s < curves[0].size(); ++s)
+                EXPECT_NEAR(curves[0].value[s], curves[1].value[s],
+                            1e-12 * std::abs(curves[0].value[s]));
+        }
+        EXPECT_EQ(exact[0].size() > 0, packing.p == 1.0);
+    }
+}
+
+TEST(Pipeline, WritesTheResultsFileOfOneInput) {
+    const TempDir dir("sbpack-test-pipeline-one");
+    writePacking(testing::latticePacking(1.5, 3, 1.35, 0.03, 5), dir / "a.h5");
+    const RunSettings s = settingsFor({dir / "a.h5"}, dir / "r.h5");
+    std::ostringstream log, out;
+    const RunResults results = runAnalyses(s, log, out);
+    ASSERT_EQ(results.files.size(), 1u);
+    EXPECT_TRUE(log.str().empty()); // quiet
+    const Hdf5Handle h5 = openFileReadOnly(dir / "r.h5");
+    const hid_t root = h5.get();
+    EXPECT_EQ(readStringAttribute(root, "format"), "sbpack.results");
+    EXPECT_EQ(readInt64Attribute(root, "format_version"), 1);
+    EXPECT_EQ(readInt64Attribute(root, "n_particles"), 27);
+    EXPECT_DOUBLE_EQ(readDoubleAttribute(root, "p"), 1.5);
+    EXPECT_GT(readDoubleAttribute(root, "mean_width"), 1.0);
+    for (const char* group : {"structure_factor", "spectral_density", "voxelization", "contacts"}) {
+        ASSERT_TRUE(hasLink(root, group)) << group;
+        EXPECT_TRUE(hasAttribute(openGroup(root, group).get(), "runtime_s")) << group;
+    }
+    const Hdf5Handle chi = openGroup(root, "spectral_density");
+    EXPECT_EQ(readInt64Attribute(chi.get(), "voxels"), 40);
+    EXPECT_DOUBLE_EQ(readDoubleAttribute(chi.get(), "phi_voxel"),
+                     results.files[0].voxelization->phiVoxel);
+    for (const char* name : {"Q", "chi", "count", "Q_w"})
+        EXPECT_TRUE(hasLink(chi.get(), name)) << name;
+    const Hdf5Handle vox = openGroup(root, "voxelization");
+    EXPECT_DOUBLE_EQ(readDoubleAttribute(vox.get(), "phi_exact"), results.files[0].phi);
+    const Hdf5Handle contacts = openGroup(root, "contacts");
+    EXPECT_TRUE(hasLink(contacts.get(), "counts"));
+    EXPECT_DOUBLE_EQ(readDoubleAttribute(contacts.get(), "tolerance"), 1e-10);
+    EXPECT_FALSE(hasLink(root, "ensemble"));
+    EXPECT_EQ(dir.entries(), 2u); // the input and the results: no temporaries left
+}
+
+TEST(Pipeline, SeveralInputsGetFilesAndAnEnsemble) {
+    const TempDir dir("sbpack-test-pipeline-ensemble");
+    const Packing packing = testing::latticePacking(1.0, 3, 1.2, 0.05, 7);
+    writePacking(packing, dir / "a.h5");
+    writePacking(packing, dir / "b.h5");
+    RunSettings s = settingsFor({dir / "a.h5", dir / "b.h5"}, dir / "r.h5");
+    s.analyses = resolveAnalyses("sq,contacts");
+    s.json = "-";
+    std::ostringstream log, out;
+    const RunResults results = runAnalyses(s, log, out);
+    EXPECT_NE(out.str().find("\"ensemble\""), std::string::npos);
+    const Hdf5Handle h5 = openFileReadOnly(dir / "r.h5");
+    EXPECT_EQ(readInt64Attribute(h5.get(), "n_files"), 2);
+    EXPECT_FALSE(hasLink(h5.get(), "structure_factor"));
+    EXPECT_FALSE(hasLink(h5.get(), "voxelization")); // sq alone voxelises nothing
+    const Hdf5Handle files = openGroup(h5.get(), "files");
+    EXPECT_EQ(readStringAttribute(openGroup(files.get(), "1").get(), "input"),
+              (dir / "b.h5").string());
+    EXPECT_TRUE(hasLink(openGroup(files.get(), "0").get(), "structure_factor"));
+    // Identical inputs: the ensemble mean is each file's curve, the spread zero.
+    const EnsembleResults& e = *results.ensemble;
+    const EnsembleCurve& curve = *e.groups.at("structure_factor").curve;
+    const ShellAverage& one = results.files[0].structureFactor->shells;
+    ASSERT_EQ(curve.mean.size(), one.size());
+    for (std::size_t i = 0; i < one.size(); ++i) {
+        EXPECT_DOUBLE_EQ(curve.mean[i], one.value[i]);
+        EXPECT_EQ(curve.std[i], 0.0);
+        EXPECT_EQ(curve.files[i], 2);
+        EXPECT_EQ(curve.count[i], 2 * one.count[i]);
+    }
+    const Hdf5Handle ensemble = openGroup(h5.get(), "ensemble");
+    const Hdf5Handle sq = openGroup(ensemble.get(), "structure_factor");
+    for (const char* name : {"Q_w", "Q", "S", "S_std", "count", "files"})
+        EXPECT_TRUE(hasLink(sq.get(), name)) << name;
+    EXPECT_DOUBLE_EQ(readDoubleAttribute(openGroup(ensemble.get(), "contacts").get(), "z_mean_std"),
+                     0.0);
+}
+
+TEST(Pipeline, EnsembleCurvesShareAGridInQw) {
+    // Two files whose boxes differ by 1 %: shell s of each lands in bin s.
+    ShellAverage a{{1.0, 2.0}, {10.0, 20.0}, {6, 12}}, b{{1.01, 2.02}, {14.0, 30.0}, {6, 12}};
+    const std::vector<ShellAverage> curves{a, b};
+    const std::vector<double> widths{1.0, 1.0};
+    const std::vector<double> lengths{2.0 * std::numbers::pi, 2.0 * std::numbers::pi / 1.01};
+    const EnsembleCurve c = ensembleCurve(curves, widths, lengths);
+    ASSERT_EQ(c.mean.size(), 2u);
+    EXPECT_DOUBLE_EQ(c.mean[0], 12.0);
+    EXPECT_DOUBLE_EQ(c.std[0], std::sqrt(8.0));
+    EXPECT_DOUBLE_EQ(c.mean[1], 25.0);
+    EXPECT_DOUBLE_EQ(c.qw[1], 2.01);
+    EXPECT_EQ(c.files[1], 2);
+    const EnsembleScalar one = ensembleScalar(std::vector<double>{3.0});
+    EXPECT_EQ(one.std, 0.0);
+}
+
+TEST(Pipeline, BadInputLeavesNoOutput) {
+    const TempDir dir("sbpack-test-pipeline-bad");
+    writePacking(testing::latticePacking(1.0, 3, 1.2, 0.05, 9), dir / "good.h5");
+    {
+        std::ofstream bad(dir / "bad.h5");
+        bad << "not a packing\n";
+    }
+    std::ostringstream log, out;
+    // An invalid second input, a grid too coarse, a grid too large for memory, no threads.
+    RunSettings invalid = settingsFor({dir / "good.h5", dir / "bad.h5"}, dir / "r.h5");
+    EXPECT_THROW(runAnalyses(invalid, log, out), std::exception);
+    RunSettings coarse = settingsFor({dir / "good.h5"}, dir / "r.h5");
+    coarse.voxels = 8;
+    try {
+        runAnalyses(coarse, log, out);
+        FAIL() << "accepted a coarse grid";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("--voxels 8"), std::string::npos) << e.what();
+    }
+    RunSettings huge = settingsFor({dir / "good.h5"}, dir / "r.h5");
+    huge.voxels = 50000;
+    try {
+        runAnalyses(huge, log, out);
+        FAIL() << "accepted a grid larger than memory";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("FFT grid 50000^3"), std::string::npos) << e.what();
+    }
+    RunSettings noThreads = settingsFor({dir / "good.h5"}, dir / "r.h5");
+    noThreads.threads = 0;
+    EXPECT_THROW(runAnalyses(noThreads, log, out), std::invalid_argument);
+    EXPECT_EQ(dir.entries(), 2u); // the two inputs only
+    EXPECT_TRUE(availableMemoryBytes().has_value());
+}
+
+TEST(Pipeline, InterruptStopsAStageAtItsNextChunk) {
+    const Packing packing = testing::latticePacking(1.5, 3, 1.35, 0.03, 5);
+    requestInterrupt();
+    EXPECT_THROW(Voxelizer({40}).compute(packing, quiet), Interrupted);
+    EXPECT_THROW(StructureFactor({10.0}).compute(packing, quiet), Interrupted);
+    clearInterrupt();
+    EXPECT_NO_THROW(Voxelizer({40}).compute(packing, quiet));
+}
+
+} // namespace
+} // namespace sbpack
