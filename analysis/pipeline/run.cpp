@@ -42,6 +42,8 @@ std::string fileContext(std::size_t index, std::size_t count, const fs::path& fi
 std::vector<fs::path> vdbTargets(const RunSettings& settings) {
     std::vector<fs::path> targets(settings.inputs.size());
     if (settings.vdbDirectory.empty()) return targets;
+    if (!settings.runs(Analysis::Voxels))
+        throw std::invalid_argument("option --vdb: exports the voxels analysis, which is not run");
     std::error_code ec;
     if (!fs::is_directory(settings.vdbDirectory, ec))
         throw std::invalid_argument("option --vdb: " + quotedName(settings.vdbDirectory) +
