@@ -42,6 +42,8 @@ std::string fileContext(std::size_t index, std::size_t count, const fs::path& fi
 std::vector<fs::path> vdbTargets(const RunSettings& settings) {
     std::vector<fs::path> targets(settings.inputs.size());
     if (settings.vdbDirectory.empty()) return targets;
+    if (!settings.runs(Analysis::Voxels))
+        throw std::invalid_argument("option --vdb: exports the voxels analysis, which is not run");
     std::error_code ec;
     if (!fs::is_directory(settings.vdbDirectory, ec))
         throw std::invalid_argument("option --vdb: " + quotedName(settings.vdbDirectory) +
@@ -56,6 +58,26 @@ std::vector<fs::path> vdbTargets(const RunSettings& settings) {
         checkWritable(targets[i]);
     }
     return targets;
+}
+
+/// The outputs can be written and overwrite neither each other nor an input.
+void checkOutputs(const RunSettings& settings) {
+    if (settings.output.empty() && settings.json.empty())
+        throw std::invalid_argument("nothing to write: give --out RESULTS.h5 and/or --json FILE");
+    std::vector<fs::path> outputs;
+    if (!settings.output.empty()) outputs.push_back(settings.output);
+    if (!settings.json.empty() && settings.json != "-") outputs.push_back(settings.json);
+    for (std::size_t i = 0; i < outputs.size(); ++i) {
+        checkWritable(outputs[i]);
+        const fs::path target = fs::weakly_canonical(outputs[i]);
+        if (i == 1 && target == fs::weakly_canonical(outputs[0]))
+            throw std::invalid_argument("--out and --json name the same file " +
+                                        quotedName(outputs[i]));
+        for (const fs::path& input : settings.inputs)
+            if (target == fs::weakly_canonical(input))
+                throw std::invalid_argument("output " + quotedName(outputs[i]) +
+                                            " is also an input");
+    }
 }
 
 /// Everything that can be checked before the first analysis, so that bad input costs nothing.
@@ -85,10 +107,7 @@ std::vector<Packing> readAndCheckInputs(const RunSettings& settings) {
 RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out) {
     const Stopwatch clock;
     const ThreadBudget budget(settings.threads);
-    if (settings.output.empty() && settings.json.empty())
-        throw std::invalid_argument("nothing to write: give --out RESULTS.h5 and/or --json FILE");
-    if (!settings.output.empty()) checkWritable(settings.output);
-    if (!settings.json.empty() && settings.json != "-") checkWritable(settings.json);
+    checkOutputs(settings);
     const std::vector<fs::path> vdbFiles = vdbTargets(settings);
     const std::vector<Packing> packings = readAndCheckInputs(settings);
 

@@ -255,6 +255,12 @@ TEST(Pipeline, BadInputLeavesNoOutput) {
     RunSettings noThreads = settingsFor({dir / "good.h5"}, dir / "r.h5");
     noThreads.threads = 0;
     EXPECT_THROW(runAnalyses(noThreads, log, out), std::invalid_argument);
+    // Outputs that would overwrite an input or each other.
+    EXPECT_THROW(runAnalyses(settingsFor({dir / "good.h5"}, dir / "good.h5"), log, out),
+                 std::invalid_argument);
+    RunSettings clash = settingsFor({dir / "good.h5"}, dir / "r.h5");
+    clash.json = dir / "r.h5";
+    EXPECT_THROW(runAnalyses(clash, log, out), std::invalid_argument);
     EXPECT_EQ(dir.entries(), 2u); // the two inputs only
     EXPECT_TRUE(availableMemoryBytes().has_value());
 }

@@ -52,7 +52,7 @@ void expectMatchesDefinition(const Packing& packing, int m) {
 
 TEST(Voxelization, MatchesTheCentreInParticleDefinition) {
     // Rotated superballs from near-octahedra to near-cubes, several crossing the box faces.
-    for (const double p : {0.6, 1.0, 1.5, 3.0}) {
+    for (const double p : {0.5, 0.6, 1.0, 1.25, 1.5, 3.0, 8.5}) {
         const double rc = Superball(p, 0.5).circumradius();
         const Packing packing = testing::latticePacking(p, 3, 2.0 * rc + 0.2, 0.05, 11);
         expectMatchesDefinition(packing, Voxelizer::minimumVoxels(packing) + 5);
