@@ -1,4 +1,5 @@
 #include "cli/commands.hpp"
+#include "cli/option_values.hpp"
 
 #include "info/packing_info.hpp"
 #include "io/packing_io.hpp"
@@ -81,27 +82,6 @@ Format formatOf(const std::string& name) {
     throw std::invalid_argument("'" + name + "': unknown extension (use .h5, .txt or .xyz)");
 }
 
-double parseNumber(const std::string& option, const std::string& text) {
-    try {
-        std::size_t used = 0;
-        const double value = std::stod(text, &used);
-        if (used == text.size()) return value;
-    } catch (const std::exception&) {
-    }
-    throw std::invalid_argument("option " + option + ": '" + text + "' is not a number");
-}
-
-int parseInteger(const std::string& option, const std::string& text) {
-    try {
-        std::size_t used = 0;
-        const long value = std::stol(text, &used);
-        if (used == text.size() && value >= INT32_MIN && value <= INT32_MAX)
-            return static_cast<int>(value);
-    } catch (const std::exception&) {
-    }
-    throw std::invalid_argument("option " + option + ": '" + text + "' is not an integer");
-}
-
 /// The options that take a value; the value is the next argument.
 class Arguments {
   public:
@@ -147,14 +127,14 @@ RunSettings parseAnalyzeArguments(const std::vector<std::string>& args) {
         } else if (a == "--json") {
             s.json = in.value(a);
         } else if (a == "--threads") {
-            s.threads = parseInteger(a, in.value(a));
+            s.threads = static_cast<int>(parseInteger(a, in.value(a), INT32_MIN, INT32_MAX));
             if (s.threads < 1 || s.threads > ThreadBudget::maxThreads())
                 throw std::invalid_argument("option --threads: " + std::to_string(s.threads) +
                                             " is not in [1, " +
                                             std::to_string(ThreadBudget::maxThreads()) +
                                             "] (4 times the hardware threads)");
         } else if (a == "--voxels" || a == "--pore-voxels") {
-            const int m = parseInteger(a, in.value(a));
+            const int m = static_cast<int>(parseInteger(a, in.value(a), INT32_MIN, INT32_MAX));
             if (m < 1) throw std::invalid_argument("option " + a + ": M must be positive");
             (a == "--voxels" ? s.voxels : s.poreVoxels) = m;
         } else if (a == "--qmax") {
@@ -164,7 +144,7 @@ RunSettings parseAnalyzeArguments(const std::vector<std::string>& args) {
         } else if (a == "--tolerance") {
             s.contacts.tolerance = parseNumber(a, in.value(a));
         } else if (a == "--rattler-threshold") {
-            s.contacts.rattlerThreshold = parseInteger(a, in.value(a));
+            s.contacts.rattlerThreshold = static_cast<int>(parseInteger(a, in.value(a), INT32_MIN, INT32_MAX));
         } else if (a == "--vdb") {
             s.vdbDirectory = in.value(a);
         } else if (a == "--fft-plan") {

@@ -1,5 +1,6 @@
 #include "cli/options.hpp"
 
+#include "cli/option_values.hpp"
 #include "io/atomic_file.hpp"
 
 #include <cmath>
@@ -36,27 +37,6 @@ at rate gamma (dD/dt = gamma sqrt(kT/m)) until the reduced pressure P = PV/(NkT)
 SIGINT or SIGTERM writes a checkpoint (to --checkpoint, else OUT with .checkpoint.h5) and exits.
 )";
 
-namespace {
-
-double number(const std::string& option, const std::string& text) {
-    try {
-        std::size_t used = 0;
-        const double value = std::stod(text, &used);
-        if (used == text.size()) return value;
-    } catch (const std::exception&) {
-    }
-    throw std::invalid_argument("option " + option + ": '" + text + "' is not a number");
-}
-
-std::int64_t integer(const std::string& option, const std::string& text) {
-    const double value = number(option, text);
-    if (value != std::floor(value) || std::abs(value) > 9.0e15)
-        throw std::invalid_argument("option " + option + ": '" + text + "' is not an integer");
-    return static_cast<std::int64_t>(value);
-}
-
-} // namespace
-
 GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args) {
     GeneratorOptions o;
     std::set<std::string> protocolOptions;
@@ -83,36 +63,31 @@ GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args) {
         } else if (a == "--checkpoint") {
             o.checkpoint = v;
         } else if (a == "--checkpoint-interval") {
-            o.checkpointInterval = number(a, v);
+            o.checkpointInterval = parseNumber(a, v);
             if (!(o.checkpointInterval > 0.0))
                 throw std::invalid_argument("option " + a + ": must be positive");
         } else if (a == "--resume") {
             o.resume = v;
         } else if (a == "--pressure-final") {
-            o.pressureFinal = p.pressureFinal = number(a, v);
+            o.pressureFinal = p.pressureFinal = parseNumber(a, v);
         } else {
             protocolOptions.insert(a);
             if (a == "--p") {
-                p.p = number(a, v);
+                p.p = parseNumber(a, v);
             } else if (a == "--n") {
-                const std::int64_t n = integer(a, v);
-                if (n < 2 || n > 100000000)
-                    throw std::invalid_argument("option --n: need at least 2 particles");
-                p.particles = static_cast<int>(n);
+                p.particles = static_cast<int>(parseInteger(a, v, 2, 100000000));
             } else if (a == "--seed") {
-                const std::int64_t s = integer(a, v);
-                if (s < 0) throw std::invalid_argument("option --seed: must be non-negative");
-                p.seed = static_cast<std::uint64_t>(s);
+                p.seed = static_cast<std::uint64_t>(parseInteger(a, v, 0, std::int64_t(1) << 53));
             } else if (a == "--phi-init") {
-                p.phiInit = number(a, v);
+                p.phiInit = parseNumber(a, v);
             } else if (a == "--gamma-fast") {
-                p.gammaFast = number(a, v);
+                p.gammaFast = parseNumber(a, v);
             } else if (a == "--gamma-slow") {
-                p.gammaSlow = number(a, v);
+                p.gammaSlow = parseNumber(a, v);
             } else if (a == "--pressure-switch") {
-                p.pressureSwitch = number(a, v);
+                p.pressureSwitch = parseNumber(a, v);
             } else if (a == "--window") {
-                p.collisionsPerWindow = number(a, v);
+                p.collisionsPerWindow = parseNumber(a, v);
             } else {
                 throw std::invalid_argument("unknown option " + a + " (see sbgen --help)");
             }
