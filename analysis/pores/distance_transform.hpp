@@ -1,0 +1,67 @@
+#pragma once
+// Exact periodic Euclidean distance transform of the void phase of a voxelised packing (paper
+// Sec. III B; DESIGN.md §5): the pore-size map, from which F(delta) (Eq. 13) is computed.
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace sbpack {
+
+/// Memory a pore-size map at M voxels per side needs: the solid mask the voxelisation hands over
+/// (1 byte per voxel) and the squared distances (4 bytes per voxel), in bytes.
+std::uint64_t poreSizeMapBytes(int voxels);
+
+/// Throws std::invalid_argument for M < 1 or M > maxPoreSizeVoxels, and std::runtime_error with
+/// the estimate of poreSizeMapBytes(M) when it exceeds MemAvailable of /proc/meminfo (not checked
+/// where that file cannot be read). Call it before voxelising.
+void checkPoreSizeMemory(int voxels);
+
+/// Largest M accepted: the integer envelope's intersections stay exact in double (see the .cpp).
+inline constexpr int maxPoreSizeVoxels = 16384;
+
+/// Squared distances, in voxel units, from every voxel centre to the nearest solid voxel centre
+/// of an M^3 periodic grid (minimum image), 0 on solid voxels. Index (i * M + j) * M + k with
+/// i, j, k the x, y, z voxel indices; voxel centre ((i + 0.5) a, (j + 0.5) a, (k + 0.5) a).
+/// The pore size of a void voxel is a sqrt(squared distance).
+class PoreSizeMap {
+  public:
+    int voxels() const { return voxels_; }
+    /// a = L / M (length units of the packing).
+    double voxelSize() const { return voxelSize_; }
+    double boxLength() const { return voxelSize_ * voxels_; }
+    std::span<const std::uint32_t> squaredDistances() const { return squaredDistances_; }
+    std::int64_t voidCount() const { return voidCount_; }
+    /// Largest squared distance (voxel units): the largest pore is a sqrt of it.
+    std::uint32_t maxSquaredDistance() const { return maxSquaredDistance_; }
+
+    /// Writes the map as an OpenVDB FloatGrid named "pore_size": active on the void voxels only,
+    /// value the pore size in length units, index (i, j, k) centred at ((i, j, k) + 0.5) a, with
+    /// metadata box_length, voxels and units. Atomic (AtomicOutput); throws OutputPathError.
+    void writeVdb(const std::filesystem::path& file) const;
+
+  private:
+    friend PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t>, int, double, bool);
+    PoreSizeMap(int voxels, double voxelSize, std::vector<std::uint32_t> squaredDistances);
+
+    int voxels_;
+    double voxelSize_;
+    std::vector<std::uint32_t> squaredDistances_;
+    std::int64_t voidCount_ = 0;
+    std::uint32_t maxSquaredDistance_ = 0;
+};
+
+/// Exact separable distance transform (Felzenszwalb-Huttenlocher lower envelope of parabolas with
+/// integer breakpoints) of a periodic M^3 grid; `solidMask[(i * M + j) * M + k] != 0` marks a
+/// solid voxel (as Voxelization::copySolidMask fills it). Linear in M^3 plus the periodic images
+/// near the line ends; parallel over lines (parallelFor), serial = true for the reference order.
+/// Peak memory: the map (4 bytes per voxel) plus per-line scratch. Throws std::invalid_argument
+/// for a mask of the wrong size, M outside [1, maxPoreSizeVoxels] or a voxel size that is not
+/// finite and positive, std::runtime_error when the memory check fails, and
+/// std::domain_error when the grid has no solid or no void voxel (the pore sizes are undefined).
+PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t> solidMask, int voxels,
+                                      double voxelSize, bool serial = false);
+
+} // namespace sbpack

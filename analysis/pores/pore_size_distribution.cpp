@@ -1,0 +1,196 @@
+#include "pores/pore_size_distribution.hpp"
+
+#include "parallel/parallel.hpp"
+#include "pores/random_points.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace sbpack {
+
+namespace {
+
+std::vector<double> scaled(const std::vector<double>& values, double factor) {
+    std::vector<double> out(values.size());
+    std::transform(values.begin(), values.end(), out.begin(),
+                   [factor](double v) { return v * factor; });
+    return out;
+}
+
+void checkMeanWidth(double meanWidth) {
+    if (!(std::isfinite(meanWidth) && meanWidth > 0.0))
+        throw std::invalid_argument("pore sizes: mean width " + std::to_string(meanWidth) +
+                                    " is not finite and positive");
+}
+
+/// Right-continuous value of a result's step function F at x >= 0.
+double stepValue(const PoreSizeDistributionResult& r, double x) {
+    const auto above = std::upper_bound(r.delta.begin(), r.delta.end(), x);
+    return r.F[static_cast<std::size_t>(above - r.delta.begin()) - 1];
+}
+
+} // namespace
+
+std::vector<double> PoreSizeDistributionResult::deltaOverWidth() const {
+    return scaled(delta, 1.0 / meanWidth);
+}
+
+std::vector<double> PoreSizeDistributionResult::densityDeltaOverWidth() const {
+    return scaled(densityDelta, 1.0 / meanWidth);
+}
+
+std::vector<double> PoreSizeDistributionResult::densityTimesWidth() const {
+    return scaled(density, meanWidth);
+}
+
+PoreSizeDistributionResult poreSizeStatistics(std::span<const double> sizes,
+                                              std::span<const std::int64_t> counts,
+                                              double meanWidth, int densityBins) {
+    checkMeanWidth(meanWidth);
+    if (sizes.empty() || sizes.size() != counts.size())
+        throw std::invalid_argument("pore sizes: " + std::to_string(sizes.size()) + " sizes and " +
+                                    std::to_string(counts.size()) +
+                                    " counts (need the same, at least one)");
+    if (densityBins < 1)
+        throw std::invalid_argument("pore sizes: densityBins = " + std::to_string(densityBins) +
+                                    " (need >= 1)");
+    std::int64_t total = 0;
+    for (std::size_t j = 0; j < sizes.size(); ++j) {
+        if (!(std::isfinite(sizes[j]) && sizes[j] > 0.0) || (j > 0 && !(sizes[j] > sizes[j - 1])))
+            throw std::invalid_argument("pore sizes: sizes must be finite, positive and strictly "
+                                        "ascending (entry " +
+                                        std::to_string(j) + ")");
+        if (counts[j] < 1)
+            throw std::invalid_argument("pore sizes: count " + std::to_string(counts[j]) +
+                                        " of entry " + std::to_string(j) + " is not positive");
+        total += counts[j];
+    }
+    PoreSizeDistributionResult r;
+    r.meanWidth = meanWidth;
+    r.samples = total;
+    r.parameters.densityBins = densityBins;
+    r.delta.reserve(sizes.size() + 1);
+    r.F.reserve(sizes.size() + 1);
+    r.delta.push_back(0.0);
+    r.F.push_back(1.0); // F(0) = 1: every pore size is positive
+    std::int64_t remaining = total;
+    double sum = 0.0, sumSquares = 0.0;
+    for (std::size_t j = 0; j < sizes.size(); ++j) {
+        remaining -= counts[j];
+        r.delta.push_back(sizes[j]);
+        r.F.push_back(static_cast<double>(remaining) / static_cast<double>(total)); // Eq. 13
+        sum += static_cast<double>(counts[j]) * sizes[j];
+        sumSquares += static_cast<double>(counts[j]) * sizes[j] * sizes[j];
+    }
+    r.mean = sum / static_cast<double>(total);                // Eq. 14
+    r.secondMoment = sumSquares / static_cast<double>(total); // Eq. 15
+    r.max = sizes.back();
+    r.saturated = r.max < 0.5 * meanWidth; // paper Sec. V A: max delta < w / 2
+    const double width = r.max / densityBins;
+    std::vector<std::int64_t> histogram(densityBins, 0);
+    for (std::size_t j = 0; j < sizes.size(); ++j)
+        histogram[std::min(densityBins - 1, static_cast<int>(sizes[j] / width))] += counts[j];
+    r.densityDelta.resize(densityBins);
+    r.density.resize(densityBins);
+    for (int b = 0; b < densityBins; ++b) {
+        r.densityDelta[b] = (b + 0.5) * width;
+        r.density[b] = static_cast<double>(histogram[b]) / (static_cast<double>(total) * width);
+    }
+    return r;
+}
+
+double largestGap(const PoreSizeDistributionResult& a, const PoreSizeDistributionResult& b) {
+    if (a.delta.empty() || b.delta.empty())
+        throw std::invalid_argument("largestGap: a result without F(delta)");
+    double gap = 0.0;
+    for (const PoreSizeDistributionResult* r : {&a, &b})
+        for (const double x : r->delta)
+            gap = std::max(gap, std::abs(stepValue(a, x) - stepValue(b, x)));
+    return gap;
+}
+
+PoreSizeDistribution::PoreSizeDistribution(PoreSizeParameters parameters)
+    : parameters_(parameters) {
+    if (parameters_.randomPoints < 0)
+        throw std::invalid_argument("pore sizes: the number of random points K = " +
+                                    std::to_string(parameters_.randomPoints) +
+                                    " is negative (0 = every void voxel)");
+    if (parameters_.densityBins < 1)
+        throw std::invalid_argument("pore sizes: densityBins = " +
+                                    std::to_string(parameters_.densityBins) + " (need >= 1)");
+}
+
+PoreSizeDistributionResult PoreSizeDistribution::compute(const PoreSizeMap& map,
+                                                         double meanWidth) const {
+    const auto started = std::chrono::steady_clock::now();
+    checkMeanWidth(meanWidth);
+    const int m = map.voxels();
+    const std::int64_t plane = static_cast<std::int64_t>(m) * m;
+    const std::int64_t total = plane * m;
+    const std::uint32_t* squared = map.squaredDistances().data();
+    const std::size_t levels = static_cast<std::size_t>(map.maxSquaredDistance()) + 1;
+
+    // Histogram of the squared distances n (voxel units): the pore size is a sqrt(n). Each chunk
+    // counts into its own histogram (split by output block), summed in order afterwards.
+    const bool sampled = parameters_.randomPoints > 0;
+    const std::int64_t planesPerChunk = std::max<std::int64_t>(1, m / 64);
+    const std::int64_t chunks =
+        sampled ? (parameters_.randomPoints + kRandomPointChunk - 1) / kRandomPointChunk
+                : (m + planesPerChunk - 1) / planesPerChunk;
+    std::vector<std::vector<std::int64_t>> local(chunks);
+    parallelFor(
+        0, chunks, 1,
+        [&](std::int64_t begin, std::int64_t end) {
+            for (std::int64_t c = begin; c < end; ++c) {
+                std::vector<std::int64_t> histogram(levels, 0);
+                if (sampled) {
+                    // Uniform random points of the box, kept where their voxel is void: each
+                    // void voxel equally likely (the paper's sampling, Sec. III B).
+                    std::mt19937_64 generator = chunkGenerator(parameters_.seed, c);
+                    const std::int64_t points = std::min(
+                        kRandomPointChunk, parameters_.randomPoints - c * kRandomPointChunk);
+                    for (std::int64_t n = 0; n < points;) {
+                        const auto index = std::min<std::int64_t>(
+                            total - 1, static_cast<std::int64_t>(uniform01(generator) *
+                                                                 static_cast<double>(total)));
+                        if (squared[index] == 0) continue; // solid voxel: draw again
+                        ++histogram[squared[index]];
+                        ++n;
+                    }
+                } else {
+                    const std::int64_t first = c * planesPerChunk * plane;
+                    const std::int64_t last =
+                        std::min<std::int64_t>(m, (c + 1) * planesPerChunk) * plane;
+                    for (std::int64_t v = first; v < last; ++v)
+                        ++histogram[squared[v]];
+                }
+                local[c] = std::move(histogram);
+            }
+        },
+        parameters_.serial);
+    std::vector<std::int64_t> histogram(levels, 0);
+    for (const auto& h : local)
+        for (std::size_t n = 0; n < levels; ++n)
+            histogram[n] += h[n];
+
+    std::vector<double> sizes;
+    std::vector<std::int64_t> counts;
+    for (std::size_t n = 1; n < levels; ++n) // n = 0: solid voxels
+        if (histogram[n] > 0) {
+            sizes.push_back(map.voxelSize() * std::sqrt(static_cast<double>(n)));
+            counts.push_back(histogram[n]);
+        }
+    PoreSizeDistributionResult r =
+        poreSizeStatistics(sizes, counts, meanWidth, parameters_.densityBins);
+    r.method = sampled ? "random voxels" : "voxels";
+    r.parameters = parameters_;
+    r.voxels = m;
+    r.voxelSize = map.voxelSize();
+    r.runtimeSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return r;
+}
+
+} // namespace sbpack

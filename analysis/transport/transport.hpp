@@ -1,0 +1,70 @@
+#pragma once
+// Transport estimates from the pore-size moments in the diffusion-controlled limit (paper
+// Sec. II B, Eqs. 16-20, and Sec. V A): the formation factor from the zeta_2 interpolation,
+// the fluid permeability k, and the upper bounds on the mean survival time tau and the principal
+// relaxation time T1, each also scaled by the mean width squared.
+
+#include "pores/pore_size_distribution.hpp"
+
+namespace sbpack {
+
+/// Three-point parameter of the paper's interpolation between sphere and cube packings
+/// (Sec. V A): zeta_2 = 0.21068 phi + |p - 1| (0.11882 + 0.772236 phi).
+double zeta2Interpolation(double p, double phi);
+
+/// Formation factor estimate (Eq. 18, Torquato's bound with the four-point parameter set to zero):
+/// F = (2 + phi - (1 - phi) zeta_2) / ((1 - phi)(2 - zeta_2)); zeta_2 = 0 is Hashin-Shtrikman.
+/// phi is the solid (particle) fraction. Throws std::invalid_argument unless 0 <= phi < 1 and
+/// 0 <= zeta_2 <= 1.
+double formationFactor(double phi, double zeta2);
+
+struct TransportParameters {
+    /// D of the diffusing species (length^2 / time) for tau and T1; the scaled forms tau D / w^2
+    /// and T1 D / w^2 do not depend on it.
+    double diffusionCoefficient = 1.0;
+};
+
+/// Inputs, parameters and the estimates. Lengths in the packing's units, times in length^2 / D.
+struct TransportResult {
+    TransportParameters parameters;
+    double p = 0.0;
+    double phi = 0.0;              ///< packing fraction N v1 / L^3 (solid fraction)
+    double meanWidth = 0.0;        ///< w
+    double meanPoreSize = 0.0;     ///< <delta> of the pore-size result used
+    double secondMoment = 0.0;     ///< <delta^2>
+    double zeta2 = 0.0;            ///< Sec. V A interpolation
+    double formationFactor = 0.0;  ///< Eq. 18
+    double permeability = 0.0;     ///< k ~ <delta^2> / F (Eq. 17), length^2
+    double meanSurvivalTime = 0.0; ///< tau <= <delta>^2 / D (Eq. 19, kappa -> inf), an upper bound
+    double principalRelaxationTime = 0.0; ///< T1 <= <delta^2> / D (Eq. 20, kappa -> inf)
+    double runtimeSeconds = 0.0;
+
+    double permeabilityOverWidth2() const { return permeability / (meanWidth * meanWidth); }
+    /// tau D / w^2 (paper Fig. 14).
+    double meanSurvivalTimeScaled() const {
+        return meanSurvivalTime * parameters.diffusionCoefficient / (meanWidth * meanWidth);
+    }
+    /// T1 D / w^2 (paper Fig. 14).
+    double principalRelaxationTimeScaled() const {
+        return principalRelaxationTime * parameters.diffusionCoefficient / (meanWidth * meanWidth);
+    }
+};
+
+/// Compute object for Eqs. 16-20 in the diffusion-controlled limit.
+class Transport {
+  public:
+    /// Throws std::invalid_argument unless the diffusion coefficient is finite and positive.
+    explicit Transport(TransportParameters parameters);
+
+    /// From a pore-size result (any method) and the packing's p and phi. Throws
+    /// std::invalid_argument for p < 0.5 or phi outside (0, 1), and std::domain_error when the
+    /// interpolated zeta_2 leaves (0, 1] (the interpolation was fitted for 0.85 <= p <= 1.5).
+    TransportResult compute(const PoreSizeDistributionResult& pores, double p, double phi) const;
+
+    const TransportParameters& parameters() const { return parameters_; }
+
+  private:
+    TransportParameters parameters_;
+};
+
+} // namespace sbpack
