@@ -2,8 +2,9 @@
 # Sets everything up and runs the main job on a small default scene: sbgen jams 250 spheres
 # (seed 1, a quick slow phase with gamma-slow 1e-3) to reduced pressure 1e12 in about ten
 # seconds; sbanalyze validates the packing, reports phi, the mean width, contacts Z and
-# rattlers, computes S(Q), the voxels and chi(Q) into an HDF5 results file (the voxels also as
-# .vdb), and exports the packing for OVITO.
+# rattlers, computes S(Q), the voxels, chi(Q), the pore sizes F(delta) and the transport
+# estimates into an HDF5 results file (the voxels and pore sizes also as .vdb), and exports the
+# packing for OVITO.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -11,6 +12,6 @@ scripts/build.sh
 mkdir -p build/demo
 build/generator/sbgen --n 250 --seed 1 --gamma-slow 1e-3 --pressure-final 1e12 --out build/demo/mrj-spheres-250.h5
 build/analysis/sbanalyze info build/demo/mrj-spheres-250.h5
-build/analysis/sbanalyze build/demo/mrj-spheres-250.h5 --voxels 100 --qmax 15 \
+build/analysis/sbanalyze build/demo/mrj-spheres-250.h5 --voxels 100 --pore-voxels 200 --qmax 15 \
   --out build/demo/mrj-spheres-250-results.h5 --vdb build/demo --json -
 build/analysis/sbanalyze convert build/demo/mrj-spheres-250.h5 build/demo/mrj-spheres-250.xyz

@@ -34,13 +34,15 @@ constexpr const char* kOptionsUsage = R"(        all       every analysis above 
                        (at least one of --out and --json is required)
       --threads T      threads for TBB, FFTW and OpenMP alike (default: the hardware's, %HW%)
       --voxels M       spectral grid, M^3 voxels of the box, for chi and voxels (default 300)
-      --pore-voxels M  pore grid (default 500) of the pore-space analyses; none is in this
-                       version, so it is only checked
+      --pore-voxels M  pore grid, M^3 voxels, of pores and transport (default 500, as the
+                       paper); the exact periodic distance transform needs 5 bytes per voxel
       --qmax X         S(Q) and chi(Q) up to Q w <= X, w the mean width (default 30); chi also
                        below the grid's Nyquist limit |n| < M/2
       --tolerance T, --rattler-threshold K   contacts, as for info (defaults 1e-10, 4)
       --vdb DIR        export each voxelization as DIR/<input stem>.vdb, a float fog volume
-                       "density" for Blender, Houdini or ParaView (implies voxels)
+                       "density" for Blender, Houdini or ParaView (implies voxels), and with
+                       pores the pore-size map as DIR/<input stem>-pore-size.vdb (a float grid
+                       "pore_size" over the void voxels, in length units)
       --fft-plan P     FFTW planning: estimate, measure (default) or patient; measured plans
                        are kept in the wisdom file, so only the first run per size pays
       --fft-wisdom F   wisdom file (default $XDG_CACHE_HOME/sbpack/fftw-wisdom, else

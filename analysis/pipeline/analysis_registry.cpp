@@ -8,8 +8,9 @@ namespace sbpack {
 namespace {
 
 constexpr std::array<Analysis, 1> kSpectralNeeds{Analysis::Voxels};
+constexpr std::array<Analysis, 1> kTransportNeeds{Analysis::PoreSizes};
 
-constexpr std::array<AnalysisInfo, 4> kRegistry{{
+constexpr std::array<AnalysisInfo, 6> kRegistry{{
     {Analysis::Contacts,
      "contacts",
      "contact network: mean contact number Z, rattler fraction, contacts per particle",
@@ -28,6 +29,13 @@ constexpr std::array<AnalysisInfo, 4> kRegistry{{
      "voxelization on the --voxels grid: phi_voxel against phi",
      VoxelGrid::Spectral,
      {}},
+    {Analysis::PoreSizes, "pores",
+     "pore sizes on the --pore-voxels grid by exact periodic distance transform: F(delta), "
+     "<delta>, <delta^2> (Eqs. 13-15)",
+     VoxelGrid::Pore, {}},
+    {Analysis::Transport, "transport",
+     "permeability k, survival time tau, relaxation time T1 from the pore sizes (Eqs. 16-20)",
+     VoxelGrid::None, kTransportNeeds},
 }};
 
 void addWithNeeds(Analysis analysis, AnalysisSet& set) {

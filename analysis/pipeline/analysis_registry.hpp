@@ -13,11 +13,12 @@ enum class Analysis {
     StructureFactor, ///< S(Q) from the centroids
     SpectralDensity, ///< chi_V(Q) from the voxels (and exactly, for spheres)
     Voxels,          ///< the voxelization: phi_voxel against phi, optional .vdb export
+    PoreSizes,       ///< pore-size distribution F(delta) from the periodic distance transform
+    Transport,       ///< k, tau, T1 from the pore-size moments (diffusion-controlled limit)
 };
 
 /// Which voxel grid an analysis works on: none, the spectral grid (--voxels, default 300 as the
-/// paper's chi) or the pore grid (--pore-voxels, default 500 as the paper's pore sizes; the
-/// pore-space analyses use it, none of them is registered yet).
+/// paper's chi) or the pore grid (--pore-voxels, default 500 as the paper's pore sizes).
 enum class VoxelGrid { None, Spectral, Pore };
 
 struct AnalysisInfo {

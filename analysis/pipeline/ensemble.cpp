@@ -106,6 +106,28 @@ EnsembleResults computeEnsemble(std::span<const FileResults> files) {
             return std::optional(f.contacts->result.rattlerFraction);
         });
     }
+    if (files.front().poreSizes) {
+        EnsembleGroup& g = e.groups["pore_size"];
+        g.scalars["mean_w"] = over(
+            files, [](const FileResults& f) { return std::optional(f.poreSizes->meanOverWidth()); });
+        g.scalars["second_moment_w2"] = over(files, [](const FileResults& f) {
+            return std::optional(f.poreSizes->secondMomentOverWidth2());
+        });
+        g.scalars["max_w"] = over(
+            files, [](const FileResults& f) { return std::optional(f.poreSizes->maxOverWidth()); });
+    }
+    if (files.front().transport) {
+        EnsembleGroup& g = e.groups["transport"];
+        g.scalars["permeability_w2"] = over(files, [](const FileResults& f) {
+            return std::optional(f.transport->permeabilityOverWidth2());
+        });
+        g.scalars["mean_survival_time_scaled"] = over(files, [](const FileResults& f) {
+            return std::optional(f.transport->meanSurvivalTimeScaled());
+        });
+        g.scalars["principal_relaxation_time_scaled"] = over(files, [](const FileResults& f) {
+            return std::optional(f.transport->principalRelaxationTimeScaled());
+        });
+    }
     if (files.front().voxelization) {
         EnsembleGroup& g = e.groups["voxelization"];
         g.scalars["phi_voxel"] = over(

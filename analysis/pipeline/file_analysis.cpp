@@ -1,7 +1,10 @@
 #include "pipeline/file_analysis.hpp"
 
 #include "pipeline/resources.hpp"
+#include "pores/distance_transform.hpp"
 #include "voxels/voxelization.hpp"
+
+#include <vector>
 
 #include <sstream>
 
@@ -32,7 +35,8 @@ VoxelizationRecord recordOf(const Voxelization& voxels) {
 
 FileResults analyzeFile(const Packing& packing, const std::filesystem::path& input,
                         const RunSettings& settings, const Progress& progress,
-                        const std::optional<VdbExport>& vdb) {
+                        const std::optional<VdbExport>& vdb,
+                        const std::optional<VdbExport>& poreVdb) {
     FileResults r;
     r.input = input;
     r.p = packing.p;
@@ -84,6 +88,41 @@ FileResults analyzeFile(const Packing& packing, const std::filesystem::path& inp
                           describe(chi.exactSphere->maxErrorOverPeak, 3);
             progress.stageDone("spectral density", chi.runtimeSeconds, detail);
         }
+    }
+    if (settings.runs(Analysis::PoreSizes)) {
+        const int m = settings.poreVoxels;
+        checkPoreSizeMemory(m);
+        std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m);
+        double voxelSize = 0.0;
+        {
+            const Voxelization voxels = Voxelizer({m}).compute(packing, progress);
+            voxels.copySolidMask(mask);
+            voxelSize = voxels.voxelSize();
+            progress.stageDone("pore voxelization", voxels.runtimeSeconds(),
+                               std::to_string(m) + "^3, phi_voxel = " + describe(voxels.phiVoxel()));
+        }
+        const Stopwatch clock;
+        const PoreSizeMap map = periodicDistanceTransform(mask, m, voxelSize);
+        std::vector<std::uint8_t>().swap(mask);
+        progress.stageDone("distance transform", clock.seconds(),
+                           std::to_string(map.voidCount()) + " void voxels");
+        r.poreSizes = PoreSizeDistribution({}).compute(map, r.meanWidth);
+        const PoreSizeDistributionResult& pores = *r.poreSizes;
+        progress.stageDone("pore sizes", pores.runtimeSeconds,
+                           "<delta>/w = " + describe(pores.meanOverWidth()) + ", max/w = " +
+                               describe(pores.maxOverWidth()) +
+                               (pores.saturated ? " (saturated)" : " (NOT below w/2)"));
+        if (poreVdb) {
+            const Stopwatch exportClock;
+            map.writeVdb(poreVdb->temporary);
+            progress.stageDone("pore vdb export", exportClock.seconds(),
+                               poreVdb->destination.string());
+        }
+    }
+    if (settings.runs(Analysis::Transport)) {
+        r.transport = Transport({}).compute(*r.poreSizes, r.p, r.phi);
+        progress.stageDone("transport", r.transport->runtimeSeconds,
+                           "k/w^2 = " + describe(r.transport->permeabilityOverWidth2()));
     }
     return r;
 }

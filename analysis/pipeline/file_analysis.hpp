@@ -3,9 +3,11 @@
 
 #include "contacts/contact_network.hpp"
 #include "pipeline/run_settings.hpp"
+#include "pores/pore_size_distribution.hpp"
 #include "progress/progress.hpp"
 #include "spectral/spectral_density.hpp"
 #include "structure/structure_factor.hpp"
+#include "transport/transport.hpp"
 
 #include <cstdint>
 #include <filesystem>
@@ -42,6 +44,8 @@ struct FileResults {
     std::optional<StructureFactorResult> structureFactor;
     std::optional<VoxelizationRecord> voxelization;
     std::optional<SpectralDensityResult> spectralDensity;
+    std::optional<PoreSizeDistributionResult> poreSizes;
+    std::optional<TransportResult> transport;
 };
 
 /// Where a voxelization is exported: written to `temporary`, reported as `destination`.
@@ -51,9 +55,11 @@ struct VdbExport {
 };
 
 /// Runs the analyses of `settings` on one packing (already validated), reporting one line per
-/// stage. With `vdb`, the spectral-grid voxelization is exported.
+/// stage. With `vdb`, the spectral-grid voxelization is exported (and the pore-size map beside
+/// it, `poreVdb`, when pores are computed).
 FileResults analyzeFile(const Packing& packing, const std::filesystem::path& input,
                         const RunSettings& settings, const Progress& progress,
-                        const std::optional<VdbExport>& vdb);
+                        const std::optional<VdbExport>& vdb,
+                        const std::optional<VdbExport>& poreVdb = std::nullopt);
 
 } // namespace sbpack

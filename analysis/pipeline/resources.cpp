@@ -1,4 +1,5 @@
 #include "pipeline/resources.hpp"
+#include "pores/distance_transform.hpp"
 
 #include "shells/shell_average.hpp"
 #include "spectral/spectral_density.hpp"
@@ -76,6 +77,9 @@ MemoryEstimate estimateMemory(const Packing& packing, const RunSettings& setting
             bytes += collectiveDensityBytes(packing, std::max(shell, 1));
         consider("FFT grid " + std::to_string(m) + "^3", bytes);
     }
+    if (settings.runs(Analysis::PoreSizes))
+        consider("pore-size map " + std::to_string(settings.poreVoxels) + "^3",
+                 static_cast<double>(poreSizeMapBytes(settings.poreVoxels)));
     if (!settings.vdbDirectory.empty()) consider(".vdb export", vdbExportBytes(settings.voxels));
     if (stage > 0.0) add(stageName, stage);
     return estimate;

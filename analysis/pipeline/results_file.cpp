@@ -49,6 +49,44 @@ void writeRunAttributes(hid_t root, const RunSettings& settings) {
     writeInt64Attribute(root, "threads", settings.threads);
 }
 
+void writePoreSizes(hid_t target, const PoreSizeDistributionResult& s) {
+    const Hdf5Handle g = createGroup(target, "pore_size");
+    writeVector(g.get(), "delta", s.delta);
+    writeVector(g.get(), "F", s.F);
+    writeVector(g.get(), "delta_w", s.deltaOverWidth());
+    writeVector(g.get(), "P_delta", s.densityDelta);
+    writeVector(g.get(), "P", s.density);
+    writeVector(g.get(), "P_delta_w", s.densityDeltaOverWidth());
+    writeVector(g.get(), "P_w", s.densityTimesWidth());
+    writeDoubleAttribute(g.get(), "mean", s.mean);
+    writeDoubleAttribute(g.get(), "second_moment", s.secondMoment);
+    writeDoubleAttribute(g.get(), "max", s.max);
+    writeDoubleAttribute(g.get(), "mean_w", s.meanOverWidth());
+    writeDoubleAttribute(g.get(), "second_moment_w2", s.secondMomentOverWidth2());
+    writeDoubleAttribute(g.get(), "max_w", s.maxOverWidth());
+    writeInt64Attribute(g.get(), "saturated", s.saturated ? 1 : 0);
+    writeInt64Attribute(g.get(), "voxels", s.voxels);
+    writeDoubleAttribute(g.get(), "voxel_size", s.voxelSize);
+    writeInt64Attribute(g.get(), "samples", s.samples);
+    writeStringAttribute(g.get(), "method", s.method);
+    writeDoubleAttribute(g.get(), "runtime_s", s.runtimeSeconds);
+}
+
+void writeTransport(hid_t target, const TransportResult& t) {
+    const Hdf5Handle g = createGroup(target, "transport");
+    writeDoubleAttribute(g.get(), "zeta2", t.zeta2);
+    writeDoubleAttribute(g.get(), "formation_factor", t.formationFactor);
+    writeDoubleAttribute(g.get(), "permeability", t.permeability);
+    writeDoubleAttribute(g.get(), "permeability_w2", t.permeabilityOverWidth2());
+    writeDoubleAttribute(g.get(), "mean_survival_time", t.meanSurvivalTime);
+    writeDoubleAttribute(g.get(), "mean_survival_time_scaled", t.meanSurvivalTimeScaled());
+    writeDoubleAttribute(g.get(), "principal_relaxation_time", t.principalRelaxationTime);
+    writeDoubleAttribute(g.get(), "principal_relaxation_time_scaled",
+                         t.principalRelaxationTimeScaled());
+    writeDoubleAttribute(g.get(), "diffusion_coefficient", t.parameters.diffusionCoefficient);
+    writeDoubleAttribute(g.get(), "runtime_s", t.runtimeSeconds);
+}
+
 void writeFileResults(hid_t target, const FileResults& f) {
     writeStringAttribute(target, "input", f.input.string());
     writeDoubleAttribute(target, "p", f.p);
@@ -115,6 +153,8 @@ void writeFileResults(hid_t target, const FileResults& f) {
             writeDoubleAttribute(g.get(), "exact_error", s.exactSphere->maxErrorOverPeak);
         }
     }
+    if (f.poreSizes) writePoreSizes(target, *f.poreSizes);
+    if (f.transport) writeTransport(target, *f.transport);
 }
 
 void writeEnsemble(hid_t root, const EnsembleResults& e) {

@@ -38,20 +38,25 @@ std::string fileContext(std::size_t index, std::size_t count, const fs::path& fi
     return context;
 }
 
-/// Where each input's voxelization is exported: DIR/<stem>.vdb; stems must differ.
-std::vector<fs::path> vdbTargets(const RunSettings& settings) {
+/// Where each input's grids are exported with `suffix` (".vdb" for the voxels,
+/// "-pore-size.vdb" for the pore-size map): DIR/<stem><suffix>; stems must differ. Empty paths
+/// when nothing is exported.
+std::vector<fs::path> vdbTargets(const RunSettings& settings, Analysis analysis,
+                                 const std::string& suffix) {
     std::vector<fs::path> targets(settings.inputs.size());
     if (settings.vdbDirectory.empty()) return targets;
-    if (!settings.runs(Analysis::Voxels))
-        throw std::invalid_argument("option --vdb: exports the voxels analysis, which is not run");
+    if (!settings.runs(Analysis::Voxels) && !settings.runs(Analysis::PoreSizes))
+        throw std::invalid_argument(
+            "option --vdb: exports the voxels or pores analyses, and neither is run");
     std::error_code ec;
     if (!fs::is_directory(settings.vdbDirectory, ec))
         throw std::invalid_argument("option --vdb: " + quotedName(settings.vdbDirectory) +
                                     " is not a directory");
+    if (!settings.runs(analysis)) return targets;
     std::set<fs::path> seen;
     for (std::size_t i = 0; i < settings.inputs.size(); ++i) {
         targets[i] = settings.vdbDirectory / settings.inputs[i].stem();
-        targets[i] += ".vdb";
+        targets[i] += suffix;
         if (!seen.insert(targets[i]).second)
             throw std::invalid_argument("option --vdb: two inputs would both be exported to " +
                                         quotedName(targets[i]));
@@ -108,7 +113,9 @@ RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostr
     const Stopwatch clock;
     const ThreadBudget budget(settings.threads);
     checkOutputs(settings);
-    const std::vector<fs::path> vdbFiles = vdbTargets(settings);
+    const std::vector<fs::path> vdbFiles = vdbTargets(settings, Analysis::Voxels, ".vdb");
+    const std::vector<fs::path> poreVdbFiles =
+        vdbTargets(settings, Analysis::PoreSizes, "-pore-size.vdb");
     const std::vector<Packing> packings = readAndCheckInputs(settings);
 
     Progress progress(settings.quiet ? nullptr : &log, &log);
@@ -117,13 +124,15 @@ RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostr
     std::vector<std::unique_ptr<AtomicOutput>> exports;
     for (std::size_t i = 0; i < packings.size(); ++i) {
         progress.setContext(fileContext(i, packings.size(), settings.inputs[i]));
-        std::optional<VdbExport> vdb;
-        if (!vdbFiles[i].empty()) {
-            exports.push_back(std::make_unique<AtomicOutput>(vdbFiles[i]));
-            vdb = VdbExport{exports.back()->temporaryPath(), vdbFiles[i]};
-        }
+        const auto exportTo = [&](const fs::path& file) -> std::optional<VdbExport> {
+            if (file.empty()) return std::nullopt;
+            exports.push_back(std::make_unique<AtomicOutput>(file));
+            return VdbExport{exports.back()->temporaryPath(), file};
+        };
+        const std::optional<VdbExport> vdb = exportTo(vdbFiles[i]);
+        const std::optional<VdbExport> poreVdb = exportTo(poreVdbFiles[i]);
         results.files.push_back(
-            analyzeFile(packings[i], settings.inputs[i], settings, progress, vdb));
+            analyzeFile(packings[i], settings.inputs[i], settings, progress, vdb, poreVdb));
     }
     progress.setContext("");
     if (results.files.size() > 1) {

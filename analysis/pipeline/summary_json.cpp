@@ -106,6 +106,22 @@ std::string fileSummary(const FileResults& f, int indent) {
         chi.add("runtime_s", s.runtimeSeconds);
         o.add("spectral_density", chi.str(inner));
     }
+    if (f.poreSizes)
+        o.add("pore_size", Object()
+                               .add("voxels", f.poreSizes->voxels)
+                               .add("mean_w", f.poreSizes->meanOverWidth())
+                               .add("second_moment_w2", f.poreSizes->secondMomentOverWidth2())
+                               .add("max_w", f.poreSizes->maxOverWidth())
+                               .add("runtime_s", f.poreSizes->runtimeSeconds)
+                               .str(inner));
+    if (f.transport)
+        o.add("transport", Object()
+                               .add("permeability_w2", f.transport->permeabilityOverWidth2())
+                               .add("mean_survival_time_scaled",
+                                    f.transport->meanSurvivalTimeScaled())
+                               .add("principal_relaxation_time_scaled",
+                                    f.transport->principalRelaxationTimeScaled())
+                               .str(inner));
     return o.str(indent);
 }
 

@@ -5,7 +5,8 @@
 set -euo pipefail
 sbgen=$1 work=$2 analyze=${3:-}
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-args=(--n 300 --seed 4 --gamma-slow 0.002 --pressure-final 1e10)
+# The runs aim at 1e14 so they are still running when killed; the resumed runs stop at 1e8.
+args=(--n 300 --seed 4 --gamma-slow 0.002 --pressure-final 1e14)
 
 "$sbgen" "${args[@]}" --out a.h5 --checkpoint ck.h5 --checkpoint-interval 0.2 --quiet &
 pid=$!
@@ -14,7 +15,7 @@ sleep 0.5
 kill -KILL "$pid" && ! wait "$pid" 2>/dev/null || true
 [[ -f ck.h5 && ! -f a.h5 ]] || { echo "expected a checkpoint and no output after SIGKILL"; exit 1; }
 ls -a | grep -q '\.tmp-' && { echo "temporary file left behind"; exit 1; }
-"$sbgen" --resume ck.h5 --out a.h5 --quiet
+"$sbgen" --resume ck.h5 --pressure-final 1e8 --out a.h5 --quiet
 [[ -f a.h5 ]] || { echo "resumed run wrote no output"; exit 1; }
 
 "$sbgen" "${args[@]}" --out b.h5 --quiet &
@@ -23,7 +24,7 @@ sleep 1
 kill -TERM "$pid"
 status=0; wait "$pid" || status=$?
 [[ $status -eq 143 && -f b.checkpoint.h5 ]] || { echo "SIGTERM: status $status, no checkpoint"; exit 1; }
-"$sbgen" --resume b.checkpoint.h5 --out b.h5 --quiet
+"$sbgen" --resume b.checkpoint.h5 --pressure-final 1e8 --out b.h5 --quiet
 
 if [[ -n "$analyze" ]]; then
     "$analyze" info a.h5 b.h5 | tee info.txt
