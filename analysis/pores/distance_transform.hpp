@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -32,7 +33,7 @@ class PoreSizeMap {
     /// a = L / M (length units of the packing).
     double voxelSize() const { return voxelSize_; }
     double boxLength() const { return voxelSize_ * voxels_; }
-    std::span<const std::uint32_t> squaredDistances() const { return squaredDistances_; }
+    std::span<const std::uint32_t> squaredDistances() const;
     std::int64_t voidCount() const { return voidCount_; }
     /// Largest squared distance (voxel units): the largest pore is a sqrt of it.
     std::uint32_t maxSquaredDistance() const { return maxSquaredDistance_; }
@@ -44,11 +45,11 @@ class PoreSizeMap {
 
   private:
     friend PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t>, int, double, bool);
-    PoreSizeMap(int voxels, double voxelSize, std::vector<std::uint32_t> squaredDistances);
+    PoreSizeMap(int voxels, double voxelSize);
 
     int voxels_;
     double voxelSize_;
-    std::vector<std::uint32_t> squaredDistances_;
+    std::unique_ptr<std::uint32_t[]> squaredDistances_; ///< M^3 entries
     std::int64_t voidCount_ = 0;
     std::uint32_t maxSquaredDistance_ = 0;
 };
