@@ -4,9 +4,11 @@
 // (about 20 s) and write it there.
 //
 //   bench_pores edt [--voxels M] [--threads T] [--repeat R] [--write-mask F] [--write-distances F]
+//                   [--write-vdb F.vdb]
 //       times periodicDistanceTransform on the M^3 mask of the test packing (default 500, one
 //       thread, 3 repeats); optionally writes the mask (M^3 uint8, index (i*M + j)*M + k) for
-//       bench/peer_scipy_edt.py and the squared distances (M^3 uint32) for its --check.
+//       bench/peer_scipy_edt.py, the squared distances (M^3 uint32) for its --check, and the
+//       pore-size map as OpenVDB (timed).
 //   bench_pores errors [--points K] [--threads T] [--voxels M1,M2,...]
 //       error of the voxel path against the voxel-free reference (K random void points, default
 //       10^6) for M = 100, 200, 300, 500, with the run time of each.
@@ -138,7 +140,7 @@ struct Options {
     int threads = 1;
     int repeat = 3;
     std::int64_t points = 1'000'000;
-    std::string maskFile, distancesFile, packingFile;
+    std::string maskFile, distancesFile, packingFile, vdbFile;
 };
 
 Options parse(int argc, char** argv) {
@@ -161,6 +163,8 @@ Options parse(int argc, char** argv) {
             o.points = std::stoll(v);
         } else if (a == "--write-mask") {
             o.maskFile = v;
+        } else if (a == "--write-vdb") {
+            o.vdbFile = v;
         } else if (a == "--packing") {
             o.packingFile = v;
         } else if (a == "--write-distances") {
@@ -196,6 +200,12 @@ int edt(const Options& o, const Packing& packing) {
                     map.voxelSize() * std::sqrt(static_cast<double>(map.maxSquaredDistance())));
         if (r + 1 == o.repeat && !o.distancesFile.empty())
             writeRaw(o.distancesFile, map.squaredDistances().data(), map.squaredDistances().size());
+        if (r + 1 == o.repeat && !o.vdbFile.empty()) {
+            start = std::chrono::steady_clock::now();
+            map.writeVdb(o.vdbFile);
+            std::printf("  writeVdb: %.2f s, %.1f MB\n", secondsSince(start),
+                        static_cast<double>(std::filesystem::file_size(o.vdbFile)) / 1e6);
+        }
     }
     std::printf("EDT M = %d, threads = %d: best of %d = %.3f s wall, %.3f s CPU\n", m, o.threads,
                 o.repeat, best, bestCpu);

@@ -34,6 +34,23 @@ std::uint64_t availableMemory() {
     return 0;
 }
 
+void checkVoxels(int voxels) {
+    if (voxels < 1 || voxels > maxPoreSizeVoxels)
+        throw std::invalid_argument("pore sizes: M = " + std::to_string(voxels) +
+                                    " voxels per side is not in [1, " +
+                                    std::to_string(maxPoreSizeVoxels) + "]");
+}
+
+/// Throws std::runtime_error with the estimate when `bytes` exceed MemAvailable.
+void refuseUnlessAvailable(std::uint64_t bytes, int voxels, const std::string& what) {
+    const std::uint64_t available = availableMemory();
+    if (available != 0 && bytes > available)
+        throw std::runtime_error("pore sizes at M = " + std::to_string(voxels) + " need about " +
+                                 gigabytes(bytes) + " (" + what + "), but only " +
+                                 gigabytes(available) +
+                                 " are available (MemAvailable); choose a smaller M");
+}
+
 /// Scratch of one periodic line: the line with its periodic images on either side, and the
 /// sites of the lower envelope with their breakpoints.
 struct LineScratch {
@@ -236,24 +253,15 @@ std::uint32_t planeDistances(std::uint32_t* planeData, LineScratch& scratch) {
 
 } // namespace
 
-std::uint64_t poreSizeMapBytes(int voxels) {
+std::uint64_t poreSizeMemoryBytes(int voxels) {
     const auto m = static_cast<std::uint64_t>(std::max(voxels, 0));
     return m * m * m * (sizeof(std::uint8_t) + sizeof(std::uint32_t));
 }
 
 void checkPoreSizeMemory(int voxels) {
-    if (voxels < 1 || voxels > maxPoreSizeVoxels)
-        throw std::invalid_argument("pore sizes: M = " + std::to_string(voxels) +
-                                    " voxels per side is not in [1, " +
-                                    std::to_string(maxPoreSizeVoxels) + "]");
-    const std::uint64_t needed = poreSizeMapBytes(voxels);
-    const std::uint64_t available = availableMemory();
-    if (available != 0 && needed > available)
-        throw std::runtime_error(
-            "pore sizes at M = " + std::to_string(voxels) + " need about " + gigabytes(needed) +
-            " (1-byte solid mask + 4-byte squared distance per voxel), but "
-            "only " +
-            gigabytes(available) + " are available (MemAvailable); choose a smaller M");
+    checkVoxels(voxels);
+    refuseUnlessAvailable(poreSizeMemoryBytes(voxels), voxels,
+                          "1-byte solid mask + 4-byte squared distance per voxel");
 }
 
 PoreSizeMap::PoreSizeMap(int voxels, double voxelSize) : voxels_(voxels), voxelSize_(voxelSize) {
@@ -269,10 +277,7 @@ std::span<const std::uint32_t> PoreSizeMap::squaredDistances() const {
 
 PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t> solidMask, int voxels,
                                       double voxelSize, bool serial) {
-    if (voxels < 1 || voxels > maxPoreSizeVoxels)
-        throw std::invalid_argument("distance transform: M = " + std::to_string(voxels) +
-                                    " voxels per side is not in [1, " +
-                                    std::to_string(maxPoreSizeVoxels) + "]");
+    checkVoxels(voxels);
     const std::int64_t plane = static_cast<std::int64_t>(voxels) * voxels;
     const std::int64_t total = plane * voxels;
     if (static_cast<std::int64_t>(solidMask.size()) != total)
@@ -292,7 +297,8 @@ PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t> solidMask, i
         throw std::domain_error("pore sizes: no void voxel at M = " + std::to_string(voxels) +
                                 " (the particles cover every voxel centre); the pore-size "
                                 "distribution is undefined: use a larger M or check the packing");
-    checkPoreSizeMemory(voxels);
+    refuseUnlessAvailable(static_cast<std::uint64_t>(total) * sizeof(std::uint32_t), voxels,
+                          "4-byte squared distance per voxel");
 
     PoreSizeMap map(voxels, voxelSize);
     std::uint32_t* squared = map.squaredDistances_.get();

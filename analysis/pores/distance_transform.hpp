@@ -11,12 +11,12 @@
 
 namespace sbpack {
 
-/// Memory a pore-size map at M voxels per side needs: the solid mask the voxelisation hands over
+/// Memory of the pore-size path at M voxels per side: the solid mask the voxelisation hands over
 /// (1 byte per voxel) and the squared distances (4 bytes per voxel), in bytes.
-std::uint64_t poreSizeMapBytes(int voxels);
+std::uint64_t poreSizeMemoryBytes(int voxels);
 
 /// Throws std::invalid_argument for M < 1 or M > maxPoreSizeVoxels, and std::runtime_error with
-/// the estimate of poreSizeMapBytes(M) when it exceeds MemAvailable of /proc/meminfo (not checked
+/// the estimate poreSizeMemoryBytes(M) when it exceeds MemAvailable of /proc/meminfo (not checked
 /// where that file cannot be read). Call it before voxelising.
 void checkPoreSizeMemory(int voxels);
 
@@ -60,7 +60,8 @@ class PoreSizeMap {
 /// near the line ends; parallel over lines (parallelFor), serial = true for the reference order.
 /// Peak memory: the map (4 bytes per voxel) plus per-line scratch. Throws std::invalid_argument
 /// for a mask of the wrong size, M outside [1, maxPoreSizeVoxels] or a voxel size that is not
-/// finite and positive, std::runtime_error when the memory check fails, and
+/// finite and positive, std::runtime_error when the map (4 bytes per voxel) exceeds
+/// MemAvailable, and
 /// std::domain_error when the grid has no solid or no void voxel (the pore sizes are undefined).
 PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t> solidMask, int voxels,
                                       double voxelSize, bool serial = false);

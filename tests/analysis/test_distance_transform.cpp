@@ -172,7 +172,7 @@ TEST(DistanceTransform, RejectsNoSolidNoVoidAndBadArguments) {
 }
 
 TEST(DistanceTransform, RefusesTooLargeGridWithTheEstimate) {
-    EXPECT_EQ(poreSizeMapBytes(500), 625'000'000u);
+    EXPECT_EQ(poreSizeMemoryBytes(500), 625'000'000u);
     EXPECT_THROW(checkPoreSizeMemory(0), std::invalid_argument);
     EXPECT_THROW(checkPoreSizeMemory(maxPoreSizeVoxels + 1), std::invalid_argument);
     EXPECT_NO_THROW(checkPoreSizeMemory(64));
