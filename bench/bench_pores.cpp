@@ -1,7 +1,8 @@
 // bench_pores: cost and accuracy of the pore-size path (issue 6), results in bench/RESULTS.md.
 //
-// Common option --packing FILE.h5: read the test packing from FILE if it exists, else generate it
-// (about 20 s) and write it there.
+// Common options: --packing FILE.h5 reads the test packing from FILE if it exists, else generates
+// it (about 20 s) and writes it there; --p P replaces the spheres by superballs of exponent P
+// inscribed in them (same circumradius 0.5, random orientations).
 //
 //   bench_pores edt [--voxels M] [--threads T] [--repeat R] [--write-mask F] [--write-distances F]
 //                   [--write-vdb F.vdb]
@@ -105,12 +106,30 @@ Packing disorderedSpheres(int count, double phi, std::uint64_t seed) {
     return packing;
 }
 
-/// Solid mask (voxel centre inside a sphere, periodic), the layout of Voxelization::copySolidMask.
-std::vector<std::uint8_t> sphereMask(const Packing& packing, int m) {
+/// The same centres carrying superballs of exponent p inscribed in the spheres (circumradius
+/// 0.5, so still no overlap) with uniformly random orientations: a superball test case.
+Packing inscribedSuperballs(Packing packing, double p, std::uint64_t seed) {
+    packing.p = p;
+    packing.semiAxis = 0.5 / sbpack::Superball(p, 1.0).circumradius();
+    std::mt19937_64 generator(seed);
+    std::normal_distribution<double> gauss;
+    for (auto& q : packing.orientations)
+        q = sbpack::Quaterniond(gauss(generator), gauss(generator), gauss(generator),
+                                gauss(generator))
+                .normalized();
+    return packing;
+}
+
+/// Solid mask (voxel centre inside a particle, periodic), the layout of
+/// Voxelization::copySolidMask; a plain loop over each particle's bounding box, for the bench.
+std::vector<std::uint8_t> solidMask(const Packing& packing, int m) {
     std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m, 0);
     const double a = packing.boxLength / m;
-    const double r = packing.semiAxis;
-    for (const Vector3d& c : packing.positions) {
+    const sbpack::Superball shape = packing.shape();
+    const double r = shape.circumradius();
+    for (std::size_t n = 0; n < packing.size(); ++n) {
+        const Vector3d& c = packing.positions[n];
+        const sbpack::Matrix3d toBody = packing.orientations[n].toRotationMatrix().transpose();
         int lo[3], hi[3];
         for (int k = 0; k < 3; ++k) {
             lo[k] = static_cast<int>(std::floor((c[k] - r) / a - 0.5));
@@ -120,7 +139,9 @@ std::vector<std::uint8_t> sphereMask(const Packing& packing, int m) {
             for (int j = lo[1]; j <= hi[1]; ++j)
                 for (int k = lo[2]; k <= hi[2]; ++k) {
                     const Vector3d x((i + 0.5) * a, (j + 0.5) * a, (k + 0.5) * a);
-                    if ((x - c).squaredNorm() >= r * r) continue;
+                    const bool inside = shape.isSphere() ? (x - c).squaredNorm() < r * r
+                                                         : shape.contains(toBody * (x - c));
+                    if (!inside) continue;
                     const int wi = (i % m + m) % m, wj = (j % m + m) % m, wk = (k % m + m) % m;
                     mask[(static_cast<std::size_t>(wi) * m + wj) * m + wk] = 1;
                 }
@@ -140,6 +161,7 @@ struct Options {
     int threads = 1;
     int repeat = 3;
     std::int64_t points = 1'000'000;
+    double p = 1.0;
     std::string maskFile, distancesFile, packingFile, vdbFile;
 };
 
@@ -163,6 +185,8 @@ Options parse(int argc, char** argv) {
             o.points = std::stoll(v);
         } else if (a == "--write-mask") {
             o.maskFile = v;
+        } else if (a == "--p") {
+            o.p = std::stod(v);
         } else if (a == "--write-vdb") {
             o.vdbFile = v;
         } else if (a == "--packing") {
@@ -180,7 +204,7 @@ int edt(const Options& o, const Packing& packing) {
     const int m = o.voxels.empty() ? 500 : o.voxels.front();
     sbpack::checkPoreSizeMemory(m);
     auto start = std::chrono::steady_clock::now();
-    std::vector<std::uint8_t> mask = sphereMask(packing, m);
+    std::vector<std::uint8_t> mask = solidMask(packing, m);
     const double voxelize = secondsSince(start);
     const auto solid = std::count(mask.begin(), mask.end(), 1);
     std::printf("M = %d: voxelised in %.2f s (bench voxeliser), phi_voxel = %.5f, phi = %.5f\n", m,
@@ -227,7 +251,7 @@ int errors(const Options& o, const Packing& packing) {
         o.voxels.empty() ? std::vector<int>{100, 200, 300, 500} : o.voxels;
     for (const int m : list) {
         sbpack::checkPoreSizeMemory(m);
-        const std::vector<std::uint8_t> mask = sphereMask(packing, m);
+        const std::vector<std::uint8_t> mask = solidMask(packing, m);
         const double a = packing.boxLength / m;
         auto start = std::chrono::steady_clock::now();
         const sbpack::PoreSizeMap map = sbpack::periodicDistanceTransform(mask, m, a);
@@ -281,6 +305,7 @@ int main(int argc, char** argv) {
             packing = disorderedSpheres(5000, 0.60, 20240611);
             if (!o.packingFile.empty()) sbpack::writePacking(packing, o.packingFile);
         }
+        if (o.p != 1.0) packing = inscribedSuperballs(packing, o.p, 7);
         if (o.mode == "edt") return edt(o, packing);
         if (o.mode == "errors") return errors(o, packing);
         throw std::invalid_argument("unknown mode " + o.mode + " (edt or errors)");
