@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <sstream>
+#include <stdexcept>
 
 namespace sbpack {
 
@@ -120,9 +121,14 @@ FileResults analyzeFile(const Packing& packing, const std::filesystem::path& inp
         }
     }
     if (settings.runs(Analysis::Transport)) {
-        r.transport = Transport({}).compute(*r.poreSizes, r.p, r.phi);
-        progress.stageDone("transport", r.transport->runtimeSeconds,
-                           "k/w^2 = " + describe(r.transport->permeabilityOverWidth2()));
+        try {
+            r.transport = Transport({}).compute(*r.poreSizes, r.p, r.phi);
+            progress.stageDone("transport", r.transport->runtimeSeconds,
+                               "k/w^2 = " + describe(r.transport->permeabilityOverWidth2()));
+        } catch (const std::domain_error& e) {
+            // Outside the fitted range of the zeta_2 interpolation: no group, a warning.
+            progress.stageDone("transport", 0.0, std::string("skipped: ") + e.what());
+        }
     }
     return r;
 }

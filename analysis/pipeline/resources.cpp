@@ -79,7 +79,7 @@ MemoryEstimate estimateMemory(const Packing& packing, const RunSettings& setting
     }
     if (settings.runs(Analysis::PoreSizes))
         consider("pore-size map " + std::to_string(settings.poreVoxels) + "^3",
-                 static_cast<double>(poreSizeMapBytes(settings.poreVoxels)));
+                 static_cast<double>(poreSizeMemoryBytes(settings.poreVoxels)));
     if (!settings.vdbDirectory.empty()) consider(".vdb export", vdbExportBytes(settings.voxels));
     if (stage > 0.0) add(stageName, stage);
     return estimate;

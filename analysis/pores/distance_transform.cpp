@@ -34,79 +34,152 @@ std::uint64_t availableMemory() {
     return 0;
 }
 
-/// Scratch of one periodic line: the finite sites of the lower envelope and their breakpoints.
+void checkVoxels(int voxels) {
+    if (voxels < 1 || voxels > maxPoreSizeVoxels)
+        throw std::invalid_argument("pore sizes: M = " + std::to_string(voxels) +
+                                    " voxels per side is not in [1, " +
+                                    std::to_string(maxPoreSizeVoxels) + "]");
+}
+
+/// Throws std::runtime_error with the estimate when `bytes` exceed MemAvailable.
+void refuseUnlessAvailable(std::uint64_t bytes, int voxels, const std::string& what) {
+    const std::uint64_t available = availableMemory();
+    if (available != 0 && bytes > available)
+        throw std::runtime_error("pore sizes at M = " + std::to_string(voxels) + " need about " +
+                                 gigabytes(bytes) + " (" + what + "), but only " +
+                                 gigabytes(available) +
+                                 " are available (MemAvailable); choose a smaller M");
+}
+
+/// Scratch of one periodic line: the line with its periodic images on either side, and the
+/// sites of the lower envelope with their breakpoints.
 struct LineScratch {
     explicit LineScratch(int voxels)
-        : input(voxels), output(voxels), site(2 * voxels + 1), value(2 * voxels + 1),
-          start(2 * voxels + 1) {}
-    std::vector<std::uint32_t> input;
-    std::vector<std::uint32_t> output;
+        : voxels(voxels), extended(2 * static_cast<std::size_t>(voxels) + 1), site(2 * voxels + 1),
+          value(2 * voxels + 1), startNumerator(2 * voxels + 1), startDenominator(2 * voxels + 1) {}
+    /// f(q) for 0 <= q < M, with room for images at -M/2 <= q < M + M/2.
+    std::uint32_t* line() { return extended.data() + voxels / 2; }
+
+    int voxels;
+    std::vector<std::uint32_t> extended;
     std::vector<std::int64_t> site;  ///< position q' of each envelope parabola (images included)
     std::vector<std::int64_t> value; ///< f(q' mod M) of that parabola
-    std::vector<std::int64_t> start; ///< the parabola is the lowest for integers p > start
+    /// The parabola is the lowest for p > startNumerator / startDenominator (exact rational).
+    std::vector<std::int64_t> startNumerator;
+    std::vector<std::int64_t> startDenominator;
 };
+
+/// Copies a line (stride apart) into s.line(); returns the largest finite value, or kInfinite
+/// if some value is infinite.
+std::uint32_t loadLine(LineScratch& s, const std::uint32_t* source, std::int64_t stride) {
+    std::uint32_t* f = s.line();
+    std::uint32_t largest = 0;
+    for (int q = 0; q < s.voxels; ++q) {
+        f[q] = source[q * stride];
+        largest = std::max(largest, f[q]);
+    }
+    return largest;
+}
+
+/// Lines whose values are all at most this squared take the local scan (cost ~ sqrt(out(p)) per
+/// voxel, small in a dense packing); others, and lines with infinite values, the envelope.
+constexpr std::uint32_t kLocalScanReach = 32;
+
+/// The line's periodic min-plus transform (below) by scanning outwards from each p:
+/// out(p) = min over |r| <= M / 2 with r^2 < out(p) of f(p + r) + r^2, stopping as soon as r^2
+/// reaches the best value so far (no farther site can be lower). Exact; f must be finite.
+void localScan(LineScratch& s, std::uint32_t largest, std::uint32_t* out, std::int64_t stride) {
+    const int voxels = s.voxels;
+    const std::int64_t reach = std::min<std::int64_t>(
+        voxels / 2, static_cast<std::int64_t>(std::sqrt(static_cast<double>(largest))));
+    std::uint32_t* e = s.line(); // images: e[q] = f(q mod M) for -reach <= q < M + reach
+    std::copy(e + voxels - reach, e + voxels, e - reach);
+    std::copy(e, e + reach, e + voxels);
+    for (std::int64_t p = 0; p < voxels; ++p) {
+        std::uint32_t best = e[p];
+        for (std::int64_t r = 1; r <= reach && static_cast<std::uint32_t>(r * r) < best; ++r)
+            best = std::min(best, std::min(e[p - r], e[p + r]) + static_cast<std::uint32_t>(r * r));
+        out[p * stride] = best;
+    }
+}
 
 /// One-dimensional periodic min-plus transform (Felzenszwalb-Huttenlocher):
 ///   out(p) = min_q [ f(q) + (min-image |p - q|)^2 ],  p, q in [0, M),  f = kInfinite: no site.
 /// The periodic images q' = q +- M of the sites enter as further parabolas; only those within
 /// sqrt(max f) of the line ends can win (out(p) <= f(p)), and none farther than M / 2.
-/// Breakpoints are kept as integers (the floor of the real intersection), which is exact for
-/// integer p; the floor is taken of a double quotient, exact while |numerator| < 2^31 and the
-/// denominator < 2^17 (the quotient's rounding error, < 2^-22, is below its distance 1 /
-/// denominator from any integer it is not equal to), which M <= maxPoreSizeVoxels guarantees.
-void periodicLowerEnvelope(LineScratch& s, int voxels) {
-    const std::uint32_t* f = s.input.data();
-    std::int64_t largest = 0;
-    bool allFinite = true;
-    for (int q = 0; q < voxels; ++q) {
-        if (f[q] == kInfinite)
-            allFinite = false;
-        else
-            largest = std::max<std::int64_t>(largest, f[q]);
-    }
+/// Breakpoints are exact rationals compared by integer cross-multiplication (|numerator| < 2^33,
+/// denominator < 2^17 for M <= maxPoreSizeVoxels), so the envelope is exact. Sites inside a run
+/// of zeros (solid voxels) are skipped: outside the run an end of it is nearer, and inside it the
+/// answer is 0.
+void lowerEnvelope(LineScratch& s, std::uint32_t largest, std::uint32_t* out, std::int64_t stride) {
+    const int voxels = s.voxels;
+    const std::uint32_t* f = s.line();
     std::int64_t pad = voxels / 2;
-    if (allFinite) {
+    if (largest != kInfinite) {
         const auto reach = static_cast<std::int64_t>(std::sqrt(static_cast<double>(largest)));
         pad = std::min<std::int64_t>(pad, reach + 1);
     }
     std::int64_t* site = s.site.data();
     std::int64_t* value = s.value.data();
-    std::int64_t* start = s.start.data();
+    std::int64_t* startNumerator = s.startNumerator.data();
+    std::int64_t* startDenominator = s.startDenominator.data();
+    auto wrap = [voxels](std::int64_t q) { // for -M <= q < 2M
+        return q < 0 ? q + voxels : (q >= voxels ? q - voxels : q);
+    };
     int top = -1; // index of the last parabola of the envelope
     for (std::int64_t q = -pad; q < voxels + pad; ++q) {
-        const std::int64_t wrapped = q < 0 ? q + voxels : (q >= voxels ? q - voxels : q);
-        const std::uint32_t fq = f[wrapped];
+        const std::uint32_t fq = f[wrap(q)];
         if (fq == kInfinite) continue;
+        if (fq == 0 && f[wrap(q - 1)] == 0 && f[wrap(q + 1)] == 0) continue; // inside zeros
         const std::int64_t height = fq + q * q; // parabola (p - q)^2 + f(q) = p^2 - 2pq + height
         std::int64_t numerator = 0, denominator = 1;
         while (top >= 0) {
             // Real intersection with the top parabola: (height - height_top) / (2 (q - q_top));
-            // q wins for p above it. Pop the top if it is the lowest at no integer any more,
-            // i.e. unless floor(numerator / denominator) > start (the first one never).
+            // q is lower above it. Pop the top if that is not above the top's own start (the
+            // first parabola, starting at -infinity, stays).
             numerator = height - (value[top] + site[top] * site[top]);
             denominator = 2 * (q - site[top]);
-            if (top == 0 || numerator >= (start[top] + 1) * denominator) break;
+            if (top == 0 || numerator * startDenominator[top] > startNumerator[top] * denominator)
+                break;
             --top;
         }
         ++top;
         site[top] = q;
         value[top] = fq;
-        start[top] = top == 0 ? std::numeric_limits<std::int64_t>::min()
-                              : static_cast<std::int64_t>(
-                                    std::floor(static_cast<double>(numerator) / denominator));
+        startNumerator[top] = numerator;
+        startDenominator[top] = denominator;
     }
-    std::uint32_t* out = s.output.data();
-    if (top < 0) { // no site on this line
-        std::fill(out, out + voxels, kInfinite);
+    if (top < 0) { // no site (or only zeros, all skipped): infinite or solid
+        for (int p = 0; p < voxels; ++p)
+            out[p * stride] = f[p] == 0 ? 0u : kInfinite;
         return;
     }
-    int j = 0;
-    for (std::int64_t p = 0; p < voxels; ++p) {
-        while (j < top && start[j + 1] < p)
-            ++j;
-        const std::int64_t d = p - site[j];
-        out[p] = static_cast<std::uint32_t>(d * d + value[j]);
+    // Parabola j is the lowest on the integers [first_j, first_{j+1}), first_j = floor(start) + 1;
+    // the floor of the double quotient is exact (its rounding error < 2^-20 is below the
+    // distance 1 / denominator >= 2^-17 of a non-integer quotient from any integer).
+    std::int64_t p = 0;
+    for (int j = 0; j <= top && p < voxels; ++j) {
+        std::int64_t end = voxels;
+        if (j < top)
+            end =
+                std::min<std::int64_t>(voxels, static_cast<std::int64_t>(std::floor(
+                                                   static_cast<double>(startNumerator[j + 1]) /
+                                                   static_cast<double>(startDenominator[j + 1]))) +
+                                                   1);
+        const std::int64_t q = site[j], h = value[j];
+        for (; p < end; ++p) // zeros inside a skipped run stay zero
+            out[p * stride] = f[p] == 0 ? 0u : static_cast<std::uint32_t>((p - q) * (p - q) + h);
     }
+}
+
+/// out(p * stride) = min_q [ f(q) + (min-image |p - q|)^2 ] of the periodic line in s.line(),
+/// whose largest value (kInfinite if any is infinite) loadLine returned.
+void periodicLineTransform(LineScratch& s, std::uint32_t largest, std::uint32_t* out,
+                           std::int64_t stride) {
+    if (largest <= kLocalScanReach * kLocalScanReach)
+        localScan(s, largest, out, stride);
+    else
+        lowerEnvelope(s, largest, out, stride);
 }
 
 /// First pass, along x (i): the 1-D periodic distance g to the nearest solid voxel of each column
@@ -161,54 +234,50 @@ void columnDistances(std::span<const std::uint8_t> mask, std::uint32_t* out, int
     }
 }
 
-/// Second and third passes within one plane i: along y (j, stride M), then along z (k, contiguous).
-void planeDistances(std::uint32_t* planeData, int voxels, LineScratch& scratch) {
+/// Second and third passes within one plane i: along y (j, stride M), then along z (k,
+/// contiguous). Returns the plane's largest squared distance.
+std::uint32_t planeDistances(std::uint32_t* planeData, LineScratch& scratch) {
+    const int voxels = scratch.voxels;
     for (int k = 0; k < voxels; ++k) {
-        for (int j = 0; j < voxels; ++j)
-            scratch.input[j] = planeData[j * voxels + k];
-        periodicLowerEnvelope(scratch, voxels);
-        for (int j = 0; j < voxels; ++j)
-            planeData[j * voxels + k] = scratch.output[j];
+        const std::uint32_t largest = loadLine(scratch, planeData + k, voxels);
+        periodicLineTransform(scratch, largest, planeData + k, voxels);
     }
+    std::uint32_t planeLargest = 0;
     for (int j = 0; j < voxels; ++j) {
         std::uint32_t* line = planeData + static_cast<std::int64_t>(j) * voxels;
-        std::copy(line, line + voxels, scratch.input.begin());
-        periodicLowerEnvelope(scratch, voxels);
-        std::copy(scratch.output.begin(), scratch.output.end(), line);
+        periodicLineTransform(scratch, loadLine(scratch, line, 1), line, 1);
+        planeLargest = std::max(planeLargest, *std::max_element(line, line + voxels));
     }
+    return planeLargest;
 }
 
 } // namespace
 
-std::uint64_t poreSizeMapBytes(int voxels) {
+std::uint64_t poreSizeMemoryBytes(int voxels) {
     const auto m = static_cast<std::uint64_t>(std::max(voxels, 0));
     return m * m * m * (sizeof(std::uint8_t) + sizeof(std::uint32_t));
 }
 
 void checkPoreSizeMemory(int voxels) {
-    if (voxels < 1 || voxels > maxPoreSizeVoxels)
-        throw std::invalid_argument("pore sizes: M = " + std::to_string(voxels) +
-                                    " voxels per side is not in [1, " +
-                                    std::to_string(maxPoreSizeVoxels) + "]");
-    const std::uint64_t needed = poreSizeMapBytes(voxels);
-    const std::uint64_t available = availableMemory();
-    if (available != 0 && needed > available)
-        throw std::runtime_error(
-            "pore sizes at M = " + std::to_string(voxels) + " need about " + gigabytes(needed) +
-            " (1-byte solid mask + 4-byte squared distance per voxel), but "
-            "only " +
-            gigabytes(available) + " are available (MemAvailable); choose a smaller M");
+    checkVoxels(voxels);
+    refuseUnlessAvailable(poreSizeMemoryBytes(voxels), voxels,
+                          "1-byte solid mask + 4-byte squared distance per voxel");
 }
 
-PoreSizeMap::PoreSizeMap(int voxels, double voxelSize, std::vector<std::uint32_t> squaredDistances)
-    : voxels_(voxels), voxelSize_(voxelSize), squaredDistances_(std::move(squaredDistances)) {}
+PoreSizeMap::PoreSizeMap(int voxels, double voxelSize) : voxels_(voxels), voxelSize_(voxelSize) {
+    // Default-initialised (no zeroing pass): the first pass writes every entry.
+    const std::int64_t m = voxels;
+    squaredDistances_.reset(new std::uint32_t[m * m * m]);
+}
+
+std::span<const std::uint32_t> PoreSizeMap::squaredDistances() const {
+    const std::size_t m = static_cast<std::size_t>(voxels_);
+    return {squaredDistances_.get(), m * m * m};
+}
 
 PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t> solidMask, int voxels,
                                       double voxelSize, bool serial) {
-    if (voxels < 1 || voxels > maxPoreSizeVoxels)
-        throw std::invalid_argument("distance transform: M = " + std::to_string(voxels) +
-                                    " voxels per side is not in [1, " +
-                                    std::to_string(maxPoreSizeVoxels) + "]");
+    checkVoxels(voxels);
     const std::int64_t plane = static_cast<std::int64_t>(voxels) * voxels;
     const std::int64_t total = plane * voxels;
     if (static_cast<std::int64_t>(solidMask.size()) != total)
@@ -228,29 +297,27 @@ PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t> solidMask, i
         throw std::domain_error("pore sizes: no void voxel at M = " + std::to_string(voxels) +
                                 " (the particles cover every voxel centre); the pore-size "
                                 "distribution is undefined: use a larger M or check the packing");
-    checkPoreSizeMemory(voxels);
+    refuseUnlessAvailable(static_cast<std::uint64_t>(total) * sizeof(std::uint32_t), voxels,
+                          "4-byte squared distance per voxel");
 
-    std::vector<std::uint32_t> squared(total);
+    PoreSizeMap map(voxels, voxelSize);
+    std::uint32_t* squared = map.squaredDistances_.get();
     const std::int64_t columnGrain = std::max<std::int64_t>(1, std::min<std::int64_t>(plane, 4096));
     parallelFor(
         0, plane, columnGrain,
-        [&](std::int64_t b, std::int64_t e) {
-            columnDistances(solidMask, squared.data(), voxels, b, e);
-        },
+        [&](std::int64_t b, std::int64_t e) { columnDistances(solidMask, squared, voxels, b, e); },
         serial);
+    std::vector<std::uint32_t> planeLargest(voxels);
     parallelFor(
         0, voxels, 1,
         [&](std::int64_t b, std::int64_t e) {
             LineScratch scratch(voxels);
             for (std::int64_t i = b; i < e; ++i)
-                planeDistances(squared.data() + i * plane, voxels, scratch);
+                planeLargest[i] = planeDistances(squared + i * plane, scratch);
         },
         serial);
-
-    PoreSizeMap map(voxels, voxelSize, std::move(squared));
     map.voidCount_ = total - solid;
-    map.maxSquaredDistance_ =
-        *std::max_element(map.squaredDistances_.begin(), map.squaredDistances_.end());
+    map.maxSquaredDistance_ = *std::max_element(planeLargest.begin(), planeLargest.end());
     return map;
 }
 

@@ -4,22 +4,21 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <span>
-#include <string>
-#include <vector>
 
 namespace sbpack {
 
-/// Memory a pore-size map at M voxels per side needs: the solid mask the voxelisation hands over
+/// Memory of the pore-size path at M voxels per side: the solid mask the voxelisation hands over
 /// (1 byte per voxel) and the squared distances (4 bytes per voxel), in bytes.
-std::uint64_t poreSizeMapBytes(int voxels);
+std::uint64_t poreSizeMemoryBytes(int voxels);
 
 /// Throws std::invalid_argument for M < 1 or M > maxPoreSizeVoxels, and std::runtime_error with
-/// the estimate of poreSizeMapBytes(M) when it exceeds MemAvailable of /proc/meminfo (not checked
+/// the estimate poreSizeMemoryBytes(M) when it exceeds MemAvailable of /proc/meminfo (not checked
 /// where that file cannot be read). Call it before voxelising.
 void checkPoreSizeMemory(int voxels);
 
-/// Largest M accepted: the integer envelope's intersections stay exact in double (see the .cpp).
+/// Largest M accepted: keeps the envelope's integer arithmetic and its floors exact (see the .cpp).
 inline constexpr int maxPoreSizeVoxels = 16384;
 
 /// Squared distances, in voxel units, from every voxel centre to the nearest solid voxel centre
@@ -32,7 +31,7 @@ class PoreSizeMap {
     /// a = L / M (length units of the packing).
     double voxelSize() const { return voxelSize_; }
     double boxLength() const { return voxelSize_ * voxels_; }
-    std::span<const std::uint32_t> squaredDistances() const { return squaredDistances_; }
+    std::span<const std::uint32_t> squaredDistances() const;
     std::int64_t voidCount() const { return voidCount_; }
     /// Largest squared distance (voxel units): the largest pore is a sqrt of it.
     std::uint32_t maxSquaredDistance() const { return maxSquaredDistance_; }
@@ -44,23 +43,25 @@ class PoreSizeMap {
 
   private:
     friend PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t>, int, double, bool);
-    PoreSizeMap(int voxels, double voxelSize, std::vector<std::uint32_t> squaredDistances);
+    PoreSizeMap(int voxels, double voxelSize);
 
     int voxels_;
     double voxelSize_;
-    std::vector<std::uint32_t> squaredDistances_;
+    std::unique_ptr<std::uint32_t[]> squaredDistances_; ///< M^3 entries
     std::int64_t voidCount_ = 0;
     std::uint32_t maxSquaredDistance_ = 0;
 };
 
-/// Exact separable distance transform (Felzenszwalb-Huttenlocher lower envelope of parabolas with
-/// integer breakpoints) of a periodic M^3 grid; `solidMask[(i * M + j) * M + k] != 0` marks a
-/// solid voxel (as Voxelization::copySolidMask fills it). Linear in M^3 plus the periodic images
-/// near the line ends; parallel over lines (parallelFor), serial = true for the reference order.
-/// Peak memory: the map (4 bytes per voxel) plus per-line scratch. Throws std::invalid_argument
-/// for a mask of the wrong size, M outside [1, maxPoreSizeVoxels] or a voxel size that is not
-/// finite and positive, std::runtime_error when the memory check fails, and
-/// std::domain_error when the grid has no solid or no void voxel (the pore sizes are undefined).
+/// Exact separable distance transform of a periodic M^3 grid; `solidMask[(i * M + j) * M + k]
+/// != 0` marks a solid voxel (as Voxelization::copySolidMask fills it). A 1-D pass along x, then
+/// per x plane the periodic min-plus transform along y and z: a Felzenszwalb-Huttenlocher lower
+/// envelope of parabolas with exact rational breakpoints, or, on lines whose values are all
+/// <= 32^2, an exact outward scan (at most 32 steps per voxel). Linear in M^3; parallel over
+/// columns and planes (parallelFor), serial = true for the reference order. Memory: the map
+/// (4 bytes per voxel) plus per-line scratch. Throws std::invalid_argument for a mask of the
+/// wrong size, M outside [1, maxPoreSizeVoxels] or a voxel size that is not finite and positive,
+/// std::runtime_error when the map exceeds MemAvailable, and std::domain_error when the grid has
+/// no solid or no void voxel (the pore sizes are undefined).
 PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t> solidMask, int voxels,
                                       double voxelSize, bool serial = false);
 

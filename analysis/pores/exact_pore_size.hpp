@@ -33,7 +33,6 @@ class ExactPoreSizes {
     double poreSize(const Vector3d& x) const;
 
     double boxLength() const { return boxLength_; }
-    const Superball& shape() const { return shape_; }
 
   private:
     double distanceToParticle(int particle, const Vector3d& d) const;

@@ -15,7 +15,7 @@ void PoreSizeMap::writeVdb(const std::filesystem::path& file) const {
     openvdb::initialize();
     const int m = voxels_;
     const std::int64_t plane = static_cast<std::int64_t>(m) * m;
-    const std::uint32_t* squared = squaredDistances_.data();
+    const std::uint32_t* squared = squaredDistances_.get();
     const auto a = static_cast<float>(voxelSize_);
     using Leaf = openvdb::FloatTree::LeafNodeType;
     constexpr int edge = static_cast<int>(Leaf::DIM);

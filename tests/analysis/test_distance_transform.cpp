@@ -94,6 +94,19 @@ TEST(DistanceTransform, LongThinPoresAndEmptyColumnsMatchBruteForce) {
     }
 }
 
+TEST(DistanceTransform, LargerSparseGridsTakeBothLineAlgorithmsExactly) {
+    // Lines with values above 32^2 take the parabola envelope, the others the local scan. In a
+    // sparse grid of M = 80 or 81 most x columns have no solid (infinite values along y), most
+    // z lines have finite values far above 32^2 after the y pass, and the rest are small.
+    std::mt19937_64 generator(2024);
+    for (const int m : {80, 81}) {
+        const std::vector<std::uint8_t> mask = randomMask(m, 0.0004, generator);
+        ASSERT_GT(std::count(mask.begin(), mask.end(), 1), 150);
+        ASSERT_EQ(asVector(periodicDistanceTransform(mask, m, 1.0)), bruteForce(mask, m))
+            << "M = " << m;
+    }
+}
+
 TEST(DistanceTransform, OneVoidVoxel) {
     for (const int m : {3, 4}) {
         std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m, 1);
@@ -159,7 +172,7 @@ TEST(DistanceTransform, RejectsNoSolidNoVoidAndBadArguments) {
 }
 
 TEST(DistanceTransform, RefusesTooLargeGridWithTheEstimate) {
-    EXPECT_EQ(poreSizeMapBytes(500), 625'000'000u);
+    EXPECT_EQ(poreSizeMemoryBytes(500), 625'000'000u);
     EXPECT_THROW(checkPoreSizeMemory(0), std::invalid_argument);
     EXPECT_THROW(checkPoreSizeMemory(maxPoreSizeVoxels + 1), std::invalid_argument);
     EXPECT_NO_THROW(checkPoreSizeMemory(64));
