@@ -1,7 +1,7 @@
 #include "pores/exact_pore_size.hpp"
 #include "pores/pore_size_distribution.hpp"
-
 #include "parallel/parallel.hpp"
+#include "test_packings.hpp"
 
 #include <gtest/gtest.h>
 
@@ -42,17 +42,6 @@ std::vector<Vector3d> randomCentres(int count, double length, std::mt19937_64& g
 /// Right-continuous value of the step function F at x.
 double stepF(const PoreSizeDistributionResult& r, double x) {
     return r.F[std::upper_bound(r.delta.begin(), r.delta.end(), x) - r.delta.begin() - 1];
-}
-
-Packing onePacking(double p, double semiAxis, double length, const Vector3d& position,
-                   const Quaterniond& orientation = Quaterniond::Identity()) {
-    Packing packing;
-    packing.p = p;
-    packing.semiAxis = semiAxis;
-    packing.boxLength = length;
-    packing.positions = {position};
-    packing.orientations = {orientation};
-    return packing;
 }
 
 Quaterniond randomRotation(std::mt19937_64& generator) {
@@ -168,7 +157,7 @@ TEST(PoreSizeStatistics, LargestGapOfTwoStepFunctions) {
 TEST(ExactPoreSize, SingleSphereIsExactIncludingPeriodicImages) {
     const double r = 0.5, length = 2.5;
     const Vector3d centre(0.3, 2.2, 1.25);
-    const ExactPoreSizes pores(onePacking(1.0, r, length, centre));
+    const ExactPoreSizes pores(testing::singleParticle(1.0, r, length, centre));
     std::mt19937_64 generator(3);
     std::uniform_real_distribution<double> uniform(-length, 2.0 * length);
     for (int n = 0; n < 2000; ++n) {
@@ -185,7 +174,7 @@ TEST(ExactPoreSize, SingleSphereDistributionMatchesTheClosedForm) {
     // For R + delta <= L / 2, F(delta) = (L^3 - 4/3 pi (R + delta)^3) / (L^3 - 4/3 pi R^3).
     const ThreadBudget budget(2);
     const double r = 0.5, length = 2.0;
-    const Packing packing = onePacking(1.0, r, length, Vector3d(1.0, 1.0, 1.0));
+    const Packing packing = testing::singleParticle(1.0, r, length, Vector3d(1.0, 1.0, 1.0));
     ExactPoreSizeParameters parameters;
     parameters.randomPoints = 100000;
     const PoreSizeDistributionResult result =
