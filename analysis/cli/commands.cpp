@@ -20,8 +20,8 @@ namespace {
 
 constexpr const char* kAnalyzeUsage = R"(usage:
   sbanalyze FILE.h5... [--compute LIST] [--out RESULTS.h5] [--json FILE|-] [--threads T]
-            [--voxels M] [--pore-voxels M] [--qmax X] [--tolerance T] [--rattler-threshold K]
-            [--vdb DIR] [--fft-plan estimate|measure|patient] [--fft-wisdom FILE|none] [--quiet]
+            [--voxels M] [--pore-voxels M] [--pore-points K] [--qmax X] [--tolerance T]
+            [--rattler-threshold K] [--vdb DIR] [--fft-plan estimate|measure|patient] [--fft-wisdom FILE|none] [--quiet]
       Analyse stored packings. LIST names analyses, comma-separated; what they need is
       added (chi needs voxels) and nothing else runs (sq alone voxelises nothing):
 )";
@@ -36,6 +36,8 @@ constexpr const char* kOptionsUsage = R"(        all       every analysis above 
       --voxels M       spectral grid, M^3 voxels of the box, for chi and voxels (default 300)
       --pore-voxels M  pore grid, M^3 voxels, of pores and transport (default 500, as the
                        paper); the exact periodic distance transform needs 5 bytes per voxel
+      --pore-points K  F(delta) from K random void points (seed 1), as the paper's 10^6, instead
+                       of every void voxel (default 0: every void voxel)
       --qmax X         S(Q) and chi(Q) up to Q w <= X, w the mean width (default 30); chi also
                        below the grid's Nyquist limit |n| < M/2
       --tolerance T, --rattler-threshold K   contacts, as for info (defaults 1e-10, 4)
@@ -139,6 +141,8 @@ RunSettings parseAnalyzeArguments(const std::vector<std::string>& args) {
             const int m = static_cast<int>(parseInteger(a, in.value(a), INT32_MIN, INT32_MAX));
             if (m < 1) throw std::invalid_argument("option " + a + ": M must be positive");
             (a == "--voxels" ? s.voxels : s.poreVoxels) = m;
+        } else if (a == "--pore-points") {
+            s.porePoints = parseInteger(a, in.value(a), 0, std::int64_t(1) << 40);
         } else if (a == "--qmax") {
             s.maxQw = parseNumber(a, in.value(a));
             if (!(s.maxQw > 0.0) || !std::isfinite(s.maxQw))

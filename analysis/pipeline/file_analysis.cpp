@@ -107,7 +107,9 @@ FileResults analyzeFile(const Packing& packing, const std::filesystem::path& inp
         std::vector<std::uint8_t>().swap(mask);
         progress.stageDone("distance transform", clock.seconds(),
                            std::to_string(map.voidCount()) + " void voxels");
-        r.poreSizes = PoreSizeDistribution({}).compute(map, r.meanWidth);
+        PoreSizeParameters poreParameters;
+        poreParameters.randomPoints = settings.porePoints;
+        r.poreSizes = PoreSizeDistribution(poreParameters).compute(map, r.meanWidth);
         const PoreSizeDistributionResult& pores = *r.poreSizes;
         progress.stageDone("pore sizes", pores.runtimeSeconds,
                            "<delta>/w = " + describe(pores.meanOverWidth()) + ", max/w = " +

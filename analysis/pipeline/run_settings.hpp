@@ -19,6 +19,8 @@ struct RunSettings {
     int threads = 1;
     int voxels = 300;     ///< M of the spectral grid
     int poreVoxels = 500; ///< M of the pore grid
+    /// K: F(delta) from K random void points (seeded) instead of every void voxel when K > 0
+    std::int64_t porePoints = 0;
     double maxQw = 30.0;  ///< S(Q) and chi(Q) up to Q w <= maxQw
     ContactParameters contacts;
     FftSettings fft;
