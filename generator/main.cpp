@@ -16,20 +16,25 @@ namespace {
 
 volatile std::sig_atomic_t stopSignal = 0;
 
-void requestStop(int signal) { stopSignal = signal; }
+void requestStop(int signal) {
+    stopSignal = signal;
+}
 
 const char* phaseName(sbpack::Phase phase) {
     switch (phase) {
-    case sbpack::Phase::Fast: return "fast";
-    case sbpack::Phase::Slow: return "slow";
-    case sbpack::Phase::Done: return "done";
+    case sbpack::Phase::Fast:
+        return "fast";
+    case sbpack::Phase::Slow:
+        return "slow";
+    case sbpack::Phase::Done:
+        return "done";
     }
     return "?";
 }
 
-void printProgress(const sbpack::ProtocolStatus& s, double runSeconds, std::uint64_t runCollisions) {
-    std::fprintf(stderr,
-                 "sbgen: %s  phi %.6f  P %.3e  collisions %.4g  (%.3g M/s)  wall %.1f s\n",
+void printProgress(const sbpack::ProtocolStatus& s, double runSeconds,
+                   std::uint64_t runCollisions) {
+    std::fprintf(stderr, "sbgen: %s  phi %.6f  P %.3e  collisions %.4g  (%.3g M/s)  wall %.1f s\n",
                  phaseName(s.phase), s.packingFraction, s.reducedPressure,
                  static_cast<double>(s.collisions),
                  runSeconds > 0.0 ? runCollisions / runSeconds * 1e-6 : 0.0, s.wallSeconds);
@@ -67,8 +72,8 @@ int generate(const sbpack::GeneratorOptions& o) {
     const std::uint64_t startCollisions = protocol.status().collisions;
     const bool done = protocol.run(&stopSignal, [&](const sbpack::ProtocolStatus& s) {
         const auto now = Clock::now();
-        if (!o.quiet && (now - lastProgress > std::chrono::seconds(2) ||
-                         s.phase == sbpack::Phase::Done)) {
+        if (!o.quiet &&
+            (now - lastProgress > std::chrono::seconds(2) || s.phase == sbpack::Phase::Done)) {
             printProgress(s, std::chrono::duration<double>(now - start).count(),
                           s.collisions - startCollisions);
             lastProgress = now;

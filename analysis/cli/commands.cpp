@@ -150,7 +150,8 @@ RunSettings parseAnalyzeArguments(const std::vector<std::string>& args) {
         } else if (a == "--tolerance") {
             s.contacts.tolerance = parseNumber(a, in.value(a));
         } else if (a == "--rattler-threshold") {
-            s.contacts.rattlerThreshold = static_cast<int>(parseInteger(a, in.value(a), INT32_MIN, INT32_MAX));
+            s.contacts.rattlerThreshold =
+                static_cast<int>(parseInteger(a, in.value(a), INT32_MIN, INT32_MAX));
         } else if (a == "--vdb") {
             s.vdbDirectory = in.value(a);
         } else if (a == "--fft-plan") {

@@ -20,7 +20,8 @@ void parallelFor(std::int64_t begin, std::int64_t end, std::int64_t grain, const
     if (end <= begin) return;
     if (grain < 1) grain = 1;
     if (serial) {
-        for (std::int64_t b = begin; b < end; b += grain) body(b, std::min(end, b + grain));
+        for (std::int64_t b = begin; b < end; b += grain)
+            body(b, std::min(end, b + grain));
         return;
     }
     tbb::parallel_for(tbb::blocked_range<std::int64_t>(begin, end, grain),
@@ -30,7 +31,7 @@ void parallelFor(std::int64_t begin, std::int64_t end, std::int64_t grain, const
 /// Caps every threading library at `threads` for its lifetime: TBB (global_control), FFTW
 /// (fftw_plan_with_nthreads) and OpenMP (omp_set_num_threads). Create one per run, before any work.
 class ThreadBudget {
-public:
+  public:
     /// Throws std::invalid_argument when threads < 1 or above maxThreads().
     explicit ThreadBudget(int threads);
     ~ThreadBudget();
@@ -41,7 +42,7 @@ public:
     /// Largest sensible request: 4 times the hardware threads (at least 1).
     static int maxThreads();
 
-private:
+  private:
     int threads_;
     std::unique_ptr<struct ThreadBudgetState> state_;
 };

@@ -108,8 +108,9 @@ EnsembleResults computeEnsemble(std::span<const FileResults> files) {
     }
     if (files.front().poreSizes) {
         EnsembleGroup& g = e.groups["pore_size"];
-        g.scalars["mean_w"] = over(
-            files, [](const FileResults& f) { return std::optional(f.poreSizes->meanOverWidth()); });
+        g.scalars["mean_w"] = over(files, [](const FileResults& f) {
+            return std::optional(f.poreSizes->meanOverWidth());
+        });
         g.scalars["second_moment_w2"] = over(files, [](const FileResults& f) {
             return std::optional(f.poreSizes->secondMomentOverWidth2());
         });

@@ -100,7 +100,8 @@ FileResults analyzeFile(const Packing& packing, const std::filesystem::path& inp
             voxels.copySolidMask(mask);
             voxelSize = voxels.voxelSize();
             progress.stageDone("pore voxelization", voxels.runtimeSeconds(),
-                               std::to_string(m) + "^3, phi_voxel = " + describe(voxels.phiVoxel()));
+                               std::to_string(m) +
+                                   "^3, phi_voxel = " + describe(voxels.phiVoxel()));
         }
         const Stopwatch clock;
         const PoreSizeMap map = periodicDistanceTransform(mask, m, voxelSize);
@@ -112,8 +113,8 @@ FileResults analyzeFile(const Packing& packing, const std::filesystem::path& inp
         r.poreSizes = PoreSizeDistribution(poreParameters).compute(map, r.meanWidth);
         const PoreSizeDistributionResult& pores = *r.poreSizes;
         progress.stageDone("pore sizes", pores.runtimeSeconds,
-                           "<delta>/w = " + describe(pores.meanOverWidth()) + ", max/w = " +
-                               describe(pores.maxOverWidth()) +
+                           "<delta>/w = " + describe(pores.meanOverWidth()) +
+                               ", max/w = " + describe(pores.maxOverWidth()) +
                                (pores.saturated ? " (saturated)" : " (NOT below w/2)"));
         if (poreVdb) {
             const Stopwatch exportClock;

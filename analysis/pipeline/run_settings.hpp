@@ -21,7 +21,7 @@ struct RunSettings {
     int poreVoxels = 500; ///< M of the pore grid
     /// K: F(delta) from K random void points (seeded) instead of every void voxel when K > 0
     std::int64_t porePoints = 0;
-    double maxQw = 30.0;  ///< S(Q) and chi(Q) up to Q w <= maxQw
+    double maxQw = 30.0; ///< S(Q) and chi(Q) up to Q w <= maxQw
     ContactParameters contacts;
     FftSettings fft;
     bool quiet = false;

@@ -115,13 +115,13 @@ std::string fileSummary(const FileResults& f, int indent) {
                                .add("runtime_s", f.poreSizes->runtimeSeconds)
                                .str(inner));
     if (f.transport)
-        o.add("transport", Object()
-                               .add("permeability_w2", f.transport->permeabilityOverWidth2())
-                               .add("mean_survival_time_scaled",
-                                    f.transport->meanSurvivalTimeScaled())
-                               .add("principal_relaxation_time_scaled",
-                                    f.transport->principalRelaxationTimeScaled())
-                               .str(inner));
+        o.add("transport",
+              Object()
+                  .add("permeability_w2", f.transport->permeabilityOverWidth2())
+                  .add("mean_survival_time_scaled", f.transport->meanSurvivalTimeScaled())
+                  .add("principal_relaxation_time_scaled",
+                       f.transport->principalRelaxationTimeScaled())
+                  .str(inner));
     return o.str(indent);
 }
 

@@ -67,11 +67,13 @@ template <class Shape> class EventDrivenMd {
     /// kT = m <v^2> / 3 with m = 1.
     double kineticTemperature() const {
         double sum = 0.0;
-        for (const ParticleState& s : state_) sum += s.velocity.squaredNorm();
+        for (const ParticleState& s : state_)
+            sum += s.velocity.squaredNorm();
         return sum / (3.0 * size());
     }
     void scaleVelocities(double factor) {
-        for (ParticleState& s : state_) s.velocity *= factor;
+        for (ParticleState& s : state_)
+            s.velocity *= factor;
         dirty_ = true;
     }
     void setGrowthRate(double gamma) {
@@ -112,7 +114,8 @@ template <class Shape> class EventDrivenMd {
             }
             synchronize(now);
             report.duration += now;
-            if (limitReached && (limit < horizon_ || limit == kNever)) break; // maxDuration, or no event ever
+            if (limitReached && (limit < horizon_ || limit == kNever))
+                break; // maxDuration, or no event ever
         }
         return report;
     }
@@ -152,7 +155,8 @@ template <class Shape> class EventDrivenMd {
     /// i's earliest collision with any listed neighbour, predicted at time t.
     void predict(int i, double t) {
         collision_[i] = {};
-        for (const int j : lists_.of(i)) consider(i, j, t);
+        for (const int j : lists_.of(i))
+            consider(i, j, t);
         schedule(i);
     }
 
@@ -161,10 +165,12 @@ template <class Shape> class EventDrivenMd {
     void predictExit(int i) {
         const Vector3d e = state_[i].position - lists_.anchor(i);
         const Vector3d& v = state_[i].velocity;
-        const double a = v.squaredNorm(), b = e.dot(v), c = e.squaredNorm() - exitRadius_ * exitRadius_;
+        const double a = v.squaredNorm(), b = e.dot(v),
+                     c = e.squaredNorm() - exitRadius_ * exitRadius_;
         const double root = std::sqrt(std::max(0.0, b * b - a * c));
-        exit_[i] = a == 0.0 ? kNever
-                            : time_[i] + (b > 0.0 ? std::max(0.0, -c) / (b + root) : (root - b) / a);
+        exit_[i] = a == 0.0
+                       ? kNever
+                       : time_[i] + (b > 0.0 ? std::max(0.0, -c) / (b + root) : (root - b) / a);
     }
 
     void relist(int i, double t) {
@@ -186,8 +192,7 @@ template <class Shape> class EventDrivenMd {
         advance(j, t);
         const PairMotion m = motion(i, j, t);
         const PairContact contact = shape_.contact(m);
-        const double impulse =
-            resolveCollision(m, contact, state_[i].velocity, state_[j].velocity);
+        const double impulse = resolveCollision(m, contact, state_[i].velocity, state_[j].velocity);
         report.virial += impulse * contact.normal.dot(m.displacement);
         ++report.collisions;
         ++counter_[i];
@@ -217,15 +222,18 @@ template <class Shape> class EventDrivenMd {
         horizon_ = clock_.rate > 0.0 ? (maximum - d) / clock_.rate : kNever;
         exitRadius_ = 0.5 * parameters_.skin * d;
         std::vector<Vector3d> anchors(size());
-        for (int i = 0; i < size(); ++i) anchors[i] = state_[i].position;
+        for (int i = 0; i < size(); ++i)
+            anchors[i] = state_[i].position;
         lists_ = NeighbourLists(box_, maximum + 2.0 * exitRadius_, std::move(anchors));
         time_.assign(size(), 0.0);
         counter_.assign(size(), 0);
         collision_.assign(size(), {});
         exit_.assign(size(), kNever);
         queue_ = EventQueue(size());
-        for (int i = 0; i < size(); ++i) predictExit(i);
-        for (int i = 0; i < size(); ++i) predict(i, 0.0);
+        for (int i = 0; i < size(); ++i)
+            predictExit(i);
+        for (int i = 0; i < size(); ++i)
+            predict(i, 0.0);
         dirty_ = false;
     }
 

@@ -4,7 +4,8 @@ namespace sbpack {
 
 EventQueue::EventQueue(int items)
     : time_(items, std::numeric_limits<double>::infinity()), heap_(items), slot_(items) {
-    for (int i = 0; i < items; ++i) place(i, i);
+    for (int i = 0; i < items; ++i)
+        place(i, i);
 }
 
 void EventQueue::set(int item, double time) {

@@ -47,7 +47,8 @@ std::vector<Vector3d> maxwellVelocities(int particles, Random& random) {
         sumSquares += v.squaredNorm();
     }
     const double scale = std::sqrt(3.0 * particles / sumSquares); // kT = <v^2> / 3 = 1
-    for (Vector3d& v : velocities) v *= scale;
+    for (Vector3d& v : velocities)
+        v *= scale;
     return velocities;
 }
 

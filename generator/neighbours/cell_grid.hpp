@@ -18,7 +18,9 @@ class CellGrid {
     int cellsPerSide() const { return n_; }
     double cellWidth() const { return width_; }
     int cellOf(int particle) const { return cell_[particle]; }
-    std::array<int, 3> coordinates(int cell) const { return {cell / (n_ * n_), cell / n_ % n_, cell % n_}; }
+    std::array<int, 3> coordinates(int cell) const {
+        return {cell / (n_ * n_), cell / n_ % n_, cell % n_};
+    }
     /// Cell index of integer coordinates, wrapped periodically.
     int index(int x, int y, int z) const { return (wrap(x) * n_ + wrap(y)) * n_ + wrap(z); }
     /// The cell whose half-open box contains r (r is clamped into [0, L)).
@@ -40,7 +42,8 @@ class CellGrid {
   private:
     int wrap(int i) const { return i < 0 ? i + n_ : (i >= n_ ? i - n_ : i); }
     template <class Visit> void forEachIn(int cell, Visit& visit) const {
-        for (int j = head_[cell]; j >= 0; j = next_[j]) visit(j);
+        for (int j = head_[cell]; j >= 0; j = next_[j])
+            visit(j);
     }
 
     int n_;

@@ -7,12 +7,13 @@
 namespace sbpack {
 
 NeighbourLists::NeighbourLists(double boxLength, double reach, std::vector<Eigen::Vector3d> anchors)
-    : box_(boxLength), reach_(reach),
-      grid_(boxLength, reach, static_cast<int>(anchors.size())), anchors_(std::move(anchors)),
-      lists_(anchors_.size()) {
+    : box_(boxLength), reach_(reach), grid_(boxLength, reach, static_cast<int>(anchors.size())),
+      anchors_(std::move(anchors)), lists_(anchors_.size()) {
     const int n = static_cast<int>(anchors_.size());
-    for (int i = 0; i < n; ++i) grid_.insert(i, grid_.cellContaining(wrapIntoBox(anchors_[i], box_)));
-    for (int i = 0; i < n; ++i) list(i);
+    for (int i = 0; i < n; ++i)
+        grid_.insert(i, grid_.cellContaining(wrapIntoBox(anchors_[i], box_)));
+    for (int i = 0; i < n; ++i)
+        list(i);
 }
 
 bool NeighbourLists::near(int i, int j) const {
@@ -35,7 +36,8 @@ void NeighbourLists::reanchor(int i, const Eigen::Vector3d& anchor) {
     grid_.erase(i);
     grid_.insert(i, grid_.cellContaining(wrapIntoBox(anchor, box_)));
     list(i);
-    for (const int j : lists_[i]) lists_[j].push_back(i);
+    for (const int j : lists_[i])
+        lists_[j].push_back(i);
 }
 
 } // namespace sbpack

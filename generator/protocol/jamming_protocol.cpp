@@ -17,23 +17,26 @@ void require(bool ok, const std::string& option, const std::string& problem) {
     if (!ok) throw std::invalid_argument("option " + option + ": " + problem);
 }
 
-bool positiveFinite(double x) { return std::isfinite(x) && x > 0.0; }
+bool positiveFinite(double x) {
+    return std::isfinite(x) && x > 0.0;
+}
 
 EventDrivenMd<SphereShape> freshEngine(const ProtocolParameters& parameters) {
     Random random(parameters.seed);
-    const double box = boxLengthFor(parameters.particles, Superball(1.0, 0.5).volume(),
-                                    parameters.phiInit);
+    const double box =
+        boxLengthFor(parameters.particles, Superball(1.0, 0.5).volume(), parameters.phiInit);
     const std::vector<Vector3d> positions =
         randomSpherePositions(parameters.particles, box, random);
     const std::vector<Vector3d> velocities = maxwellVelocities(parameters.particles, random);
     std::vector<ParticleState> state(parameters.particles);
-    for (int i = 0; i < parameters.particles; ++i) state[i] = {positions[i], velocities[i]};
+    for (int i = 0; i < parameters.particles; ++i)
+        state[i] = {positions[i], velocities[i]};
     return EventDrivenMd<SphereShape>(SphereShape{}, box, std::move(state),
                                       GrowthClock{1.0, 0.0, parameters.gammaFast});
 }
 
-template <class T> T stateValue(const Packing& packing, const std::string& key,
-                                const std::string& source) {
+template <class T>
+T stateValue(const Packing& packing, const std::string& key, const std::string& source) {
     const auto found = packing.provenance.find(key);
     if (found == packing.provenance.end() || !std::holds_alternative<T>(found->second))
         throw std::invalid_argument("'" + source + "': not an sbgen checkpoint (provenance '" +
@@ -98,8 +101,7 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
     std::vector<ParticleState> state(packing.size());
     for (std::size_t i = 0; i < packing.size(); ++i)
         state[i] = {packing.positions[i], packing.velocities[i]};
-    engine_ = EventDrivenMd<SphereShape>(SphereShape{}, packing.boxLength, std::move(state),
-                                         clock);
+    engine_ = EventDrivenMd<SphereShape>(SphereShape{}, packing.boxLength, std::move(state), clock);
 }
 
 void JammingProtocol::setPressureFinal(double pressure) {
@@ -143,9 +145,8 @@ void JammingProtocol::finishWindow(double virial, double duration) {
     }
     if (status_.phase == Phase::Slow && status_.reducedPressure >= parameters_.pressureFinal)
         status_.phase = Phase::Done;
-    status_.packingFraction =
-        n * Superball(parameters_.p, 0.5 * engine_.diameter()).volume() /
-        std::pow(engine_.boxLength(), 3);
+    status_.packingFraction = n * Superball(parameters_.p, 0.5 * engine_.diameter()).volume() /
+                              std::pow(engine_.boxLength(), 3);
 }
 
 Packing JammingProtocol::checkpoint() const {
@@ -174,8 +175,8 @@ Packing JammingProtocol::checkpoint() const {
     log["collisions"] = static_cast<std::int64_t>(status_.collisions);
     log["relists"] = static_cast<std::int64_t>(status_.relists);
     log["stale_events"] = static_cast<std::int64_t>(status_.staleEvents);
-    log["events"] = static_cast<std::int64_t>(status_.collisions + status_.relists +
-                                              status_.staleEvents);
+    log["events"] =
+        static_cast<std::int64_t>(status_.collisions + status_.relists + status_.staleEvents);
     log["windows"] = static_cast<std::int64_t>(status_.windows);
     log["wall_time_s"] = status_.wallSeconds;
     log["state_format"] = std::string(kStateFormat);

@@ -18,10 +18,15 @@ TEST(Parallel, SerialAndParallelVisitEveryIndexOnce) {
     const ThreadBudget budget(2);
     for (const bool serial : {true, false}) {
         std::vector<std::atomic<int>> visits(1001);
-        parallelFor(0, 1001, 7, [&](std::int64_t b, std::int64_t e) {
-            for (std::int64_t i = b; i < e; ++i) ++visits[i];
-        }, serial);
-        for (const auto& v : visits) ASSERT_EQ(v.load(), 1);
+        parallelFor(
+            0, 1001, 7,
+            [&](std::int64_t b, std::int64_t e) {
+                for (std::int64_t i = b; i < e; ++i)
+                    ++visits[i];
+            },
+            serial);
+        for (const auto& v : visits)
+            ASSERT_EQ(v.load(), 1);
     }
 }
 

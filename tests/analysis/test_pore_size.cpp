@@ -1,6 +1,6 @@
+#include "parallel/parallel.hpp"
 #include "pores/exact_pore_size.hpp"
 #include "pores/pore_size_distribution.hpp"
-#include "parallel/parallel.hpp"
 #include "test_packings.hpp"
 
 #include <gtest/gtest.h>

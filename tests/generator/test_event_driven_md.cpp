@@ -20,13 +20,15 @@ Engine randomFluid(int n, double phi, double gamma, std::uint64_t seed) {
     const auto positions = randomSpherePositions(n, box, random);
     const auto velocities = maxwellVelocities(n, random);
     std::vector<ParticleState> state(n);
-    for (int i = 0; i < n; ++i) state[i] = {positions[i], velocities[i]};
+    for (int i = 0; i < n; ++i)
+        state[i] = {positions[i], velocities[i]};
     return Engine(SphereShape{}, box, std::move(state), GrowthClock{1.0, 0.0, gamma});
 }
 
 Vector3d totalMomentum(const Engine& engine) {
     Vector3d sum = Vector3d::Zero();
-    for (const ParticleState& s : engine.particles()) sum += s.velocity;
+    for (const ParticleState& s : engine.particles())
+        sum += s.velocity;
     return sum;
 }
 
@@ -35,8 +37,9 @@ double smallestGap(const Engine& engine) {
     const auto& s = engine.particles();
     for (std::size_t i = 0; i < s.size(); ++i)
         for (std::size_t j = i + 1; j < s.size(); ++j)
-            gap = std::min(gap, minimumImage(s[j].position - s[i].position, engine.boxLength()).norm() -
-                                    engine.diameter());
+            gap = std::min(gap,
+                           minimumImage(s[j].position - s[i].position, engine.boxLength()).norm() -
+                               engine.diameter());
     return gap / engine.diameter();
 }
 
@@ -49,7 +52,8 @@ TEST(EventDrivenMd, TwoGrowingSpheresCollideAtTheExactTimeAndSwapNormalVelocity)
     EXPECT_NEAR(report.duration, 4.0 / 3.0, 1e-14);
     EXPECT_NEAR(engine.diameter(), 1.0 + 0.5 * 4.0 / 3.0, 1e-14);
     // Surface normal velocity u = -1 - 0.5 reversed: v_n' = 2 gamma - v_n = 2.
-    EXPECT_NEAR(engine.particles()[1].velocity.x() - engine.particles()[0].velocity.x(), 2.0, 1e-14);
+    EXPECT_NEAR(engine.particles()[1].velocity.x() - engine.particles()[0].velocity.x(), 2.0,
+                1e-14);
     // Collision virial r_ij . Delta p_j = D J with J = gamma - v_n = 1.5.
     EXPECT_NEAR(report.virial, engine.diameter() * 1.5, 1e-13);
 }
@@ -75,7 +79,8 @@ TEST(EventDrivenMd, MomentumIsConservedWhileGrowing) {
 TEST(EventDrivenMd, EnergyIsConservedWithoutGrowth) {
     Engine engine = randomFluid(300, 0.35, 0.0, 12);
     const double before = engine.kineticTemperature();
-    for (int k = 0; k < 5; ++k) engine.run(10000);
+    for (int k = 0; k < 5; ++k)
+        engine.run(10000);
     EXPECT_NEAR(engine.kineticTemperature(), before, 1e-12 * before);
     EXPECT_GT(smallestGap(engine), -1e-12);
 }

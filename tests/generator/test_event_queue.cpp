@@ -30,7 +30,8 @@ TEST(EventQueue, AgreesWithReferenceQueueUnderRandomUpdates) {
 
 TEST(EventQueue, TiesGoToTheLowerIndex) {
     EventQueue heap(4);
-    for (int i = 3; i >= 0; --i) heap.set(i, 1.0);
+    for (int i = 3; i >= 0; --i)
+        heap.set(i, 1.0);
     EXPECT_EQ(heap.top(), 0);
     heap.set(0, 2.0);
     EXPECT_EQ(heap.top(), 1);

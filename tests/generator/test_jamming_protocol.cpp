@@ -101,7 +101,8 @@ TEST(JammingProtocol, APackingWithoutGeneratorStateIsNotACheckpoint) {
         JammingProtocol(plain, "plain.h5");
         FAIL() << "accepted";
     } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find("plain.h5': not an sbgen checkpoint"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("plain.h5': not an sbgen checkpoint"),
+                  std::string::npos)
             << e.what();
     }
 }

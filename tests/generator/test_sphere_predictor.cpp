@@ -1,5 +1,5 @@
-#include "shapes/sphere.hpp"
 #include "random/random.hpp"
+#include "shapes/sphere.hpp"
 
 #include <gtest/gtest.h>
 
