@@ -67,7 +67,7 @@ void ProtocolParameters::validate() const {
 
 JammingProtocol::JammingProtocol(const ProtocolParameters& parameters)
     : parameters_((parameters.validate(), parameters)), engine_(freshEngine(parameters)) {
-    status_.packingFraction = checkpoint().packingFraction();
+    status_.packingFraction = packingFraction();
 }
 
 JammingProtocol::JammingProtocol(const Packing& packing, const std::string& source)
@@ -134,19 +134,23 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
 
 void JammingProtocol::finishWindow(double virial, double duration) {
     // The window started at kT = 1 (rescaled); average with its end for the virial (DESIGN.md §3).
-    const double kT = 0.5 * (1.0 + engine_.kineticTemperature());
-    const int n = parameters_.particles;
-    status_.reducedPressure = 1.0 + virial / (3.0 * n * kT * duration);
+    const double kTEnd = engine_.kineticTemperature();
+    const double kT = 0.5 * (1.0 + kTEnd);
+    status_.reducedPressure = 1.0 + virial / (3.0 * parameters_.particles * kT * duration);
     ++status_.windows;
-    engine_.scaleVelocities(1.0 / std::sqrt(engine_.kineticTemperature()));
+    engine_.scaleVelocities(1.0 / std::sqrt(kTEnd));
     if (status_.phase == Phase::Fast && status_.reducedPressure >= parameters_.pressureSwitch) {
         status_.phase = Phase::Slow;
         engine_.setGrowthRate(parameters_.gammaSlow);
     }
     if (status_.phase == Phase::Slow && status_.reducedPressure >= parameters_.pressureFinal)
         status_.phase = Phase::Done;
-    status_.packingFraction = n * Superball(parameters_.p, 0.5 * engine_.diameter()).volume() /
-                              std::pow(engine_.boxLength(), 3);
+    status_.packingFraction = packingFraction();
+}
+
+double JammingProtocol::packingFraction() const {
+    return parameters_.particles * Superball(parameters_.p, 0.5 * engine_.diameter()).volume() /
+           std::pow(engine_.boxLength(), 3);
 }
 
 Packing JammingProtocol::checkpoint() const {

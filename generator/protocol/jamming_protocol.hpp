@@ -68,6 +68,8 @@ class JammingProtocol {
 
   private:
     void finishWindow(double virial, double duration);
+    /// phi = N v1 / L^3 at the current diameter.
+    double packingFraction() const;
 
     ProtocolParameters parameters_;
     ProtocolStatus status_;
