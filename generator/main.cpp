@@ -60,12 +60,14 @@ sbpack::Packing finalPacking(const sbpack::JammingProtocol& protocol) {
 
 int generate(const sbpack::GeneratorOptions& o) {
     using Clock = std::chrono::steady_clock;
+    // Installed first: a signal during the set-up stops the run at its first event, with a
+    // checkpoint of the starting state.
+    std::signal(SIGINT, requestStop);
+    std::signal(SIGTERM, requestStop);
     sbpack::JammingProtocol protocol =
         o.resume ? sbpack::JammingProtocol(sbpack::readPacking(*o.resume), o.resume->string())
                  : sbpack::JammingProtocol(o.protocol);
     if (o.resume && o.pressureFinal) protocol.setPressureFinal(*o.pressureFinal);
-    std::signal(SIGINT, requestStop);
-    std::signal(SIGTERM, requestStop);
 
     const auto start = Clock::now();
     auto lastProgress = start, lastCheckpoint = start;
