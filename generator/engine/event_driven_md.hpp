@@ -6,6 +6,12 @@
 // neighbour-list sphere; a collision is stale when the partner's event counter has moved on
 // since the prediction.
 //
+// Rotating shapes (Shape::kRotates) also carry an orientation and a constant angular velocity
+// between collisions; each pair keeps its last contact normal as the predictor's warm start, and
+// each prediction is asked only up to the earliest event of the two particles (a later contact
+// would be stale by then, and the particle predicted last before it finds it). A prediction that
+// hits its work limit schedules a recheck of the particle instead of a collision.
+//
 // Particles are advanced lazily (each has its own time stamp). run() ends synchronised: every
 // particle is advanced to the final time, wrapped into [0, L), and that time becomes the new time
 // origin, folded into the growth clock. The synchronised state plus the clock is the whole state:
@@ -22,6 +28,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <unordered_map>
 #include <vector>
 
 namespace sbpack {
@@ -29,6 +36,8 @@ namespace sbpack {
 struct ParticleState {
     Vector3d position;
     Vector3d velocity;
+    Quaterniond orientation = Quaterniond::Identity(); ///< body to lab
+    Vector3d angularVelocity = Vector3d::Zero();        ///< lab frame
 };
 
 struct EngineParameters {
@@ -45,6 +54,7 @@ struct RunReport {
     std::uint64_t collisions = 0;
     std::uint64_t relists = 0; ///< neighbour-list exits
     std::uint64_t staleEvents = 0;
+    std::uint64_t rechecks = 0; ///< predictions that stopped at a safe time, then redone
     /// sum over collisions of r_ij . Delta p_j (the collision virial, DESIGN.md §3)
     double virial = 0.0;
     bool interrupted = false;
@@ -63,17 +73,34 @@ template <class Shape> class EventDrivenMd {
     double diameter() const { return clock_.diameter(); }
     /// The synchronised particles (valid between runs).
     const std::vector<ParticleState>& particles() const { return state_; }
+    const Shape& shape() const { return shape_; }
 
-    /// kT = m <v^2> / 3 with m = 1.
+    /// Translational kT = m <v^2> / 3 with m = 1.
     double kineticTemperature() const {
         double sum = 0.0;
         for (const ParticleState& s : state_)
             sum += s.velocity.squaredNorm();
         return sum / (3.0 * size());
     }
+    /// Rotational kT = I <omega^2> / 3 (0 for shapes that do not rotate).
+    double rotationalTemperature() const {
+        if constexpr (!Shape::kRotates) {
+            return 0.0;
+        } else {
+            double sum = 0.0;
+            for (const ParticleState& s : state_)
+                sum += s.angularVelocity.squaredNorm();
+            return shape_.inertiaPerMass(diameter()) * sum / (3.0 * size());
+        }
+    }
     void scaleVelocities(double factor) {
         for (ParticleState& s : state_)
             s.velocity *= factor;
+        dirty_ = true;
+    }
+    void scaleAngularVelocities(double factor) {
+        for (ParticleState& s : state_)
+            s.angularVelocity *= factor;
         dirty_ = true;
     }
     void setGrowthRate(double gamma) {
@@ -108,6 +135,9 @@ template <class Shape> class EventDrivenMd {
                 if (exit_[i] <= collision_[i].time) {
                     relist(i, t);
                     ++report.relists;
+                } else if (collision_[i].partner < 0) {
+                    predict(i, t);
+                    ++report.rechecks;
                 } else {
                     collide(i, t, report);
                 }
@@ -125,11 +155,14 @@ template <class Shape> class EventDrivenMd {
 
     struct PredictedCollision {
         double time = kNever;
-        int partner = -1;
+        int partner = -1; ///< -1: a recheck of the particle itself
         std::uint64_t partnerCounter = 0;
     };
     void advance(int i, double t) {
-        state_[i].position += state_[i].velocity * (t - time_[i]);
+        ParticleState& s = state_[i];
+        s.position += s.velocity * (t - time_[i]);
+        if constexpr (Shape::kRotates)
+            s.orientation = advancedOrientation(s.orientation, s.angularVelocity, t - time_[i]);
         time_[i] = t;
     }
 
@@ -142,14 +175,40 @@ template <class Shape> class EventDrivenMd {
         m.relativeVelocity = state_[j].velocity - state_[i].velocity;
         m.diameter = clock_.diameter(t);
         m.growthRate = clock_.rate;
+        if constexpr (Shape::kRotates) {
+            m.orientationI = advancedOrientation(state_[i].orientation, state_[i].angularVelocity,
+                                                 t - time_[i]);
+            m.orientationJ = advancedOrientation(state_[j].orientation, state_[j].angularVelocity,
+                                                 t - time_[j]);
+            m.angularVelocityI = state_[i].angularVelocity;
+            m.angularVelocityJ = state_[j].angularVelocity;
+        }
         return m;
+    }
+
+    /// The pair's cached normal, from the lower index to the higher (rotating shapes only).
+    Vector3d& pairNormal(int i, int j) {
+        const auto key = static_cast<std::uint64_t>(std::min(i, j)) * state_.size() +
+                         static_cast<std::uint64_t>(std::max(i, j));
+        return normals_.try_emplace(key, Vector3d::Zero()).first->second;
     }
 
     void schedule(int i) { queue_.set(i, std::min(collision_[i].time, exit_[i])); }
 
+    /// Predicts the pair up to the earliest of i's best so far, j's next event, i's list exit
+    /// and the lists' growth horizon.
     void consider(int i, int j, double t) {
-        const double when = t + shape_.collisionTime(motion(i, j, t));
-        if (when < collision_[i].time) collision_[i] = {when, j, counter_[j]};
+        const double limit =
+            std::min(std::min(collision_[i].time, exit_[i]), std::min(queue_.time(j), horizon_));
+        Vector3d normal = Vector3d::Zero();
+        const double sign = i < j ? 1.0 : -1.0;
+        if constexpr (Shape::kRotates) normal = sign * pairNormal(i, j);
+        const Prediction next = shape_.collisionTime(motion(i, j, t), limit - t, normal);
+        if constexpr (Shape::kRotates) pairNormal(i, j) = sign * normal;
+        const double when = t + next.time;
+        if (when < collision_[i].time)
+            collision_[i] = next.contact ? PredictedCollision{when, j, counter_[j]}
+                                         : PredictedCollision{when, -1, 0};
     }
 
     /// i's earliest collision with any listed neighbour, predicted at time t.
@@ -191,9 +250,22 @@ template <class Shape> class EventDrivenMd {
         advance(i, t);
         advance(j, t);
         const PairMotion m = motion(i, j, t);
-        const PairContact contact = shape_.contact(m);
-        const double impulse = resolveCollision(m, contact, state_[i].velocity, state_[j].velocity);
-        report.virial += impulse * contact.normal.dot(m.displacement);
+        if constexpr (Shape::kRotates) {
+            const double sign = i < j ? 1.0 : -1.0;
+            Vector3d normal = sign * pairNormal(i, j);
+            const PairContact contact = shape_.contact(m, normal);
+            pairNormal(i, j) = sign * normal;
+            const double impulse = resolveCollision(
+                m, contact, shape_.inertiaPerMass(m.diameter),
+                {state_[i].velocity, state_[i].angularVelocity},
+                {state_[j].velocity, state_[j].angularVelocity});
+            report.virial += impulse * contact.normal.dot(m.displacement);
+        } else {
+            const PairContact contact = shape_.contact(m);
+            const double impulse =
+                resolveCollision(m, contact, state_[i].velocity, state_[j].velocity);
+            report.virial += impulse * contact.normal.dot(m.displacement);
+        }
         ++report.collisions;
         ++counter_[i];
         ++counter_[j];
@@ -207,6 +279,7 @@ template <class Shape> class EventDrivenMd {
         for (int i = 0; i < size(); ++i) {
             advance(i, t);
             state_[i].position = wrapIntoBox(state_[i].position, box_);
+            state_[i].orientation.normalize();
         }
         clock_.advance(t);
         dirty_ = true;
@@ -216,7 +289,7 @@ template <class Shape> class EventDrivenMd {
     void rebuild() {
         const double d = clock_.diameter();
         const double maximum = d * (1.0 + parameters_.growthMargin);
-        if (!(2.0 * maximum < box_))
+        if (!(2.0 * shape_.circumscribedRatio() * maximum < box_))
             throw std::runtime_error("the particle diameter reached half the box length: too few "
                                      "particles for a periodic packing (use more)");
         horizon_ = clock_.rate > 0.0 ? (maximum - d) / clock_.rate : kNever;
@@ -224,7 +297,9 @@ template <class Shape> class EventDrivenMd {
         std::vector<Vector3d> anchors(size());
         for (int i = 0; i < size(); ++i)
             anchors[i] = state_[i].position;
-        lists_ = NeighbourLists(box_, maximum + 2.0 * exitRadius_, std::move(anchors));
+        lists_ = NeighbourLists(box_, shape_.circumscribedRatio() * maximum + 2.0 * exitRadius_,
+                                std::move(anchors));
+        normals_.clear(); // a rebuild is a deterministic function of the synchronised state
         time_.assign(size(), 0.0);
         counter_.assign(size(), 0);
         collision_.assign(size(), {});
@@ -248,6 +323,7 @@ template <class Shape> class EventDrivenMd {
     std::vector<std::uint64_t> counter_;
     std::vector<PredictedCollision> collision_;
     std::vector<double> exit_; ///< time each particle leaves its neighbour-list sphere
+    std::unordered_map<std::uint64_t, Vector3d> normals_; ///< warm starts, lower index to higher
     double horizon_ = kNever;
     double exitRadius_ = 0.0;
     bool dirty_ = true;

@@ -1,55 +1,82 @@
 #include "initial/random_start.hpp"
 
+#include "geometry/superball.hpp"
 #include "neighbours/cell_grid.hpp"
+#include "pair/pair_geometry.hpp"
 
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace sbpack {
+namespace {
+
+/// Gaussian vectors, scaled so that their mean square is 3 / scale (kT = 1 for mass `scale`).
+std::vector<Vector3d> thermalVectors(int particles, double scale, bool removeMean, Random& random) {
+    std::vector<Vector3d> vectors(particles);
+    Vector3d total = Vector3d::Zero();
+    for (Vector3d& v : vectors) {
+        v = random.normalVector();
+        total += v;
+    }
+    double sumSquares = 0.0;
+    for (Vector3d& v : vectors) {
+        if (removeMean) v -= total / particles;
+        sumSquares += v.squaredNorm();
+    }
+    const double factor = std::sqrt(3.0 * particles / (scale * sumSquares));
+    for (Vector3d& v : vectors)
+        v *= factor;
+    return vectors;
+}
+
+} // namespace
 
 double boxLengthFor(int particles, double particleVolume, double phi) {
     return std::cbrt(particles * particleVolume / phi);
 }
 
-std::vector<Vector3d> randomSpherePositions(int particles, double boxLength, Random& random) {
-    CellGrid cells(boxLength, 1.0, particles);
-    std::vector<Vector3d> positions;
-    positions.reserve(particles);
+RandomPlacement randomPlacement(int particles, double p, double boxLength, Random& random) {
+    const Superball body(p, 0.5);
+    const double reach = 2.0 * body.circumradius(); // circumscribed spheres of diameter c
+    CellGrid cells(boxLength, reach, particles);
+    RandomPlacement placement;
+    placement.positions.reserve(particles);
     const long maxAttempts = 1000L * particles + 100000L;
-    for (long attempt = 0; static_cast<int>(positions.size()) < particles; ++attempt) {
+    for (long attempt = 0; static_cast<int>(placement.positions.size()) < particles; ++attempt) {
         if (attempt == maxAttempts)
             throw std::runtime_error("random start: could not place " + std::to_string(particles) +
                                      " particles without overlap; lower --phi-init");
         const Vector3d r(random.uniform() * boxLength, random.uniform() * boxLength,
                          random.uniform() * boxLength);
+        const Quaterniond q = body.isSphere() ? Quaterniond::Identity() : random.rotation();
         bool free = true;
         cells.forEachNearby(cells.cellContaining(r), [&](int j) {
-            free = free && minimumImage(positions[j] - r, boxLength).squaredNorm() >= 1.0;
+            if (!free) return;
+            const Vector3d d = minimumImage(placement.positions[j] - r, boxLength);
+            if (d.squaredNorm() >= reach * reach) return;
+            if (body.isSphere()) {
+                free = false;
+                return;
+            }
+            const SuperballPair pair{body, q.toRotationMatrix(),
+                                     placement.orientations[j].toRotationMatrix(), d};
+            free = scaleFactor(pair).scaleFactor > 1.0;
         });
         if (!free) continue;
-        cells.insert(static_cast<int>(positions.size()), cells.cellContaining(r));
-        positions.push_back(r);
+        cells.insert(static_cast<int>(placement.positions.size()), cells.cellContaining(r));
+        placement.positions.push_back(r);
+        placement.orientations.push_back(q);
     }
-    return positions;
+    return placement;
 }
 
 std::vector<Vector3d> maxwellVelocities(int particles, Random& random) {
-    std::vector<Vector3d> velocities(particles);
-    Vector3d total = Vector3d::Zero();
-    for (Vector3d& v : velocities) {
-        v = random.normalVector();
-        total += v;
-    }
-    double sumSquares = 0.0;
-    for (Vector3d& v : velocities) {
-        v -= total / particles;
-        sumSquares += v.squaredNorm();
-    }
-    const double scale = std::sqrt(3.0 * particles / sumSquares); // kT = <v^2> / 3 = 1
-    for (Vector3d& v : velocities)
-        v *= scale;
-    return velocities;
+    return thermalVectors(particles, 1.0, true, random);
+}
+
+std::vector<Vector3d> maxwellAngularVelocities(int particles, double inertia, Random& random) {
+    return thermalVectors(particles, inertia, false, random);
 }
 
 } // namespace sbpack

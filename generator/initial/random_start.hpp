@@ -1,7 +1,8 @@
 #pragma once
-// The DTS starting state (paper Sec. III A, DESIGN.md §3): N particles of diameter D = 1 placed at
-// random without overlap in the cubic box of packing fraction phi_init, with Maxwell velocities
-// at kT = 1 (m = 1) and zero total momentum.
+// The DTS starting state (paper Sec. III A, DESIGN.md §3): N superballs of diameter D = 1 placed
+// at random without overlap, with uniformly random orientations, in the cubic box of packing
+// fraction phi_init; Maxwell velocities at kT = 1 (m = 1) with zero total momentum, and random
+// angular velocities at rotational kT = 1.
 
 #include "engine/event_driven_md.hpp"
 #include "random/random.hpp"
@@ -13,11 +14,22 @@ namespace sbpack {
 /// Box edge L giving packing fraction phi for N particles of volume v1.
 double boxLengthFor(int particles, double particleVolume, double phi);
 
-/// Random sequential addition of non-overlapping spheres of diameter 1 (throws if it cannot
-/// place them within a generous number of attempts).
-std::vector<Vector3d> randomSpherePositions(int particles, double boxLength, Random& random);
+/// Positions and orientations of a random start.
+struct RandomPlacement {
+    std::vector<Vector3d> positions;
+    std::vector<Quaterniond> orientations; ///< identity for spheres (no random draws spent)
+};
+
+/// Random sequential addition of non-overlapping superballs of exponent p and diameter 1: a
+/// trial is accepted when every nearby body is outside its circumscribed sphere or the pair's
+/// scale factor mu exceeds 1 (DESIGN.md §2). Throws if it cannot place them within a generous
+/// number of attempts.
+RandomPlacement randomPlacement(int particles, double p, double boxLength, Random& random);
 
 /// Gaussian velocities with the centre-of-mass motion removed, scaled to kT = 1 exactly.
 std::vector<Vector3d> maxwellVelocities(int particles, Random& random);
+
+/// Gaussian angular velocities scaled to rotational kT = I <omega^2> / 3 = 1 exactly.
+std::vector<Vector3d> maxwellAngularVelocities(int particles, double inertia, Random& random);
 
 } // namespace sbpack

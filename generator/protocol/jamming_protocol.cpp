@@ -21,18 +21,31 @@ bool positiveFinite(double x) {
     return std::isfinite(x) && x > 0.0;
 }
 
-EventDrivenMd<SphereShape> freshEngine(const ProtocolParameters& parameters) {
+/// The engine for exponent p: the exact sphere engine at p = 1, the superball one otherwise.
+template <class Engine>
+Engine makeEngine(double p, double box, std::vector<ParticleState> state, GrowthClock clock) {
+    if (p == 1.0)
+        return EventDrivenMd<SphereShape>(SphereShape{}, box, std::move(state), clock);
+    return EventDrivenMd<SuperballShape>(SuperballShape(p), box, std::move(state), clock);
+}
+
+template <class Engine> Engine freshEngine(const ProtocolParameters& parameters) {
     Random random(parameters.seed);
-    const double box =
-        boxLengthFor(parameters.particles, Superball(1.0, 0.5).volume(), parameters.phiInit);
-    const std::vector<Vector3d> positions =
-        randomSpherePositions(parameters.particles, box, random);
-    const std::vector<Vector3d> velocities = maxwellVelocities(parameters.particles, random);
-    std::vector<ParticleState> state(parameters.particles);
-    for (int i = 0; i < parameters.particles; ++i)
-        state[i] = {positions[i], velocities[i]};
-    return EventDrivenMd<SphereShape>(SphereShape{}, box, std::move(state),
-                                      GrowthClock{1.0, 0.0, parameters.gammaFast});
+    const int n = parameters.particles;
+    const double box = boxLengthFor(n, Superball(parameters.p, 0.5).volume(), parameters.phiInit);
+    const RandomPlacement placement = randomPlacement(n, parameters.p, box, random);
+    const std::vector<Vector3d> velocities = maxwellVelocities(n, random);
+    std::vector<ParticleState> state(n);
+    for (int i = 0; i < n; ++i)
+        state[i] = {placement.positions[i], velocities[i], placement.orientations[i]};
+    if (parameters.p != 1.0) {
+        const std::vector<Vector3d> spins = maxwellAngularVelocities(
+            n, SuperballShape(parameters.p).inertiaPerMass(1.0), random);
+        for (int i = 0; i < n; ++i)
+            state[i].angularVelocity = spins[i];
+    }
+    return makeEngine<Engine>(parameters.p, box, std::move(state),
+                              GrowthClock{1.0, 0.0, parameters.gammaFast});
 }
 
 template <class T>
@@ -49,11 +62,17 @@ std::uint64_t counterValue(const Packing& packing, const std::string& key,
     return static_cast<std::uint64_t>(stateValue<std::int64_t>(packing, key, source));
 }
 
+/// A counter added by a later version: 0 in checkpoints written before it.
+std::uint64_t optionalCounter(const Packing& packing, const std::string& key,
+                              const std::string& source) {
+    return packing.provenance.count(key) == 0 ? 0 : counterValue(packing, key, source);
+}
+
 } // namespace
 
 void ProtocolParameters::validate() const {
     require(particles >= 2, "--n", "need at least 2 particles");
-    require(p == 1.0, "--p", "sbgen generates spheres (p = 1) only in this version");
+    require(std::isfinite(p) && p >= 0.5 && p <= 1e3, "--p", "must be in [0.5, 1000]");
     require(std::isfinite(phiInit) && phiInit > 0.0 && phiInit < 0.5, "--phi-init",
             "must be in (0, 0.5)");
     require(positiveFinite(gammaFast), "--gamma-fast", "must be positive and finite");
@@ -66,16 +85,17 @@ void ProtocolParameters::validate() const {
 }
 
 JammingProtocol::JammingProtocol(const ProtocolParameters& parameters)
-    : parameters_((parameters.validate(), parameters)), engine_(freshEngine(parameters)) {
+    : parameters_((parameters.validate(), parameters)), engine_(freshEngine<Engine>(parameters)) {
     status_.packingFraction = packingFraction();
 }
 
 JammingProtocol::JammingProtocol(const Packing& packing, const std::string& source)
-    : engine_(SphereShape{}, packing.boxLength, {}, {}) {
+    : engine_(EventDrivenMd<SphereShape>(SphereShape{}, packing.boxLength, {}, {})) {
     if (stateValue<std::string>(packing, "state_format", source) != kStateFormat)
         throw std::invalid_argument("'" + source + "': checkpoint state format is not " +
                                     std::string(kStateFormat));
-    if (packing.velocities.size() != packing.size())
+    if (packing.velocities.size() != packing.size() ||
+        (packing.p != 1.0 && packing.angularVelocities.size() != packing.size()))
         throw std::invalid_argument("'" + source + "': checkpoint without velocities");
     parameters_.particles = static_cast<int>(packing.size());
     parameters_.p = packing.p;
@@ -92,6 +112,11 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
     status_.collisions = counterValue(packing, "collisions", source);
     status_.relists = counterValue(packing, "relists", source);
     status_.staleEvents = counterValue(packing, "stale_events", source);
+    status_.rechecks = optionalCounter(packing, "rechecks", source);
+    status_.predictorCalls = optionalCounter(packing, "predictor_calls", source);
+    status_.predictorEvaluations = optionalCounter(packing, "predictor_evaluations", source);
+    status_.predictorFallbacks = optionalCounter(packing, "predictor_fallbacks", source);
+    status_.predictorLimitHits = optionalCounter(packing, "predictor_limit_hits", source);
     status_.windows = counterValue(packing, "windows", source);
     status_.wallSeconds = stateValue<double>(packing, "wall_time_s", source);
     status_.packingFraction = packing.packingFraction();
@@ -99,9 +124,11 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
                             stateValue<double>(packing, "state_growth_elapsed", source),
                             stateValue<double>(packing, "state_growth_rate", source)};
     std::vector<ParticleState> state(packing.size());
-    for (std::size_t i = 0; i < packing.size(); ++i)
-        state[i] = {packing.positions[i], packing.velocities[i]};
-    engine_ = EventDrivenMd<SphereShape>(SphereShape{}, packing.boxLength, std::move(state), clock);
+    for (std::size_t i = 0; i < packing.size(); ++i) {
+        state[i] = {packing.positions[i], packing.velocities[i], packing.orientations[i]};
+        if (packing.p != 1.0) state[i].angularVelocity = packing.angularVelocities[i];
+    }
+    engine_ = makeEngine<Engine>(packing.p, packing.boxLength, std::move(state), clock);
 }
 
 void JammingProtocol::setPressureFinal(double pressure) {
@@ -120,10 +147,20 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
         std::ceil(parameters_.collisionsPerWindow * parameters_.particles));
     while (status_.phase != Phase::Done) {
         const auto start = Clock::now();
-        const RunReport report = engine_.run(perWindow, INFINITY, stop);
+        const RunReport report =
+            std::visit([&](auto& engine) { return engine.run(perWindow, INFINITY, stop); }, engine_);
         status_.collisions += report.collisions;
         status_.relists += report.relists;
         status_.staleEvents += report.staleEvents;
+        status_.rechecks += report.rechecks;
+        if (auto* superballs = std::get_if<EventDrivenMd<SuperballShape>>(&engine_)) {
+            SuperballPredictorStats& stats = superballs->shape().stats;
+            status_.predictorCalls += stats.calls;
+            status_.predictorEvaluations += stats.evaluations;
+            status_.predictorFallbacks += stats.distanceFallbacks;
+            status_.predictorLimitHits += stats.limitHits;
+            stats = {};
+        }
         status_.wallSeconds += std::chrono::duration<double>(Clock::now() - start).count();
         if (report.interrupted) return false;
         finishWindow(report.virial, report.duration);
@@ -134,35 +171,54 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
 
 void JammingProtocol::finishWindow(double virial, double duration) {
     // The window started at kT = 1 (rescaled); average with its end for the virial (DESIGN.md §3).
-    const double kTEnd = engine_.kineticTemperature();
-    const double kT = 0.5 * (1.0 + kTEnd);
-    status_.reducedPressure = 1.0 + virial / (3.0 * parameters_.particles * kT * duration);
+    // The virial theorem's kT is the translational one.
+    std::visit(
+        [&](auto& engine) {
+            const double kTEnd = engine.kineticTemperature();
+            const double kT = 0.5 * (1.0 + kTEnd);
+            status_.reducedPressure = 1.0 + virial / (3.0 * parameters_.particles * kT * duration);
+            engine.scaleVelocities(1.0 / std::sqrt(kTEnd));
+            const double kTRotation = engine.rotationalTemperature();
+            if (kTRotation > 0.0) engine.scaleAngularVelocities(1.0 / std::sqrt(kTRotation));
+            if (status_.phase == Phase::Fast &&
+                status_.reducedPressure >= parameters_.pressureSwitch) {
+                status_.phase = Phase::Slow;
+                engine.setGrowthRate(parameters_.gammaSlow);
+            }
+        },
+        engine_);
     ++status_.windows;
-    engine_.scaleVelocities(1.0 / std::sqrt(kTEnd));
-    if (status_.phase == Phase::Fast && status_.reducedPressure >= parameters_.pressureSwitch) {
-        status_.phase = Phase::Slow;
-        engine_.setGrowthRate(parameters_.gammaSlow);
-    }
     if (status_.phase == Phase::Slow && status_.reducedPressure >= parameters_.pressureFinal)
         status_.phase = Phase::Done;
     status_.packingFraction = packingFraction();
 }
 
 double JammingProtocol::packingFraction() const {
-    return parameters_.particles * Superball(parameters_.p, 0.5 * engine_.diameter()).volume() /
-           std::pow(engine_.boxLength(), 3);
+    return std::visit(
+        [&](const auto& engine) {
+            return parameters_.particles * Superball(parameters_.p, 0.5 * engine.diameter()).volume() /
+                   std::pow(engine.boxLength(), 3);
+        },
+        engine_);
 }
 
 Packing JammingProtocol::checkpoint() const {
     Packing packing;
     packing.p = parameters_.p;
-    packing.semiAxis = 0.5 * engine_.diameter();
-    packing.boxLength = engine_.boxLength();
-    for (const ParticleState& s : engine_.particles()) {
-        packing.positions.push_back(s.position);
-        packing.orientations.push_back(Quaterniond::Identity());
-        packing.velocities.push_back(s.velocity);
-    }
+    GrowthClock clock;
+    std::visit(
+        [&](const auto& engine) {
+            clock = engine.clock();
+            packing.semiAxis = 0.5 * engine.diameter();
+            packing.boxLength = engine.boxLength();
+            for (const ParticleState& s : engine.particles()) {
+                packing.positions.push_back(s.position);
+                packing.orientations.push_back(s.orientation);
+                packing.velocities.push_back(s.velocity);
+                if (parameters_.p != 1.0) packing.angularVelocities.push_back(s.angularVelocity);
+            }
+        },
+        engine_);
     packing.reducedPressure = status_.reducedPressure;
     packing.seed = parameters_.seed;
     packing.generatorVersion = kVersion;
@@ -179,15 +235,20 @@ Packing JammingProtocol::checkpoint() const {
     log["collisions"] = static_cast<std::int64_t>(status_.collisions);
     log["relists"] = static_cast<std::int64_t>(status_.relists);
     log["stale_events"] = static_cast<std::int64_t>(status_.staleEvents);
-    log["events"] =
-        static_cast<std::int64_t>(status_.collisions + status_.relists + status_.staleEvents);
+    log["rechecks"] = static_cast<std::int64_t>(status_.rechecks);
+    log["events"] = static_cast<std::int64_t>(status_.collisions + status_.relists +
+                                              status_.staleEvents + status_.rechecks);
+    log["predictor_calls"] = static_cast<std::int64_t>(status_.predictorCalls);
+    log["predictor_evaluations"] = static_cast<std::int64_t>(status_.predictorEvaluations);
+    log["predictor_fallbacks"] = static_cast<std::int64_t>(status_.predictorFallbacks);
+    log["predictor_limit_hits"] = static_cast<std::int64_t>(status_.predictorLimitHits);
     log["windows"] = static_cast<std::int64_t>(status_.windows);
     log["wall_time_s"] = status_.wallSeconds;
     log["state_format"] = std::string(kStateFormat);
     log["state_phase"] = static_cast<std::int64_t>(status_.phase);
-    log["state_base_diameter"] = engine_.clock().baseDiameter;
-    log["state_growth_elapsed"] = engine_.clock().elapsed;
-    log["state_growth_rate"] = engine_.clock().rate;
+    log["state_base_diameter"] = clock.baseDiameter;
+    log["state_growth_elapsed"] = clock.elapsed;
+    log["state_growth_rate"] = clock.rate;
     return packing;
 }
 

@@ -3,16 +3,20 @@
 // reduced pressure reaches pressureSwitch, then slowly (gamma_slow) until pressureFinal. Work
 // proceeds in windows of `collisionsPerWindow * N` collisions; after each window the collision
 // virial gives the reduced pressure, velocities are rescaled to kT = 1, and the whole state is
-// synchronised, so it can be checkpointed and resumed bit for bit.
+// synchronised, so it can be checkpointed and resumed bit for bit. Spheres (p = 1) run on the
+// exact sphere engine; any other p on the rotating superball engine, whose thermostat rescales
+// translational and rotational kinetic energy separately to kT = 1 (equipartition).
 
 #include "engine/event_driven_md.hpp"
 #include "packing/packing.hpp"
 #include "shapes/sphere.hpp"
+#include "shapes/superball_shape.hpp"
 
 #include <csignal>
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <variant>
 
 namespace sbpack {
 
@@ -40,7 +44,13 @@ struct ProtocolStatus {
     std::uint64_t collisions = 0;
     std::uint64_t relists = 0; ///< neighbour-list rebuilds of single particles
     std::uint64_t staleEvents = 0;
+    std::uint64_t rechecks = 0; ///< superball predictions that stopped at a safe time
     std::uint64_t windows = 0;
+    /// Superball predictor work (SuperballPredictorStats), summed over the run.
+    std::uint64_t predictorCalls = 0;
+    std::uint64_t predictorEvaluations = 0; ///< exact signed distances
+    std::uint64_t predictorFallbacks = 0;   ///< pair-solver derivative-free finishes
+    std::uint64_t predictorLimitHits = 0;   ///< refinements that stopped at their limit
     double wallSeconds = 0.0; ///< summed over the run and every resumed part
 };
 
@@ -71,9 +81,11 @@ class JammingProtocol {
     /// phi = N v1 / L^3 at the current diameter.
     double packingFraction() const;
 
+    using Engine = std::variant<EventDrivenMd<SphereShape>, EventDrivenMd<SuperballShape>>;
+
     ProtocolParameters parameters_;
     ProtocolStatus status_;
-    EventDrivenMd<SphereShape> engine_;
+    Engine engine_;
 };
 
 } // namespace sbpack

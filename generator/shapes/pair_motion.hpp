@@ -20,6 +20,22 @@ struct PairMotion {
     double growthRate; ///< dD/dt = gamma
 };
 
+/// Free flight of the orientation: exp(omega tau / 2) q0 for lab-frame omega, exact (constant
+/// omega between collisions: isotropic inertia, DESIGN.md §3).
+inline Quaterniond advancedOrientation(const Quaterniond& q0, const Vector3d& omega, double tau) {
+    const double speed = omega.norm();
+    if (speed == 0.0 || tau == 0.0) return q0;
+    return Quaterniond(Eigen::AngleAxisd(speed * tau, omega / speed)) * q0;
+}
+
+/// A predictor's answer for one pair, as a delay from now: the bodies touch at `time`, or, when
+/// `contact` is false, they certainly do not touch before `time` and the pair must be predicted
+/// again then (the safe smaller step of a prediction that hit its work limit).
+struct Prediction {
+    double time;
+    bool contact = true;
+};
+
 /// Where two touching bodies meet.
 struct PairContact {
     Vector3d normal; ///< unit, from i towards j

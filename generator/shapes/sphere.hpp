@@ -12,6 +12,8 @@ namespace sbpack {
 
 struct SphereShape {
     static constexpr bool kRotates = false;
+    /// Circumradius over semi-axis: sizes the neighbour lists.
+    double circumscribedRatio() const { return 1.0; }
 
     /// Earliest tau >= 0 with |d + w tau| = D + gamma tau for d = r_j - r_i, w = v_j - v_i:
     /// a tau^2 + 2 b tau + c = 0 with a = w.w - gamma^2, b = d.w - D gamma, c = d.d - D^2,
@@ -28,6 +30,11 @@ struct SphereShape {
         return c / (-b + std::sqrt(discriminant));
     }
 
+    /// The engine's interface: exact, so neither the horizon nor a cached normal helps.
+    Prediction collisionTime(const PairMotion& m, double /*horizon*/, Vector3d& /*normal*/) const {
+        return {collisionTime(m)};
+    }
+
     /// Contact of touching spheres: normal from i to j along the centre line, contact point at
     /// the midpoint (arms from each centre).
     PairContact contact(const PairMotion& m) const {
@@ -35,6 +42,7 @@ struct SphereShape {
         const Vector3d n = m.displacement / distance;
         return {n, 0.5 * distance * n, -0.5 * distance * n, distance};
     }
+    PairContact contact(const PairMotion& m, Vector3d& /*normal*/) const { return contact(m); }
 };
 
 } // namespace sbpack

@@ -1,12 +1,18 @@
 #pragma once
 // The superball as a shape of the event-driven engine (DESIGN.md §2-3): collision prediction for
-// two translating, rotating, growing superballs by conservative advancement on the signed
-// distance s(t), then a bracketed (Illinois) refinement of its first root.
+// two translating, rotating, growing superballs that never misses a contact.
 //
-// Motion over tau >= 0, in the pair's frame: d(tau) = d + w tau, q_k(tau) = exp(omega_k tau / 2)
-// q_k (lab-frame omega), semi-axis R(tau) = (D + gamma tau) / 2. With c = circumradius / R,
-//   |ds/dtau| <= |w| + (|omega_i| + |omega_j|) c R(tau) + |gamma| c        (envelope theorem),
-// so a step h with s(tau) >= int_tau^{tau+h} bound never jumps over a contact.
+// Motion over tau >= 0 in the pair's frame: d(tau) = d + w tau, q_k(tau) = exp(omega_k tau / 2) q_k
+// (lab-frame omega), R(tau) = (D + gamma tau) / 2, c = circumradius / R. For a fixed unit n the
+// separating-plane gap g_n(tau) = n.d(tau) - h_i(n) - h_j(n) is a lower bound on the signed
+// distance s(tau) = max_n g_n(tau), and, the support point x_k of body k moving at omega_k x x_k
+// plus growth (envelope theorem),
+//   g_n(tau) >= g_n(0) + tau [n.w - (|n x omega_i| + |n x omega_j|) c R(tau) - c gamma].
+// Tiers, cheapest first: the circumscribed spheres do not meet before the horizon; the cached
+// normal's plane stays separating up to it; conservative advancement on exact s with that plane
+// bound as the step, Newton steps in time near contact kept only when they bracket the root, and
+// Illinois refinement of the bracket. A prediction that reaches its step limit returns a safe
+// time up to which nothing touches (Prediction::contact = false) instead of guessing.
 
 #include "shapes/pair_motion.hpp"
 
@@ -14,51 +20,63 @@ namespace sbpack {
 
 /// Tolerances and limits of the superball predictor, in one place.
 struct SuperballPredictorLimits {
-    /// Predict only up to this time; later contacts report +inf (the engine re-predicts).
-    double horizon = 1e3;
-    /// Conservative advancement stops once s < contactGap * D (touching for the engine).
-    double contactGap = 1e-13;
-    /// Below nearGap * D advancement also tries Newton steps, accepted only when they bracket.
-    double nearGap = 1e-4;
-    /// Advancement steps before the stalled-advancement fallback (a forward scan).
-    int maxAdvancementSteps = 4000;
-    /// Steps of the fallback scan and of the bracketed refinement.
-    int maxScanSteps = 4000;
-    int maxRefinementSteps = 200;
-    /// The refinement stops when the bracket is shorter than this times (1 + tau).
-    double timeTolerance = 1e-14;
+    /// Touching for the engine: s <= contactGap * D (gaps of 1e-13 D stay resolvable).
+    double contactGap = 1e-14;
+    /// Below nearGap * D and closing, advancement also tries a Newton step in time.
+    double nearGap = 1e-3;
+    /// Advancement steps before the prediction settles for a safe recheck time.
+    int maxAdvancementSteps = 100;
+    /// Evaluations of the bracketed refinement before it settles for the bracket's safe end.
+    int maxRefinementSteps = 100;
 };
 
 /// What the predictor did, summed over calls (reset by the caller).
 struct SuperballPredictorStats {
     long calls = 0;
-    long sphereRejections = 0;  ///< bounding spheres never touch before the horizon
-    long advancementSteps = 0;  ///< signed-distance evaluations in conservative advancement
-    long newtonBrackets = 0;    ///< near-contact Newton steps that bracketed the root
+    long sphereRejections = 0;  ///< circumscribed spheres do not meet before the horizon
+    long planeRejections = 0;   ///< the cached normal's plane separates up to the horizon
+    long evaluations = 0;       ///< exact signed distances (advancement, Newton, refinement)
+    long newtonBrackets = 0;    ///< Newton steps in time that bracketed the contact
     long refinementSteps = 0;   ///< evaluations in the bracketed refinement
     long distanceFallbacks = 0; ///< pair-solver derivative-free finishes
-    long scanFallbacks = 0;     ///< advancement stalled (grazing) and a forward scan took over
-    long limitHits = 0;         ///< an iteration cap ended a prediction (reported, not looped)
+    long rechecks = 0;          ///< step limit reached: a safe recheck time instead of a contact
+    long limitHits = 0;         ///< refinement limit reached: the bracket's safe end returned
+    long startOverlaps = 0;     ///< s(0) < -contactGap D (never in a valid packing)
 };
 
-struct SuperballShape {
-    double p;
+class SuperballShape {
+  public:
+    /// Throws std::invalid_argument unless 0.5 <= p < inf.
+    explicit SuperballShape(double p);
+
+    static constexpr bool kRotates = true;
+
+    double p() const { return p_; }
+    /// Circumradius over semi-axis, c = max(1, 3^{1/2 - 1/(2p)}).
+    double circumscribedRatio() const { return c_; }
+    /// I / m of a body of diameter D (isotropic inertia, DESIGN.md §1).
+    double inertiaPerMass(double diameter) const;
+
+    /// Earliest delay in [0, horizon] at which the pair touches, or +inf if none; a safe recheck
+    /// delay when the step limit is reached. `normal` (in/out) is the pair's cached unit normal
+    /// from i to j, or zero when unknown; it is updated when the pair is evaluated exactly.
+    Prediction collisionTime(const PairMotion& m, double horizon, Vector3d& normal) const;
+
+    /// Contact of touching bodies now: normal from i to j, arms to the midpoint of the two
+    /// support points (the same point for both, so impulses conserve angular momentum).
+    PairContact contact(const PairMotion& m, Vector3d& normal) const;
+
+    /// Signed distance of the pair advanced by tau along its motion (cold start, for tests).
+    double signedDistanceAt(const PairMotion& m, double tau) const;
+
     SuperballPredictorLimits limits{};
     /// Counters; mutable because prediction is logically const.
     mutable SuperballPredictorStats stats{};
 
-    static constexpr bool kRotates = true;
-
-    /// Earliest tau in [0, horizon] at which the bodies touch (s <= contactGap D), +inf if none.
-    /// Already overlapping: 0.
-    double collisionTime(const PairMotion& m) const;
-
-    /// Contact of (nearly) touching bodies at the current time: normal from i to j, arms to the
-    /// midpoint of the two support points.
-    PairContact contact(const PairMotion& m) const;
-
-    /// Signed distance of the pair advanced by tau along its motion (no collision handling).
-    double signedDistanceAt(const PairMotion& m, double tau) const;
+  private:
+    double p_;
+    double c_;
+    double inertiaPerMassUnit_; ///< I / m at semi-axis 1
 };
 
 } // namespace sbpack

@@ -17,11 +17,11 @@ using Engine = EventDrivenMd<SphereShape>;
 Engine randomFluid(int n, double phi, double gamma, std::uint64_t seed) {
     Random random(seed);
     const double box = boxLengthFor(n, Superball(1.0, 0.5).volume(), phi);
-    const auto positions = randomSpherePositions(n, box, random);
+    const auto placement = randomPlacement(n, 1.0, box, random);
     const auto velocities = maxwellVelocities(n, random);
     std::vector<ParticleState> state(n);
     for (int i = 0; i < n; ++i)
-        state[i] = {positions[i], velocities[i]};
+        state[i] = {placement.positions[i], velocities[i]};
     return Engine(SphereShape{}, box, std::move(state), GrowthClock{1.0, 0.0, gamma});
 }
 
