@@ -37,6 +37,14 @@ class Superball {
     /// The point of the surface that maximises n . x (body frame); a vertex or face
     /// point where the maximiser is not unique.
     Vector3d supportPoint(const Vector3d& nBody) const;
+    /// h, its gradient (the support point) and its Hessian (clamped as supportHessian) at once,
+    /// from four powers: the event-driven predictor's inner loop.
+    struct SupportJet {
+        double value;
+        Vector3d point;
+        Matrix3d hessian;
+    };
+    SupportJet supportJet(const Vector3d& nBody) const;
     /// Hessian of h at n, clamped to stay finite where it diverges (faces of cube-like
     /// shapes); zero for the octahedron.
     Matrix3d supportHessian(const Vector3d& nBody) const;

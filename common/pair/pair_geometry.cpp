@@ -50,15 +50,6 @@ class MinkowskiSum {
     const SuperballPair& pair_;
 };
 
-/// Orthonormal tangent basis (columns) of the plane orthogonal to the unit vector n.
-Eigen::Matrix<double, 3, 2> tangentBasis(const Vector3d& n) {
-    const Vector3d helper = std::abs(n.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
-    Eigen::Matrix<double, 3, 2> basis;
-    basis.col(0) = n.cross(helper).normalized();
-    basis.col(1) = n.cross(basis.col(0));
-    return basis;
-}
-
 /// Solves phi'(t) = 0 for 0 < t <= tMax along a search direction, given phi'(0) < 0 and
 /// phi' nondecreasing past its root (convex phi, or a local maximum of -phi): the full
 /// Newton step t = 1 is tried first; otherwise the root is bracketed and refined by Illinois
@@ -374,6 +365,14 @@ void generalSignedDistance(const MinkowskiSum& k, const PairTolerances& toleranc
 }
 
 } // namespace
+
+Eigen::Matrix<double, 3, 2> tangentBasis(const Vector3d& n) {
+    const Vector3d helper = std::abs(n.x()) < 0.6 ? Vector3d::UnitX() : Vector3d::UnitY();
+    Eigen::Matrix<double, 3, 2> basis;
+    basis.col(0) = n.cross(helper).normalized();
+    basis.col(1) = n.cross(basis.col(0));
+    return basis;
+}
 
 ScaleFactorResult scaleFactor(const SuperballPair& pair, const Vector3d& warmNormal,
                               const PairTolerances& tolerances) {

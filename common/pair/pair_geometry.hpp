@@ -59,6 +59,9 @@ struct SignedDistanceResult {
     int fallbacks = 0; ///< derivative-free finishes (scale factor and distance together)
 };
 
+/// Orthonormal tangent basis (columns) of the plane orthogonal to the unit vector n.
+Eigen::Matrix<double, 3, 2> tangentBasis(const Vector3d& n);
+
 /// mu of the pair. warmNormal, if non-zero, is a previous normal of the same pair.
 ScaleFactorResult scaleFactor(const SuperballPair& pair,
                               const Vector3d& warmNormal = Vector3d::Zero(),

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace sbpack {
 namespace {
@@ -20,6 +21,59 @@ struct Sample {
     double rate = 0.0;
     Vector3d normal = Vector3d::Zero();
 };
+
+/// s at a warm normal by plain Newton steps on the unit sphere, f(n) = n.d - h_i(n) - h_j(n)
+/// being concave about its maximum near contact (DESIGN.md §2); the tangent Hessian of -f is
+/// P^T (d2h_i + d2h_j) P + f I. Empty when a step does not ascend, the Hessian is not positive
+/// definite or it takes more than a few steps: the robust pair solver takes over then.
+std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pair, Vector3d n) {
+    const Matrix3d& qi = pair.rotationA;
+    const Matrix3d& qj = pair.rotationB;
+    const Vector3d& d = pair.displacement;
+    double previous = -kNever;
+    for (int iteration = 0; iteration < 6; ++iteration) {
+        const Superball::SupportJet ji = pair.shape.supportJet(qi.transpose() * n);
+        const Superball::SupportJet jj = pair.shape.supportJet(qj.transpose() * n);
+        const Vector3d xi = qi * ji.point, xj = qj * jj.point;
+        const double f = n.dot(d) - ji.value - jj.value;
+        if (!(f >= previous - 1e-15 * pair.shape.diameter())) return std::nullopt;
+        const Eigen::Matrix<double, 3, 2> basis = tangentBasis(n);
+        const Eigen::Vector2d gradient = basis.transpose() * (d - xi - xj);
+        Eigen::Matrix2d hessian =
+            basis.transpose() *
+            (qi * ji.hessian * qi.transpose() + qj * jj.hessian * qj.transpose()) * basis;
+        hessian.diagonal().array() += f;
+        const double det = hessian(0, 0) * hessian(1, 1) - hessian(0, 1) * hessian(1, 0);
+        if (!(hessian(0, 0) > 0.0 && det > 0.0)) return std::nullopt;
+        const Eigen::Vector2d step(
+            (hessian(1, 1) * gradient[0] - hessian(0, 1) * gradient[1]) / det,
+            (hessian(0, 0) * gradient[1] - hessian(1, 0) * gradient[0]) / det);
+        if (step.norm() <= 1e-9) { // s is stationary in n: its error is ~|step|^2 D
+            SignedDistanceResult r;
+            r.signedDistance = f;
+            r.normal = n;
+            r.contactA = xi;
+            r.contactB = d - xj;
+            r.iterations = iteration + 1;
+            return r;
+        }
+        n = (n + basis * step).normalized();
+        previous = f;
+    }
+    return std::nullopt;
+}
+
+/// s of the pair from its cached normal (updated): warm Newton, else the robust solver.
+SignedDistanceResult exactSignedDistance(const SuperballPair& pair, Vector3d& normal,
+                                         SuperballPredictorStats& stats) {
+    std::optional<SignedDistanceResult> fast;
+    if (!normal.isZero(0.0)) fast = newtonSignedDistance(pair, normal);
+    if (!fast) ++stats.robustEvaluations;
+    const SignedDistanceResult r = fast ? *fast : signedDistanceFrom(pair, normal);
+    stats.distanceFallbacks += r.fallbacks;
+    normal = r.normal;
+    return r;
+}
 
 /// The pair along its motion, evaluated exactly, each evaluation warm-started from the last
 /// normal (the pair's cached one at first).
@@ -36,9 +90,7 @@ class PairTrajectory {
             Superball(p_, 0.5 * diameter),
             advancedOrientation(m_.orientationI, m_.angularVelocityI, tau).toRotationMatrix(),
             advancedOrientation(m_.orientationJ, m_.angularVelocityJ, tau).toRotationMatrix(), d};
-        const SignedDistanceResult r = signedDistanceFrom(pair, normal_);
-        stats_.distanceFallbacks += r.fallbacks;
-        normal_ = r.normal;
+        const SignedDistanceResult r = exactSignedDistance(pair, normal_, stats_);
         // ds/dtau by the envelope theorem: the closing speed along n of the two support points,
         // each moving at omega x x + (gamma / D) x about its own centre.
         const Vector3d xI = r.contactA, xJ = r.contactB - d;
@@ -59,6 +111,7 @@ class PairTrajectory {
 
 SuperballShape::SuperballShape(double p)
     : p_(p), c_(Superball(p, 1.0).circumradius()),
+      lever_(std::sqrt(c_ * c_ - std::pow(Superball(p, 1.0).inradius(), 2))),
       inertiaPerMassUnit_(Superball(p, 1.0).inertiaPerMass()) {}
 
 double SuperballShape::inertiaPerMass(double diameter) const {
@@ -101,22 +154,29 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
         end = std::min(end, (-b + std::sqrt(std::max(0.0, b * b - a * c0))) / a);
     }
 
-    // The plane bound's rate at unit normal n, valid up to `end` (R at its largest there).
-    const double radiusBound = c_ * 0.5 * (D + growth * end);
+    // The plane bound's rate at unit normal n, valid up to `end` (R at its largest there):
+    // dh_k/dtau = (n x omega_k) . x_k with x_k the support point, and only its part normal to n
+    // counts, |x_perp|^2 = |x|^2 - h^2 <= (c^2 - c_in^2) R^2 (the lever; 0 for spheres).
+    const double leverBound = lever_ * 0.5 * (D + growth * end);
     auto planeRate = [&](const Vector3d& n) {
         return n.dot(m.relativeVelocity) -
                (n.cross(m.angularVelocityI).norm() + n.cross(m.angularVelocityJ).norm()) *
-                   radiusBound -
+                   leverBound -
                c_ * growth;
+    };
+    // The plane gap g_n(tau) itself: two support functions.
+    auto planeGap = [&](const Vector3d& n, double tau) {
+        const Superball body(p_, 0.5 * (D + gamma * tau));
+        const Quaterniond qi = advancedOrientation(m.orientationI, m.angularVelocityI, tau);
+        const Quaterniond qj = advancedOrientation(m.orientationJ, m.angularVelocityJ, tau);
+        return n.dot(m.displacement + m.relativeVelocity * tau) -
+               body.support(qi.toRotationMatrix().transpose() * n) -
+               body.support(qj.toRotationMatrix().transpose() * n);
     };
 
     // Tier 2: the cached normal's separating plane holds up to `end`.
     if (!normal.isZero(0.0)) {
-        const Superball body(p_, 0.5 * D);
-        const double gap =
-            normal.dot(m.displacement) -
-            body.support(m.orientationI.toRotationMatrix().transpose() * normal) -
-            body.support(m.orientationJ.toRotationMatrix().transpose() * normal);
+        const double gap = planeGap(normal, 0.0);
         if (gap > 0.0 && gap + std::min(0.0, planeRate(normal)) * end > 0.0) {
             ++stats.planeRejections;
             return none;
@@ -127,45 +187,41 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
     PairTrajectory trajectory(m, p_, normal, stats);
     const double touching = limits.contactGap * D, near = limits.nearGap * D;
 
-    // Illinois on s over a bracket gap(left) > 0 >= gap(right); returns the safe (left) end once
-    // it touches, so an overlap is never accepted.
+    // Safeguarded Newton on s over a bracket gap(left) > 0 >= gap(right): the Newton step from
+    // the end nearer to zero (s has an exact rate), regula falsi when it leaves the bracket and
+    // bisection when that stalls. Returns the safe (left) end once it touches, so an overlap is
+    // never accepted.
     auto refine = [&](Sample left, Sample right) {
-        int side = 0;
-        double gl = left.gap, gr = right.gap;
         for (int k = 0; k < limits.maxRefinementSteps; ++k) {
             const double width = right.tau - left.tau;
             if (left.gap <= touching || width <= 4e-16 * (1.0 + right.tau))
                 return Prediction{left.tau};
-            double tau = (left.tau * gr - right.tau * gl) / (gr - gl);
-            if (!(tau > left.tau + 1e-3 * width && tau < right.tau - 1e-3 * width))
+            if (right.gap >= -touching) return Prediction{right.tau}; // touching at rounding
+            const Sample& nearer = left.gap < -right.gap ? left : right;
+            double tau = nearer.rate < 0.0 ? nearer.tau - nearer.gap / nearer.rate : -1.0;
+            if (!(tau > left.tau && tau < right.tau))
+                tau = (left.tau * right.gap - right.tau * left.gap) / (right.gap - left.gap);
+            if (!(tau > left.tau + 1e-3 * width && tau < right.tau - 1e-3 * width) && k % 4 == 3)
                 tau = 0.5 * (left.tau + right.tau);
             const Sample mid = trajectory.at(tau);
             ++stats.refinementSteps;
-            if (mid.gap > 0.0) {
-                left = mid, gl = mid.gap;
-                if (side == -1) gr *= 0.5;
-                side = -1;
-            } else {
-                right = mid, gr = mid.gap;
-                if (side == 1) gl *= 0.5;
-                side = 1;
-            }
+            (mid.gap > 0.0 ? left : right) = mid;
         }
         ++stats.limitHits;
         return Prediction{left.tau};
     };
 
+    // Advancement: from an exact sample, step along its plane (cheap plane gaps) while that
+    // plane keeps at least half the exact gap; then sample exactly again.
     Sample now = trajectory.at(enter);
     if (enter == 0.0 && now.gap < -touching) ++stats.startOverlaps;
     for (int step = 0;; ++step) {
         if (now.gap <= touching && now.rate < 0.0) return {now.tau};
-        const double rate = planeRate(now.normal);
-        if (rate >= 0.0) return none; // this plane separates them up to `end`
         // Near contact and closing: a Newton step in time, kept only if it brackets the root.
-        const double safe = now.tau + std::max(now.gap, touching) / -rate;
-        if (now.gap <= near && now.rate < 0.0) {
+        const double rate = planeRate(now.normal);
+        if (now.gap <= near && now.rate < 0.0 && rate < 0.0) {
             const double tau = now.tau - now.gap / now.rate;
-            if (tau > safe && tau <= end) {
+            if (tau > now.tau + now.gap / -rate && tau <= end) {
                 const Sample trial = trajectory.at(tau);
                 if (trial.gap <= 0.0) {
                     ++stats.newtonBrackets;
@@ -173,13 +229,20 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
                 }
             }
         }
-        if (safe >= end) return none;
-        if (step == limits.maxAdvancementSteps) {
-            ++stats.rechecks;
-            return {safe, false};
-        }
+        double tau = now.tau, gap = std::max(now.gap, touching);
+        do {
+            if (rate >= 0.0) return none; // this plane separates them up to `end`
+            tau += gap / -rate;
+            if (tau >= end) return none;
+            if (++step > limits.maxAdvancementSteps) {
+                ++stats.rechecks;
+                return {tau, false};
+            }
+            gap = planeGap(now.normal, tau);
+            ++stats.planeSteps;
+        } while (gap > 0.5 * now.gap);
         const Sample previous = now;
-        now = trajectory.at(safe);
+        now = trajectory.at(tau);
         if (now.gap <= 0.0 && previous.gap > touching) return refine(previous, now);
     }
 }
@@ -187,9 +250,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
 PairContact SuperballShape::contact(const PairMotion& m, Vector3d& normal) const {
     const SuperballPair pair{Superball(p_, 0.5 * m.diameter), m.orientationI.toRotationMatrix(),
                              m.orientationJ.toRotationMatrix(), m.displacement};
-    const SignedDistanceResult r = signedDistanceFrom(pair, normal);
-    stats.distanceFallbacks += r.fallbacks;
-    normal = r.normal;
+    const SignedDistanceResult r = exactSignedDistance(pair, normal, stats);
     const Vector3d armI = 0.5 * (r.contactA + r.contactB);
     return {r.normal, armI, armI - m.displacement, m.displacement.norm()};
 }

@@ -6,12 +6,13 @@
 // (lab-frame omega), R(tau) = (D + gamma tau) / 2, c = circumradius / R. For a fixed unit n the
 // separating-plane gap g_n(tau) = n.d(tau) - h_i(n) - h_j(n) is a lower bound on the signed
 // distance s(tau) = max_n g_n(tau), and, the support point x_k of body k moving at omega_k x x_k
-// plus growth (envelope theorem),
-//   g_n(tau) >= g_n(0) + tau [n.w - (|n x omega_i| + |n x omega_j|) c R(tau) - c gamma].
+// plus growth (envelope theorem), with |x_k| <= c R and x_k . n = h_k >= c_in R,
+//   g_n(tau) >= g_n(0) + tau [n.w - (|n x omega_i| + |n x omega_j|) R(tau) sqrt(c^2 - c_in^2)
+//                             - c gamma].
 // Tiers, cheapest first: the circumscribed spheres do not meet before the horizon; the cached
 // normal's plane stays separating up to it; conservative advancement on exact s with that plane
 // bound as the step, Newton steps in time near contact kept only when they bracket the root, and
-// Illinois refinement of the bracket. A prediction that reaches its step limit returns a safe
+// a safeguarded Newton refinement of the bracket. A prediction that reaches its step limit returns a safe
 // time up to which nothing touches (Prediction::contact = false) instead of guessing.
 
 #include "shapes/pair_motion.hpp"
@@ -36,6 +37,8 @@ struct SuperballPredictorStats {
     long sphereRejections = 0;  ///< circumscribed spheres do not meet before the horizon
     long planeRejections = 0;   ///< the cached normal's plane separates up to the horizon
     long evaluations = 0;       ///< exact signed distances (advancement, Newton, refinement)
+    long robustEvaluations = 0; ///< of those, by the robust pair solver (no warm Newton)
+    long planeSteps = 0;        ///< advancement steps on a plane gap (two support functions)
     long newtonBrackets = 0;    ///< Newton steps in time that bracketed the contact
     long refinementSteps = 0;   ///< evaluations in the bracketed refinement
     long distanceFallbacks = 0; ///< pair-solver derivative-free finishes
@@ -76,6 +79,7 @@ class SuperballShape {
   private:
     double p_;
     double c_;
+    double lever_; ///< sqrt(c^2 - c_in^2): bound on a support point's offset from its normal
     double inertiaPerMassUnit_; ///< I / m at semi-axis 1
 };
 
