@@ -23,8 +23,10 @@ double lpNorm(const Vector3d& u, double e) {
     const double m = u.cwiseAbs().maxCoeff();
     if (m == 0.0 || e == kInf) return m;
     double sum = 0.0;
-    for (int i = 0; i < 3; ++i)
-        sum += std::pow(std::abs(u[i]) / m, e);
+    for (int i = 0; i < 3; ++i) {
+        const double y = std::abs(u[i]) / m;
+        sum += y == 1.0 ? 1.0 : std::pow(y, e); // the largest is 1: one power fewer
+    }
     return m * std::pow(sum, 1.0 / e);
 }
 
@@ -116,7 +118,7 @@ Vector3d Superball::supportPoint(const Vector3d& nBody) const {
     double sum = 0.0;
     for (int i = 0; i < 3; ++i) {
         y[i] = std::abs(nBody[i]) / m;
-        a[i] = std::pow(y[i], q_);
+        a[i] = y[i] == 1.0 ? 1.0 : std::pow(y[i], q_); // the largest is 1
         sum += a[i];
     }
     const double norm = std::pow(sum, 1.0 / q_);
@@ -139,7 +141,7 @@ Superball::SupportJet Superball::supportJet(const Vector3d& nBody) const {
     double sum = 0.0;
     for (int i = 0; i < 3; ++i) {
         y[i] = std::abs(nBody[i]) / m;
-        a[i] = std::pow(y[i], q_);
+        a[i] = y[i] == 1.0 ? 1.0 : std::pow(y[i], q_); // the largest is 1
         sum += a[i];
     }
     const double norm = std::pow(sum, 1.0 / q_);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <variant>
 
 namespace sbpack {
 namespace {
@@ -175,12 +176,10 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
     };
 
     // Tier 2: the cached normal's separating plane holds up to `end`.
-    if (!normal.isZero(0.0)) {
-        const double gap = planeGap(normal, 0.0);
-        if (gap > 0.0 && gap + std::min(0.0, planeRate(normal)) * end > 0.0) {
-            ++stats.planeRejections;
-            return none;
-        }
+    const double cachedGap = normal.isZero(0.0) ? 0.0 : planeGap(normal, 0.0);
+    if (cachedGap > 0.0 && cachedGap + std::min(0.0, planeRate(normal)) * end > 0.0) {
+        ++stats.planeRejections;
+        return none;
     }
 
     // Tier 3: conservative advancement on exact s.
@@ -211,13 +210,40 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
         return Prediction{left.tau};
     };
 
-    // Advancement: from an exact sample, step along its plane (cheap plane gaps) while that
-    // plane keeps at least half the exact gap; then sample exactly again.
-    Sample now = trajectory.at(enter);
-    if (enter == 0.0 && now.gap < -touching) ++stats.startOverlaps;
-    for (int step = 0;; ++step) {
+    // Advancement along the plane of unit n from (tau, gap): steps of gap / |plane rate|, each
+    // ending at a cheap plane gap, until that drops below half of `reference`. Returns the time
+    // reached, or the prediction when the plane separates them up to `end` or the step limit is
+    // reached (a safe recheck time).
+    int steps = 0;
+    auto alongPlane = [&](const Vector3d& n, double tau, double gap,
+                          double reference) -> std::variant<double, Prediction> {
+        const double rate = planeRate(n);
+        do {
+            if (rate >= 0.0) return none; // this plane separates them up to `end`
+            tau += std::max(gap, touching) / -rate;
+            if (tau >= end) return none;
+            if (++steps > limits.maxAdvancementSteps) {
+                ++stats.rechecks;
+                return Prediction{tau, false};
+            }
+            gap = planeGap(n, tau);
+            ++stats.planeSteps;
+        } while (gap > 0.5 * reference);
+        return tau;
+    };
+
+    // Advancement: along the cached plane first, then from exact samples along their planes;
+    // near contact and closing, a Newton step in time, kept only if it brackets the root.
+    double start = enter;
+    if (cachedGap > touching) {
+        const auto reached = alongPlane(normal, 0.0, cachedGap, cachedGap);
+        if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
+        start = std::max(start, std::get<double>(reached));
+    }
+    Sample now = trajectory.at(start);
+    if (start == 0.0 && now.gap < -touching) ++stats.startOverlaps;
+    for (;;) {
         if (now.gap <= touching && now.rate < 0.0) return {now.tau};
-        // Near contact and closing: a Newton step in time, kept only if it brackets the root.
         const double rate = planeRate(now.normal);
         if (now.gap <= near && now.rate < 0.0 && rate < 0.0) {
             const double tau = now.tau - now.gap / now.rate;
@@ -229,20 +255,10 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
                 }
             }
         }
-        double tau = now.tau, gap = std::max(now.gap, touching);
-        do {
-            if (rate >= 0.0) return none; // this plane separates them up to `end`
-            tau += gap / -rate;
-            if (tau >= end) return none;
-            if (++step > limits.maxAdvancementSteps) {
-                ++stats.rechecks;
-                return {tau, false};
-            }
-            gap = planeGap(now.normal, tau);
-            ++stats.planeSteps;
-        } while (gap > 0.5 * now.gap);
+        const auto reached = alongPlane(now.normal, now.tau, now.gap, now.gap);
+        if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
         const Sample previous = now;
-        now = trajectory.at(tau);
+        now = trajectory.at(std::get<double>(reached));
         if (now.gap <= 0.0 && previous.gap > touching) return refine(previous, now);
     }
 }
