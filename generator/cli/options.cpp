@@ -16,7 +16,8 @@ Generates a maximally random jammed packing with the Donev-Torquato-Stillinger e
 molecular dynamics: N particles start at random (phi-init), fly, collide elastically and grow
 at rate gamma (dD/dt = gamma sqrt(kT/m)) until the reduced pressure P = PV/(NkT) diverges.
 
-  --p P                   superball exponent (default 1: spheres; this version: spheres only)
+  --p P                   superball exponent in [0.5, 1000] (default 1: spheres, exact fast
+                          path; otherwise rotating superballs)
   --n N                   number of particles (default 1000)
   --seed S                random seed (default 1); same seed and options: identical packing
   --phi-init PHI          initial packing fraction in (0, 0.5) (default 0.2, as the paper)

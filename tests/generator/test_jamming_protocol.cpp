@@ -21,6 +21,16 @@ ProtocolParameters smallRun(std::uint64_t seed) {
     return p;
 }
 
+/// A small superball run (p = 1.5, rotating engine).
+ProtocolParameters smallSuperballRun(std::uint64_t seed) {
+    ProtocolParameters p = smallRun(seed);
+    p.particles = 27;
+    p.p = 1.5;
+    p.pressureSwitch = 1e2;
+    p.pressureFinal = 1e4;
+    return p;
+}
+
 void expectIdentical(const Packing& a, const Packing& b) {
     ASSERT_EQ(a.size(), b.size());
     EXPECT_EQ(a.semiAxis, b.semiAxis);
@@ -28,7 +38,9 @@ void expectIdentical(const Packing& a, const Packing& b) {
     for (std::size_t i = 0; i < a.size(); ++i) {
         EXPECT_EQ(a.positions[i], b.positions[i]) << i;
         EXPECT_EQ(a.velocities[i], b.velocities[i]) << i;
+        EXPECT_EQ(a.orientations[i].coeffs(), b.orientations[i].coeffs()) << i;
     }
+    EXPECT_EQ(a.angularVelocities, b.angularVelocities);
     for (const auto& [key, value] : a.provenance)
         if (key != "wall_time_s") {
             EXPECT_EQ(value, b.provenance.at(key)) << key;
@@ -47,6 +59,8 @@ TEST(JammingProtocol, RejectsBadParametersNamingTheOption) {
         }
     };
     expectBad([](auto& p) { p.particles = 1; }, "--n");
+    expectBad([](auto& p) { p.p = 0.49; }, "--p");
+    expectBad([](auto& p) { p.p = NAN; }, "--p");
     expectBad([](auto& p) { p.phiInit = 0.5; }, "--phi-init");
     expectBad([](auto& p) { p.phiInit = 0.0; }, "--phi-init");
     expectBad([](auto& p) { p.gammaFast = -0.01; }, "--gamma-fast");
@@ -79,6 +93,25 @@ TEST(JammingProtocol, ResumingFromACheckpointFileGivesTheUninterruptedResult) {
     EXPECT_EQ(resumed.status().windows, 40u);
     ASSERT_TRUE(resumed.run(nullptr, [](const ProtocolStatus&) {}));
     expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
+}
+
+TEST(JammingProtocol, SuperballRunsAreDeterministicAndResumeExactly) {
+    JammingProtocol uninterrupted(smallSuperballRun(4));
+    std::optional<Packing> saved;
+    ASSERT_TRUE(uninterrupted.run(nullptr, [&](const ProtocolStatus& s) {
+        if (s.windows == 20) saved = uninterrupted.checkpoint();
+    }));
+    ASSERT_TRUE(saved.has_value());
+    EXPECT_GE(uninterrupted.status().reducedPressure, 1e4);
+    const auto file = std::filesystem::temp_directory_path() / "sbgen-test-superball-checkpoint.h5";
+    writePacking(*saved, file);
+    JammingProtocol resumed(readPacking(file), file.string());
+    std::filesystem::remove(file);
+    ASSERT_TRUE(resumed.run(nullptr, [](const ProtocolStatus&) {}));
+    expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
+    JammingProtocol again(smallSuperballRun(4));
+    ASSERT_TRUE(again.run(nullptr, [](const ProtocolStatus&) {}));
+    expectIdentical(uninterrupted.checkpoint(), again.checkpoint());
 }
 
 TEST(JammingProtocol, AFinishedRunContinuesToAHigherFinalPressure) {
