@@ -165,6 +165,20 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
                    leverBound -
                c_ * growth;
     };
+    // Second-order bound of the same plane: along the rotation the body-frame direction of n
+    // runs on a circle, |u'| = |n x omega|, |u''| = |n x omega| |omega|, and a support function
+    // there has h'' = u'^T (d2h) u' + x . u'' >= -c R |n x omega| |omega| (h is convex); growth
+    // adds (R h_hat)'' = gamma h_hat' + R h_hat''. So g_n'' <= M_n = sum_k |n x omega_k|
+    // (c gamma + c R |omega_k|), g_n - M_n t^2 / 2 is concave, and on [t0, t1] g_n lies above its
+    // chord minus M_n (t - t0)(t1 - t) / 2 >= min(g0, g1) - M_n (t1 - t0)^2 / 8: one plane gap at
+    // t1 certifies the whole step, however fast the first-order bound says s could fall.
+    const double radiusBound = c_ * 0.5 * (D + growth * end);
+    auto planeCurvature = [&](const Vector3d& n) {
+        return n.cross(m.angularVelocityI).norm() *
+                   (c_ * growth + radiusBound * m.angularVelocityI.norm()) +
+               n.cross(m.angularVelocityJ).norm() *
+                   (c_ * growth + radiusBound * m.angularVelocityJ.norm());
+    };
     // The plane gap g_n(tau) itself: two support functions.
     auto planeGap = [&](const Vector3d& n, double tau) {
         const Superball body(p_, 0.5 * (D + gamma * tau));
@@ -177,7 +191,10 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
 
     // Tier 2: the cached normal's separating plane holds up to `end`.
     const double cachedGap = normal.isZero(0.0) ? 0.0 : planeGap(normal, 0.0);
-    if (cachedGap > 0.0 && cachedGap + std::min(0.0, planeRate(normal)) * end > 0.0) {
+    if (cachedGap > 0.0 &&
+        (cachedGap + std::min(0.0, planeRate(normal)) * end > 0.0 ||
+         (end < kNever && std::min(cachedGap, planeGap(normal, end)) >
+                              0.125 * planeCurvature(normal) * end * end))) {
         ++stats.planeRejections;
         return none;
     }
@@ -189,13 +206,12 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
     // Safeguarded Newton on s over a bracket gap(left) > 0 >= gap(right): the Newton step from
     // the end nearer to zero (s has an exact rate), regula falsi when it leaves the bracket and
     // bisection when that stalls. Returns the safe (left) end once it touches, so an overlap is
-    // never accepted.
+    // never accepted (or the right end at a rounding-level overlap).
     auto refine = [&](Sample left, Sample right) {
         for (int k = 0; k < limits.maxRefinementSteps; ++k) {
             const double width = right.tau - left.tau;
-            if (left.gap <= touching || width <= 4e-16 * (1.0 + right.tau))
-                return Prediction{left.tau};
-            if (right.gap >= -touching) return Prediction{right.tau}; // touching at rounding
+            if (left.gap <= touching || width <= 4e-16 * (1.0 + right.tau)) return left;
+            if (right.gap >= -touching) return right; // touching at rounding
             const Sample& nearer = left.gap < -right.gap ? left : right;
             double tau = nearer.rate < 0.0 ? nearer.tau - nearer.gap / nearer.rate : -1.0;
             if (!(tau > left.tau && tau < right.tau))
@@ -207,33 +223,55 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
             (mid.gap > 0.0 ? left : right) = mid;
         }
         ++stats.limitHits;
-        return Prediction{left.tau};
+        return left;
     };
 
-    // Advancement along the plane of unit n from (tau, gap): steps of gap / |plane rate|, each
-    // ending at a cheap plane gap, until that drops below half of `reference`. Returns the time
-    // reached, or the prediction when the plane separates them up to `end` or the step limit is
-    // reached (a safe recheck time).
+    // Advancement along the plane of unit n from (tau, gap), each step ending at a cheap plane
+    // gap: the chord step where it certifies (up to `end`, or 0.9 of its reach sqrt(8 gap / M),
+    // then eighths of that while longer than the first-order step), else the first-order step gap / |plane rate|; until the gap drops below half of `reference`.
+    // Returns the time reached, or the prediction when the plane separates them up to `end` or
+    // the step limit is reached (a safe recheck time).
     int steps = 0;
+    Prediction atEnd = none; // what reaching `end` means: no contact, or a known one there
     auto alongPlane = [&](const Vector3d& n, double tau, double gap,
                           double reference) -> std::variant<double, Prediction> {
-        const double rate = planeRate(n);
+        const double rate = planeRate(n), curvature = planeCurvature(n);
         do {
-            if (rate >= 0.0) return none; // this plane separates them up to `end`
-            tau += std::max(gap, touching) / -rate;
-            if (tau >= end) return none;
+            if (rate >= 0.0) return atEnd; // this plane separates them up to `end`
             if (++steps > limits.maxAdvancementSteps) {
                 ++stats.rechecks;
                 return Prediction{tau, false};
             }
+            const double firstOrder = std::max(gap, touching) / -rate;
+            const double chord = curvature > 0.0 ? std::sqrt(8.0 * gap / curvature) : kNever;
+            bool chordStep = false;
+            for (double tryStep = std::min(end - tau, 0.9 * chord);
+                 tryStep > firstOrder && !chordStep; tryStep *= 0.125) {
+                const double far = planeGap(n, tau + tryStep);
+                ++stats.planeSteps;
+                if (std::min(gap, far) > 0.125 * curvature * tryStep * tryStep) {
+                    ++stats.chordSteps;
+                    if (tau + tryStep >= end) return atEnd;
+                    tau += tryStep;
+                    gap = far;
+                    chordStep = true;
+                }
+            }
+            if (chordStep) continue;
+            tau += firstOrder;
+            if (tau >= end) return atEnd;
             gap = planeGap(n, tau);
             ++stats.planeSteps;
         } while (gap > 0.5 * reference);
         return tau;
     };
 
-    // Advancement: along the cached plane first, then from exact samples along their planes;
-    // near contact and closing, a Newton step in time, kept only if it brackets the root.
+    // Advancement: along the cached plane first, then from exact samples along their planes.
+    // Near contact and closing, a Newton step in time; when it brackets a root, the refined root
+    // t1 is the first one if the root normal's plane certifies [t0, t1): with g'' <= M and
+    // g(t1) ~ 0, g >= chord - M (t - t0)(t1 - t) / 2 > 0 there when g(t0) > M (t1 - t0)^2 / 2.
+    // Otherwise (s dips below zero and back within the step: rare, spin-driven) advancement
+    // goes on without Newton steps up to that root.
     double start = enter;
     if (cachedGap > touching) {
         const auto reached = alongPlane(normal, 0.0, cachedGap, cachedGap);
@@ -245,13 +283,19 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
     for (;;) {
         if (now.gap <= touching && now.rate < 0.0) return {now.tau};
         const double rate = planeRate(now.normal);
-        if (now.gap <= near && now.rate < 0.0 && rate < 0.0) {
+        if (atEnd.time == kNever && now.gap <= near && now.rate < 0.0 && rate < 0.0) {
             const double tau = now.tau - now.gap / now.rate;
             if (tau > now.tau + now.gap / -rate && tau <= end) {
                 const Sample trial = trajectory.at(tau);
                 if (trial.gap <= 0.0) {
                     ++stats.newtonBrackets;
-                    return refine(now, trial);
+                    const Sample root = refine(now, trial);
+                    const double dt = root.tau - now.tau;
+                    if (planeGap(root.normal, now.tau) > 0.5 * planeCurvature(root.normal) * dt * dt)
+                        return {root.tau};
+                    ++stats.uncertifiedRoots;
+                    end = root.tau;
+                    atEnd = {root.tau};
                 }
             }
         }
@@ -259,7 +303,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
         if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
         const Sample previous = now;
         now = trajectory.at(std::get<double>(reached));
-        if (now.gap <= 0.0 && previous.gap > touching) return refine(previous, now);
+        if (now.gap <= 0.0 && previous.gap > touching) return {refine(previous, now).tau};
     }
 }
 

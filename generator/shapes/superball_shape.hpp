@@ -39,7 +39,9 @@ struct SuperballPredictorStats {
     long evaluations = 0;       ///< exact signed distances (advancement, Newton, refinement)
     long robustEvaluations = 0; ///< of those, by the robust pair solver (no warm Newton)
     long planeSteps = 0;        ///< advancement steps on a plane gap (two support functions)
+    long chordSteps = 0;        ///< of those, steps certified by the plane's chord bound
     long newtonBrackets = 0;    ///< Newton steps in time that bracketed the contact
+    long uncertifiedRoots = 0;  ///< of those, roots not certified first: advancement went on
     long refinementSteps = 0;   ///< evaluations in the bracketed refinement
     long distanceFallbacks = 0; ///< pair-solver derivative-free finishes
     long rechecks = 0;          ///< step limit reached: a safe recheck time instead of a contact
