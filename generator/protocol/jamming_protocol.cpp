@@ -5,6 +5,7 @@
 #include "version.hpp"
 
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <stdexcept>
 
@@ -119,6 +120,8 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
     status_.predictorLimitHits = optionalCounter(packing, "predictor_limit_hits", source);
     status_.windows = counterValue(packing, "windows", source);
     status_.wallSeconds = stateValue<double>(packing, "wall_time_s", source);
+    if (packing.provenance.count("cpu_time_s") != 0)
+        status_.cpuSeconds = stateValue<double>(packing, "cpu_time_s", source);
     status_.packingFraction = packing.packingFraction();
     const GrowthClock clock{stateValue<double>(packing, "state_base_diameter", source),
                             stateValue<double>(packing, "state_growth_elapsed", source),
@@ -147,6 +150,7 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
         std::ceil(parameters_.collisionsPerWindow * parameters_.particles));
     while (status_.phase != Phase::Done) {
         const auto start = Clock::now();
+        const std::clock_t cpuStart = std::clock();
         const RunReport report =
             std::visit([&](auto& engine) { return engine.run(perWindow, INFINITY, stop); }, engine_);
         status_.collisions += report.collisions;
@@ -162,6 +166,7 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
             stats = {};
         }
         status_.wallSeconds += std::chrono::duration<double>(Clock::now() - start).count();
+        status_.cpuSeconds += static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
         if (report.interrupted) return false;
         finishWindow(report.virial, report.duration);
         onWindow(status_);
@@ -244,6 +249,7 @@ Packing JammingProtocol::checkpoint() const {
     log["predictor_limit_hits"] = static_cast<std::int64_t>(status_.predictorLimitHits);
     log["windows"] = static_cast<std::int64_t>(status_.windows);
     log["wall_time_s"] = status_.wallSeconds;
+    log["cpu_time_s"] = status_.cpuSeconds;
     log["state_format"] = std::string(kStateFormat);
     log["state_phase"] = static_cast<std::int64_t>(status_.phase);
     log["state_base_diameter"] = clock.baseDiameter;

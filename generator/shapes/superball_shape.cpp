@@ -49,7 +49,11 @@ std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pa
         const Eigen::Vector2d step(
             (hessian(1, 1) * gradient[0] - hessian(0, 1) * gradient[1]) / det,
             (hessian(0, 0) * gradient[1] - hessian(1, 0) * gradient[0]) / det);
-        if (step.norm() <= 1e-9) { // s is stationary in n: its error is ~|step|^2 D
+        // Converged when the tangent gradient vanishes (a step alone can be tiny under the
+        // clamped, huge Hessians of flat faces) and the predicted ascent g . step is at
+        // rounding level: f(n) is a lower bound on s, accurate to ~1e-17 D then.
+        const double size = pair.shape.diameter();
+        if (gradient.norm() <= 1e-9 * size && gradient.dot(step) <= 1e-17 * size) {
             SignedDistanceResult r;
             r.signedDistance = f;
             r.normal = n;
@@ -206,7 +210,9 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
     // Safeguarded Newton on s over a bracket gap(left) > 0 >= gap(right): the Newton step from
     // the end nearer to zero (s has an exact rate), regula falsi when it leaves the bracket and
     // bisection when that stalls. Returns the safe (left) end once it touches, so an overlap is
-    // never accepted (or the right end at a rounding-level overlap).
+    // never accepted (or the right end at a rounding-level overlap). If it stalls (s jumps where
+    // the pair solver's kinks make it inconsistent), the left end, not touching, becomes a safe
+    // recheck time.
     auto refine = [&](Sample left, Sample right) {
         for (int k = 0; k < limits.maxRefinementSteps; ++k) {
             const double width = right.tau - left.tau;
@@ -290,6 +296,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
                 if (trial.gap <= 0.0) {
                     ++stats.newtonBrackets;
                     const Sample root = refine(now, trial);
+                    if (root.gap > touching) return {root.tau, false}; // refinement stalled
                     const double dt = root.tau - now.tau;
                     if (planeGap(root.normal, now.tau) > 0.5 * planeCurvature(root.normal) * dt * dt)
                         return {root.tau};
@@ -303,7 +310,10 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
         if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
         const Sample previous = now;
         now = trajectory.at(std::get<double>(reached));
-        if (now.gap <= 0.0 && previous.gap > touching) return {refine(previous, now).tau};
+        if (now.gap <= 0.0 && previous.gap > touching) {
+            const Sample root = refine(previous, now);
+            return {root.tau, root.gap <= touching};
+        }
     }
 }
 
