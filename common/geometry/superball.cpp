@@ -111,30 +111,16 @@ Vector3d Superball::supportPoint(const Vector3d& nBody) const {
         return x;
     }
     // x_i = R sgn(u_i) (|u_i| / ||u||_q)^{q-1}, with u normalised by max |u_i|.
-    // With y_i = |u_i| / max|u| and a_i = y_i^q: ||y||_q = S^{1/q}, S = sum a_i, and
-    // (y_i / ||y||_q)^{q-1} = (a_i / y_i) / (S / ||y||_q): four powers instead of seven (the
-    // predictor's hot path). Where a_i underflows, the power is taken directly.
-    Vector3d y, a;
-    double sum = 0.0;
-    for (int i = 0; i < 3; ++i) {
-        y[i] = std::abs(nBody[i]) / m;
-        a[i] = y[i] == 1.0 ? 1.0 : std::pow(y[i], q_); // the largest is 1
-        sum += a[i];
-    }
-    const double norm = std::pow(sum, 1.0 / q_);
-    for (int i = 0; i < 3; ++i) {
-        const double ratio = a[i] >= std::numeric_limits<double>::min()
-                                 ? (a[i] / y[i]) * (norm / sum)
-                                 : std::pow(y[i] / norm, q_ - 1.0);
-        x[i] = std::copysign(r_ * ratio, nBody[i]);
-    }
+    // x_i = R sgn(u_i) (|u_i| / ||u||_q)^{q-1}, with u normalised by max |u_i|.
+    const double norm = lpNorm(nBody / m, q_);
+    for (int i = 0; i < 3; ++i)
+        x[i] = std::copysign(r_ * std::pow(std::abs(nBody[i]) / m / norm, q_ - 1.0), nBody[i]);
     return x;
 }
 
 Superball::SupportJet Superball::supportJet(const Vector3d& nBody) const {
     const double m = nBody.cwiseAbs().maxCoeff();
-    if (m == 0.0 || q_ == kInf)
-        return {support(nBody), supportPoint(nBody), supportHessian(nBody)};
+    if (m == 0.0 || q_ == kInf) return {support(nBody), supportPoint(nBody), supportHessian(nBody)};
     // y_i = |u_i| / m, a_i = y_i^q, S = sum a_i, norm of y = S^{1/q}; the ratios r_i = y_i / norm
     // give r_i^{q-1} = (a_i / y_i) (norm / S) and r_i^{q-2} = (a_i / y_i^2) (norm^2 / S).
     Vector3d y, a;

@@ -37,7 +37,7 @@ struct ParticleState {
     Vector3d position;
     Vector3d velocity;
     Quaterniond orientation = Quaterniond::Identity(); ///< body to lab
-    Vector3d angularVelocity = Vector3d::Zero();        ///< lab frame
+    Vector3d angularVelocity = Vector3d::Zero();       ///< lab frame
 };
 
 struct EngineParameters {
@@ -176,10 +176,10 @@ template <class Shape> class EventDrivenMd {
         m.diameter = clock_.diameter(t);
         m.growthRate = clock_.rate;
         if constexpr (Shape::kRotates) {
-            m.orientationI = advancedOrientation(state_[i].orientation, state_[i].angularVelocity,
-                                                 t - time_[i]);
-            m.orientationJ = advancedOrientation(state_[j].orientation, state_[j].angularVelocity,
-                                                 t - time_[j]);
+            m.orientationI =
+                advancedOrientation(state_[i].orientation, state_[i].angularVelocity, t - time_[i]);
+            m.orientationJ =
+                advancedOrientation(state_[j].orientation, state_[j].angularVelocity, t - time_[j]);
             m.angularVelocityI = state_[i].angularVelocity;
             m.angularVelocityJ = state_[j].angularVelocity;
         }
@@ -255,10 +255,10 @@ template <class Shape> class EventDrivenMd {
             Vector3d normal = sign * pairNormal(i, j);
             const PairContact contact = shape_.contact(m, normal);
             pairNormal(i, j) = sign * normal;
-            const double impulse = resolveCollision(
-                m, contact, shape_.inertiaPerMass(m.diameter),
-                {state_[i].velocity, state_[i].angularVelocity},
-                {state_[j].velocity, state_[j].angularVelocity});
+            const double impulse =
+                resolveCollision(m, contact, shape_.inertiaPerMass(m.diameter),
+                                 {state_[i].velocity, state_[i].angularVelocity},
+                                 {state_[j].velocity, state_[j].angularVelocity});
             report.virial += impulse * contact.normal.dot(m.displacement);
         } else {
             const PairContact contact = shape_.contact(m);

@@ -5,8 +5,8 @@
 #include "version.hpp"
 
 #include <chrono>
-#include <ctime>
 #include <cmath>
+#include <ctime>
 #include <stdexcept>
 
 namespace sbpack {
@@ -25,8 +25,7 @@ bool positiveFinite(double x) {
 /// The engine for exponent p: the exact sphere engine at p = 1, the superball one otherwise.
 template <class Engine>
 Engine makeEngine(double p, double box, std::vector<ParticleState> state, GrowthClock clock) {
-    if (p == 1.0)
-        return EventDrivenMd<SphereShape>(SphereShape{}, box, std::move(state), clock);
+    if (p == 1.0) return EventDrivenMd<SphereShape>(SphereShape{}, box, std::move(state), clock);
     return EventDrivenMd<SuperballShape>(SuperballShape(p), box, std::move(state), clock);
 }
 
@@ -40,8 +39,8 @@ template <class Engine> Engine freshEngine(const ProtocolParameters& parameters)
     for (int i = 0; i < n; ++i)
         state[i] = {placement.positions[i], velocities[i], placement.orientations[i]};
     if (parameters.p != 1.0) {
-        const std::vector<Vector3d> spins = maxwellAngularVelocities(
-            n, SuperballShape(parameters.p).inertiaPerMass(1.0), random);
+        const std::vector<Vector3d> spins =
+            maxwellAngularVelocities(n, SuperballShape(parameters.p).inertiaPerMass(1.0), random);
         for (int i = 0; i < n; ++i)
             state[i].angularVelocity = spins[i];
     }
@@ -151,8 +150,8 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
     while (status_.phase != Phase::Done) {
         const auto start = Clock::now();
         const std::clock_t cpuStart = std::clock();
-        const RunReport report =
-            std::visit([&](auto& engine) { return engine.run(perWindow, INFINITY, stop); }, engine_);
+        const RunReport report = std::visit(
+            [&](auto& engine) { return engine.run(perWindow, INFINITY, stop); }, engine_);
         status_.collisions += report.collisions;
         status_.relists += report.relists;
         status_.staleEvents += report.staleEvents;
@@ -201,7 +200,8 @@ void JammingProtocol::finishWindow(double virial, double duration) {
 double JammingProtocol::packingFraction() const {
     return std::visit(
         [&](const auto& engine) {
-            return parameters_.particles * Superball(parameters_.p, 0.5 * engine.diameter()).volume() /
+            return parameters_.particles *
+                   Superball(parameters_.p, 0.5 * engine.diameter()).volume() /
                    std::pow(engine.boxLength(), 3);
         },
         engine_);

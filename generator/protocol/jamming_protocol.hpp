@@ -51,8 +51,8 @@ struct ProtocolStatus {
     std::uint64_t predictorEvaluations = 0; ///< exact signed distances
     std::uint64_t predictorFallbacks = 0;   ///< pair-solver derivative-free finishes
     std::uint64_t predictorLimitHits = 0;   ///< refinements that stopped at their limit
-    double wallSeconds = 0.0; ///< summed over the run and every resumed part
-    double cpuSeconds = 0.0;  ///< process CPU time, likewise (throughput on a shared machine)
+    double wallSeconds = 0.0;               ///< summed over the run and every resumed part
+    double cpuSeconds = 0.0; ///< process CPU time, likewise (throughput on a shared machine)
 };
 
 class JammingProtocol {

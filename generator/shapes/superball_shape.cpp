@@ -123,18 +123,6 @@ double SuperballShape::inertiaPerMass(double diameter) const {
     return inertiaPerMassUnit_ * 0.25 * diameter * diameter;
 }
 
-double SuperballShape::signedDistanceAt(const PairMotion& m, double tau) const {
-    Vector3d cold = Vector3d::Zero();
-    SuperballPredictorStats scratch;
-    const double diameter = m.diameter + m.growthRate * tau;
-    const SuperballPair pair{
-        Superball(p_, 0.5 * diameter),
-        advancedOrientation(m.orientationI, m.angularVelocityI, tau).toRotationMatrix(),
-        advancedOrientation(m.orientationJ, m.angularVelocityJ, tau).toRotationMatrix(),
-        m.displacement + m.relativeVelocity * tau};
-    return signedDistance(pair, cold).signedDistance;
-}
-
 Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
                                          Vector3d& normal) const {
     ++stats.calls;
@@ -143,7 +131,8 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
     if (!(horizon > 0.0)) return none;
 
     // Tier 1: the circumscribed spheres (diameter c D, growing at c gamma) meet before horizon.
-    const PairMotion spheres{m.displacement, m.relativeVelocity, {}, {}, {}, {}, c_ * D, c_ * gamma};
+    const PairMotion spheres{m.displacement, m.relativeVelocity, {}, {}, {}, {},
+                             c_ * D,         c_ * gamma};
     const double enter = m.displacement.squaredNorm() <= c_ * c_ * D * D
                              ? 0.0
                              : SphereShape{}.collisionTime(spheres);
@@ -195,10 +184,9 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
 
     // Tier 2: the cached normal's separating plane holds up to `end`.
     const double cachedGap = normal.isZero(0.0) ? 0.0 : planeGap(normal, 0.0);
-    if (cachedGap > 0.0 &&
-        (cachedGap + std::min(0.0, planeRate(normal)) * end > 0.0 ||
-         (end < kNever && std::min(cachedGap, planeGap(normal, end)) >
-                              0.125 * planeCurvature(normal) * end * end))) {
+    if (cachedGap > 0.0 && (cachedGap + std::min(0.0, planeRate(normal)) * end > 0.0 ||
+                            (end < kNever && std::min(cachedGap, planeGap(normal, end)) >
+                                                 0.125 * planeCurvature(normal) * end * end))) {
         ++stats.planeRejections;
         return none;
     }
@@ -234,9 +222,10 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
 
     // Advancement along the plane of unit n from (tau, gap), each step ending at a cheap plane
     // gap: the chord step where it certifies (up to `end`, or 0.9 of its reach sqrt(8 gap / M),
-    // then eighths of that while longer than the first-order step), else the first-order step gap / |plane rate|; until the gap drops below half of `reference`.
-    // Returns the time reached, or the prediction when the plane separates them up to `end` or
-    // the step limit is reached (a safe recheck time).
+    // then eighths of that while longer than the first-order step), else the first-order step gap /
+    // |plane rate|; until the gap drops below half of `reference`. Returns the time reached, or the
+    // prediction when the plane separates them up to `end` or the step limit is reached (a safe
+    // recheck time).
     int steps = 0;
     Prediction atEnd = none; // what reaching `end` means: no contact, or a known one there
     auto alongPlane = [&](const Vector3d& n, double tau, double gap,
@@ -298,7 +287,8 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
                     const Sample root = refine(now, trial);
                     if (root.gap > touching) return {root.tau, false}; // refinement stalled
                     const double dt = root.tau - now.tau;
-                    if (planeGap(root.normal, now.tau) > 0.5 * planeCurvature(root.normal) * dt * dt)
+                    if (planeGap(root.normal, now.tau) >
+                        0.5 * planeCurvature(root.normal) * dt * dt)
                         return {root.tau};
                     ++stats.uncertifiedRoots;
                     end = root.tau;

@@ -9,11 +9,17 @@
 // plus growth (envelope theorem), with |x_k| <= c R and x_k . n = h_k >= c_in R,
 //   g_n(tau) >= g_n(0) + tau [n.w - (|n x omega_i| + |n x omega_j|) R(tau) sqrt(c^2 - c_in^2)
 //                             - c gamma].
+// Also g_n'' <= M_n = sum_k |n x omega_k| (c gamma + c R |omega_k|) (support functions are
+// convex), so g_n lies above its chord minus M_n (t - t0)(t1 - t) / 2: one plane gap at t1
+// certifies [t0, t1] (the chord step), however fast the first-order bound says s could fall.
 // Tiers, cheapest first: the circumscribed spheres do not meet before the horizon; the cached
-// normal's plane stays separating up to it; conservative advancement on exact s with that plane
-// bound as the step, Newton steps in time near contact kept only when they bracket the root, and
-// a safeguarded Newton refinement of the bracket. A prediction that reaches its step limit returns a safe
-// time up to which nothing touches (Prediction::contact = false) instead of guessing.
+// normal's plane separates up to it; conservative advancement on planes (first-order and chord
+// steps on cheap plane gaps), refreshed by exact signed distances (warm Newton on the sphere,
+// the robust pair solver as fallback); near contact a Newton step in time that brackets the
+// root, a safeguarded Newton refinement, and the root accepted as the first only when the root
+// normal's plane certifies the interval before it. A prediction that reaches its step limit
+// returns a safe time up to which nothing touches (Prediction::contact = false) instead of
+// guessing.
 
 #include "shapes/pair_motion.hpp"
 
@@ -70,9 +76,6 @@ class SuperballShape {
     /// Contact of touching bodies now: normal from i to j, arms to the midpoint of the two
     /// support points (the same point for both, so impulses conserve angular momentum).
     PairContact contact(const PairMotion& m, Vector3d& normal) const;
-
-    /// Signed distance of the pair advanced by tau along its motion (cold start, for tests).
-    double signedDistanceAt(const PairMotion& m, double tau) const;
 
     SuperballPredictorLimits limits{};
     /// Counters; mutable because prediction is logically const.

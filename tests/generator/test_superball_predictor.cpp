@@ -55,7 +55,8 @@ double relativeGapAt(double p, const PairMotion& m, double tau) {
 /// |d + w tau| = ratio (D + gamma tau), a tau^2 + 2 b tau + c = 0 (the exact sphere case).
 double ballsMeet(const PairMotion& m, double ratio) {
     const double a = m.relativeVelocity.squaredNorm() - std::pow(ratio * m.growthRate, 2);
-    const double b = m.displacement.dot(m.relativeVelocity) - ratio * ratio * m.diameter * m.growthRate;
+    const double b =
+        m.displacement.dot(m.relativeVelocity) - ratio * ratio * m.diameter * m.growthRate;
     const double c = m.displacement.squaredNorm() - std::pow(ratio * m.diameter, 2);
     if (c <= 0.0) return 0.0;
     const double discriminant = b * b - a * c;
@@ -148,9 +149,9 @@ class BruteForce {
 /// The engine's loop over one pair: predict; at a safe recheck time (contact == false) predict
 /// again from there with the same cached normal; until a contact or none up to the horizon.
 struct EnginePrediction {
-    double time = kNever;              ///< the contact, +inf if none
-    std::vector<double> recheckTimes;  ///< the safe times on the way
-    bool finished = false;             ///< within the bounded number of rounds
+    double time = kNever;             ///< the contact, +inf if none
+    std::vector<double> recheckTimes; ///< the safe times on the way
+    bool finished = false;            ///< within the bounded number of rounds
 };
 
 EnginePrediction predictLikeTheEngine(const SuperballShape& shape, const PairMotion& m,
@@ -175,8 +176,9 @@ EnginePrediction predictLikeTheEngine(const SuperballShape& shape, const PairMot
 
 /// Spins of the three families: none, slow (|omega| < 2) and fast (5 < |omega| < 20), D = 1.
 Vector3d randomSpin(Random& random, int family) {
-    const double size = family == 0 ? 0.0 : family == 1 ? 2.0 * random.uniform()
-                                                        : 5.0 + 15.0 * random.uniform();
+    const double size = family == 0   ? 0.0
+                        : family == 1 ? 2.0 * random.uniform()
+                                      : 5.0 + 15.0 * random.uniform();
     return size * random.normalVector().normalized();
 }
 
@@ -254,8 +256,8 @@ void printStats(double p, const SuperballPredictorStats& s) {
                 "%ld start overlaps\n",
                 p, s.calls, s.sphereRejections, s.planeRejections, s.evaluations,
                 s.robustEvaluations, s.planeSteps, s.chordSteps, s.newtonBrackets,
-                s.uncertifiedRoots, s.refinementSteps, s.rechecks, s.limitHits,
-                s.distanceFallbacks, s.startOverlaps);
+                s.uncertifiedRoots, s.refinementSteps, s.rechecks, s.limitHits, s.distanceFallbacks,
+                s.startOverlaps);
 }
 
 /// One ctest case: `pairs` pairs of exponent p from the shard's own seed.
@@ -319,9 +321,9 @@ TEST_P(SuperballPredictorByP, NeverMissesAndAgreesWithBruteForce) {
         Vector3d normal = Vector3d::Zero();
         for (const char* start : {"cold", "warm"}) {
             const EnginePrediction predicted = predictLikeTheEngine(shape, m, horizon, normal);
-            const std::string where = "p " + number(p) + " #" + std::to_string(trial) +
-                                      " (" + start + " normal), brute " + number(first) +
-                                      ", predicted " + number(predicted.time);
+            const std::string where = "p " + number(p) + " #" + std::to_string(trial) + " (" +
+                                      start + " normal), brute " + number(first) + ", predicted " +
+                                      number(predicted.time);
             ASSERT_TRUE(predicted.finished) << where;
             recheckRounds += static_cast<int>(predicted.recheckTimes.size());
             // A safe recheck time is never later than the first contact.
@@ -366,18 +368,19 @@ TEST_P(SuperballPredictorByP, NeverMissesAndAgreesWithBruteForce) {
             bool witnessed = false;
             for (double delta = 1e-12; delta <= 1e-7 && !witnessed; delta *= 10.0) {
                 const double tau = predicted.time + delta * (1.0 + predicted.time);
-                witnessed = tau < first - 1e-9 &&
-                            scaleFactor(pairAt(p, m, tau)).scaleFactor <= 1.0;
+                witnessed = tau < first - 1e-9 && scaleFactor(pairAt(p, m, tau)).scaleFactor <= 1.0;
             }
-            EXPECT_TRUE(witnessed) << "a contact the brute force does not see: " << where << ", s " << touching << " D";
+            EXPECT_TRUE(witnessed) << "a contact the brute force does not see: " << where << ", s "
+                                   << touching << " D";
             thinContacts += start[0] == 'c';
         }
     }
-    std::printf("p %5.2f: %d pairs (%d grazing, %d of them touching), %d brute-force contacts, "
-                "%d agree to 1e-9, %d within the touching gap (shallow), %d flat, %d thinner than the "
-                "grid, %d recheck rounds; brute force %ld evaluations\n",
-                p, pairs, grazes, grazesTouching, bruteContacts, agreed, shallow, flat, thinContacts,
-                recheckRounds, bruteEvaluations);
+    std::printf(
+        "p %5.2f: %d pairs (%d grazing, %d of them touching), %d brute-force contacts, "
+        "%d agree to 1e-9, %d within the touching gap (shallow), %d flat, %d thinner than the "
+        "grid, %d recheck rounds; brute force %ld evaluations\n",
+        p, pairs, grazes, grazesTouching, bruteContacts, agreed, shallow, flat, thinContacts,
+        recheckRounds, bruteEvaluations);
     printStats(p, shape.stats);
     EXPECT_GT(bruteContacts, pairs / 4);
     EXPECT_GE(agreed + shallow + flat, bruteContacts - thinContacts);
