@@ -23,27 +23,36 @@ struct Sample {
     Vector3d normal = Vector3d::Zero();
 };
 
-/// s at a warm normal by plain Newton steps on the unit sphere, f(n) = n.d - h_i(n) - h_j(n)
-/// being concave about its maximum near contact (DESIGN.md §2); the tangent Hessian of -f is
-/// P^T (d2h_i + d2h_j) P + f I. Empty when a step does not ascend, the Hessian is not positive
-/// definite or it takes more than a few steps: the robust pair solver takes over then.
+/// s at a warm normal by Newton steps on the unit sphere with backtracking, f(n) = n.d - h_i(n) -
+/// h_j(n) being concave about its maximum near contact (DESIGN.md §2); the tangent Hessian of -f
+/// is P^T (d2h_i + d2h_j) P + f I. Empty when an eighth of a step still does not ascend, the
+/// Hessian is not positive definite or it takes more than a few steps: the robust pair solver
+/// takes over then.
 std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pair, Vector3d n) {
     const Matrix3d& qi = pair.rotationA;
     const Matrix3d& qj = pair.rotationB;
     const Vector3d& d = pair.displacement;
-    double previous = -kNever;
-    for (int iteration = 0; iteration < 6; ++iteration) {
-        const Superball::SupportJet ji = pair.shape.supportJet(qi.transpose() * n);
-        const Superball::SupportJet jj = pair.shape.supportJet(qj.transpose() * n);
-        const Vector3d xi = qi * ji.point, xj = qj * jj.point;
-        const double f = n.dot(d) - ji.value - jj.value;
-        if (!(f >= previous - 1e-15 * pair.shape.diameter())) return std::nullopt;
-        const Eigen::Matrix<double, 3, 2> basis = tangentBasis(n);
+    const double size = pair.shape.diameter();
+    struct Point {
+        Vector3d n;
+        Superball::SupportJet ji, jj;
+        double f;
+    };
+    auto at = [&](const Vector3d& normal) {
+        Point point{normal, pair.shape.supportJet(qi.transpose() * normal),
+                    pair.shape.supportJet(qj.transpose() * normal), 0.0};
+        point.f = normal.dot(d) - point.ji.value - point.jj.value;
+        return point;
+    };
+    Point now = at(n);
+    for (int iteration = 0; iteration < 8; ++iteration) {
+        const Vector3d xi = qi * now.ji.point, xj = qj * now.jj.point;
+        const Eigen::Matrix<double, 3, 2> basis = tangentBasis(now.n);
         const Eigen::Vector2d gradient = basis.transpose() * (d - xi - xj);
         Eigen::Matrix2d hessian =
             basis.transpose() *
-            (qi * ji.hessian * qi.transpose() + qj * jj.hessian * qj.transpose()) * basis;
-        hessian.diagonal().array() += f;
+            (qi * now.ji.hessian * qi.transpose() + qj * now.jj.hessian * qj.transpose()) * basis;
+        hessian.diagonal().array() += now.f;
         const double det = hessian(0, 0) * hessian(1, 1) - hessian(0, 1) * hessian(1, 0);
         if (!(hessian(0, 0) > 0.0 && det > 0.0)) return std::nullopt;
         const Eigen::Vector2d step(
@@ -52,18 +61,23 @@ std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pa
         // Converged when the tangent gradient vanishes (a step alone can be tiny under the
         // clamped, huge Hessians of flat faces) and the predicted ascent g . step is at
         // rounding level: f(n) is a lower bound on s, accurate to ~1e-17 D then.
-        const double size = pair.shape.diameter();
         if (gradient.norm() <= 1e-9 * size && gradient.dot(step) <= 1e-17 * size) {
             SignedDistanceResult r;
-            r.signedDistance = f;
-            r.normal = n;
+            r.signedDistance = now.f;
+            r.normal = now.n;
             r.contactA = xi;
             r.contactB = d - xj;
             r.iterations = iteration + 1;
             return r;
         }
-        n = (n + basis * step).normalized();
-        previous = f;
+        // Backtracking: halve the step until f does not decrease (beyond rounding).
+        bool ascended = false;
+        for (double t = 1.0; t >= 0.125 && !ascended; t *= 0.5) {
+            const Point next = at((now.n + basis * (t * step)).normalized());
+            ascended = next.f >= now.f - 1e-15 * size;
+            if (ascended) now = next;
+        }
+        if (!ascended) return std::nullopt;
     }
     return std::nullopt;
 }
