@@ -82,11 +82,12 @@ std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pa
     return std::nullopt;
 }
 
-/// s of the pair from its cached normal (updated): warm Newton, else the robust solver.
+/// s of the pair from its cached normal (updated), or from the centre line when there is none
+/// (f has one maximum for s >= 0): Newton, else the robust solver.
 SignedDistanceResult exactSignedDistance(const SuperballPair& pair, Vector3d& normal,
                                          SuperballPredictorStats& stats) {
-    std::optional<SignedDistanceResult> fast;
-    if (!normal.isZero(0.0)) fast = newtonSignedDistance(pair, normal);
+    const std::optional<SignedDistanceResult> fast = newtonSignedDistance(
+        pair, normal.isZero(0.0) ? pair.displacement.normalized() : normal);
     if (!fast) ++stats.robustEvaluations;
     const SignedDistanceResult r = fast ? *fast : signedDistanceFrom(pair, normal);
     stats.distanceFallbacks += r.fallbacks;
