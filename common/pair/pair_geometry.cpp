@@ -408,18 +408,5 @@ SignedDistanceResult signedDistance(const SuperballPair& pair, const Vector3d& w
     return result;
 }
 
-SignedDistanceResult signedDistanceFrom(const SuperballPair& pair, const Vector3d& normal,
-                                        const PairTolerances& tolerances) {
-    if (normal.isZero(0.0) || pair.shape.isSphere() || pair.shape.isOctahedron())
-        return signedDistance(pair, normal, tolerances);
-    SignedDistanceResult result;
-    result.normal = normal;
-    const MinkowskiSum k(pair);
-    generalSignedDistance(k, tolerances, result);
-    result.contactA = k.supportPointA(result.normal);
-    result.contactB = pair.displacement - k.supportPointB(result.normal);
-    result.evaluations = k.evaluations;
-    return result;
-}
 
 } // namespace sbpack

@@ -72,10 +72,4 @@ SignedDistanceResult signedDistance(const SuperballPair& pair,
                                     const Vector3d& warmNormal = Vector3d::Zero(),
                                     const PairTolerances& tolerances = {});
 
-/// The same, ascending from `normal` (a unit normal of this pair a moment ago) without solving
-/// for mu first: the event-driven predictor's evaluation near contact, where f is concave about
-/// its maximum. scaleFactor is left 0. Falls back to signedDistance() for a zero normal.
-SignedDistanceResult signedDistanceFrom(const SuperballPair& pair, const Vector3d& normal,
-                                        const PairTolerances& tolerances = {});
-
 } // namespace sbpack

@@ -4,6 +4,7 @@
 #include "initial/random_start.hpp"
 #include "version.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -175,7 +176,10 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
 
 void JammingProtocol::finishWindow(double virial, double duration) {
     // The window started at kT = 1 (rescaled); average with its end for the virial (DESIGN.md §3).
-    // The virial theorem's kT is the translational one.
+    // The virial theorem's kT is the translational one. A phase ends when two windows in a row
+    // reach its pressure: one window's estimate spikes when a cluster of rotating near-cubes
+    // chatters through its collision budget in almost no time.
+    const double previous = status_.reducedPressure;
     std::visit(
         [&](auto& engine) {
             const double kTEnd = engine.kineticTemperature();
@@ -184,15 +188,16 @@ void JammingProtocol::finishWindow(double virial, double duration) {
             engine.scaleVelocities(1.0 / std::sqrt(kTEnd));
             const double kTRotation = engine.rotationalTemperature();
             if (kTRotation > 0.0) engine.scaleAngularVelocities(1.0 / std::sqrt(kTRotation));
-            if (status_.phase == Phase::Fast &&
-                status_.reducedPressure >= parameters_.pressureSwitch) {
+            const double sustained = std::min(previous, status_.reducedPressure);
+            if (status_.phase == Phase::Fast && sustained >= parameters_.pressureSwitch) {
                 status_.phase = Phase::Slow;
                 engine.setGrowthRate(parameters_.gammaSlow);
             }
         },
         engine_);
     ++status_.windows;
-    if (status_.phase == Phase::Slow && status_.reducedPressure >= parameters_.pressureFinal)
+    if (status_.phase == Phase::Slow &&
+        std::min(previous, status_.reducedPressure) >= parameters_.pressureFinal)
         status_.phase = Phase::Done;
     status_.packingFraction = packingFraction();
 }

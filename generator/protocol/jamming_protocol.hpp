@@ -1,6 +1,7 @@
 #pragma once
 // The DTS jamming protocol (paper Sec. III A, DESIGN.md §3): grow fast (gamma_fast) until the
-// reduced pressure reaches pressureSwitch, then slowly (gamma_slow) until pressureFinal. Work
+// reduced pressure reaches pressureSwitch, then slowly (gamma_slow) until pressureFinal (each in
+// two windows in a row, so one window's spike does not end a phase). Work
 // proceeds in windows of `collisionsPerWindow * N` collisions; after each window the collision
 // virial gives the reduced pressure, velocities are rescaled to kT = 1, and the whole state is
 // synchronised, so it can be checkpointed and resumed bit for bit. Spheres (p = 1) run on the

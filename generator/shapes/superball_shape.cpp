@@ -86,10 +86,14 @@ std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pa
 /// (f has one maximum for s >= 0): Newton, else the robust solver.
 SignedDistanceResult exactSignedDistance(const SuperballPair& pair, Vector3d& normal,
                                          SuperballPredictorStats& stats) {
-    const std::optional<SignedDistanceResult> fast = newtonSignedDistance(
-        pair, normal.isZero(0.0) ? pair.displacement.normalized() : normal);
+    std::optional<SignedDistanceResult> fast =
+        newtonSignedDistance(pair, normal.isZero(0.0) ? pair.displacement.normalized() : normal);
+    // A positive local maximum of f is the global one (f(u) - c |u| is concave for c > 0), but
+    // Newton from a stale normal can end on a negative local maximum: an overlap the engine
+    // never has, so the robust solver decides.
+    if (fast && fast->signedDistance < -1e-12 * pair.shape.diameter()) fast.reset();
     if (!fast) ++stats.robustEvaluations;
-    const SignedDistanceResult r = fast ? *fast : signedDistanceFrom(pair, normal);
+    const SignedDistanceResult r = fast ? *fast : signedDistance(pair, normal);
     stats.distanceFallbacks += r.fallbacks;
     normal = r.normal;
     return r;
@@ -112,8 +116,10 @@ class PairTrajectory {
             advancedOrientation(m_.orientationJ, m_.angularVelocityJ, tau).toRotationMatrix(), d};
         const SignedDistanceResult r = exactSignedDistance(pair, normal_, stats_);
         // ds/dtau by the envelope theorem: the closing speed along n of the two support points,
-        // each moving at omega x x + (gamma / D) x about its own centre.
-        const Vector3d xI = r.contactA, xJ = r.contactB - d;
+        // each moving at omega x x + (gamma / D) x about its own centre; taken at their midpoint,
+        // the point where the resolver applies the impulse, so that "closing" means the same to
+        // both (on near-flat faces the support points can lie far apart on the face).
+        const Vector3d xI = 0.5 * (r.contactA + r.contactB), xJ = xI - d;
         const double strain = m_.growthRate / diameter;
         const Vector3d vI = m_.angularVelocityI.cross(xI) + strain * xI;
         const Vector3d vJ = m_.angularVelocityJ.cross(xJ) + strain * xJ;
