@@ -4,6 +4,8 @@
 # 10 to 1e8 (each capped at EXTREME_SECONDS). Prints markdown tables: phi against the paper, Z,
 # phi_R, the worst pair gap from the exact pair geometry (common/pair, independent of the
 # predictor), throughput per CPU second and the predictor's work.
+# Several copies may run at once over the same WORK_DIR (one per core): each run is claimed by
+# a lock directory before it starts.
 # usage: bench/jamming_superballs.sh [BUILD_DIR] [WORK_DIR] [SEEDS] [P VALUES]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -11,17 +13,18 @@ build=${1:-$root/build} work=${2:-/tmp/sbpack-jamming-superballs}
 seeds=${3:-"1 2 3"} exponents=${4:-"0.85 0.9 1.1 1.2 1.5"}
 extreme_seconds=${EXTREME_SECONDS:-900}
 mkdir -p "$work"
+claim() { [ ! -f "$1" ] && mkdir "$1.claim" 2> /dev/null; }
 for seed in $seeds; do
     for p in $exponents; do
         out="$work/mrj-p$p-s$seed.h5"
-        [ -f "$out" ] || "$build/generator/sbgen" --n 1000 --p "$p" --seed "$seed" \
+        claim "$out" && "$build/generator/sbgen" --n 1000 --p "$p" --seed "$seed" \
             --gamma-slow 1e-2 --out "$out" 2> "$work/mrj-p$p-s$seed.log"
     done
 done
 for p in 0.55 0.7 3 5 10; do
     out="$work/extreme-p$p.h5"
-    [ -f "$out" ] || timeout -s TERM "$extreme_seconds" "$build/generator/sbgen" --n 200 --p "$p" \
+    claim "$out" && { timeout -s TERM "$extreme_seconds" "$build/generator/sbgen" --n 200 --p "$p" \
         --seed 1 --gamma-slow 1e-2 --pressure-final 1e8 --out "$out" \
-        2> "$work/extreme-p$p.log" || true
+        2> "$work/extreme-p$p.log" || true; }
 done
 /usr/bin/python3 "$root/bench/jamming_superball_summary.py" "$work"

@@ -114,10 +114,8 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
     status_.relists = counterValue(packing, "relists", source);
     status_.staleEvents = counterValue(packing, "stale_events", source);
     status_.rechecks = optionalCounter(packing, "rechecks", source);
-    status_.predictorCalls = optionalCounter(packing, "predictor_calls", source);
-    status_.predictorEvaluations = optionalCounter(packing, "predictor_evaluations", source);
-    status_.predictorFallbacks = optionalCounter(packing, "predictor_fallbacks", source);
-    status_.predictorLimitHits = optionalCounter(packing, "predictor_limit_hits", source);
+    for (const auto& [name, counter] : SuperballPredictorStats::kCounters)
+        status_.predictor.*counter = static_cast<long>(optionalCounter(packing, name, source));
     status_.windows = counterValue(packing, "windows", source);
     status_.wallSeconds = stateValue<double>(packing, "wall_time_s", source);
     if (packing.provenance.count("cpu_time_s") != 0)
@@ -158,12 +156,8 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
         status_.staleEvents += report.staleEvents;
         status_.rechecks += report.rechecks;
         if (auto* superballs = std::get_if<EventDrivenMd<SuperballShape>>(&engine_)) {
-            SuperballPredictorStats& stats = superballs->shape().stats;
-            status_.predictorCalls += stats.calls;
-            status_.predictorEvaluations += stats.evaluations;
-            status_.predictorFallbacks += stats.distanceFallbacks;
-            status_.predictorLimitHits += stats.limitHits;
-            stats = {};
+            status_.predictor += superballs->shape().stats;
+            superballs->shape().stats = {};
         }
         status_.wallSeconds += std::chrono::duration<double>(Clock::now() - start).count();
         status_.cpuSeconds += static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
@@ -248,10 +242,9 @@ Packing JammingProtocol::checkpoint() const {
     log["rechecks"] = static_cast<std::int64_t>(status_.rechecks);
     log["events"] = static_cast<std::int64_t>(status_.collisions + status_.relists +
                                               status_.staleEvents + status_.rechecks);
-    log["predictor_calls"] = static_cast<std::int64_t>(status_.predictorCalls);
-    log["predictor_evaluations"] = static_cast<std::int64_t>(status_.predictorEvaluations);
-    log["predictor_fallbacks"] = static_cast<std::int64_t>(status_.predictorFallbacks);
-    log["predictor_limit_hits"] = static_cast<std::int64_t>(status_.predictorLimitHits);
+    if (parameters_.p != 1.0)
+        for (const auto& [name, counter] : SuperballPredictorStats::kCounters)
+            log[name] = static_cast<std::int64_t>(status_.predictor.*counter);
     log["windows"] = static_cast<std::int64_t>(status_.windows);
     log["wall_time_s"] = status_.wallSeconds;
     log["cpu_time_s"] = status_.cpuSeconds;

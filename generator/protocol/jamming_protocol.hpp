@@ -47,12 +47,8 @@ struct ProtocolStatus {
     std::uint64_t staleEvents = 0;
     std::uint64_t rechecks = 0; ///< superball predictions that stopped at a safe time
     std::uint64_t windows = 0;
-    /// Superball predictor work (SuperballPredictorStats), summed over the run.
-    std::uint64_t predictorCalls = 0;
-    std::uint64_t predictorEvaluations = 0; ///< exact signed distances
-    std::uint64_t predictorFallbacks = 0;   ///< pair-solver derivative-free finishes
-    std::uint64_t predictorLimitHits = 0;   ///< refinements that stopped at their limit
-    double wallSeconds = 0.0;               ///< summed over the run and every resumed part
+    SuperballPredictorStats predictor; ///< the superball predictor's work, summed over the run
+    double wallSeconds = 0.0;          ///< summed over the run and every resumed part
     double cpuSeconds = 0.0; ///< process CPU time, likewise (throughput on a shared machine)
 };
 

@@ -23,6 +23,8 @@
 
 #include "shapes/pair_motion.hpp"
 
+#include <utility>
+
 namespace sbpack {
 
 /// Tolerances and limits of the superball predictor, in one place.
@@ -53,6 +55,29 @@ struct SuperballPredictorStats {
     long rechecks = 0;          ///< step limit reached: a safe recheck time instead of a contact
     long limitHits = 0;         ///< refinement limit reached: the bracket's safe end returned
     long startOverlaps = 0;     ///< s(0) < -contactGap D (never in a valid packing)
+
+    /// Each counter with its provenance name (the names of earlier files kept).
+    static constexpr std::pair<const char*, long SuperballPredictorStats::*> kCounters[] = {
+        {"predictor_calls", &SuperballPredictorStats::calls},
+        {"predictor_sphere_rejections", &SuperballPredictorStats::sphereRejections},
+        {"predictor_plane_rejections", &SuperballPredictorStats::planeRejections},
+        {"predictor_evaluations", &SuperballPredictorStats::evaluations},
+        {"predictor_robust_evaluations", &SuperballPredictorStats::robustEvaluations},
+        {"predictor_plane_steps", &SuperballPredictorStats::planeSteps},
+        {"predictor_chord_steps", &SuperballPredictorStats::chordSteps},
+        {"predictor_newton_brackets", &SuperballPredictorStats::newtonBrackets},
+        {"predictor_uncertified_roots", &SuperballPredictorStats::uncertifiedRoots},
+        {"predictor_refinement_steps", &SuperballPredictorStats::refinementSteps},
+        {"predictor_fallbacks", &SuperballPredictorStats::distanceFallbacks},
+        {"predictor_rechecks", &SuperballPredictorStats::rechecks},
+        {"predictor_limit_hits", &SuperballPredictorStats::limitHits},
+        {"predictor_start_overlaps", &SuperballPredictorStats::startOverlaps},
+    };
+    SuperballPredictorStats& operator+=(const SuperballPredictorStats& other) {
+        for (const auto& [name, counter] : kCounters)
+            this->*counter += other.*counter;
+        return *this;
+    }
 };
 
 class SuperballShape {
