@@ -26,9 +26,10 @@ struct Sample {
 /// s at a warm normal by Newton steps on the unit sphere with backtracking, f(n) = n.d - h_i(n) -
 /// h_j(n) being concave about its maximum near contact (DESIGN.md §2); the tangent Hessian of -f
 /// is P^T (d2h_i + d2h_j) P + f I. Empty when an eighth of a step still does not ascend, the
-/// Hessian is not positive definite or it takes more than a few steps: the robust pair solver
-/// takes over then.
-std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pair, Vector3d n) {
+/// Hessian is not positive definite or it takes more than `maxSteps` steps (slow near face
+/// normals of p > 1, where the Hessian diverges): the robust pair solver takes over then.
+std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pair, Vector3d n,
+                                                         int maxSteps) {
     const Matrix3d& qi = pair.rotationA;
     const Matrix3d& qj = pair.rotationB;
     const Vector3d& d = pair.displacement;
@@ -45,7 +46,7 @@ std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pa
         return point;
     };
     Point now = at(n);
-    for (int iteration = 0; iteration < 8; ++iteration) {
+    for (int iteration = 0; iteration < maxSteps; ++iteration) {
         const Vector3d xi = qi * now.ji.point, xj = qj * now.jj.point;
         const Eigen::Matrix<double, 3, 2> basis = tangentBasis(now.n);
         const Eigen::Vector2d gradient = basis.transpose() * (d - xi - xj);
@@ -82,16 +83,27 @@ std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pa
     return std::nullopt;
 }
 
+/// Whether the point x (relative to r_A) lies strictly inside both bodies of the pair.
+bool insideBoth(const SuperballPair& pair, const Vector3d& x) {
+    constexpr double kInside = 1.0 - 1e-14;
+    return pair.shape.gauge(pair.rotationA.transpose() * x) < kInside &&
+           pair.shape.gauge(pair.rotationB.transpose() * (x - pair.displacement)) < kInside;
+}
+
 /// s of the pair from its cached normal (updated), or from the centre line when there is none
 /// (f has one maximum for s >= 0): Newton, else the robust solver.
 SignedDistanceResult exactSignedDistance(const SuperballPair& pair, Vector3d& normal,
+                                         const SuperballPredictorLimits& limits,
                                          SuperballPredictorStats& stats) {
-    std::optional<SignedDistanceResult> fast =
-        newtonSignedDistance(pair, normal.isZero(0.0) ? pair.displacement.normalized() : normal);
+    std::optional<SignedDistanceResult> fast = newtonSignedDistance(
+        pair, normal.isZero(0.0) ? pair.displacement.normalized() : normal, limits.newtonSteps);
     // A positive local maximum of f is the global one (f(u) - c |u| is concave for c > 0), but
-    // Newton from a stale normal can end on a negative local maximum: an overlap the engine
-    // never has, so the robust solver decides.
-    if (fast && fast->signedDistance < -1e-12 * pair.shape.diameter()) fast.reset();
+    // Newton from a stale normal can end on a negative local maximum while the bodies are apart.
+    // It stands (a lower bound on s, as the robust solver's own answer for overlaps) when a
+    // witness certifies the overlap: the midpoint of the two support points inside both bodies.
+    if (fast && fast->signedDistance < -1e-12 * pair.shape.diameter() &&
+        !insideBoth(pair, 0.5 * (fast->contactA + fast->contactB)))
+        fast.reset();
     if (!fast) ++stats.robustEvaluations;
     const SignedDistanceResult r = fast ? *fast : signedDistance(pair, normal);
     stats.distanceFallbacks += r.fallbacks;
@@ -103,8 +115,9 @@ SignedDistanceResult exactSignedDistance(const SuperballPair& pair, Vector3d& no
 /// normal (the pair's cached one at first).
 class PairTrajectory {
   public:
-    PairTrajectory(const PairMotion& m, double p, Vector3d& normal, SuperballPredictorStats& stats)
-        : m_(m), p_(p), normal_(normal), stats_(stats) {}
+    PairTrajectory(const PairMotion& m, double p, Vector3d& normal,
+                   const SuperballPredictorLimits& limits, SuperballPredictorStats& stats)
+        : m_(m), p_(p), normal_(normal), limits_(limits), stats_(stats) {}
 
     Sample at(double tau) {
         ++stats_.evaluations;
@@ -114,7 +127,7 @@ class PairTrajectory {
             Superball(p_, 0.5 * diameter),
             advancedOrientation(m_.orientationI, m_.angularVelocityI, tau).toRotationMatrix(),
             advancedOrientation(m_.orientationJ, m_.angularVelocityJ, tau).toRotationMatrix(), d};
-        const SignedDistanceResult r = exactSignedDistance(pair, normal_, stats_);
+        const SignedDistanceResult r = exactSignedDistance(pair, normal_, limits_, stats_);
         // ds/dtau by the envelope theorem: the closing speed along n of the two support points,
         // each moving at omega x x + (gamma / D) x about its own centre; taken at their midpoint,
         // the point where the resolver applies the impulse, so that "closing" means the same to
@@ -130,6 +143,7 @@ class PairTrajectory {
     const PairMotion& m_;
     double p_;
     Vector3d& normal_;
+    const SuperballPredictorLimits& limits_;
     SuperballPredictorStats& stats_;
 };
 
@@ -203,8 +217,10 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
                body.support(qj.toRotationMatrix().transpose() * n);
     };
 
-    // Tier 2: the cached normal's separating plane holds up to `end`.
-    const double cachedGap = normal.isZero(0.0) ? 0.0 : planeGap(normal, 0.0);
+    // Tier 2: the cached normal's separating plane holds up to `end`; a pair without one (after
+    // a rebuild) tries the centre line's plane.
+    if (normal.isZero(0.0)) normal = m.displacement.normalized();
+    const double cachedGap = planeGap(normal, 0.0);
     if (cachedGap > 0.0 && (cachedGap + std::min(0.0, planeRate(normal)) * end > 0.0 ||
                             (end < kNever && std::min(cachedGap, planeGap(normal, end)) >
                                                  0.125 * planeCurvature(normal) * end * end))) {
@@ -213,7 +229,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
     }
 
     // Tier 3: conservative advancement on exact s.
-    PairTrajectory trajectory(m, p_, normal, stats);
+    PairTrajectory trajectory(m, p_, normal, limits, stats);
     const double touching = limits.contactGap * D, near = limits.nearGap * D;
 
     // Safeguarded Newton on s over a bracket gap(left) > 0 >= gap(right): the Newton step from
@@ -331,7 +347,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
 PairContact SuperballShape::contact(const PairMotion& m, Vector3d& normal) const {
     const SuperballPair pair{Superball(p_, 0.5 * m.diameter), m.orientationI.toRotationMatrix(),
                              m.orientationJ.toRotationMatrix(), m.displacement};
-    const SignedDistanceResult r = exactSignedDistance(pair, normal, stats);
+    const SignedDistanceResult r = exactSignedDistance(pair, normal, limits, stats);
     const Vector3d armI = 0.5 * (r.contactA + r.contactB);
     return {r.normal, armI, armI - m.displacement, m.displacement.norm()};
 }

@@ -35,6 +35,9 @@ struct SuperballPredictorLimits {
     double nearGap = 1e-3;
     /// Advancement steps before the prediction settles for a safe recheck time.
     int maxAdvancementSteps = 100;
+    /// Warm Newton steps of an exact signed distance before the robust pair solver takes over
+    /// (32: at p = 1.5 one exact evaluation in 170 needs it, against one in 37 with 8).
+    int newtonSteps = 32;
     /// Evaluations of the bracketed refinement before it settles for the bracket's safe end.
     int maxRefinementSteps = 100;
 };
