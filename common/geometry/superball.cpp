@@ -18,6 +18,13 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // systems of the pair solver far from overflow.
 constexpr double kHessianRatioFloor = 1e-100;
 
+/// y^e for 0 < y <= 1 (or a sum in [1, 3]) as exp2(e log2 y): about 1e-16 relative where it
+/// matters (y^e |log2 y^e| <= 0.53, so the absolute error of a sum of such terms stays at
+/// rounding), and two to three times cheaper than std::pow, the predictor's inner loop.
+double power(double y, double e) {
+    return std::exp2(e * std::log2(y));
+}
+
 /// ||u||_e for 1 <= e <= inf, normalised by max |u_i| before any power (no overflow).
 double lpNorm(const Vector3d& u, double e) {
     const double m = u.cwiseAbs().maxCoeff();
@@ -25,9 +32,9 @@ double lpNorm(const Vector3d& u, double e) {
     double sum = 0.0;
     for (int i = 0; i < 3; ++i) {
         const double y = std::abs(u[i]) / m;
-        sum += y == 1.0 ? 1.0 : std::pow(y, e); // the largest is 1: one power fewer
+        sum += y == 1.0 ? 1.0 : power(y, e); // the largest is 1: one power fewer
     }
-    return m * std::pow(sum, 1.0 / e);
+    return m * power(sum, 1.0 / e);
 }
 
 /// Tanh-sinh (double exponential) quadrature of f on [0, 1]: exact to rounding for the
@@ -127,10 +134,10 @@ Superball::SupportJet Superball::supportJet(const Vector3d& nBody) const {
     double sum = 0.0;
     for (int i = 0; i < 3; ++i) {
         y[i] = std::abs(nBody[i]) / m;
-        a[i] = y[i] == 1.0 ? 1.0 : std::pow(y[i], q_); // the largest is 1
+        a[i] = y[i] == 1.0 ? 1.0 : power(y[i], q_); // the largest is 1
         sum += a[i];
     }
-    const double norm = std::pow(sum, 1.0 / q_);
+    const double norm = power(sum, 1.0 / q_);
     Vector3d g, diagonal;
     for (int i = 0; i < 3; ++i) {
         const double ratio = y[i] / norm;

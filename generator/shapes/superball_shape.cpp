@@ -15,12 +15,28 @@ namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
 
-/// s, its exact rate ds/dtau and the normal of the pair after tau.
+/// A separating plane's gap g_n(tau) = n.d(tau) - h_i(n) - h_j(n) and its exact rate.
+struct PlaneGap {
+    double gap = 0.0;
+    double rate = 0.0;
+};
+
+/// dg_n/dtau from the two support points x_k (lab frame, about each centre) by the envelope
+/// theorem: dh_k/dtau = (gamma / D) h_k + n . (omega_k x x_k), h_k = n . x_k.
+double planeGapRate(const PairMotion& m, double diameter, const Vector3d& n, const Vector3d& xI,
+                    const Vector3d& xJ) {
+    return n.dot(m.relativeVelocity) - (m.growthRate / diameter) * n.dot(xI + xJ) -
+           n.dot(m.angularVelocityI.cross(xI)) - n.dot(m.angularVelocityJ.cross(xJ));
+}
+
+/// s, its exact rate ds/dtau and the normal of the pair after tau, with that normal's plane gap
+/// rate (ds/dtau but for where the impulse's point lies).
 struct Sample {
     double tau = 0.0;
     double gap = 0.0;
     double rate = 0.0;
     Vector3d normal = Vector3d::Zero();
+    double planeRate = 0.0;
 };
 
 /// s at a warm normal by Newton steps on the unit sphere with backtracking, f(n) = n.d - h_i(n) -
@@ -136,7 +152,8 @@ class PairTrajectory {
         const double strain = m_.growthRate / diameter;
         const Vector3d vI = m_.angularVelocityI.cross(xI) + strain * xI;
         const Vector3d vJ = m_.angularVelocityJ.cross(xJ) + strain * xJ;
-        return {tau, r.signedDistance, r.normal.dot(m_.relativeVelocity + vJ - vI), r.normal};
+        return {tau, r.signedDistance, r.normal.dot(m_.relativeVelocity + vJ - vI), r.normal,
+                planeGapRate(m_, diameter, r.normal, r.contactA, d - r.contactB)};
     }
 
   private:
@@ -207,22 +224,27 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
                n.cross(m.angularVelocityJ).norm() *
                    (c_ * growth + radiusBound * m.angularVelocityJ.norm());
     };
-    // The plane gap g_n(tau) itself: two support functions.
-    auto planeGap = [&](const Vector3d& n, double tau) {
-        const Superball body(p_, 0.5 * (D + gamma * tau));
-        const Quaterniond qi = advancedOrientation(m.orientationI, m.angularVelocityI, tau);
-        const Quaterniond qj = advancedOrientation(m.orientationJ, m.angularVelocityJ, tau);
-        return n.dot(m.displacement + m.relativeVelocity * tau) -
-               body.support(qi.toRotationMatrix().transpose() * n) -
-               body.support(qj.toRotationMatrix().transpose() * n);
+    // The plane gap g_n(tau) itself and its exact rate: two support points.
+    auto planeGap = [&](const Vector3d& n, double tau) -> PlaneGap {
+        const double diameter = D + gamma * tau;
+        const Superball body(p_, 0.5 * diameter);
+        const Matrix3d qi =
+            advancedOrientation(m.orientationI, m.angularVelocityI, tau).toRotationMatrix();
+        const Matrix3d qj =
+            advancedOrientation(m.orientationJ, m.angularVelocityJ, tau).toRotationMatrix();
+        const Vector3d xI = qi * body.supportJet(qi.transpose() * n).point;
+        const Vector3d xJ = qj * body.supportJet(qj.transpose() * n).point;
+        return {n.dot(m.displacement + m.relativeVelocity * tau - xI - xJ),
+                planeGapRate(m, diameter, n, xI, xJ)};
     };
 
     // Tier 2: the cached normal's separating plane holds up to `end`; a pair without one (after
     // a rebuild) tries the centre line's plane.
     if (normal.isZero(0.0)) normal = m.displacement.normalized();
-    const double cachedGap = planeGap(normal, 0.0);
+    const PlaneGap cached = planeGap(normal, 0.0);
+    const double cachedGap = cached.gap;
     if (cachedGap > 0.0 && (cachedGap + std::min(0.0, planeRate(normal)) * end > 0.0 ||
-                            (end < kNever && std::min(cachedGap, planeGap(normal, end)) >
+                            (end < kNever && std::min(cachedGap, planeGap(normal, end).gap) >
                                                  0.125 * planeCurvature(normal) * end * end))) {
         ++stats.planeRejections;
         return none;
@@ -265,7 +287,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
     // recheck time).
     int steps = 0;
     Prediction atEnd = none; // what reaching `end` means: no contact, or a known one there
-    auto alongPlane = [&](const Vector3d& n, double tau, double gap,
+    auto alongPlane = [&](const Vector3d& n, double tau, PlaneGap g,
                           double reference) -> std::variant<double, Prediction> {
         const double rate = planeRate(n), curvature = planeCurvature(n);
         do {
@@ -274,27 +296,34 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
                 ++stats.rechecks;
                 return Prediction{tau, false};
             }
-            const double firstOrder = std::max(gap, touching) / -rate;
-            const double chord = curvature > 0.0 ? std::sqrt(8.0 * gap / curvature) : kNever;
+            const double firstOrder = std::max(g.gap, touching) / -rate;
+            const double chord = curvature > 0.0 ? std::sqrt(8.0 * g.gap / curvature) : kNever;
+            // The first chord tried: where the plane's tangent g + r t is still k = 32 times the
+            // chord's margin M t^2 / 8, the root of (k M / 8) t^2 - r t - g (a guess from the
+            // exact rate, since g'' has no lower bound; only the chord certifies). At p = 1.5 it
+            // halves the plane gaps per collision against trying 0.9 of the chord's reach first.
+            const double margin = std::sqrt(g.rate * g.rate + 16.0 * curvature * g.gap);
+            const double likely = g.rate > 0.0 ? (g.rate + margin) / (8.0 * curvature)
+                                                : 2.0 * g.gap / (margin - g.rate);
             bool chordStep = false;
-            for (double tryStep = std::min(end - tau, 0.9 * chord);
+            for (double tryStep = std::min({end - tau, 0.9 * chord, likely});
                  tryStep > firstOrder && !chordStep; tryStep *= 0.125) {
-                const double far = planeGap(n, tau + tryStep);
+                const PlaneGap far = planeGap(n, tau + tryStep);
                 ++stats.planeSteps;
-                if (std::min(gap, far) > 0.125 * curvature * tryStep * tryStep) {
+                if (std::min(g.gap, far.gap) > 0.125 * curvature * tryStep * tryStep) {
                     ++stats.chordSteps;
                     if (tau + tryStep >= end) return atEnd;
                     tau += tryStep;
-                    gap = far;
+                    g = far;
                     chordStep = true;
                 }
             }
             if (chordStep) continue;
             tau += firstOrder;
             if (tau >= end) return atEnd;
-            gap = planeGap(n, tau);
+            g = planeGap(n, tau);
             ++stats.planeSteps;
-        } while (gap > 0.5 * reference);
+        } while (g.gap > 0.5 * reference);
         return tau;
     };
 
@@ -306,7 +335,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
     // goes on without Newton steps up to that root.
     double start = enter;
     if (cachedGap > touching) {
-        const auto reached = alongPlane(normal, 0.0, cachedGap, cachedGap);
+        const auto reached = alongPlane(normal, 0.0, cached, cachedGap);
         if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
         start = std::max(start, std::get<double>(reached));
     }
@@ -324,7 +353,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
                     const Sample root = refine(now, trial);
                     if (root.gap > touching) return {root.tau, false}; // refinement stalled
                     const double dt = root.tau - now.tau;
-                    if (planeGap(root.normal, now.tau) >
+                    if (planeGap(root.normal, now.tau).gap >
                         0.5 * planeCurvature(root.normal) * dt * dt)
                         return {root.tau};
                     ++stats.uncertifiedRoots;
@@ -333,7 +362,8 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
                 }
             }
         }
-        const auto reached = alongPlane(now.normal, now.tau, now.gap, now.gap);
+        const auto reached =
+            alongPlane(now.normal, now.tau, {now.gap, now.planeRate}, now.gap);
         if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
         const Sample previous = now;
         now = trajectory.at(std::get<double>(reached));
