@@ -39,13 +39,19 @@ struct Sample {
     double planeRate = 0.0;
 };
 
+/// Warm Newton's answer: s when converged, else its last iterate, whose f(n) is still a lower
+/// bound on s (every plane's gap is).
+struct WarmNewton {
+    SignedDistanceResult result;
+    bool converged = false;
+};
+
 /// s at a warm normal by Newton steps on the unit sphere with backtracking, f(n) = n.d - h_i(n) -
 /// h_j(n) being concave about its maximum near contact (DESIGN.md §2); the tangent Hessian of -f
-/// is P^T (d2h_i + d2h_j) P + f I. Empty when an eighth of a step still does not ascend, the
-/// Hessian is not positive definite or it takes more than `maxSteps` steps (slow near face
-/// normals of p > 1, where the Hessian diverges): the robust pair solver takes over then.
-std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pair, Vector3d n,
-                                                         int maxSteps) {
+/// is P^T (d2h_i + d2h_j) P + f I. Unconverged when an eighth of a step still does not ascend,
+/// the Hessian is not positive definite or it takes more than `maxSteps` steps (slow near face
+/// normals of p > 1, where the Hessian diverges, and most evaluations of near-cubes).
+WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n, int maxSteps) {
     const Matrix3d& qi = pair.rotationA;
     const Matrix3d& qj = pair.rotationB;
     const Vector3d& d = pair.displacement;
@@ -62,6 +68,15 @@ std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pa
         return point;
     };
     Point now = at(n);
+    auto answer = [&](int iterations, bool converged) {
+        WarmNewton w{{}, converged};
+        w.result.signedDistance = now.f;
+        w.result.normal = now.n;
+        w.result.contactA = qi * now.ji.point;
+        w.result.contactB = d - qj * now.jj.point;
+        w.result.iterations = iterations;
+        return w;
+    };
     for (int iteration = 0; iteration < maxSteps; ++iteration) {
         const Vector3d xi = qi * now.ji.point, xj = qj * now.jj.point;
         const Eigen::Matrix<double, 3, 2> basis = tangentBasis(now.n);
@@ -71,22 +86,15 @@ std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pa
             (qi * now.ji.hessian * qi.transpose() + qj * now.jj.hessian * qj.transpose()) * basis;
         hessian.diagonal().array() += now.f;
         const double det = hessian(0, 0) * hessian(1, 1) - hessian(0, 1) * hessian(1, 0);
-        if (!(hessian(0, 0) > 0.0 && det > 0.0)) return std::nullopt;
+        if (!(hessian(0, 0) > 0.0 && det > 0.0)) return answer(iteration, false);
         const Eigen::Vector2d step(
             (hessian(1, 1) * gradient[0] - hessian(0, 1) * gradient[1]) / det,
             (hessian(0, 0) * gradient[1] - hessian(1, 0) * gradient[0]) / det);
         // Converged when the tangent gradient vanishes (a step alone can be tiny under the
         // clamped, huge Hessians of flat faces) and the predicted ascent g . step is at
         // rounding level: f(n) is a lower bound on s, accurate to ~1e-17 D then.
-        if (gradient.norm() <= 1e-9 * size && gradient.dot(step) <= 1e-17 * size) {
-            SignedDistanceResult r;
-            r.signedDistance = now.f;
-            r.normal = now.n;
-            r.contactA = xi;
-            r.contactB = d - xj;
-            r.iterations = iteration + 1;
-            return r;
-        }
+        if (gradient.norm() <= 1e-9 * size && gradient.dot(step) <= 1e-17 * size)
+            return answer(iteration + 1, true);
         // Backtracking: halve the step until f does not decrease (beyond rounding).
         bool ascended = false;
         for (double t = 1.0; t >= 0.125 && !ascended; t *= 0.5) {
@@ -94,9 +102,9 @@ std::optional<SignedDistanceResult> newtonSignedDistance(const SuperballPair& pa
             ascended = next.f >= now.f - 1e-15 * size;
             if (ascended) now = next;
         }
-        if (!ascended) return std::nullopt;
+        if (!ascended) return answer(iteration + 1, false);
     }
-    return std::nullopt;
+    return answer(maxSteps, false);
 }
 
 /// Whether the point x (relative to r_A) lies strictly inside both bodies of the pair.
@@ -107,12 +115,41 @@ bool insideBoth(const SuperballPair& pair, const Vector3d& x) {
 }
 
 /// s of the pair from its cached normal (updated), or from the centre line when there is none
-/// (f has one maximum for s >= 0): Newton, else the robust solver.
+/// (f has one maximum for s >= 0): Newton, else the robust solver. Where a lower bound on s will
+/// do, one above `boundSuffices` (unconverged Newton's last plane gap) is returned as it is.
 SignedDistanceResult exactSignedDistance(const SuperballPair& pair, Vector3d& normal,
+                                         double boundSuffices,
                                          const SuperballPredictorLimits& limits,
                                          SuperballPredictorStats& stats) {
-    std::optional<SignedDistanceResult> fast = newtonSignedDistance(
+    WarmNewton warm = newtonSignedDistance(
         pair, normal.isZero(0.0) ? pair.displacement.normalized() : normal, limits.newtonSteps);
+    // Unconverged below the bound (near-cubes, whose support functions are nearly piecewise
+    // linear): Newton again from the best face normal of either body, where their contacts lie.
+    if (!warm.converged && warm.result.signedDistance <= boundSuffices && pair.shape.p() > 1.0) {
+        Vector3d best = Vector3d::Zero();
+        double bestGap = warm.result.signedDistance;
+        for (const Matrix3d* rotation : {&pair.rotationA, &pair.rotationB})
+            for (int axis = 0; axis < 3; ++axis) {
+                const Vector3d face = rotation->col(axis);
+                const Vector3d n = face.dot(pair.displacement) >= 0.0 ? face : Vector3d(-face);
+                const double gap = n.dot(pair.displacement) -
+                                   pair.shape.support(pair.rotationA.transpose() * n) -
+                                   pair.shape.support(pair.rotationB.transpose() * n);
+                if (gap > bestGap) bestGap = gap, best = n;
+            }
+        if (!best.isZero(0.0)) {
+            WarmNewton restart = newtonSignedDistance(pair, best, limits.newtonSteps);
+            if (restart.converged ||
+                restart.result.signedDistance > warm.result.signedDistance)
+                warm = restart;
+        }
+    }
+    std::optional<SignedDistanceResult> fast;
+    if (warm.converged) fast = warm.result;
+    if (!warm.converged && warm.result.signedDistance > boundSuffices) {
+        fast = warm.result;
+        ++stats.lowerBounds;
+    }
     // A positive local maximum of f is the global one (f(u) - c |u| is concave for c > 0), but
     // Newton from a stale normal can end on a negative local maximum while the bodies are apart.
     // It stands (a lower bound on s, as the robust solver's own answer for overlaps) when a
@@ -143,7 +180,10 @@ class PairTrajectory {
             Superball(p_, 0.5 * diameter),
             advancedOrientation(m_.orientationI, m_.angularVelocityI, tau).toRotationMatrix(),
             advancedOrientation(m_.orientationJ, m_.angularVelocityJ, tau).toRotationMatrix(), d};
-        const SignedDistanceResult r = exactSignedDistance(pair, normal_, limits_, stats_);
+        // Far from contact a lower bound on s serves: its plane advances as well, and every
+        // decision there (not touching, which side of a bracket) holds for s too.
+        const SignedDistanceResult r = exactSignedDistance(
+            pair, normal_, limits_.nearGap * diameter, limits_, stats_);
         // ds/dtau by the envelope theorem: the closing speed along n of the two support points,
         // each moving at omega x x + (gamma / D) x about its own centre; taken at their midpoint,
         // the point where the resolver applies the impulse, so that "closing" means the same to
@@ -377,7 +417,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
 PairContact SuperballShape::contact(const PairMotion& m, Vector3d& normal) const {
     const SuperballPair pair{Superball(p_, 0.5 * m.diameter), m.orientationI.toRotationMatrix(),
                              m.orientationJ.toRotationMatrix(), m.displacement};
-    const SignedDistanceResult r = exactSignedDistance(pair, normal, limits, stats);
+    const SignedDistanceResult r = exactSignedDistance(pair, normal, kNever, limits, stats);
     const Vector3d armI = 0.5 * (r.contactA + r.contactB);
     return {r.normal, armI, armI - m.displacement, m.displacement.norm()};
 }
