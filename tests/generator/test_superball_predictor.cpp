@@ -413,6 +413,37 @@ INSTANTIATE_TEST_SUITE_P(Exponents10, SuperballPredictorByP,
 INSTANTIATE_TEST_SUITE_P(DISABLED_Exponents10Full, SuperballPredictorByP,
                          ::testing::ValuesIn(shards(10.0, 10000, 150)), shardName);
 
+// ---- A stale cached normal -------------------------------------------------------------------
+
+// The engine warm-starts every exact evaluation from the pair's cached normal, which can be far
+// off (the pair rotated since). The worst start, the normal from j back to i, where f is at its
+// lowest and Newton cannot ascend, must give the same first contact as a cold start: the face
+// restart, the lower bound far from contact and the robust solver between them recover.
+TEST(SuperballPredictor, AStaleNormalFromTheWrongSideGivesTheSameContact) {
+    for (const double p : {0.55, 1.5, 3.0, 10.0}) {
+        const SuperballShape shape{p};
+        Random random(13 + static_cast<std::uint64_t>(10 * p));
+        int hits = 0;
+        for (int trial = 0; trial < 60; ++trial) {
+            const double gamma = trial % 2 == 0 ? 0.0 : 0.01 + 0.09 * random.uniform();
+            const PairMotion m = randomApproach(p, random, trial % 3, gamma);
+            Vector3d cold = Vector3d::Zero();
+            Vector3d wrong = -m.displacement.normalized();
+            const EnginePrediction fresh = predictLikeTheEngine(shape, m, 3.0, cold);
+            const EnginePrediction stale = predictLikeTheEngine(shape, m, 3.0, wrong);
+            const std::string where = "p " + number(p) + " trial " + std::to_string(trial);
+            ASSERT_TRUE(fresh.finished && stale.finished) << where;
+            if (std::isinf(fresh.time)) {
+                EXPECT_TRUE(std::isinf(stale.time)) << where << ": " << stale.time;
+                continue;
+            }
+            ++hits;
+            EXPECT_NEAR(stale.time, fresh.time, 1e-9) << where;
+        }
+        EXPECT_GT(hits, 20) << "p " << number(p);
+    }
+}
+
 // ---- p = 1: the general path against the exact sphere quadratic --------------------------------
 
 // Spheres are the p = 1 superballs: SuperballShape's general path (advancement on s, Newton,
