@@ -135,12 +135,14 @@ SignedDistanceResult exactSignedDistance(const SuperballPair& pair, Vector3d& no
                 const double gap = n.dot(pair.displacement) -
                                    pair.shape.support(pair.rotationA.transpose() * n) -
                                    pair.shape.support(pair.rotationB.transpose() * n);
-                if (gap > bestGap) bestGap = gap, best = n;
+                if (gap > bestGap) {
+                    bestGap = gap;
+                    best = n;
+                }
             }
         if (!best.isZero(0.0)) {
             WarmNewton restart = newtonSignedDistance(pair, best, limits.newtonSteps);
-            if (restart.converged ||
-                restart.result.signedDistance > warm.result.signedDistance)
+            if (restart.converged || restart.result.signedDistance > warm.result.signedDistance)
                 warm = restart;
         }
     }
@@ -182,8 +184,8 @@ class PairTrajectory {
             advancedOrientation(m_.orientationJ, m_.angularVelocityJ, tau).toRotationMatrix(), d};
         // Far from contact a lower bound on s serves: its plane advances as well, and every
         // decision there (not touching, which side of a bracket) holds for s too.
-        const SignedDistanceResult r = exactSignedDistance(
-            pair, normal_, limits_.nearGap * diameter, limits_, stats_);
+        const SignedDistanceResult r =
+            exactSignedDistance(pair, normal_, limits_.nearGap * diameter, limits_, stats_);
         // ds/dtau by the envelope theorem: the closing speed along n of the two support points,
         // each moving at omega x x + (gamma / D) x about its own centre; taken at their midpoint,
         // the point where the resolver applies the impulse, so that "closing" means the same to
@@ -344,7 +346,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
             // halves the plane gaps per collision against trying 0.9 of the chord's reach first.
             const double margin = std::sqrt(g.rate * g.rate + 16.0 * curvature * g.gap);
             const double likely = g.rate > 0.0 ? (g.rate + margin) / (8.0 * curvature)
-                                                : 2.0 * g.gap / (margin - g.rate);
+                                               : 2.0 * g.gap / (margin - g.rate);
             bool chordStep = false;
             for (double tryStep = std::min({end - tau, 0.9 * chord, likely});
                  tryStep > firstOrder && !chordStep; tryStep *= 0.125) {
@@ -402,8 +404,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
                 }
             }
         }
-        const auto reached =
-            alongPlane(now.normal, now.tau, {now.gap, now.planeRate}, now.gap);
+        const auto reached = alongPlane(now.normal, now.tau, {now.gap, now.planeRate}, now.gap);
         if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
         const Sample previous = now;
         now = trajectory.at(std::get<double>(reached));
