@@ -1,5 +1,5 @@
 // Cost of the pair functions (common/pair/pair_geometry.hpp) on near-contact pairs:
-// ns per call, Newton iterations per call and derivative-free fallbacks per call (for
+// ns per call, Newton iterations per call and cutting-plane fallbacks per call (for
 // signedDistance, those of mu and of s together, so up to 2), from a cold start and from a
 // generator-like warm start (the normal of mu before d moved by a relative 1e-9).
 // Results and the command that produced them: bench/RESULTS.md.
@@ -90,7 +90,7 @@ enum class Start { cold, warm };
 
 /// Times `solve(pair, warmNormal)` over whole passes of the pool, so that every figure is an
 /// exact pool average: seconds per call (s_per_call, shown with an SI prefix),
-/// Newton iterations per call and derivative-free fallbacks per call.
+/// Newton iterations per call and cutting-plane fallbacks per call.
 template <class Solve> void benchPair(benchmark::State& state, double p, Start start, Solve solve) {
     const std::vector<PoolEntry>& pool = poolFor(p);
     const Vector3d zero = Vector3d::Zero();

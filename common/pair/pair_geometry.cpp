@@ -195,49 +195,66 @@ void octahedronSignedDistance(const MinkowskiSum& k, SignedDistanceResult& resul
 
 // ---- General superballs 0.5 < p < inf ---------------------------------------------------
 
-/// Golden-section minimum of a unimodal function on [lo, hi]: derivative-free, so it cannot
-/// stall on the kinks that the support functions of near-cubes and near-octahedra have in
-/// floating point. Returns the argument; the value is returned through `value`.
-template <class F>
-double goldenSection(F&& f, double lo, double hi, int iterations, double& value) {
-    const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
-    double x1 = hi - ratio * (hi - lo), x2 = lo + ratio * (hi - lo);
-    double f1 = f(x1), f2 = f(x2);
-    for (int i = 0; i < iterations && hi - lo > 1e-16 * (1.0 + std::abs(lo)); ++i) {
-        if (f1 <= f2) {
-            hi = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = hi - ratio * (hi - lo);
-            f1 = f(x1);
-        } else {
-            lo = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = lo + ratio * (hi - lo);
-            f2 = f(x2);
-        }
+/// The part of a convex polygon with a . x <= b (one Sutherland-Hodgman pass).
+std::vector<Vector2d> clipPolygon(const std::vector<Vector2d>& polygon, const Vector2d& a,
+                                  double b) {
+    std::vector<Vector2d> kept;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const Vector2d& p = polygon[i];
+        const Vector2d& q = polygon[(i + 1) % polygon.size()];
+        const double fp = a.dot(p) - b, fq = a.dot(q) - b;
+        if (fp <= 0.0) kept.push_back(p);
+        if ((fp < 0.0 && fq > 0.0) || (fp > 0.0 && fq < 0.0))
+            kept.push_back(p + (fp / (fp - fq)) * (q - p));
     }
-    value = std::min(f1, f2);
-    return f1 <= f2 ? x1 : x2;
+    return kept;
 }
 
-/// Minimum of f(c) over the square |c_i| <= radius by nested golden sections: exact for
-/// convex (and quasi-convex) f whatever its kinks. Returns the minimiser; value through `value`.
+/// Centre of gravity of a convex polygon (the vertex mean where its area is lost to rounding).
+Vector2d centroid(const std::vector<Vector2d>& polygon) {
+    const Vector2d& o = polygon[0];
+    Vector2d weighted = Vector2d::Zero(), mean = Vector2d::Zero();
+    double area = 0.0;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        mean += polygon[i] - o;
+        if (i + 1 == polygon.size() || i == 0) continue;
+        const Vector2d a = polygon[i] - o, b = polygon[i + 1] - o;
+        const double twiceArea = a.x() * b.y() - a.y() * b.x();
+        area += twiceArea;
+        weighted += twiceArea * (a + b) / 3.0;
+    }
+    return area > 0.0 ? Vector2d(o + weighted / area) : Vector2d(o + mean / polygon.size());
+}
+
+/// Minimum of f over the square |c_i| <= radius by the centre-of-gravity cutting-plane method:
+/// a subgradient g at the centroid c of the polygon known to hold the minimiser keeps only
+/// g . (x - c) <= 0, which loses no minimiser of a quasi-convex f whatever its kinks (the support
+/// points of near-cubes and near-octahedra are subgradients where Newton stalls), and each cut
+/// takes at least 4/9 of the polygon's area (Grunbaum), so ~150 evaluations reach rounding where
+/// nested golden sections took ~6000. For convex f the cut deepens to
+/// g . (x - c) <= f_best - f(c). `valueAndGradient(c, g)` returns f(c) and writes g.
 template <class F>
-Vector2d nestedGoldenMinimum(F&& f, double radius, int iterations, double& value) {
-    auto inner = [&](double a, double& innerValue) {
-        return goldenSection([&](double b) { return f(Vector2d(a, b)); }, -radius, radius,
-                             iterations, innerValue);
-    };
-    const double a = goldenSection(
-        [&](double x) {
-            double innerValue = 0.0;
-            inner(x, innerValue);
-            return innerValue;
-        },
-        -radius, radius, iterations, value);
-    return Vector2d(a, inner(a, value));
+Vector2d cuttingPlaneMinimum(F&& valueAndGradient, double radius, bool convex, int iterations,
+                             double& value) {
+    std::vector<Vector2d> polygon = {Vector2d(-radius, -radius), Vector2d(radius, -radius),
+                                     Vector2d(radius, radius), Vector2d(-radius, radius)};
+    Vector2d best = Vector2d::Zero(), gradient;
+    value = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < iterations && polygon.size() >= 3; ++i) {
+        const Vector2d c = centroid(polygon);
+        double extent = 0.0;
+        for (const Vector2d& vertex : polygon)
+            extent = std::max(extent, (vertex - c).norm());
+        if (extent <= 1e-16 * radius) break;
+        const double fc = valueAndGradient(c, gradient);
+        if (fc < value) {
+            value = fc;
+            best = c;
+        }
+        if (gradient.isZero(0.0) || !gradient.allFinite()) break;
+        polygon = clipPolygon(polygon, gradient, gradient.dot(c) + (convex ? value - fc : 0.0));
+    }
+    return best;
 }
 
 /// 1/mu = min H(u) / |d| over the plane u . d_hat = 1 (DESIGN.md §2): a convex problem in
@@ -288,9 +305,13 @@ ScaleFactorResult generalScaleFactor(const MinkowskiSum& k, const Vector3d& warm
         // Newton stalled on a kink: minimise H exactly over the square holding the disc.
         ++result.fallbacks;
         double best = 0.0;
-        const Vector2d cBest =
-            nestedGoldenMinimum([&](const Vector2d& x) { return k.support(dHat + basis * x); },
-                                radius, tolerances.maxLineSearchIterations, best);
+        const Vector2d cBest = cuttingPlaneMinimum(
+            [&](const Vector2d& x, Vector2d& gradient) {
+                const Vector3d v = dHat + basis * x, point = k.supportPoint(v);
+                gradient = basis.transpose() * point;
+                return v.dot(point); // H(v) = v . grad H(v): H is homogeneous of degree one
+            },
+            radius, true, tolerances.maxCuttingPlaneIterations, best);
         if (best < h) {
             u = dHat + basis * cBest;
             h = best;
@@ -348,13 +369,16 @@ void generalSignedDistance(const MinkowskiSum& k, const PairTolerances& toleranc
         // quasi-concave for s >= 0 (a local maximum, i.e. a bound on the depth, below).
         ++result.fallbacks;
         const Eigen::Matrix<double, 3, 2> basis = tangentBasis(n);
-        auto fOnSphere = [&](const Vector2d& c) {
-            const Vector3d m = (n + basis * c).normalized();
-            return -(m.dot(d) - k.support(m));
+        auto minusFOnSphere = [&](const Vector2d& c, Vector2d& gradient) {
+            // f(u / |u|) = f~(u) / |u| at u = n + P c, f~(u) = u . (d - grad H(u)).
+            const Vector3d u = n + basis * c, toGap = d - k.supportPoint(u);
+            const double r2 = u.squaredNorm(), fu = u.dot(toGap);
+            gradient = -basis.transpose() * (toGap - fu * u / r2) / std::sqrt(r2);
+            return -fu / std::sqrt(r2);
         };
         double best = 0.0;
-        const Vector2d c =
-            nestedGoldenMinimum(fOnSphere, 0.6, tolerances.maxLineSearchIterations, best);
+        const Vector2d c = cuttingPlaneMinimum(minusFOnSphere, 0.6, false,
+                                               tolerances.maxCuttingPlaneIterations, best);
         if (-best > f) {
             n = (n + basis * c).normalized();
             f = -best;

@@ -7,8 +7,9 @@
 // mu is found from its dual, a two-dimensional convex minimisation:
 //   1 / mu = min { H(u) / |d| : u . d = |d| },  H = h_A + h_B,
 // by Newton steps with an exact line search, checked by a primal certificate (the scaled
-// bodies meet) and finished by a derivative-free search where Newton stalls on the kinks
-// of near-cubes; the octahedron p = 0.5 is exact over its candidate face normals.
+// bodies meet) and finished by a cutting-plane search on subgradients (the support points)
+// where Newton stalls on the kinks of near-cubes; the octahedron p = 0.5 is exact over its
+// candidate face normals.
 
 #include "geometry/superball.hpp"
 
@@ -18,10 +19,12 @@ namespace sbpack {
 struct PairTolerances {
     int maxNewtonIterations = 60;
     int maxLineSearchIterations = 100;
+    /// Cuts of the cutting-plane finish (each takes 4/9 of the area: 200 reach rounding).
+    int maxCuttingPlaneIterations = 200;
     /// Newton stops when a step moves the normal by less than this (radians).
     double normalTolerance = 1e-15;
     /// Relative excess of the primal meeting point's gauge over mu that sends the scale
-    /// factor to the derivative-free fallback.
+    /// factor to the cutting-plane fallback.
     double certificateTolerance = 1e-12;
     /// Residual |d - grad H(n) - s n| / D above which the signed distance goes to the
     /// fallback. s is stationary in n, so a residual r costs about r^2 / curvature in s:
@@ -42,7 +45,7 @@ struct ScaleFactorResult {
     Vector3d normal;          ///< unit, from A towards B
     int iterations = 0;       ///< Newton iterations
     int evaluations = 0;      ///< support-function evaluations, line searches included
-    int fallbacks = 0;        ///< 1 if Newton stalled and the golden-section search finished
+    int fallbacks = 0;        ///< 1 if Newton stalled and the cutting-plane search finished
 };
 
 struct SignedDistanceResult {
@@ -56,7 +59,7 @@ struct SignedDistanceResult {
     Vector3d contactB;        ///< support point of B along -normal, relative to r_A
     int iterations = 0;       ///< Newton iterations (scale factor and distance together)
     int evaluations = 0;
-    int fallbacks = 0; ///< derivative-free finishes (scale factor and distance together)
+    int fallbacks = 0; ///< cutting-plane finishes (scale factor and distance together)
 };
 
 /// Orthonormal tangent basis (columns) of the plane orthogonal to the unit vector n.

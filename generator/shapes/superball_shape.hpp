@@ -57,7 +57,7 @@ struct SuperballPredictorStats {
     long newtonBrackets = 0;    ///< Newton steps in time that bracketed the contact
     long uncertifiedRoots = 0;  ///< of those, roots not certified first: advancement went on
     long refinementSteps = 0;   ///< evaluations in the bracketed refinement
-    long distanceFallbacks = 0; ///< pair-solver derivative-free finishes
+    long distanceFallbacks = 0; ///< pair-solver cutting-plane finishes
     long rechecks = 0;          ///< step limit reached: a safe recheck time instead of a contact
     long limitHits = 0;         ///< refinement limit reached: the bracket's safe end returned
     long startOverlaps = 0;     ///< s(0) < -contactGap D (never in a valid packing)
