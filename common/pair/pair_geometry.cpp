@@ -432,5 +432,4 @@ SignedDistanceResult signedDistance(const SuperballPair& pair, const Vector3d& w
     return result;
 }
 
-
 } // namespace sbpack
