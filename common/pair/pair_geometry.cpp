@@ -43,6 +43,7 @@ class MinkowskiSum {
     const Matrix3d& ra() const { return pair_.rotationA; }
     const Matrix3d& rb() const { return pair_.rotationB; }
     const Vector3d& displacement() const { return pair_.displacement; }
+    const SuperballPair& pair() const { return pair_; }
 
     mutable int evaluations = 0;
 
@@ -297,11 +298,13 @@ ScaleFactorResult generalScaleFactor(const MinkowskiSum& k, const Vector3d& warm
     }
     Vector3d u = dHat + basis * c;
     double h = k.support(u);
-    // Certificate: the bodies scaled by mu = |d|/H must meet at mu s_A(n) (primal point).
+    // Certificate: the bodies scaled by mu = |d|/H must meet at mu s_A(n) or at d - mu s_B(n)
+    // (primal points; where one body presents a face its support point is ill-conditioned, the
+    // other's is not).
     const double mu = distance / h;
-    const Vector3d meeting = mu * k.supportPointA(u);
-    const double gaugeB = k.shape().gauge(k.rb().transpose() * (meeting - d));
-    if (gaugeB > mu * (1.0 + tolerances.certificateTolerance)) {
+    const double gaugeB = k.shape().gauge(k.rb().transpose() * (mu * k.supportPointA(u) - d));
+    const double gaugeA = k.shape().gauge(k.ra().transpose() * (d - mu * k.supportPointB(u)));
+    if (std::min(gaugeA, gaugeB) > mu * (1.0 + tolerances.certificateTolerance)) {
         // Newton stalled on a kink: minimise H exactly over the square holding the disc.
         ++result.fallbacks;
         double best = 0.0;
@@ -362,9 +365,14 @@ void generalSignedDistance(const MinkowskiSum& k, const PairTolerances& toleranc
         f = fCandidate;
         if (t * length <= tolerances.normalTolerance) break;
     }
-    // Certificate: the contact points are separated by s along n (d - grad H(n) = s n).
+    // Certificate: the contact points are separated by s along n (d - grad H(n) = s n), or,
+    // where a face's support point is ill-conditioned, the supporting planes of n have a common
+    // perpendicular between the bodies.
     const Vector3d residual = d - k.supportPoint(n) - f * n;
-    if (residual.norm() > tolerances.distanceCertificateTolerance * k.shape().diameter()) {
+    const double size = k.shape().diameter();
+    if (residual.norm() > tolerances.distanceCertificateTolerance * size &&
+        supportPlaneMismatch(k.pair(), n, f, k.supportPointA(n), d - k.supportPointB(n)) >
+            tolerances.mismatchTolerance * size) {
         // Newton stalled on a kink: maximise f over the tangent plane of n, where f is
         // quasi-concave for s >= 0 (a local maximum, i.e. a bound on the depth, below).
         ++result.fallbacks;
@@ -396,6 +404,17 @@ Eigen::Matrix<double, 3, 2> tangentBasis(const Vector3d& n) {
     basis.col(0) = n.cross(helper).normalized();
     basis.col(1) = n.cross(basis.col(0));
     return basis;
+}
+
+double supportPlaneMismatch(const SuperballPair& pair, const Vector3d& n, double f,
+                            const Vector3d& contactA, const Vector3d& contactB) {
+    const Vector3d& d = pair.displacement;
+    const Vector3d belowB = contactB - f * n, aboveA = contactA + f * n - d;
+    const double gaugeA = std::max(1.0, pair.shape.gauge(pair.rotationA.transpose() * belowB));
+    const double gaugeB = std::max(1.0, pair.shape.gauge(pair.rotationB.transpose() * aboveA));
+    return std::min((contactB - belowB / gaugeA).norm(),
+                    (contactA - d - aboveA / gaugeB).norm()) -
+           f;
 }
 
 ScaleFactorResult scaleFactor(const SuperballPair& pair, const Vector3d& warmNormal,

@@ -30,6 +30,9 @@ struct PairTolerances {
     /// fallback. s is stationary in n, so a residual r costs about r^2 / curvature in s:
     /// 1e-7 D keeps s exact to ~1e-14 D, while stalls on kinks leave residuals ~0.1 D.
     double distanceCertificateTolerance = 1e-7;
+    /// The other certificate of s: supportPlaneMismatch() / D below this (for s >= 0, s is
+    /// then known to this much).
+    double mismatchTolerance = 1e-15;
 };
 
 /// One pair: the two orientations (rotation body -> lab) and the displacement d = r_B - r_A.
@@ -61,6 +64,18 @@ struct SignedDistanceResult {
     int evaluations = 0;
     int fallbacks = 0; ///< cutting-plane finishes (scale factor and distance together)
 };
+
+/// How far the two supporting planes of unit normal n (from A to B), f = n.d - h_A(n) - h_B(n)
+/// apart, miss a common perpendicular: B's contact point b, dropped by f onto A's plane and
+/// pulled radially into A (a'), and the same with the roles swapped; the smaller |b - a'| - f.
+/// With f >= 0 both points of each pair lie in the bodies, so f <= s <= f + this (to rounding);
+/// for f < 0 it measures, like the tangent gradient d - grad H(n) - f n, how far n is from
+/// stationary. Unlike that gradient it vanishes at the optimum where one body presents a face
+/// (p > 1: its support point slides across the face under rounding changes of n), because the
+/// other body's support point is well conditioned there. contactA, contactB as in
+/// SignedDistanceResult (relative to r_A).
+double supportPlaneMismatch(const SuperballPair& pair, const Vector3d& n, double f,
+                            const Vector3d& contactA, const Vector3d& contactB);
 
 /// Orthonormal tangent basis (columns) of the plane orthogonal to the unit vector n.
 Eigen::Matrix<double, 3, 2> tangentBasis(const Vector3d& n);

@@ -95,6 +95,12 @@ WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n, int maxSt
         // rounding level: f(n) is a lower bound on s, accurate to ~1e-17 D then.
         if (gradient.norm() <= 1e-9 * size && gradient.dot(step) <= 1e-17 * size)
             return answer(iteration + 1, true);
+        // Where a body presents a face (p > 1.5: Newton on its support function, ~|x|^q with
+        // q < 1.5 across the face normal, overshoots) the gradient stays large at the optimum:
+        // the supporting planes' common perpendicular certifies s instead.
+        if (pair.shape.p() > 1.5 && supportPlaneMismatch(pair, now.n, now.f, xi, d - xj) <=
+                                        PairTolerances{}.mismatchTolerance * size)
+            return answer(iteration + 1, true);
         // Backtracking: halve the step until f does not decrease (beyond rounding).
         bool ascended = false;
         for (double t = 1.0; t >= 0.125 && !ascended; t *= 0.5) {
