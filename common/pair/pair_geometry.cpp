@@ -412,8 +412,7 @@ double supportPlaneMismatch(const SuperballPair& pair, const Vector3d& n, double
     const Vector3d belowB = contactB - f * n, aboveA = contactA + f * n - d;
     const double gaugeA = std::max(1.0, pair.shape.gauge(pair.rotationA.transpose() * belowB));
     const double gaugeB = std::max(1.0, pair.shape.gauge(pair.rotationB.transpose() * aboveA));
-    return std::min((contactB - belowB / gaugeA).norm(),
-                    (contactA - d - aboveA / gaugeB).norm()) -
+    return std::min((contactB - belowB / gaugeA).norm(), (contactA - d - aboveA / gaugeB).norm()) -
            f;
 }
 
