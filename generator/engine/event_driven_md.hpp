@@ -186,11 +186,14 @@ template <class Shape> class EventDrivenMd {
         return m;
     }
 
+    std::uint64_t pairKey(int i, int j) const {
+        return static_cast<std::uint64_t>(std::min(i, j)) * state_.size() +
+               static_cast<std::uint64_t>(std::max(i, j));
+    }
+
     /// The pair's cached normal, from the lower index to the higher (rotating shapes only).
     Vector3d& pairNormal(int i, int j) {
-        const auto key = static_cast<std::uint64_t>(std::min(i, j)) * state_.size() +
-                         static_cast<std::uint64_t>(std::max(i, j));
-        return normals_.try_emplace(key, Vector3d::Zero()).first->second;
+        return normals_.try_emplace(pairKey(i, j), Vector3d::Zero()).first->second;
     }
 
     void schedule(int i) { queue_.set(i, std::min(collision_[i].time, exit_[i])); }
@@ -203,7 +206,8 @@ template <class Shape> class EventDrivenMd {
         Vector3d normal = Vector3d::Zero();
         const double sign = i < j ? 1.0 : -1.0;
         if constexpr (Shape::kRotates) normal = sign * pairNormal(i, j);
-        const Prediction next = shape_.collisionTime(motion(i, j, t), limit - t, normal);
+        const bool resolved = t == resolvedAt_ && pairKey(i, j) == resolvedPair_;
+        const Prediction next = shape_.collisionTime(motion(i, j, t), limit - t, normal, resolved);
         if constexpr (Shape::kRotates) pairNormal(i, j) = sign * normal;
         const double when = t + next.time;
         if (when < collision_[i].time)
@@ -269,6 +273,8 @@ template <class Shape> class EventDrivenMd {
         ++report.collisions;
         ++counter_[i];
         ++counter_[j];
+        resolvedPair_ = pairKey(i, j);
+        resolvedAt_ = t;
         predictExit(i);
         predictExit(j);
         predict(i, t);
@@ -300,6 +306,7 @@ template <class Shape> class EventDrivenMd {
         lists_ = NeighbourLists(box_, shape_.circumscribedRatio() * maximum + 2.0 * exitRadius_,
                                 std::move(anchors));
         normals_.clear(); // a rebuild is a deterministic function of the synchronised state
+        resolvedAt_ = -kNever;
         time_.assign(size(), 0.0);
         counter_.assign(size(), 0);
         collision_.assign(size(), {});
@@ -326,6 +333,9 @@ template <class Shape> class EventDrivenMd {
     std::unordered_map<std::uint64_t, Vector3d> normals_; ///< warm starts, lower index to higher
     double horizon_ = kNever;
     double exitRadius_ = 0.0;
+    /// The last collision's pair and time: its predictions at that time start separated.
+    std::uint64_t resolvedPair_ = 0;
+    double resolvedAt_ = -kNever;
     bool dirty_ = true;
 };
 

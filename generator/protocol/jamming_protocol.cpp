@@ -162,6 +162,11 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
         status_.wallSeconds += std::chrono::duration<double>(Clock::now() - start).count();
         status_.cpuSeconds += static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
         if (report.interrupted) return false;
+        if (!(report.duration > 0.0))
+            throw std::runtime_error("no time passed over a window of " +
+                                     std::to_string(report.collisions) +
+                                     " collisions (collisions repeating at one instant): the "
+                                     "reduced pressure (virial / duration) is undefined");
         finishWindow(report.virial, report.duration);
         onWindow(status_);
     }

@@ -30,8 +30,10 @@ struct SphereShape {
         return c / (-b + std::sqrt(discriminant));
     }
 
-    /// The engine's interface: exact, so neither the horizon nor a cached normal helps.
-    Prediction collisionTime(const PairMotion& m, double /*horizon*/, Vector3d& /*normal*/) const {
+    /// The engine's interface: exact, so neither the horizon nor a cached normal helps, and a pair
+    /// just resolved separates (touching and separating gives +inf).
+    Prediction collisionTime(const PairMotion& m, double /*horizon*/, Vector3d& /*normal*/,
+                             bool /*resolved*/ = false) const {
         return {collisionTime(m)};
     }
 

@@ -223,8 +223,8 @@ double SuperballShape::inertiaPerMass(double diameter) const {
     return inertiaPerMassUnit_ * 0.25 * diameter * diameter;
 }
 
-Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
-                                         Vector3d& normal) const {
+Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Vector3d& normal,
+                                         bool resolved) const {
     ++stats.calls;
     const Prediction none{kNever};
     const double D = m.diameter, gamma = m.growthRate, growth = std::max(gamma, 0.0);
@@ -390,7 +390,8 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon,
     Sample now = trajectory.at(start);
     if (start == 0.0 && now.gap < -touching) ++stats.startOverlaps;
     for (;;) {
-        if (now.gap <= touching && now.rate < 0.0) return {now.tau};
+        if (now.gap <= touching && now.rate < 0.0 && !(resolved && now.tau == 0.0))
+            return {now.tau};
         const double rate = planeRate(now.normal);
         if (atEnd.time == kNever && now.gap <= near && now.rate < 0.0 && rate < 0.0) {
             const double tau = now.tau - now.gap / now.rate;

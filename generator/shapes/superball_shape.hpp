@@ -103,7 +103,12 @@ class SuperballShape {
     /// Earliest delay in [0, horizon] at which the pair touches, or +inf if none; a safe recheck
     /// delay when the step limit is reached. `normal` (in/out) is the pair's cached unit normal
     /// from i to j, or zero when unknown; it is updated when the pair is evaluated exactly.
-    Prediction collisionTime(const PairMotion& m, double horizon, Vector3d& normal) const;
+    /// `resolved`: the engine has just applied this pair's impulse at this very state, which left
+    /// the surfaces separating at the resolver's contact point, so touching now is no contact (on
+    /// near-flat faces a re-evaluation can pick another point of the face and see it closing:
+    /// zero impulses would repeat at one instant, and no time would pass).
+    Prediction collisionTime(const PairMotion& m, double horizon, Vector3d& normal,
+                             bool resolved = false) const;
 
     /// Contact of touching bodies now: normal from i to j, arms to the midpoint of the two
     /// support points (the same point for both, so impulses conserve angular momentum).
