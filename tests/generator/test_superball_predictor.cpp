@@ -442,6 +442,42 @@ TEST(SuperballPredictor, AStaleNormalFromTheWrongSideGivesTheSameContact) {
     }
 }
 
+// Right after a collision the engine re-predicts the pair at the same state; the resolver left it
+// separating at its contact point, so touching now is no contact then (near-cube faces: another
+// evaluation may pick another point of the face and see it closing, and zero impulses repeated at
+// one instant). A pair that is closing still gets its contact, a moment later and not overlapping.
+TEST(SuperballPredictor, AJustResolvedPairIsNotAContactAtThatInstant) {
+    for (const double p : {1.5, 10.0}) {
+        Random random(29 + static_cast<std::uint64_t>(p));
+        for (int trial = 0; trial < 50; ++trial) {
+            PairMotion m;
+            m.diameter = 1.0;
+            m.orientationI = random.rotation();
+            m.orientationJ = random.rotation();
+            const Vector3d u = random.normalVector().normalized();
+            SuperballPair pair{Superball(p, 0.5), m.orientationI.toRotationMatrix(),
+                               m.orientationJ.toRotationMatrix(), u};
+            m.displacement = u / scaleFactor(pair).scaleFactor; // touching
+            pair.displacement = m.displacement;
+            const Vector3d n = signedDistance(pair).normal;
+            const std::string where = "p " + number(p) + " #" + std::to_string(trial);
+            SuperballShape shape{p};
+            m.relativeVelocity = -0.5 * n; // closing
+            Vector3d normal = Vector3d::Zero();
+            EXPECT_EQ(shape.collisionTime(m, 1.0, normal).time, 0.0) << where;
+            normal = Vector3d::Zero();
+            const Prediction later = shape.collisionTime(m, 1.0, normal, true);
+            ASSERT_TRUE(later.contact) << where;
+            EXPECT_GT(later.time, 0.0) << where;
+            EXPECT_LE(later.time, 1e-9) << where;
+            EXPECT_GE(relativeGapAt(p, m, later.time), -1e-12) << where;
+            m.relativeVelocity = 0.5 * n; // separating
+            normal = Vector3d::Zero();
+            EXPECT_TRUE(std::isinf(shape.collisionTime(m, 1.0, normal, true).time)) << where;
+        }
+    }
+}
+
 // ---- p = 1: the general path against the exact sphere quadratic --------------------------------
 
 // Spheres are the p = 1 superballs: SuperballShape's general path (advancement on s, Newton,
