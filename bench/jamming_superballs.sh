@@ -2,9 +2,9 @@
 # Acceptance runs of sbgen on rotating superballs (issue 4): N = 1000 at the paper's p values,
 # to reduced pressure 1e12 with --gamma-slow 1e-2, and the extreme runs N = 200 at p = 0.55 ..
 # 10 to 1e8 (each capped at EXTREME_SECONDS, default 3600: p = 10 needs ~35 CPU minutes).
-# Prints markdown tables: phi against the paper, Z,
-# phi_R, the worst pair gap from the exact pair geometry (common/pair, independent of the
-# predictor), throughput per CPU second and the predictor's work.
+# Prints markdown tables: phi against the paper, Z, phi_R, the worst pair gap from the exact pair
+# geometry (common/pair, independent of the predictor), throughput per CPU second and the
+# predictor's work.
 # Several copies may run at once over the same WORK_DIR (one per core): each run is claimed by
 # a lock directory before it starts.
 # usage: bench/jamming_superballs.sh [BUILD_DIR] [WORK_DIR] [SEEDS] [P VALUES]

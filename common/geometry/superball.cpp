@@ -118,7 +118,6 @@ Vector3d Superball::supportPoint(const Vector3d& nBody) const {
         return x;
     }
     // x_i = R sgn(u_i) (|u_i| / ||u||_q)^{q-1}, with u normalised by max |u_i|.
-    // x_i = R sgn(u_i) (|u_i| / ||u||_q)^{q-1}, with u normalised by max |u_i|.
     const double norm = lpNorm(nBody / m, q_);
     for (int i = 0; i < 3; ++i)
         x[i] = std::copysign(r_ * std::pow(std::abs(nBody[i]) / m / norm, q_ - 1.0), nBody[i]);

@@ -302,9 +302,11 @@ ScaleFactorResult generalScaleFactor(const MinkowskiSum& k, const Vector3d& warm
     // (primal points; where one body presents a face its support point is ill-conditioned, the
     // other's is not).
     const double mu = distance / h;
-    const double gaugeB = k.shape().gauge(k.rb().transpose() * (mu * k.supportPointA(u) - d));
-    const double gaugeA = k.shape().gauge(k.ra().transpose() * (d - mu * k.supportPointB(u)));
-    if (std::min(gaugeA, gaugeB) > mu * (1.0 + tolerances.certificateTolerance)) {
+    const double limit = mu * (1.0 + tolerances.certificateTolerance);
+    const bool meet =
+        k.shape().gauge(k.rb().transpose() * (mu * k.supportPointA(u) - d)) <= limit ||
+        k.shape().gauge(k.ra().transpose() * (d - mu * k.supportPointB(u))) <= limit;
+    if (!meet) {
         // Newton stalled on a kink: minimise H exactly over the square holding the disc.
         ++result.fallbacks;
         double best = 0.0;
