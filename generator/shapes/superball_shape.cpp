@@ -39,19 +39,68 @@ struct Sample {
     double planeRate = 0.0;
 };
 
+/// The fraction of a Newton step on the normal to try first. Where the step drives a
+/// body-frame component u of the normal through zero, h ~ |u|^q there: for q < 2 its second
+/// derivative diverges, Newton overshoots, and u flips sign for dozens of iterations, each
+/// nearly as far out. In z = sgn(u) |u|^{q-1}, where h' is linear, Newton lands it:
+/// z' = z + (q - 1) |u|^{q-2} du, so u' = u (1 - w)^{1/(q-1)} with w = (q - 1) r, r = -du / u > 1
+/// (u' = -u (w - 1)^{1/(q-1)} past zero), the fraction (u' - u) / du of the step. The smallest
+/// over both bodies' components is returned (1 where none crosses).
+double crossingFraction(const SuperballPair& pair, const Vector3d& n, const Vector3d& move) {
+    const double q = pair.shape.dualExponent();
+    double fraction = 1.0;
+    if (q == 2.0 || !std::isfinite(q)) return fraction;
+    for (const Matrix3d* rotation : {&pair.rotationA, &pair.rotationB}) {
+        const Vector3d u = rotation->transpose() * n, du = rotation->transpose() * move;
+        for (int c = 0; c < 3; ++c) {
+            if (!(u[c] * (u[c] + du[c]) < 0.0)) continue;
+            const double r = -du[c] / u[c], w = (q - 1.0) * r;
+            const double landed = w < 1.0 ? 1.0 - std::pow(1.0 - w, 1.0 / (q - 1.0))
+                                          : 1.0 + std::pow(w - 1.0, 1.0 / (q - 1.0));
+            fraction = std::min(fraction, landed / r);
+        }
+    }
+    return fraction;
+}
+
+/// How the evaluated pair moves at that instant: d' = velocity, each body turns at its omega and
+/// grows at R'/R = strain.
+struct PairRates {
+    Vector3d velocity;
+    Vector3d angularVelocityI, angularVelocityJ;
+    double strain;
+};
+
 /// Warm Newton's answer: s when converged, else its last iterate, whose f(n) is still a lower
-/// bound on s (every plane's gap is).
+/// bound on s (every plane's gap is). `normalRate`: dn/dtau of the optimal normal when converged
+/// and the rates were given, else zero.
 struct WarmNewton {
     SignedDistanceResult result;
     bool converged = false;
+    Vector3d normalRate = Vector3d::Zero();
 };
+
+/// dn/dtau of the optimal normal by the implicit function theorem: its tangent gradient
+/// g = B^T (d - x_i - x_j) stays zero, so dn = B H^{-1} dg/dtau with H the tangent Hessian of
+/// -f, and at fixed n each support point moves as x_k' = omega_k x x_k + d2h_k (n x omega_k) +
+/// strain x_k (the body frame's direction of n turns at n x omega_k; d2h_k in the lab frame).
+Vector3d optimalNormalRate(const PairRates& rates, const Vector3d& n,
+                           const Eigen::Matrix<double, 3, 2>& basis, const Eigen::Matrix2d& hessian,
+                           const Vector3d& xi, const Vector3d& xj, const Matrix3d& hi,
+                           const Matrix3d& hj) {
+    const Vector3d drift = rates.velocity - rates.strain * (xi + xj) -
+                           rates.angularVelocityI.cross(xi) - hi * n.cross(rates.angularVelocityI) -
+                           rates.angularVelocityJ.cross(xj) - hj * n.cross(rates.angularVelocityJ);
+    return basis * hessian.inverse() * (basis.transpose() * drift);
+}
 
 /// s at a warm normal by Newton steps on the unit sphere with backtracking, f(n) = n.d - h_i(n) -
 /// h_j(n) being concave about its maximum near contact (DESIGN.md §2); the tangent Hessian of -f
 /// is P^T (d2h_i + d2h_j) P + f I. Unconverged when an eighth of a step still does not ascend,
 /// the Hessian is not positive definite or it takes more than `maxSteps` steps (slow near face
 /// normals of p > 1, where the Hessian diverges, and most evaluations of near-cubes).
-WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n, int maxSteps) {
+WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n, int maxSteps,
+                                const PairRates* rates = nullptr) {
     const Matrix3d& qi = pair.rotationA;
     const Matrix3d& qj = pair.rotationB;
     const Vector3d& d = pair.displacement;
@@ -81,9 +130,9 @@ WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n, int maxSt
         const Vector3d xi = qi * now.ji.point, xj = qj * now.jj.point;
         const Eigen::Matrix<double, 3, 2> basis = tangentBasis(now.n);
         const Eigen::Vector2d gradient = basis.transpose() * (d - xi - xj);
-        Eigen::Matrix2d hessian =
-            basis.transpose() *
-            (qi * now.ji.hessian * qi.transpose() + qj * now.jj.hessian * qj.transpose()) * basis;
+        const Matrix3d hi = qi * now.ji.hessian * qi.transpose();
+        const Matrix3d hj = qj * now.jj.hessian * qj.transpose();
+        Eigen::Matrix2d hessian = basis.transpose() * (hi + hj) * basis;
         hessian.diagonal().array() += now.f;
         const double det = hessian(0, 0) * hessian(1, 1) - hessian(0, 1) * hessian(1, 0);
         if (!(hessian(0, 0) > 0.0 && det > 0.0)) return answer(iteration, false);
@@ -93,17 +142,24 @@ WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n, int maxSt
         // Converged when the tangent gradient vanishes (a step alone can be tiny under the
         // clamped, huge Hessians of flat faces) and the predicted ascent g . step is at
         // rounding level: f(n) is a lower bound on s, accurate to ~1e-17 D then.
+        auto converged = [&] {
+            WarmNewton w = answer(iteration + 1, true);
+            if (rates) w.normalRate = optimalNormalRate(*rates, now.n, basis, hessian, xi, xj, hi, hj);
+            return w;
+        };
         if (gradient.norm() <= 1e-9 * size && gradient.dot(step) <= 1e-17 * size)
-            return answer(iteration + 1, true);
+            return converged();
         // Where a body presents a face (p > 1.5: Newton on its support function, ~|x|^q with
         // q < 1.5 across the face normal, overshoots) the gradient stays large at the optimum:
         // the supporting planes' common perpendicular certifies s instead.
         if (pair.shape.p() > 1.5 && supportPlaneMismatch(pair, now.n, now.f, xi, d - xj) <=
                                         PairTolerances{}.mismatchTolerance * size)
-            return answer(iteration + 1, true);
-        // Backtracking: halve the step until f does not decrease (beyond rounding).
+            return converged();
+        // Backtracking: halve the step until f does not decrease (beyond rounding), starting
+        // from the fraction that lands components crossing zero.
+        const double first = crossingFraction(pair, now.n, basis * step);
         bool ascended = false;
-        for (double t = 1.0; t >= 0.125 && !ascended; t *= 0.5) {
+        for (double t = first; t >= 0.125 * first && !ascended; t *= 0.5) {
             const Point next = at((now.n + basis * (t * step)).normalized());
             ascended = next.f >= now.f - 1e-15 * size;
             if (ascended) now = next;
@@ -123,12 +179,13 @@ bool insideBoth(const SuperballPair& pair, const Vector3d& x) {
 /// s of the pair from its cached normal (updated), or from the centre line when there is none
 /// (f has one maximum for s >= 0): Newton, else the robust solver. Where a lower bound on s will
 /// do, one above `boundSuffices` (unconverged Newton's last plane gap) is returned as it is.
-SignedDistanceResult exactSignedDistance(const SuperballPair& pair, Vector3d& normal,
-                                         double boundSuffices,
-                                         const SuperballPredictorLimits& limits,
-                                         SuperballPredictorStats& stats) {
-    WarmNewton warm = newtonSignedDistance(
-        pair, normal.isZero(0.0) ? pair.displacement.normalized() : normal, limits.newtonSteps);
+/// With `rates`, Newton's converged answers also carry the normal's rate (else it is zero).
+WarmNewton exactSignedDistance(const SuperballPair& pair, Vector3d& normal, double boundSuffices,
+                               const SuperballPredictorLimits& limits,
+                               SuperballPredictorStats& stats, const PairRates* rates = nullptr) {
+    WarmNewton warm =
+        newtonSignedDistance(pair, normal.isZero(0.0) ? pair.displacement.normalized() : normal,
+                             limits.newtonSteps, rates);
     // Unconverged below the bound (near-cubes, whose support functions are nearly piecewise
     // linear): Newton again from the best face normal of either body, where their contacts lie.
     if (!warm.converged && warm.result.signedDistance <= boundSuffices && pair.shape.p() > 1.0) {
@@ -147,7 +204,7 @@ SignedDistanceResult exactSignedDistance(const SuperballPair& pair, Vector3d& no
                 }
             }
         if (!best.isZero(0.0)) {
-            WarmNewton restart = newtonSignedDistance(pair, best, limits.newtonSteps);
+            WarmNewton restart = newtonSignedDistance(pair, best, limits.newtonSteps, rates);
             if (restart.converged || restart.result.signedDistance > warm.result.signedDistance)
                 warm = restart;
         }
@@ -166,10 +223,12 @@ SignedDistanceResult exactSignedDistance(const SuperballPair& pair, Vector3d& no
         !insideBoth(pair, 0.5 * (fast->contactA + fast->contactB)))
         fast.reset();
     if (!fast) ++stats.robustEvaluations;
-    const SignedDistanceResult r = fast ? *fast : signedDistance(pair, normal);
-    stats.distanceFallbacks += r.fallbacks;
-    normal = r.normal;
-    return r;
+    const WarmNewton answer =
+        fast ? WarmNewton{*fast, true, warm.converged ? warm.normalRate : Vector3d::Zero()}
+             : WarmNewton{signedDistance(pair, normal), true};
+    stats.distanceFallbacks += answer.result.fallbacks;
+    normal = answer.result.normal;
+    return answer;
 }
 
 /// The pair along its motion, evaluated exactly, each evaluation warm-started from the last
@@ -188,16 +247,25 @@ class PairTrajectory {
             Superball(p_, 0.5 * diameter),
             advancedOrientation(m_.orientationI, m_.angularVelocityI, tau).toRotationMatrix(),
             advancedOrientation(m_.orientationJ, m_.angularVelocityJ, tau).toRotationMatrix(), d};
+        const double strain = m_.growthRate / diameter;
+        const PairRates rates{m_.relativeVelocity, m_.angularVelocityI, m_.angularVelocityJ,
+                              strain};
+        // Warm start: the last optimal normal carried along at its rate (first order in the
+        // time since, while that turns it by less than kExtrapolation radians).
+        const Vector3d shift = normalRate_ * (tau - lastTau_);
+        if (shift.norm() < kExtrapolation) normal_ = (normal_ + shift).normalized();
         // Far from contact a lower bound on s serves: its plane advances as well, and every
         // decision there (not touching, which side of a bracket) holds for s too.
-        const SignedDistanceResult r =
-            exactSignedDistance(pair, normal_, limits_.nearGap * diameter, limits_, stats_);
+        const WarmNewton evaluation = exactSignedDistance(pair, normal_, limits_.nearGap * diameter,
+                                                          limits_, stats_, &rates);
+        const SignedDistanceResult& r = evaluation.result;
+        lastTau_ = tau;
+        normalRate_ = evaluation.normalRate;
         // ds/dtau by the envelope theorem: the closing speed along n of the two support points,
         // each moving at omega x x + (gamma / D) x about its own centre; taken at their midpoint,
         // the point where the resolver applies the impulse, so that "closing" means the same to
         // both (on near-flat faces the support points can lie far apart on the face).
         const Vector3d xI = 0.5 * (r.contactA + r.contactB), xJ = xI - d;
-        const double strain = m_.growthRate / diameter;
         const Vector3d vI = m_.angularVelocityI.cross(xI) + strain * xI;
         const Vector3d vJ = m_.angularVelocityJ.cross(xJ) + strain * xJ;
         return {tau, r.signedDistance, r.normal.dot(m_.relativeVelocity + vJ - vI), r.normal,
@@ -210,6 +278,9 @@ class PairTrajectory {
     Vector3d& normal_;
     const SuperballPredictorLimits& limits_;
     SuperballPredictorStats& stats_;
+    static constexpr double kExtrapolation = 0.1;
+    double lastTau_ = 0.0;
+    Vector3d normalRate_ = Vector3d::Zero(); ///< of normal_ at lastTau_ (zero: unknown)
 };
 
 } // namespace
@@ -425,7 +496,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Ve
 PairContact SuperballShape::contact(const PairMotion& m, Vector3d& normal) const {
     const SuperballPair pair{Superball(p_, 0.5 * m.diameter), m.orientationI.toRotationMatrix(),
                              m.orientationJ.toRotationMatrix(), m.displacement};
-    const SignedDistanceResult r = exactSignedDistance(pair, normal, kNever, limits, stats);
+    const SignedDistanceResult r = exactSignedDistance(pair, normal, kNever, limits, stats).result;
     const Vector3d armI = 0.5 * (r.contactA + r.contactB);
     return {r.normal, armI, armI - m.displacement, m.displacement.norm()};
 }
