@@ -37,6 +37,32 @@ double lpNorm(const Vector3d& u, double e) {
     return m * power(sum, 1.0 / e);
 }
 
+/// ||u||_q and its gradient for finite q and u != 0, from three powers: with m = max |u_i|,
+/// y_i = |u_i| / m, a_i = y_i^q, sum = sum a_i and norm = sum^{1/q} (= ||u||_q / m), the ratios
+/// r_i = y_i / norm give the gradient sgn(u_i) r_i^{q-1} = (a_i / y_i) (norm / sum).
+struct DualNorm {
+    double m, sum, norm;
+    Vector3d y, a, gradient;
+};
+
+DualNorm dualNorm(const Vector3d& u, double q) {
+    DualNorm d{u.cwiseAbs().maxCoeff(), 0.0, 0.0, {}, {}, {}};
+    for (int i = 0; i < 3; ++i) {
+        d.y[i] = std::abs(u[i]) / d.m;
+        d.a[i] = d.y[i] == 1.0 ? 1.0 : power(d.y[i], q); // the largest is 1
+        d.sum += d.a[i];
+    }
+    d.norm = power(d.sum, 1.0 / q);
+    for (int i = 0; i < 3; ++i) {
+        const double ratio = d.y[i] / d.norm;
+        d.gradient[i] = d.a[i] >= std::numeric_limits<double>::min() && ratio >= kHessianRatioFloor
+                            ? (d.a[i] / d.y[i]) * (d.norm / d.sum)
+                            : std::pow(ratio, q - 1.0);
+        d.gradient[i] = std::copysign(d.gradient[i], u[i]);
+    }
+    return d;
+}
+
 /// Tanh-sinh (double exponential) quadrature of f on [0, 1]: exact to rounding for the
 /// algebraic endpoint singularities |x|^q of the support function. Refines until two
 /// levels agree to 1e-15.
@@ -108,51 +134,33 @@ double Superball::support(const Vector3d& nBody) const {
 }
 
 Vector3d Superball::supportPoint(const Vector3d& nBody) const {
-    const double m = nBody.cwiseAbs().maxCoeff();
     Vector3d x = Vector3d::Zero();
-    if (m == 0.0) return x;
+    if (nBody.isZero(0.0)) return x;
     if (q_ == kInf) { // octahedron: the vertex on the dominant axis
         int k = 0;
         nBody.cwiseAbs().maxCoeff(&k);
         x[k] = std::copysign(r_, nBody[k]);
         return x;
     }
-    // x_i = R sgn(u_i) (|u_i| / ||u||_q)^{q-1}, with u normalised by max |u_i|.
-    const double norm = lpNorm(nBody / m, q_);
-    for (int i = 0; i < 3; ++i)
-        x[i] = std::copysign(r_ * std::pow(std::abs(nBody[i]) / m / norm, q_ - 1.0), nBody[i]);
-    return x;
+    return r_ * dualNorm(nBody, q_).gradient; // x = R grad ||u||_q
 }
 
 Superball::SupportJet Superball::supportJet(const Vector3d& nBody) const {
-    const double m = nBody.cwiseAbs().maxCoeff();
-    if (m == 0.0 || q_ == kInf) return {support(nBody), supportPoint(nBody), supportHessian(nBody)};
-    // y_i = |u_i| / m, a_i = y_i^q, S = sum a_i, norm of y = S^{1/q}; the ratios r_i = y_i / norm
-    // give r_i^{q-1} = (a_i / y_i) (norm / S) and r_i^{q-2} = (a_i / y_i^2) (norm^2 / S).
-    Vector3d y, a;
-    double sum = 0.0;
+    if (nBody.isZero(0.0) || q_ == kInf)
+        return {support(nBody), supportPoint(nBody), supportHessian(nBody)};
+    // d2 ||u||_q = (q-1)/||u||_q [diag(r_i^{q-2}) - g g^T], r_i^{q-2} = |g_i| / r_i.
+    const DualNorm d = dualNorm(nBody, q_);
+    Vector3d diagonal;
     for (int i = 0; i < 3; ++i) {
-        y[i] = std::abs(nBody[i]) / m;
-        a[i] = y[i] == 1.0 ? 1.0 : power(y[i], q_); // the largest is 1
-        sum += a[i];
-    }
-    const double norm = power(sum, 1.0 / q_);
-    Vector3d g, diagonal;
-    for (int i = 0; i < 3; ++i) {
-        const double ratio = y[i] / norm;
-        if (a[i] >= std::numeric_limits<double>::min() && ratio >= kHessianRatioFloor) {
-            g[i] = (a[i] / y[i]) * (norm / sum);
-            diagonal[i] = g[i] / ratio;
-        } else {
-            g[i] = std::pow(ratio, q_ - 1.0);
-            diagonal[i] = std::pow(std::max(ratio, kHessianRatioFloor), q_ - 2.0);
-        }
-        g[i] = std::copysign(g[i], nBody[i]);
+        const double ratio = d.y[i] / d.norm;
+        diagonal[i] = d.a[i] >= std::numeric_limits<double>::min() && ratio >= kHessianRatioFloor
+                          ? std::abs(d.gradient[i]) / ratio
+                          : std::pow(std::max(ratio, kHessianRatioFloor), q_ - 2.0);
     }
     Matrix3d hessian = diagonal.asDiagonal();
-    hessian -= g * g.transpose();
-    const double fullNorm = m * norm;
-    return {r_ * fullNorm, r_ * g, (r_ * (q_ - 1.0) / fullNorm) * hessian};
+    hessian -= d.gradient * d.gradient.transpose();
+    const double fullNorm = d.m * d.norm;
+    return {r_ * fullNorm, r_ * d.gradient, (r_ * (q_ - 1.0) / fullNorm) * hessian};
 }
 
 Matrix3d Superball::supportHessian(const Vector3d& nBody) const {

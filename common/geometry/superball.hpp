@@ -34,11 +34,12 @@ class Superball {
 
     /// Support function h(n) = R ||n||_q; n need not be a unit vector (h is homogeneous).
     double support(const Vector3d& nBody) const;
-    /// The point of the surface that maximises n . x (body frame); a vertex or face
-    /// point where the maximiser is not unique.
+    /// The point of the surface that maximises n . x (body frame), the gradient of h, from three
+    /// powers; a vertex or face point where the maximiser is not unique.
     Vector3d supportPoint(const Vector3d& nBody) const;
-    /// h, its gradient (the support point) and its Hessian (clamped as supportHessian) at once,
-    /// from four powers: the event-driven predictor's inner loop.
+    /// h, its gradient (the support point, the same bits as supportPoint) and its Hessian
+    /// (clamped as supportHessian) at once, from the same three powers: the event-driven
+    /// predictor's inner loop.
     struct SupportJet {
         double value;
         Vector3d point;

@@ -351,8 +351,8 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Ve
             advancedOrientation(m.orientationI, m.angularVelocityI, tau).toRotationMatrix();
         const Matrix3d qj =
             advancedOrientation(m.orientationJ, m.angularVelocityJ, tau).toRotationMatrix();
-        const Vector3d xI = qi * body.supportJet(qi.transpose() * n).point;
-        const Vector3d xJ = qj * body.supportJet(qj.transpose() * n).point;
+        const Vector3d xI = qi * body.supportPoint(qi.transpose() * n);
+        const Vector3d xJ = qj * body.supportPoint(qj.transpose() * n);
         return {n.dot(m.displacement + m.relativeVelocity * tau - xI - xJ),
                 planeGapRate(m, diameter, n, xI, xJ)};
     };
