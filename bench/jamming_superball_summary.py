@@ -17,7 +17,7 @@ def read(path):
         row = {k: log[k] for k in log if k in (
             "collisions", "rechecks", "predictor_calls", "predictor_evaluations",
             "predictor_fallbacks", "predictor_limit_hits", "predictor_robust_evaluations",
-            "predictor_plane_steps", "wall_time_s", "cpu_time_s",
+            "predictor_plane_steps", "predictor_newton_steps", "wall_time_s", "cpu_time_s",
             "z_mean", "rattler_fraction", "worst_gap_over_d", "overlapping_pairs")}
         row.update(p=float(a["p"]), phi=float(a["phi"]), n=int(a["n_particles"]),
                    pressure=float(a.get("reduced_pressure", np.nan)), path=path)
@@ -36,10 +36,14 @@ def fmt(r):
     def per(key):  # per collision; absent from files of sbgen before these counters
         return f"{r[key] / r['collisions']:.2f}" if key in r else "-"
 
+    steps = r.get("predictor_newton_steps")
+    newton = f"{steps / r['predictor_evaluations']:.2f}" if steps is not None else "-"
+
     return (f"| {os.path.basename(r['path'])} | {r['p']:g} | {r['n']} | {r['pressure']:.2e} | "
             f"{r['phi']:.4f} | {diff} | {z} | {rattlers} | {gap} | {overlaps} | "
             f"{r['collisions'] / 1e6:.2f} | {cpu:.0f} | {r['collisions'] / cpu:.0f} | "
             f"{r['predictor_evaluations'] / r['collisions']:.1f} | {per('predictor_robust_evaluations')} | "
+            f"{newton} | "
             f"{per('predictor_plane_steps')} | "
             f"{r['rechecks'] / r['collisions']:.3f} | {r['predictor_fallbacks']} |")
 
@@ -47,9 +51,9 @@ def fmt(r):
 work = sys.argv[1]
 print("| file | p | N | P | phi | phi - paper | Z | phi_R | worst gap / D | overlaps | "
       "M collisions | CPU s | collisions / CPU s | exact s per collision | "
-      "robust s per collision | plane steps per collision | rechecks per collision | "
-      "solver fallbacks |")
-print("|" + "---|" * 18)
+      "robust s per collision | Newton steps per exact s | plane steps per collision | "
+      "rechecks per collision | solver fallbacks |")
+print("|" + "---|" * 19)
 rows = []
 for path in sorted(glob.glob(f"{work}/*.h5")):
     if path.endswith(".checkpoint.h5") and os.path.exists(path.replace(".checkpoint", "")):

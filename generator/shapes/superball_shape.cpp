@@ -186,6 +186,7 @@ WarmNewton exactSignedDistance(const SuperballPair& pair, Vector3d& normal, doub
     WarmNewton warm =
         newtonSignedDistance(pair, normal.isZero(0.0) ? pair.displacement.normalized() : normal,
                              limits.newtonSteps, rates);
+    stats.newtonSteps += warm.result.iterations;
     // Unconverged below the bound (near-cubes, whose support functions are nearly piecewise
     // linear): Newton again from the best face normal of either body, where their contacts lie.
     if (!warm.converged && warm.result.signedDistance <= boundSuffices && pair.shape.p() > 1.0) {
@@ -205,6 +206,7 @@ WarmNewton exactSignedDistance(const SuperballPair& pair, Vector3d& normal, doub
             }
         if (!best.isZero(0.0)) {
             WarmNewton restart = newtonSignedDistance(pair, best, limits.newtonSteps, rates);
+            stats.newtonSteps += restart.result.iterations;
             if (restart.converged || restart.result.signedDistance > warm.result.signedDistance)
                 warm = restart;
         }

@@ -51,6 +51,7 @@ struct SuperballPredictorStats {
     long planeRejections = 0;   ///< the cached normal's plane separates up to the horizon
     long evaluations = 0;       ///< exact signed distances (advancement, Newton, refinement)
     long robustEvaluations = 0; ///< of those, by the robust pair solver (no warm Newton)
+    long newtonSteps = 0;       ///< warm Newton iterations on the normal, over all evaluations
     long lowerBounds = 0;       ///< of those, far from contact: unconverged Newton's bound
     long planeSteps = 0;        ///< advancement steps on a plane gap (two support functions)
     long chordSteps = 0;        ///< of those, steps certified by the plane's chord bound
@@ -69,6 +70,7 @@ struct SuperballPredictorStats {
         {"predictor_plane_rejections", &SuperballPredictorStats::planeRejections},
         {"predictor_evaluations", &SuperballPredictorStats::evaluations},
         {"predictor_robust_evaluations", &SuperballPredictorStats::robustEvaluations},
+        {"predictor_newton_steps", &SuperballPredictorStats::newtonSteps},
         {"predictor_lower_bounds", &SuperballPredictorStats::lowerBounds},
         {"predictor_plane_steps", &SuperballPredictorStats::planeSteps},
         {"predictor_chord_steps", &SuperballPredictorStats::chordSteps},
