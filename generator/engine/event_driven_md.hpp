@@ -23,7 +23,9 @@
 #include "neighbours/neighbour_lists.hpp"
 #include "packing/packing.hpp"
 #include "shapes/pair_motion.hpp"
+#include "shapes/sphere.hpp"
 
+#include <algorithm>
 #include <csignal>
 #include <cstdint>
 #include <limits>
@@ -198,16 +200,16 @@ template <class Shape> class EventDrivenMd {
 
     void schedule(int i) { queue_.set(i, std::min(collision_[i].time, exit_[i])); }
 
-    /// Predicts the pair up to the earliest of i's best so far, j's next event, i's list exit
-    /// and the lists' growth horizon.
-    void consider(int i, int j, double t) {
+    /// Predicts the pair, moving as `m` from time t, up to the earliest of i's best so far, j's
+    /// next event, i's list exit and the lists' growth horizon.
+    void consider(int i, int j, double t, const PairMotion& m) {
         const double limit =
             std::min(std::min(collision_[i].time, exit_[i]), std::min(queue_.time(j), horizon_));
         Vector3d normal = Vector3d::Zero();
         const double sign = i < j ? 1.0 : -1.0;
         if constexpr (Shape::kRotates) normal = sign * pairNormal(i, j);
         const bool resolved = t == resolvedAt_ && pairKey(i, j) == resolvedPair_;
-        const Prediction next = shape_.collisionTime(motion(i, j, t), limit - t, normal, resolved);
+        const Prediction next = shape_.collisionTime(m, limit - t, normal, resolved);
         if constexpr (Shape::kRotates) pairNormal(i, j) = sign * normal;
         const double when = t + next.time;
         if (when < collision_[i].time)
@@ -215,11 +217,31 @@ template <class Shape> class EventDrivenMd {
                                          : PredictedCollision{when, -1, 0};
     }
 
-    /// i's earliest collision with any listed neighbour, predicted at time t.
+    /// i's earliest collision with any listed neighbour, predicted at time t. Rotating shapes
+    /// take the neighbours in the order in which their inscribed spheres would touch (by then
+    /// the bodies certainly have): the earliest contact tends to come first, and the horizon it
+    /// sets lets the cheap tiers reject the rest (exact evaluations per collision 15.7 -> 14.0
+    /// at p = 1.5).
     void predict(int i, double t) {
         collision_[i] = {};
-        for (const int j : lists_.of(i))
-            consider(i, j, t);
+        const std::vector<int>& list = lists_.of(i);
+        if constexpr (Shape::kRotates) {
+            motions_.clear();
+            order_.clear();
+            for (int k = 0; k < static_cast<int>(list.size()); ++k) {
+                motions_.push_back(motion(i, list[k], t));
+                PairMotion inscribed = motions_.back();
+                inscribed.diameter *= shape_.inscribedRatio();
+                inscribed.growthRate *= shape_.inscribedRatio();
+                order_.emplace_back(SphereShape{}.collisionTime(inscribed), k);
+            }
+            std::sort(order_.begin(), order_.end());
+            for (const auto& [touch, k] : order_)
+                consider(i, list[k], t, motions_[k]);
+        } else {
+            for (const int j : list)
+                consider(i, j, t, motion(i, j, t));
+        }
         schedule(i);
     }
 
@@ -331,6 +353,8 @@ template <class Shape> class EventDrivenMd {
     std::vector<PredictedCollision> collision_;
     std::vector<double> exit_; ///< time each particle leaves its neighbour-list sphere
     std::unordered_map<std::uint64_t, Vector3d> normals_; ///< warm starts, lower index to higher
+    std::vector<PairMotion> motions_;           ///< predict()'s scratch: each neighbour's motion
+    std::vector<std::pair<double, int>> order_; ///< and when its inscribed spheres touch
     double horizon_ = kNever;
     double exitRadius_ = 0.0;
     /// The last collision's pair and time: its predictions at that time start separated.

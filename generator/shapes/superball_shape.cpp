@@ -288,8 +288,8 @@ class PairTrajectory {
 } // namespace
 
 SuperballShape::SuperballShape(double p)
-    : p_(p), c_(Superball(p, 1.0).circumradius()),
-      lever_(std::sqrt(c_ * c_ - std::pow(Superball(p, 1.0).inradius(), 2))),
+    : p_(p), c_(Superball(p, 1.0).circumradius()), cIn_(Superball(p, 1.0).inradius()),
+      lever_(std::sqrt(c_ * c_ - cIn_ * cIn_)),
       inertiaPerMassUnit_(Superball(p, 1.0).inertiaPerMass()) {}
 
 double SuperballShape::inertiaPerMass(double diameter) const {

@@ -99,6 +99,8 @@ class SuperballShape {
     double p() const { return p_; }
     /// Circumradius over semi-axis, c = max(1, 3^{1/2 - 1/(2p)}).
     double circumscribedRatio() const { return c_; }
+    /// Inradius over semi-axis, min(1, 3^{1/2 - 1/(2p)}).
+    double inscribedRatio() const { return cIn_; }
     /// I / m of a body of diameter D (isotropic inertia, DESIGN.md §1).
     double inertiaPerMass(double diameter) const;
 
@@ -123,6 +125,7 @@ class SuperballShape {
   private:
     double p_;
     double c_;
+    double cIn_;
     double lever_; ///< sqrt(c^2 - c_in^2): bound on a support point's offset from its normal
     double inertiaPerMassUnit_; ///< I / m at semi-axis 1
 };
