@@ -144,7 +144,8 @@ WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n, int maxSt
         // rounding level: f(n) is a lower bound on s, accurate to ~1e-17 D then.
         auto converged = [&] {
             WarmNewton w = answer(iteration + 1, true);
-            if (rates) w.normalRate = optimalNormalRate(*rates, now.n, basis, hessian, xi, xj, hi, hj);
+            if (rates)
+                w.normalRate = optimalNormalRate(*rates, now.n, basis, hessian, xi, xj, hi, hj);
             return w;
         };
         if (gradient.norm() <= 1e-9 * size && gradient.dot(step) <= 1e-17 * size)
@@ -258,8 +259,8 @@ class PairTrajectory {
         if (shift.norm() < kExtrapolation) normal_ = (normal_ + shift).normalized();
         // Far from contact a lower bound on s serves: its plane advances as well, and every
         // decision there (not touching, which side of a bracket) holds for s too.
-        const WarmNewton evaluation = exactSignedDistance(pair, normal_, limits_.nearGap * diameter,
-                                                          limits_, stats_, &rates);
+        const WarmNewton evaluation =
+            exactSignedDistance(pair, normal_, limits_.nearGap * diameter, limits_, stats_, &rates);
         const SignedDistanceResult& r = evaluation.result;
         lastTau_ = tau;
         normalRate_ = evaluation.normalRate;
