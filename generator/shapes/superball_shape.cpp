@@ -254,9 +254,9 @@ class PairTrajectory {
         const PairRates rates{m_.relativeVelocity, m_.angularVelocityI, m_.angularVelocityJ,
                               strain};
         // Warm start: the last optimal normal carried along at its rate (first order in the
-        // time since, while that turns it by less than kExtrapolation radians).
+        // time since, while that turns it by less than limits.maxNormalCarry).
         const Vector3d shift = normalRate_ * (tau - lastTau_);
-        if (shift.norm() < kExtrapolation) normal_ = (normal_ + shift).normalized();
+        if (shift.norm() < limits_.maxNormalCarry) normal_ = (normal_ + shift).normalized();
         // Far from contact a lower bound on s serves: its plane advances as well, and every
         // decision there (not touching, which side of a bracket) holds for s too.
         const WarmNewton evaluation =
@@ -281,7 +281,6 @@ class PairTrajectory {
     Vector3d& normal_;
     const SuperballPredictorLimits& limits_;
     SuperballPredictorStats& stats_;
-    static constexpr double kExtrapolation = 0.1;
     double lastTau_ = 0.0;
     Vector3d normalRate_ = Vector3d::Zero(); ///< of normal_ at lastTau_ (zero: unknown)
 };

@@ -42,6 +42,9 @@ struct SuperballPredictorLimits {
     int newtonSteps = 32;
     /// Evaluations of the bracketed refinement before it settles for the bracket's safe end.
     int maxRefinementSteps = 100;
+    /// Along a trajectory each exact evaluation starts from the last optimal normal carried at
+    /// its rate dn/dtau, while that turns it by less than this (radians).
+    double maxNormalCarry = 0.1;
 };
 
 /// What the predictor did, summed over calls (reset by the caller).
