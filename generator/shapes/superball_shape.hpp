@@ -64,7 +64,7 @@ struct SuperballPredictorStats {
     long distanceFallbacks = 0; ///< pair-solver cutting-plane finishes
     long rechecks = 0;          ///< step limit reached: a safe recheck time instead of a contact
     long limitHits = 0;         ///< refinement limit reached: the bracket's safe end returned
-    long startOverlaps = 0;     ///< s(0) < -contactGap D (never in a valid packing)
+    long startOverlaps = 0;     ///< s(0) < -contactGap D (the pair just resolved, by rounding)
 
     /// Each counter with its provenance name (the names of earlier files kept).
     static constexpr std::pair<const char*, long SuperballPredictorStats::*> kCounters[] = {
