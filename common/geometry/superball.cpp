@@ -25,40 +25,51 @@ double power(double y, double e) {
     return std::exp2(e * std::log2(y));
 }
 
-/// ||u||_e for 1 <= e <= inf, normalised by max |u_i| before any power (no overflow).
+/// The parts of ||u||_e for finite e and u != 0, normalised by m = max |u_i| before any power
+/// (no overflow): y_i = |u_i| / m, a_i = y_i^e, sum = sum a_i and norm = sum^{1/e} (=
+/// ||u||_e / m), from two powers and one for each component below the largest.
+struct NormParts {
+    double m, sum, norm;
+    Vector3d y, a;
+};
+
+NormParts normParts(const Vector3d& u, double e) {
+    NormParts n{u.cwiseAbs().maxCoeff(), 0.0, 0.0, {}, {}};
+    for (int i = 0; i < 3; ++i) {
+        n.y[i] = std::abs(u[i]) / n.m;
+        n.a[i] = n.y[i] == 1.0 ? 1.0 : power(n.y[i], e); // the largest is 1: one power fewer
+        n.sum += n.a[i];
+    }
+    n.norm = power(n.sum, 1.0 / e);
+    return n;
+}
+
+/// ||u||_e for 1 <= e <= inf.
 double lpNorm(const Vector3d& u, double e) {
     const double m = u.cwiseAbs().maxCoeff();
     if (m == 0.0 || e == kInf) return m;
-    double sum = 0.0;
-    for (int i = 0; i < 3; ++i) {
-        const double y = std::abs(u[i]) / m;
-        sum += y == 1.0 ? 1.0 : power(y, e); // the largest is 1: one power fewer
-    }
-    return m * power(sum, 1.0 / e);
+    return m * normParts(u, e).norm;
 }
 
-/// ||u||_q and its gradient for finite q and u != 0, from three powers: with m = max |u_i|,
-/// y_i = |u_i| / m, a_i = y_i^q, sum = sum a_i and norm = sum^{1/q} (= ||u||_q / m), the ratios
-/// r_i = y_i / norm give the gradient sgn(u_i) r_i^{q-1} = (a_i / y_i) (norm / sum).
+/// ||u||_q and its gradient for finite q and u != 0: the ratios r_i = y_i / norm give the
+/// gradient sgn(u_i) r_i^{q-1} = (a_i / y_i) (norm / sum), where the component is `regular`
+/// (a_i normal, r_i above the Hessian's floor); otherwise r_i^{q-1} by a power.
 struct DualNorm {
-    double m, sum, norm;
-    Vector3d y, a, gradient;
+    NormParts parts;
+    Vector3d ratio, gradient;
+    Eigen::Array<bool, 3, 1> regular;
 };
 
 DualNorm dualNorm(const Vector3d& u, double q) {
-    DualNorm d{u.cwiseAbs().maxCoeff(), 0.0, 0.0, {}, {}, {}};
+    DualNorm d{normParts(u, q), {}, {}, {}};
+    const NormParts& n = d.parts;
     for (int i = 0; i < 3; ++i) {
-        d.y[i] = std::abs(u[i]) / d.m;
-        d.a[i] = d.y[i] == 1.0 ? 1.0 : power(d.y[i], q); // the largest is 1
-        d.sum += d.a[i];
-    }
-    d.norm = power(d.sum, 1.0 / q);
-    for (int i = 0; i < 3; ++i) {
-        const double ratio = d.y[i] / d.norm;
-        d.gradient[i] = d.a[i] >= std::numeric_limits<double>::min() && ratio >= kHessianRatioFloor
-                            ? (d.a[i] / d.y[i]) * (d.norm / d.sum)
-                            : std::pow(ratio, q - 1.0);
-        d.gradient[i] = std::copysign(d.gradient[i], u[i]);
+        d.ratio[i] = n.y[i] / n.norm;
+        d.regular[i] =
+            n.a[i] >= std::numeric_limits<double>::min() && d.ratio[i] >= kHessianRatioFloor;
+        d.gradient[i] = std::copysign(d.regular[i] ? (n.a[i] / n.y[i]) * (n.norm / n.sum)
+                                                   : std::pow(d.ratio[i], q - 1.0),
+                                      u[i]);
     }
     return d;
 }
@@ -151,15 +162,12 @@ Superball::SupportJet Superball::supportJet(const Vector3d& nBody) const {
     // d2 ||u||_q = (q-1)/||u||_q [diag(r_i^{q-2}) - g g^T], r_i^{q-2} = |g_i| / r_i.
     const DualNorm d = dualNorm(nBody, q_);
     Vector3d diagonal;
-    for (int i = 0; i < 3; ++i) {
-        const double ratio = d.y[i] / d.norm;
-        diagonal[i] = d.a[i] >= std::numeric_limits<double>::min() && ratio >= kHessianRatioFloor
-                          ? std::abs(d.gradient[i]) / ratio
-                          : std::pow(std::max(ratio, kHessianRatioFloor), q_ - 2.0);
-    }
+    for (int i = 0; i < 3; ++i)
+        diagonal[i] = d.regular[i] ? std::abs(d.gradient[i]) / d.ratio[i]
+                                   : std::pow(std::max(d.ratio[i], kHessianRatioFloor), q_ - 2.0);
     Matrix3d hessian = diagonal.asDiagonal();
     hessian -= d.gradient * d.gradient.transpose();
-    const double fullNorm = d.m * d.norm;
+    const double fullNorm = d.parts.m * d.parts.norm;
     return {r_ * fullNorm, r_ * d.gradient, (r_ * (q_ - 1.0) / fullNorm) * hessian};
 }
 
