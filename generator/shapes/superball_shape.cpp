@@ -428,7 +428,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Ve
                                                : 2.0 * g.gap / (margin - g.rate);
             bool chordStep = false;
             for (double tryStep = std::min({end - tau, 0.9 * chord, likely});
-                 tryStep > firstOrder && !chordStep; tryStep *= 0.125) {
+                 g.gap > 0.0 && tryStep > firstOrder && !chordStep; tryStep *= 0.125) {
                 const PlaneGap far = planeGap(n, tau + tryStep);
                 ++stats.planeSteps;
                 if (std::min(g.gap, far.gap) > 0.125 * curvature * tryStep * tryStep) {
