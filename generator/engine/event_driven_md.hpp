@@ -7,10 +7,12 @@
 // since the prediction.
 //
 // Rotating shapes (Shape::kRotates) also carry an orientation and a constant angular velocity
-// between collisions; each pair keeps its last contact normal as the predictor's warm start, and
-// each prediction is asked only up to the earliest event of the two particles (a later contact
-// would be stale by then, and the particle predicted last before it finds it). A prediction that
-// hits its work limit schedules a recheck of the particle instead of a collision.
+// between collisions; each pair keeps the predictor's memory (its last contact normal as the warm
+// start, and a lower bound on that normal's plane gap, usable while neither particle's motion has
+// changed since), and each prediction is asked only up to the earliest event of the two
+// particles (a later contact would be stale by then, and the particle predicted last before it
+// finds it). A prediction that hits its work limit schedules a recheck of the particle instead
+// of a collision.
 //
 // Particles are advanced lazily (each has its own time stamp). run() ends synchronised: every
 // particle is advanced to the final time, wrapped into [0, L), and that time becomes the new time
@@ -193,9 +195,35 @@ template <class Shape> class EventDrivenMd {
                static_cast<std::uint64_t>(std::max(i, j));
     }
 
-    /// The pair's cached normal, from the lower index to the higher (rotating shapes only).
-    Vector3d& pairNormal(int i, int j) {
-        return normals_.try_emplace(pairKey(i, j), Vector3d::Zero()).first->second;
+    /// What the engine keeps of a pair between predictions (rotating shapes only): the
+    /// predictor's memory as seen from the lower index, when it was left and both particles'
+    /// event counters then.
+    struct PairRecord {
+        PairMemory memory;
+        double time = 0.0;
+        std::uint64_t counterLow = 0, counterHigh = 0;
+    };
+    PairRecord& pairRecord(int i, int j) { return pairs_[pairKey(i, j)]; }
+
+    /// The pair's memory for a prediction of i against j at time t, as seen from i: its gap bound
+    /// moved on to t while both particles still fly as they did when it was left (their counters
+    /// unchanged, or advanced by one collision at t itself), else dropped.
+    PairMemory recalled(int i, int j, double t) {
+        const PairRecord& record = pairRecord(i, j);
+        auto unchanged = [&](int k, std::uint64_t counter) {
+            return counter_[k] == counter || (counter_[k] == counter + 1 && changedAt_[k] == t);
+        };
+        const auto [low, high] = std::minmax(i, j);
+        PairMemory memory = unchanged(low, record.counterLow) && unchanged(high, record.counterHigh)
+                                ? record.memory.after(t - record.time)
+                                : record.memory.normalOnly();
+        if (i > j) memory.normal = -memory.normal;
+        return memory;
+    }
+    void remember(int i, int j, double t, PairMemory memory) {
+        if (i > j) memory.normal = -memory.normal;
+        const auto [low, high] = std::minmax(i, j);
+        pairRecord(i, j) = {memory, t, counter_[low], counter_[high]};
     }
 
     void schedule(int i) { queue_.set(i, std::min(collision_[i].time, exit_[i])); }
@@ -205,12 +233,15 @@ template <class Shape> class EventDrivenMd {
     void consider(int i, int j, double t, const PairMotion& m) {
         const double limit =
             std::min(std::min(collision_[i].time, exit_[i]), std::min(queue_.time(j), horizon_));
-        Vector3d normal = Vector3d::Zero();
-        const double sign = i < j ? 1.0 : -1.0;
-        if constexpr (Shape::kRotates) normal = sign * pairNormal(i, j);
         const bool resolved = t == resolvedAt_ && pairKey(i, j) == resolvedPair_;
-        const Prediction next = shape_.collisionTime(m, limit - t, normal, resolved);
-        if constexpr (Shape::kRotates) pairNormal(i, j) = sign * normal;
+        Prediction next;
+        if constexpr (Shape::kRotates) {
+            PairMemory memory = recalled(i, j, t);
+            next = shape_.collisionTime(m, limit - t, memory, resolved);
+            remember(i, j, t, memory);
+        } else {
+            next = {shape_.collisionTime(m)}; // exact: touching and separating gives +inf
+        }
         const double when = t + next.time;
         if (when < collision_[i].time)
             collision_[i] = next.contact ? PredictedCollision{when, j, counter_[j]}
@@ -278,9 +309,9 @@ template <class Shape> class EventDrivenMd {
         const PairMotion m = motion(i, j, t);
         if constexpr (Shape::kRotates) {
             const double sign = i < j ? 1.0 : -1.0;
-            Vector3d normal = sign * pairNormal(i, j);
+            Vector3d normal = sign * pairRecord(i, j).memory.normal;
             const PairContact contact = shape_.contact(m, normal);
-            pairNormal(i, j) = sign * normal;
+            pairRecord(i, j).memory = {sign * normal}; // a new normal: its gap bound is unknown
             const double impulse =
                 resolveCollision(m, contact, shape_.inertiaPerMass(m.diameter),
                                  {state_[i].velocity, state_[i].angularVelocity},
@@ -295,6 +326,7 @@ template <class Shape> class EventDrivenMd {
         ++report.collisions;
         ++counter_[i];
         ++counter_[j];
+        changedAt_[i] = changedAt_[j] = t;
         resolvedPair_ = pairKey(i, j);
         resolvedAt_ = t;
         predictExit(i);
@@ -327,10 +359,11 @@ template <class Shape> class EventDrivenMd {
             anchors[i] = state_[i].position;
         lists_ = NeighbourLists(box_, shape_.circumscribedRatio() * maximum + 2.0 * exitRadius_,
                                 std::move(anchors));
-        normals_.clear(); // a rebuild is a deterministic function of the synchronised state
+        pairs_.clear(); // a rebuild is a deterministic function of the synchronised state
         resolvedAt_ = -kNever;
         time_.assign(size(), 0.0);
         counter_.assign(size(), 0);
+        changedAt_.assign(size(), -kNever);
         collision_.assign(size(), {});
         exit_.assign(size(), kNever);
         queue_ = EventQueue(size());
@@ -351,8 +384,9 @@ template <class Shape> class EventDrivenMd {
     std::vector<double> time_;
     std::vector<std::uint64_t> counter_;
     std::vector<PredictedCollision> collision_;
-    std::vector<double> exit_; ///< time each particle leaves its neighbour-list sphere
-    std::unordered_map<std::uint64_t, Vector3d> normals_; ///< warm starts, lower index to higher
+    std::vector<double> exit_;      ///< time each particle leaves its neighbour-list sphere
+    std::vector<double> changedAt_; ///< time of each particle's last collision
+    std::unordered_map<std::uint64_t, PairRecord> pairs_;
     std::vector<PairMotion> motions_;           ///< predict()'s scratch: each neighbour's motion
     std::vector<std::pair<double, int>> order_; ///< and when its inscribed spheres touch
     double horizon_ = kNever;

@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <limits>
+
 namespace sbpack {
 
 using Eigen::Quaterniond;
@@ -34,6 +36,28 @@ inline Quaterniond advancedOrientation(const Quaterniond& q0, const Vector3d& om
 struct Prediction {
     double time;
     bool contact = true;
+};
+
+/// What a prediction leaves for the pair's next one: the warm-start normal from i to j, and a
+/// lower bound on that normal's plane gap, g_n(0) >= gap, falling no faster than `rate` for tau in
+/// [0, span] along the motion predicted (the tier-2 rate bound of superball_shape.cpp). The next
+/// prediction may use the bound moved on to its time (`after`) only while neither particle has
+/// changed its motion since, but for at that very time.
+struct PairMemory {
+    Vector3d normal = Vector3d::Zero();                    ///< zero: none yet
+    double gap = -std::numeric_limits<double>::infinity(); ///< -inf: no bound
+    double rate = 0.0;
+    double span = 0.0;
+
+    /// The same memory `elapsed` later along the motion predicted.
+    PairMemory after(double elapsed) const {
+        PairMemory later = *this;
+        later.gap = elapsed >= 0.0 && elapsed <= span ? gap + rate * elapsed
+                                                      : -std::numeric_limits<double>::infinity();
+        return later;
+    }
+    /// The normal alone (a particle's motion has changed: the gap bound no longer holds).
+    PairMemory normalOnly() const { return {normal}; }
 };
 
 /// Where two touching bodies meet.

@@ -30,13 +30,6 @@ struct SphereShape {
         return c / (-b + std::sqrt(discriminant));
     }
 
-    /// The engine's interface: exact, so neither the horizon nor a cached normal helps, and a pair
-    /// just resolved separates (touching and separating gives +inf).
-    Prediction collisionTime(const PairMotion& m, double /*horizon*/, Vector3d& /*normal*/,
-                             bool /*resolved*/ = false) const {
-        return {collisionTime(m)};
-    }
-
     /// Contact of touching spheres: normal from i to j along the centre line, contact point at
     /// the midpoint (arms from each centre).
     PairContact contact(const PairMotion& m) const {
@@ -44,7 +37,6 @@ struct SphereShape {
         const Vector3d n = m.displacement / distance;
         return {n, 0.5 * distance * n, -0.5 * distance * n, distance};
     }
-    PairContact contact(const PairMotion& m, Vector3d& /*normal*/) const { return contact(m); }
 };
 
 } // namespace sbpack

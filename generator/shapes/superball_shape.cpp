@@ -296,9 +296,12 @@ double SuperballShape::inertiaPerMass(double diameter) const {
     return inertiaPerMassUnit_ * 0.25 * diameter * diameter;
 }
 
-Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Vector3d& normal,
+Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, PairMemory& memory,
                                          bool resolved) const {
     ++stats.calls;
+    Vector3d& normal = memory.normal;
+    const double remembered = memory.gap;
+    memory.gap = -kNever; // unless a bound on this normal's gap now is known below
     const Prediction none{kNever};
     const double D = m.diameter, gamma = m.growthRate, growth = std::max(gamma, 0.0);
     if (!(horizon > 0.0)) return none;
@@ -359,14 +362,24 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Ve
                 planeGapRate(m, diameter, n, xI, xJ)};
     };
 
-    // Tier 2: the cached normal's separating plane holds up to `end`; a pair without one (after
-    // a rebuild) tries the centre line's plane.
+    // Tier 2: the cached normal's separating plane holds up to `end`, by the first-order bound
+    // from the remembered lower bound on its gap (no support point) or from its exact gap, then
+    // by the chord to `end`; a pair without a normal (after a rebuild) tries the centre line's.
+    // Either bound, with this motion's rate, is left for the next prediction.
     if (normal.isZero(0.0)) normal = m.displacement.normalized();
+    const double fall = std::min(0.0, planeRate(normal));
+    auto separatedToEnd = [&](double gap) { return gap > 0.0 && gap + fall * end > 0.0; };
+    if (separatedToEnd(remembered)) {
+        ++stats.boundRejections;
+        memory = {normal, remembered, fall, end};
+        return none;
+    }
     const PlaneGap cached = planeGap(normal, 0.0);
     const double cachedGap = cached.gap;
-    if (cachedGap > 0.0 && (cachedGap + std::min(0.0, planeRate(normal)) * end > 0.0 ||
-                            (end < kNever && std::min(cachedGap, planeGap(normal, end).gap) >
-                                                 0.125 * planeCurvature(normal) * end * end))) {
+    memory = {normal, cachedGap, fall, end};
+    if (separatedToEnd(cachedGap) || (cachedGap > 0.0 && end < kNever &&
+                                      std::min(cachedGap, planeGap(normal, end).gap) >
+                                          0.125 * planeCurvature(normal) * end * end)) {
         ++stats.planeRejections;
         return none;
     }
@@ -460,6 +473,7 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Ve
         if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
         start = std::max(start, std::get<double>(reached));
     }
+    memory.gap = -kNever; // the exact evaluations move the normal on
     Sample now = trajectory.at(start);
     if (start == 0.0 && now.gap < -touching) ++stats.startOverlaps;
     for (;;) {

@@ -51,6 +51,7 @@ struct SuperballPredictorLimits {
 struct SuperballPredictorStats {
     long calls = 0;
     long sphereRejections = 0;  ///< circumscribed spheres do not meet before the horizon
+    long boundRejections = 0;   ///< the remembered bound on its gap shows it, unevaluated
     long planeRejections = 0;   ///< the cached normal's plane separates up to the horizon
     long evaluations = 0;       ///< exact signed distances (advancement, Newton, refinement)
     long robustEvaluations = 0; ///< of those, by the robust pair solver (no warm Newton)
@@ -70,6 +71,7 @@ struct SuperballPredictorStats {
     static constexpr std::pair<const char*, long SuperballPredictorStats::*> kCounters[] = {
         {"predictor_calls", &SuperballPredictorStats::calls},
         {"predictor_sphere_rejections", &SuperballPredictorStats::sphereRejections},
+        {"predictor_bound_rejections", &SuperballPredictorStats::boundRejections},
         {"predictor_plane_rejections", &SuperballPredictorStats::planeRejections},
         {"predictor_evaluations", &SuperballPredictorStats::evaluations},
         {"predictor_robust_evaluations", &SuperballPredictorStats::robustEvaluations},
@@ -108,13 +110,14 @@ class SuperballShape {
     double inertiaPerMass(double diameter) const;
 
     /// Earliest delay in [0, horizon] at which the pair touches, or +inf if none; a safe recheck
-    /// delay when the step limit is reached. `normal` (in/out) is the pair's cached unit normal
-    /// from i to j, or zero when unknown; it is updated when the pair is evaluated exactly.
+    /// delay when the step limit is reached. `memory` (in/out): the pair's cached unit normal
+    /// from i to j (zero when unknown), updated when the pair is evaluated exactly, and the bound
+    /// on its plane gap now (its own or the last one's, moved on), left for the next prediction.
     /// `resolved`: the engine has just applied this pair's impulse at this very state, which left
     /// the surfaces separating at the resolver's contact point, so touching now is no contact (on
     /// near-flat faces a re-evaluation can pick another point of the face and see it closing:
     /// zero impulses would repeat at one instant, and no time would pass).
-    Prediction collisionTime(const PairMotion& m, double horizon, Vector3d& normal,
+    Prediction collisionTime(const PairMotion& m, double horizon, PairMemory& memory,
                              bool resolved = false) const;
 
     /// Contact of touching bodies now: normal from i to j, arms to the midpoint of the two

@@ -147,7 +147,9 @@ class BruteForce {
 // ---- The predictor as the engine uses it -------------------------------------------------------
 
 /// The engine's loop over one pair: predict; at a safe recheck time (contact == false) predict
-/// again from there with the same cached normal; until a contact or none up to the horizon.
+/// again from there with the pair's memory moved on; until a contact or none up to the horizon.
+/// With `pieces` > 1 each prediction is asked only up to the next of `pieces` equal parts of the
+/// horizon (as the engine asks up to the pair's next event) and the next one starts there.
 struct EnginePrediction {
     double time = kNever;             ///< the contact, +inf if none
     std::vector<double> recheckTimes; ///< the safe times on the way
@@ -155,19 +157,24 @@ struct EnginePrediction {
 };
 
 EnginePrediction predictLikeTheEngine(const SuperballShape& shape, const PairMotion& m,
-                                      double horizon, Vector3d& normal) {
+                                      double horizon, PairMemory& memory, int pieces = 1) {
     EnginePrediction result;
     double now = 0.0;
     for (int round = 0; round < 10000; ++round) {
-        const Prediction next = shape.collisionTime(advancedPair(m, now), horizon - now, normal);
-        if (next.contact || std::isinf(next.time)) {
+        const double limit =
+            horizon * std::min(1.0, std::floor(now / horizon * pieces + 1.0) / pieces);
+        const Prediction next = shape.collisionTime(advancedPair(m, now), limit - now, memory);
+        const bool none = std::isinf(next.time);
+        if ((next.contact && !none) || (none && limit == horizon)) {
             result.time = now + next.time;
             result.finished = true;
             return result;
         }
-        if (!(next.time > 0.0)) return result; // a recheck that makes no progress
-        now += next.time;
-        result.recheckTimes.push_back(now);
+        const double step = none ? limit - now : next.time;
+        if (!(step > 0.0)) return result; // a recheck that makes no progress
+        memory = memory.after(step);
+        now += step;
+        if (!none) result.recheckTimes.push_back(now);
     }
     return result;
 }
@@ -250,11 +257,12 @@ std::string number(double x) {
 }
 
 void printStats(double p, const SuperballPredictorStats& s) {
-    std::printf("p %5.2f predictor: %ld calls, %ld sphere + %ld plane rejections, %ld evaluations "
+    std::printf("p %5.2f predictor: %ld calls, %ld sphere + %ld bound + %ld plane rejections, %ld "
+                "evaluations "
                 "(%ld robust), %ld plane steps (%ld chord), %ld Newton brackets (%ld uncertified), "
                 "%ld refinement steps, %ld rechecks, %ld limit hits, %ld pair-solver fallbacks, "
                 "%ld start overlaps\n",
-                p, s.calls, s.sphereRejections, s.planeRejections, s.evaluations,
+                p, s.calls, s.sphereRejections, s.boundRejections, s.planeRejections, s.evaluations,
                 s.robustEvaluations, s.planeSteps, s.chordSteps, s.newtonBrackets,
                 s.uncertifiedRoots, s.refinementSteps, s.rechecks, s.limitHits, s.distanceFallbacks,
                 s.startOverlaps);
@@ -284,7 +292,8 @@ class SuperballPredictorByP : public ::testing::TestWithParam<Shard> {};
 // 10^4 pairs per p in shards, half aimed at random, half grazing passes with a gap of
 // 1e-9 .. 1e-6 D at the closest approach on either side of zero; no, slow and fast spins; growth
 // 0 and > 0. Each pair is predicted from a cold normal, then again warm from the normal that
-// call left behind, each time in the engine's loop over safe recheck times.
+// call left behind and in eight pieces, so that the gap bound each piece leaves rejects later
+// ones unevaluated, each time in the engine's loop over safe recheck times.
 TEST_P(SuperballPredictorByP, NeverMissesAndAgreesWithBruteForce) {
     const double p = GetParam().p;
     const int pairs = GetParam().pairs;
@@ -322,9 +331,11 @@ TEST_P(SuperballPredictorByP, NeverMissesAndAgreesWithBruteForce) {
         }
         if (!std::isinf(first)) ++bruteContacts;
 
-        Vector3d normal = Vector3d::Zero();
+        PairMemory memory;
         for (const char* start : {"cold", "warm"}) {
-            const EnginePrediction predicted = predictLikeTheEngine(shape, m, horizon, normal);
+            memory = memory.normalOnly();
+            const EnginePrediction predicted =
+                predictLikeTheEngine(shape, m, horizon, memory, start[0] == 'c' ? 1 : 8);
             const std::string where = "p " + number(p) + " #" + std::to_string(trial) + " (" +
                                       start + " normal), brute " + number(first) + ", predicted " +
                                       number(predicted.time);
@@ -386,6 +397,7 @@ TEST_P(SuperballPredictorByP, NeverMissesAndAgreesWithBruteForce) {
         recheckRounds, bruteEvaluations);
     printStats(p, shape.stats);
     EXPECT_GT(bruteContacts, pairs / 4);
+    EXPECT_GT(shape.stats.boundRejections, 0); // the pieces' bounds were used
     EXPECT_GE(agreed + shallow + flat, bruteContacts - thinContacts);
 }
 
@@ -425,8 +437,8 @@ TEST(SuperballPredictor, AStaleNormalFromTheWrongSideGivesTheSameContact) {
         for (int trial = 0; trial < 60; ++trial) {
             const double gamma = trial % 2 == 0 ? 0.0 : 0.01 + 0.09 * random.uniform();
             const PairMotion m = randomApproach(p, random, trial % 3, gamma);
-            Vector3d cold = Vector3d::Zero();
-            Vector3d wrong = -m.displacement.normalized();
+            PairMemory cold;
+            PairMemory wrong{-m.displacement.normalized()};
             const EnginePrediction fresh = predictLikeTheEngine(shape, m, 3.0, cold);
             const EnginePrediction stale = predictLikeTheEngine(shape, m, 3.0, wrong);
             const std::string where = "p " + number(p) + " trial " + std::to_string(trial);
@@ -463,17 +475,17 @@ TEST(SuperballPredictor, AJustResolvedPairIsNotAContactAtThatInstant) {
             const std::string where = "p " + number(p) + " #" + std::to_string(trial);
             SuperballShape shape{p};
             m.relativeVelocity = -0.5 * n; // closing
-            Vector3d normal = Vector3d::Zero();
-            EXPECT_EQ(shape.collisionTime(m, 1.0, normal).time, 0.0) << where;
-            normal = Vector3d::Zero();
-            const Prediction later = shape.collisionTime(m, 1.0, normal, true);
+            PairMemory memory;
+            EXPECT_EQ(shape.collisionTime(m, 1.0, memory).time, 0.0) << where;
+            memory = {};
+            const Prediction later = shape.collisionTime(m, 1.0, memory, true);
             ASSERT_TRUE(later.contact) << where;
             EXPECT_GT(later.time, 0.0) << where;
             EXPECT_LE(later.time, 1e-9) << where;
             EXPECT_GE(relativeGapAt(p, m, later.time), -1e-12) << where;
             m.relativeVelocity = 0.5 * n; // separating
-            normal = Vector3d::Zero();
-            EXPECT_TRUE(std::isinf(shape.collisionTime(m, 1.0, normal, true).time)) << where;
+            memory = {};
+            EXPECT_TRUE(std::isinf(shape.collisionTime(m, 1.0, memory, true).time)) << where;
         }
     }
 }
@@ -492,8 +504,8 @@ TEST(SuperballPredictor, SphereCaseAgreesWithTheExactQuadratic) {
         const double gamma = trial % 2 == 0 ? 0.0 : 0.01 + 0.09 * random.uniform();
         const PairMotion m = randomApproach(1.0, random, trial % 3, gamma);
         const double exact = sphere.collisionTime(m);
-        Vector3d normal = Vector3d::Zero();
-        const double tau = predictLikeTheEngine(ball, m, horizon, normal).time;
+        PairMemory memory;
+        const double tau = predictLikeTheEngine(ball, m, horizon, memory).time;
         if (exact > horizon) {
             EXPECT_TRUE(std::isinf(tau)) << trial << ": " << tau;
             continue;
