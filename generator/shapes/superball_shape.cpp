@@ -461,12 +461,36 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Pa
         return tau;
     };
 
+    // Newton steps in time from an exact sample, each iterate exact, until one touches (closing)
+    // or brackets a root (then refined); none when an iterate turns away, would pass `end`, goes
+    // beyond where the start's plane could certify a root (M (t1 - t0)^2 / 2 < g(t0), below) or
+    // the limit is reached. Where s is convex in time the iterates approach the root from
+    // outside, quadratically, and no step needs certifying on the way: the root found is
+    // certified as the first one from the start (below).
+    auto newtonInTime = [&](const Sample& from) -> std::optional<Sample> {
+        const double reach = from.tau + std::sqrt(0.5 * from.gap / planeCurvature(from.normal));
+        Sample last = from;
+        for (int k = 0; k < limits.newtonStepsInTime; ++k) {
+            const double tau = last.tau - last.gap / last.rate;
+            if (!(tau > last.tau && tau <= std::min(end, reach))) return std::nullopt;
+            const Sample trial = trajectory.at(tau);
+            if (trial.gap <= 0.0) {
+                ++stats.newtonBrackets;
+                return refine(last, trial);
+            }
+            if (trial.rate >= 0.0) return std::nullopt;
+            if (trial.gap <= touching) return trial;
+            last = trial;
+        }
+        return std::nullopt;
+    };
+
     // Advancement: along the cached plane first, then from exact samples along their planes.
-    // Near contact and closing, a Newton step in time; when it brackets a root, the refined root
-    // t1 is the first one if the root normal's plane certifies [t0, t1): with g'' <= M and
-    // g(t1) ~ 0, g >= chord - M (t - t0)(t1 - t) / 2 > 0 there when g(t0) > M (t1 - t0)^2 / 2.
-    // Otherwise (s dips below zero and back within the step: rare, spin-driven) advancement
-    // goes on without Newton steps up to that root.
+    // Near contact and closing, Newton steps in time; the root t1 they reach is the first one if
+    // the root normal's plane certifies [t0, t1): with g'' <= M and g(t1) ~ 0,
+    // g >= chord - M (t - t0)(t1 - t) / 2 > 0 there when g(t0) > M (t1 - t0)^2 / 2. Otherwise
+    // (s dips below zero and back within the step: rare, spin-driven) advancement goes on
+    // without Newton steps up to that root.
     double start = enter;
     if (cachedGap > touching) {
         const auto reached = alongPlane(normal, 0.0, cached, cachedGap);
@@ -482,20 +506,17 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Pa
         const double rate = planeRate(now.normal);
         if (atEnd.time == kNever && now.gap <= near && now.rate < 0.0 && rate < 0.0) {
             const double tau = now.tau - now.gap / now.rate;
-            if (tau > now.tau + now.gap / -rate && tau <= end) {
-                const Sample trial = trajectory.at(tau);
-                if (trial.gap <= 0.0) {
-                    ++stats.newtonBrackets;
-                    const Sample root = refine(now, trial);
-                    if (root.gap > touching) return {root.tau, false}; // refinement stalled
-                    const double dt = root.tau - now.tau;
-                    if (planeGap(root.normal, now.tau).gap >
-                        0.5 * planeCurvature(root.normal) * dt * dt)
-                        return {root.tau};
-                    ++stats.uncertifiedRoots;
-                    end = root.tau;
-                    atEnd = {root.tau};
-                }
+            const std::optional<Sample> root =
+                tau > now.tau + now.gap / -rate ? newtonInTime(now) : std::nullopt;
+            if (root) {
+                if (root->gap > touching) return {root->tau, false}; // refinement stalled
+                const double dt = root->tau - now.tau;
+                if (planeGap(root->normal, now.tau).gap >
+                    0.5 * planeCurvature(root->normal) * dt * dt)
+                    return {root->tau};
+                ++stats.uncertifiedRoots;
+                end = root->tau;
+                atEnd = {root->tau};
             }
         }
         const auto reached = alongPlane(now.normal, now.tau, {now.gap, now.planeRate}, now.gap);

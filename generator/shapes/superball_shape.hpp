@@ -40,6 +40,8 @@ struct SuperballPredictorLimits {
     /// Warm Newton steps of an exact signed distance before the robust pair solver takes over
     /// (32: at p = 1.5 one exact evaluation in 170 needs it, against one in 37 with 8).
     int newtonSteps = 32;
+    /// Newton steps in time from one exact sample before advancement goes on along planes.
+    int newtonStepsInTime = 8;
     /// Evaluations of the bracketed refinement before it settles for the bracket's safe end.
     int maxRefinementSteps = 100;
     /// Along a trajectory each exact evaluation starts from the last optimal normal carried at
