@@ -205,11 +205,10 @@ template <class Shape> class EventDrivenMd {
     };
     PairRecord& pairRecord(int i, int j) { return pairs_[pairKey(i, j)]; }
 
-    /// The pair's memory for a prediction of i against j at time t, as seen from i: its gap bound
-    /// moved on to t while both particles still fly as they did when it was left (their counters
-    /// unchanged, or advanced by one collision at t itself), else dropped.
-    PairMemory recalled(int i, int j, double t) {
-        const PairRecord& record = pairRecord(i, j);
+    /// The pair's memory in `record` for a prediction of i against j at time t, as seen from i:
+    /// its gap bound moved on to t while both particles still fly as they did when it was left
+    /// (their counters unchanged, or advanced by one collision at t itself), else dropped.
+    PairMemory recalled(const PairRecord& record, int i, int j, double t) const {
         auto unchanged = [&](int k, std::uint64_t counter) {
             return counter_[k] == counter || (counter_[k] == counter + 1 && changedAt_[k] == t);
         };
@@ -220,10 +219,10 @@ template <class Shape> class EventDrivenMd {
         if (i > j) memory.normal = -memory.normal;
         return memory;
     }
-    void remember(int i, int j, double t, PairMemory memory) {
+    PairRecord remembered(int i, int j, double t, PairMemory memory) const {
         if (i > j) memory.normal = -memory.normal;
         const auto [low, high] = std::minmax(i, j);
-        pairRecord(i, j) = {memory, t, counter_[low], counter_[high]};
+        return {memory, t, counter_[low], counter_[high]};
     }
 
     void schedule(int i) { queue_.set(i, std::min(collision_[i].time, exit_[i])); }
@@ -236,9 +235,10 @@ template <class Shape> class EventDrivenMd {
         const bool resolved = t == resolvedAt_ && pairKey(i, j) == resolvedPair_;
         Prediction next;
         if constexpr (Shape::kRotates) {
-            PairMemory memory = recalled(i, j, t);
+            PairRecord& record = pairRecord(i, j);
+            PairMemory memory = recalled(record, i, j, t);
             next = shape_.collisionTime(m, limit - t, memory, resolved);
-            remember(i, j, t, memory);
+            record = remembered(i, j, t, memory);
         } else {
             next = {shape_.collisionTime(m)}; // exact: touching and separating gives +inf
         }
