@@ -17,7 +17,8 @@ def read(path):
         row = {k: log[k] for k in log if k in (
             "collisions", "rechecks", "predictor_calls", "predictor_evaluations",
             "predictor_fallbacks", "predictor_limit_hits", "predictor_robust_evaluations",
-            "predictor_plane_steps", "predictor_newton_steps", "wall_time_s", "cpu_time_s",
+            "predictor_plane_steps", "predictor_newton_steps", "predictor_bound_rejections",
+            "predictor_plane_rejections", "wall_time_s", "cpu_time_s",
             "z_mean", "rattler_fraction", "worst_gap_over_d", "overlapping_pairs")}
         row.update(p=float(a["p"]), phi=float(a["phi"]), n=int(a["n_particles"]),
                    pressure=float(a.get("reduced_pressure", np.nan)), path=path)
@@ -44,7 +45,8 @@ def fmt(r):
             f"{r['collisions'] / 1e6:.2f} | {cpu:.0f} | {r['collisions'] / cpu:.0f} | "
             f"{r['predictor_evaluations'] / r['collisions']:.1f} | {per('predictor_robust_evaluations')} | "
             f"{newton} | "
-            f"{per('predictor_plane_steps')} | "
+            f"{per('predictor_plane_steps')} | {per('predictor_bound_rejections')} | "
+            f"{per('predictor_plane_rejections')} | "
             f"{r['rechecks'] / r['collisions']:.3f} | {r['predictor_fallbacks']} |")
 
 
@@ -52,8 +54,9 @@ work = sys.argv[1]
 print("| file | p | N | P | phi | phi - paper | Z | phi_R | worst gap / D | overlaps | "
       "M collisions | CPU s | collisions / CPU s | exact s per collision | "
       "robust s per collision | Newton steps per exact s | plane steps per collision | "
+      "bound rejections per collision | plane rejections per collision | "
       "rechecks per collision | solver fallbacks |")
-print("|" + "---|" * 19)
+print("|" + "---|" * 21)
 rows = []
 for path in sorted(glob.glob(f"{work}/*.h5")):
     if path.endswith(".checkpoint.h5") and os.path.exists(path.replace(".checkpoint", "")):

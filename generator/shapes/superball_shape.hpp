@@ -13,13 +13,15 @@
 // convex), so g_n lies above its chord minus M_n (t - t0)(t1 - t) / 2: one plane gap at t1
 // certifies [t0, t1] (the chord step), however fast the first-order bound says s could fall.
 // Tiers, cheapest first: the circumscribed spheres do not meet before the horizon; the cached
-// normal's plane separates up to it; conservative advancement on planes (first-order and chord
-// steps on cheap plane gaps), refreshed by exact signed distances (warm Newton on the sphere,
-// restarted from the best face normal for p > 1, the robust pair solver as fallback; far from
-// contact an unconverged Newton's plane gap serves as a lower bound, and an overlap stands only
-// with a witness point inside both bodies); near contact a Newton step in time that brackets the
-// root, a safeguarded Newton refinement, and the root accepted as the first only when the root
-// normal's plane certifies the interval before it. A prediction that reaches its step limit
+// normal's plane separates up to it (first from the bound on its gap that the pair's last
+// prediction left, moved on by its rate bound: no support point; then from its exact gap);
+// conservative advancement on planes (first-order and chord steps on cheap plane gaps),
+// refreshed by exact signed distances (warm Newton on the sphere, restarted from the best face
+// normal for p > 1, the robust pair solver as fallback; far from contact an unconverged Newton's
+// plane gap serves as a lower bound, and an overlap stands only with a witness point inside both
+// bodies); near contact Newton steps in time until one touches or brackets the root, a
+// safeguarded Newton refinement, and the root accepted as the first only when the root normal's
+// plane certifies the interval before it. A prediction that reaches its step limit
 // returns a safe time up to which nothing touches (Prediction::contact = false) instead of
 // guessing.
 
