@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Acceptance runs of sbgen on rotating superballs (issue 4): N = 1000 at the paper's p values,
 # to reduced pressure 1e12 with --gamma-slow 1e-2, and the extreme runs N = 200 at p = 0.55 ..
-# 10 to 1e8 (each capped at EXTREME_SECONDS, default 3600: p = 10 takes 8-17 CPU minutes).
+# 10 to 1e8 (each capped at EXTREME_SECONDS, default 3600: p = 10 takes 8-20 CPU minutes).
 # Prints markdown tables: phi against the paper, Z, phi_R, the worst pair gap from the exact pair
 # geometry (common/pair, independent of the predictor), throughput per CPU second and the
 # predictor's work.
