@@ -309,9 +309,10 @@ template <class Shape> class EventDrivenMd {
         const PairMotion m = motion(i, j, t);
         if constexpr (Shape::kRotates) {
             const double sign = i < j ? 1.0 : -1.0;
-            Vector3d normal = sign * pairRecord(i, j).memory.normal;
+            PairRecord& record = pairRecord(i, j);
+            Vector3d normal = sign * record.memory.normal;
             const PairContact contact = shape_.contact(m, normal);
-            pairRecord(i, j).memory = {sign * normal}; // a new normal: its gap bound is unknown
+            record.memory = {sign * normal}; // a new normal: its gap bound is unknown
             const double impulse =
                 resolveCollision(m, contact, shape_.inertiaPerMass(m.diameter),
                                  {state_[i].velocity, state_[i].angularVelocity},

@@ -463,8 +463,9 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Pa
 
     // Newton steps in time from an exact sample, each iterate exact, until one touches (closing)
     // or brackets a root (then refined); none when an iterate turns away, would pass `end`, goes
-    // beyond where the start's plane could certify a root (M (t1 - t0)^2 / 2 < g(t0), below) or
-    // the limit is reached. Where s is convex in time the iterates approach the root from
+    // beyond the reach where the root's certificate (M (t1 - t0)^2 / 2 < g(t0), below) keeps a
+    // margin of four, M (t1 - t0)^2 / 2 <= g(t0) / 4 (the root normal's plane lies below s at
+    // t0), or the limit is reached. Where s is convex in time the iterates approach the root from
     // outside, quadratically, and no step needs certifying on the way: the root found is
     // certified as the first one from the start (below).
     auto newtonInTime = [&](const Sample& from) -> std::optional<Sample> {

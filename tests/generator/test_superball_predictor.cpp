@@ -257,9 +257,9 @@ std::string number(double x) {
 }
 
 void printStats(double p, const SuperballPredictorStats& s) {
-    std::printf("p %5.2f predictor: %ld calls, %ld sphere + %ld bound + %ld plane rejections, %ld "
-                "evaluations "
-                "(%ld robust), %ld plane steps (%ld chord), %ld Newton brackets (%ld uncertified), "
+    std::printf("p %5.2f predictor: %ld calls, %ld sphere + %ld bound + %ld plane rejections, "
+                "%ld evaluations (%ld robust), %ld plane steps (%ld chord), %ld Newton brackets "
+                "(%ld uncertified), "
                 "%ld refinement steps, %ld rechecks, %ld limit hits, %ld pair-solver fallbacks, "
                 "%ld start overlaps\n",
                 p, s.calls, s.sphereRejections, s.boundRejections, s.planeRejections, s.evaluations,
