@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <random>
 
@@ -114,7 +115,45 @@ TEST_P(SuperballSupport, HessianMatchesFiniteDifferencesOfTheSupportPoint) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Exponents, SuperballSupport,
-                         ::testing::Values(0.5, 0.51, 0.6, 0.85, 1.0, 1.5, 3.0, 10.0, 1000.0));
+                         ::testing::Values(0.5, 0.51, 0.6, 0.75, 0.85, 1.0, 1.5, 3.0, 10.0, 1000.0));
+
+// ||u||_e = (sum |u_i|^e)^{1/e} and its gradient sgn(u_i) (|u_i| / ||u||_e)^{e-1} in long
+// double: the reference for the norms' two routes (roots at e = 3/2 and 3, exp2/log2 otherwise).
+long double referenceNorm(const Vector3d& u, long double e) {
+    long double sum = 0.0L;
+    for (int i = 0; i < 3; ++i) sum += std::pow(std::abs(static_cast<long double>(u[i])), e);
+    return std::pow(sum, 1.0L / e);
+}
+
+TEST(Superball, NormsMatchLongDoublePowersToRounding) {
+    // p = 1.5 and 0.75 take roots (gauge and support exponents 3 and 3/2); 0.85 and 3 the
+    // exp2/log2 route. Both stay within a few ulp of the long double reference, relative to
+    // the norm, and the support point within a few ulp of its largest component.
+    std::mt19937_64 rng(17);
+    for (double p : {0.75, 0.85, 1.5, 3.0}) {
+        const Superball shape(p, 1.0);
+        const long double q = shape.dualExponent();
+        double worstNorm = 0.0, worstPoint = 0.0;
+        for (int trial = 0; trial < 20000; ++trial) {
+            Vector3d u = randomUnit(rng);
+            if (trial % 4 == 0) u[trial % 3] *= 1e-6; // near a face or an edge
+            if (trial % 8 == 0) u = Vector3d::Unit(trial % 3) * (trial % 16 == 0 ? 1.0 : -1.0);
+            const long double h = referenceNorm(u, q), g = referenceNorm(u, 2.0L * p);
+            worstNorm = std::max(worstNorm, static_cast<double>(std::abs(shape.support(u) - h) / h));
+            worstNorm = std::max(worstNorm, static_cast<double>(std::abs(shape.gauge(u) - g) / g));
+            const Vector3d x = shape.supportPoint(u);
+            for (int i = 0; i < 3; ++i) {
+                const long double ratio = std::abs(static_cast<long double>(u[i])) / h;
+                const long double xi = std::copysign(std::pow(ratio, q - 1.0L), u[i]);
+                worstPoint = std::max(worstPoint, static_cast<double>(std::abs(x[i] - xi)));
+            }
+        }
+        EXPECT_LT(worstNorm, 8e-16) << "p = " << p;
+        EXPECT_LT(worstPoint, 8e-16) << "p = " << p;
+        std::printf("p = %g: worst relative norm error %.2e, worst support point error %.2e\n",
+                    p, worstNorm, worstPoint);
+    }
+}
 
 TEST(Superball, MeanWidthExactLimits) {
     const double r = 0.5; // unit diameter
