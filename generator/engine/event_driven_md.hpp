@@ -21,6 +21,7 @@
 
 #include "engine/collision_resolver.hpp"
 #include "engine/growth_clock.hpp"
+#include "engine/pair_table.hpp"
 #include "events/event_queue.hpp"
 #include "neighbours/neighbour_lists.hpp"
 #include "packing/packing.hpp"
@@ -32,7 +33,6 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
-#include <unordered_map>
 #include <vector>
 
 namespace sbpack {
@@ -387,7 +387,7 @@ template <class Shape> class EventDrivenMd {
     std::vector<PredictedCollision> collision_;
     std::vector<double> exit_;      ///< time each particle leaves its neighbour-list sphere
     std::vector<double> changedAt_; ///< time of each particle's last collision
-    std::unordered_map<std::uint64_t, PairRecord> pairs_;
+    PairTable<PairRecord> pairs_;
     std::vector<PairMotion> motions_;           ///< predict()'s scratch: each neighbour's motion
     std::vector<std::pair<double, int>> order_; ///< and when its inscribed spheres touch
     double horizon_ = kNever;
