@@ -35,7 +35,8 @@ class Superball {
     /// Support function h(n) = R ||n||_q; n need not be a unit vector (h is homogeneous).
     double support(const Vector3d& nBody) const;
     /// The point of the surface that maximises n . x (body frame), the gradient of h, from three
-    /// powers; a vertex or face point where the maximiser is not unique.
+    /// powers (square and cube roots at p = 1.5 and 0.75); a vertex or face point where the
+    /// maximiser is not unique.
     Vector3d supportPoint(const Vector3d& nBody) const;
     /// h, its gradient (the support point, the same bits as supportPoint) and its Hessian
     /// (clamped as supportHessian) at once, from the same three powers: the event-driven
