@@ -27,8 +27,8 @@ double power(double y, double e) {
 
 /// x^{1/3} for 1 <= x <= 3: a quadratic first guess (within 0.6 %), then two Halley steps
 /// z <- z + z (x - z^3) / (2z^3 + x), each cubing the relative error; written as a correction,
-/// the last one rounds to within one ulp (libm's cbrt, which reduces any x, is slower and no
-/// closer) and keeps 1^{1/3} = 1 exact.
+/// the last one rounds to within one ulp and keeps 1^{1/3} = 1 exact (libm's cbrt, which reduces
+/// any x first, took 11 % of a p = 1.5 run in its place).
 double cubeRootOf1To3(double x) {
     double z = 0.6747968821859316 + x * (0.36905165677595114 - 0.03816218708648547 * x);
     for (int step = 0; step < 2; ++step) {
@@ -43,7 +43,7 @@ double cubeRootOf1To3(double x) {
 /// (= ||u||_e / m), from two powers and one for each component below the largest. The
 /// exponents of p = 1.5 (e = 3 for the gauge, e = 3/2 for the support function) and of
 /// p = 0.75 (the same two, swapped) take roots instead: y^{3/2} = y sqrt(y), y^3, and the
-/// norm's root from cube roots, exact to rounding and with no logarithm or exponential.
+/// norm's root from a cube root, as accurate as exp2/log2 (a few ulp) with neither.
 struct NormParts {
     double m, sum, norm;
     Vector3d y, a;
@@ -61,8 +61,7 @@ NormParts normParts(const Vector3d& u, double e) {
         n.sum += n.a[i];
     }
     if (e == 1.5) {
-        const double root = cubeRootOf1To3(n.sum);
-        n.norm = root * root; // sum^{2/3}
+        n.norm = n.sum / cubeRootOf1To3(n.sum); // sum^{2/3}, within ~1.5 ulp (root squared: 2.6)
     } else {
         n.norm = e == 3.0 ? cubeRootOf1To3(n.sum) : power(n.sum, 1.0 / e);
     }

@@ -203,6 +203,7 @@ template <class Shape> class EventDrivenMd {
         double time = 0.0;
         std::uint64_t counterLow = 0, counterHigh = 0;
     };
+    /// Valid until the next pairRecord() (the table may grow and move its records).
     PairRecord& pairRecord(int i, int j) { return pairs_[pairKey(i, j)]; }
 
     /// The pair's memory in `record` for a prediction of i against j at time t, as seen from i:

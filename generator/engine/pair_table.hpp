@@ -6,6 +6,7 @@
 // pair's scheduling, ~3 % of a collision at p = 1.5.
 
 #include <algorithm>
+#include <cassert>
 #include <cstdint>
 #include <vector>
 
@@ -13,8 +14,10 @@ namespace sbpack {
 
 template <class Value> class PairTable {
   public:
-    /// The value of `key` (any but kEmpty), inserted as Value{} when absent.
+    /// The value of `key` (any but kEmpty), inserted as Value{} when absent. The reference
+    /// holds until the next call (an insertion may move every value), unlike std::unordered_map's.
     Value& operator[](std::uint64_t key) {
+        assert(key != kEmpty);
         if (2 * (size_ + 1) > keys_.size()) grow();
         std::size_t slot = home(key);
         while (keys_[slot] != key) {
