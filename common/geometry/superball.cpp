@@ -54,17 +54,18 @@ NormParts normParts(const Vector3d& u, double e) {
     for (int i = 0; i < 3; ++i) {
         const double y = std::abs(u[i]) / n.m;
         n.y[i] = y;
-        n.a[i] = y == 1.0    ? 1.0 // the largest: one power fewer
+        n.a[i] = y == 1.0   ? 1.0 // the largest: one power fewer
                  : e == 1.5 ? y * std::sqrt(y)
                  : e == 3.0 ? y * y * y
                             : power(y, e);
         n.sum += n.a[i];
     }
-    if (e == 1.5) {
+    if (e == 1.5)
         n.norm = n.sum / cubeRootOf1To3(n.sum); // sum^{2/3}, within ~1.5 ulp (root squared: 2.6)
-    } else {
-        n.norm = e == 3.0 ? cubeRootOf1To3(n.sum) : power(n.sum, 1.0 / e);
-    }
+    else if (e == 3.0)
+        n.norm = cubeRootOf1To3(n.sum);
+    else
+        n.norm = power(n.sum, 1.0 / e);
     return n;
 }
 

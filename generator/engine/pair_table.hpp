@@ -51,7 +51,8 @@ template <class Value> class PairTable {
         std::vector<std::uint64_t> keys(std::max<std::size_t>(64, 2 * keys_.size()), kEmpty);
         std::vector<Value> values(keys.size());
         shift_ = 64;
-        for (std::size_t n = keys.size(); n > 1; n >>= 1) --shift_;
+        for (std::size_t n = keys.size(); n > 1; n >>= 1)
+            --shift_;
         keys.swap(keys_);
         values.swap(values_);
         size_ = 0;

@@ -115,13 +115,15 @@ TEST_P(SuperballSupport, HessianMatchesFiniteDifferencesOfTheSupportPoint) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Exponents, SuperballSupport,
-                         ::testing::Values(0.5, 0.51, 0.6, 0.75, 0.85, 1.0, 1.5, 3.0, 10.0, 1000.0));
+                         ::testing::Values(0.5, 0.51, 0.6, 0.75, 0.85, 1.0, 1.5, 3.0, 10.0,
+                                           1000.0));
 
-// ||u||_e = (sum |u_i|^e)^{1/e} and its gradient sgn(u_i) (|u_i| / ||u||_e)^{e-1} in long
-// double: the reference for the norms' two routes (roots at e = 3/2 and 3, exp2/log2 otherwise).
+// ||u||_e = (sum |u_i|^e)^{1/e} in long double: the reference for the norms' two routes (roots
+// at e = 3/2 and 3, exp2/log2 otherwise).
 long double referenceNorm(const Vector3d& u, long double e) {
     long double sum = 0.0L;
-    for (int i = 0; i < 3; ++i) sum += std::pow(std::abs(static_cast<long double>(u[i])), e);
+    for (int i = 0; i < 3; ++i)
+        sum += std::pow(std::abs(static_cast<long double>(u[i])), e);
     return std::pow(sum, 1.0L / e);
 }
 
@@ -157,7 +159,8 @@ TEST(Superball, NormsMatchLongDoublePowersToRounding) {
             if (trial % 4 == 0) u[trial % 3] *= 1e-6; // near a face or an edge
             if (trial % 8 == 0) u = Vector3d::Unit(trial % 3) * (trial % 16 == 0 ? 1.0 : -1.0);
             const long double h = referenceNorm(u, q), g = referenceNorm(u, 2.0L * p);
-            worstNorm = std::max(worstNorm, static_cast<double>(std::abs(shape.support(u) - h) / h));
+            worstNorm =
+                std::max(worstNorm, static_cast<double>(std::abs(shape.support(u) - h) / h));
             worstNorm = std::max(worstNorm, static_cast<double>(std::abs(shape.gauge(u) - g) / g));
             const Vector3d x = shape.supportPoint(u);
             for (int i = 0; i < 3; ++i) {
@@ -168,8 +171,8 @@ TEST(Superball, NormsMatchLongDoublePowersToRounding) {
         }
         EXPECT_LT(worstNorm, 6e-16) << "p = " << p;
         EXPECT_LT(worstPoint, 6e-16) << "p = " << p;
-        std::printf("p = %g: worst relative norm error %.2e, worst support point error %.2e\n",
-                    p, worstNorm, worstPoint);
+        std::printf("p = %g: worst relative norm error %.2e, worst support point error %.2e\n", p,
+                    worstNorm, worstPoint);
     }
 }
 
