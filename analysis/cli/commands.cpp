@@ -28,7 +28,7 @@ constexpr const char* kAnalyzeUsage = R"(usage:
 
 constexpr const char* kOptionsUsage = R"(        all       every analysis above (the default)
       --out FILE       results file (HDF5, layout in the README): for one input the layout of
-                       DESIGN.md §6 at the root; for several, files/0, files/1, ... and ensemble/
+                       docs/design.md §6 at the root; for several, files/0, files/1, ... and ensemble/
                        with the mean and standard deviation of every scalar and curve
       --json FILE|-    short JSON summary (peaks, scalars, runtimes); - for standard output
                        (at least one of --out and --json is required)

@@ -1,5 +1,5 @@
 #pragma once
-// The results file of sbanalyze (HDF5, DESIGN.md §6; the README documents the layout).
+// The results file of sbanalyze (HDF5, docs/design.md §6; the README documents the layout).
 
 #include "pipeline/ensemble.hpp"
 #include "pipeline/file_analysis.hpp"
@@ -21,7 +21,7 @@ struct RunResults {
 };
 
 /// Writes `results` to `file` (a fresh file; the caller makes it atomic). One input: the
-/// DESIGN.md §6 layout at the root. Several: root attributes format, format_version, n_files
+/// docs/design.md §6 layout at the root. Several: root attributes format, format_version, n_files
 /// and the run's parameters; groups files/0, files/1, ... each with the §6 layout; and group
 /// ensemble (see the README). Throws Hdf5Error.
 void writeResultsFile(const std::filesystem::path& file, const RunResults& results,

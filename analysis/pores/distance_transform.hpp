@@ -1,6 +1,6 @@
 #pragma once
 // Exact periodic Euclidean distance transform of the void phase of a voxelised packing (paper
-// Sec. III B; DESIGN.md §5): the pore-size map, from which F(delta) (Eq. 13) is computed.
+// Sec. III B; docs/design.md §5): the pore-size map, from which F(delta) (Eq. 13) is computed.
 
 #include <cstdint>
 #include <filesystem>

@@ -1,6 +1,6 @@
 #pragma once
 // Spectral density chi_V(Q) of the particle phase (paper Eq. 12, eq:spD, with the cube form
-// factor, DESIGN.md §5): from the voxel indicator by FFT, and for spheres exactly from the
+// factor, docs/design.md §5): from the voxel indicator by FFT, and for spheres exactly from the
 // centroids.
 
 #include "packing/packing.hpp"
@@ -58,7 +58,7 @@ struct SpectralDensityResult {
     double runtimeSeconds = 0.0;
 };
 
-/// Compute object (STYLE.md): parameters validated at construction.
+/// Compute object (docs/design.md §7): parameters validated at construction.
 class SpectralDensity {
   public:
     /// Throws std::invalid_argument unless 0 < maxQw < inf.

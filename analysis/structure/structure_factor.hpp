@@ -1,6 +1,6 @@
 #pragma once
 // Structure factor S(Q) of the particle centroids (paper Eq. 4, eq:ScattInt: the scattering
-// intensity of one periodic configuration), angular-averaged in shells (DESIGN.md §5).
+// intensity of one periodic configuration), angular-averaged in shells (docs/design.md §5).
 
 #include "packing/packing.hpp"
 #include "progress/progress.hpp"
@@ -9,7 +9,7 @@
 namespace sbpack {
 
 struct StructureFactorParameters {
-    /// Shells up to Q w <= maxQw, w the mean width (DESIGN.md §5: report Q w).
+    /// Shells up to Q w <= maxQw, w the mean width (docs/design.md §5: report Q w).
     double maxQw = 30.0;
     /// Execution only: run on the calling thread (the result is the same).
     bool serial = false;
@@ -27,7 +27,7 @@ struct StructureFactorResult {
     double runtimeSeconds = 0.0;
 };
 
-/// Compute object (STYLE.md): parameters validated at construction.
+/// Compute object (docs/design.md §7): parameters validated at construction.
 class StructureFactor {
   public:
     /// Throws std::invalid_argument unless 0 < maxQw < inf.

@@ -1,5 +1,5 @@
 #pragma once
-// Voxelization of a packing (paper Sec. III B, DESIGN.md §5): M^3 cubic voxels of edge a = L / M
+// Voxelization of a packing (paper Sec. III B, docs/design.md §5): M^3 cubic voxels of edge a = L / M
 // tile the periodic box; voxel (i, j, k) has its centre at ((i + 1/2) a, (j + 1/2) a, (k + 1/2) a)
 // and is solid when that centre lies inside a particle or one of its periodic images
 // (Superball::contains on the body-frame vector; the paper's epsilon rescaling is not applied).
@@ -81,7 +81,7 @@ class Voxelization {
     double runtimeSeconds_;
 };
 
-/// Compute object (STYLE.md): parameters validated at construction.
+/// Compute object (docs/design.md §7): parameters validated at construction.
 class Voxelizer {
   public:
     /// Largest M accepted (OpenVDB coordinates and M^3 stay far from overflow).

@@ -22,7 +22,7 @@ std::string pairName(int i, int j) {
 }
 
 /// Iterative removal of the particles with fewer than threshold contacts among the remaining
-/// ones (DESIGN.md §3): the threshold-core of the contact graph. Returns the rattler flags.
+/// ones (docs/design.md §3): the threshold-core of the contact graph. Returns the rattler flags.
 std::vector<bool> findRattlers(int count, const std::vector<std::pair<int, int>>& contacts,
                                const std::vector<int>& counts, int threshold) {
     std::vector<int> neighbourStart(count + 1, 0);

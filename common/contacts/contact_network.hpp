@@ -1,6 +1,6 @@
 #pragma once
 // Contact network, rattlers and mean contact number of a packing (paper Secs. III A, IV A, IV C;
-// DESIGN.md §2 and §3).
+// docs/design.md §2 and §3).
 
 #include "packing/packing.hpp"
 
@@ -41,7 +41,7 @@ class ContactNetwork {
     explicit ContactNetwork(ContactParameters parameters);
 
     /// Signed distances of all pairs whose centres are closer than 2 circumradius + tolerance D,
-    /// then iterative rattler removal (DESIGN.md §3). Throws std::invalid_argument for a packing
+    /// then iterative rattler removal (docs/design.md §3). Throws std::invalid_argument for a packing
     /// with mismatched positions and orientations or a contact range above L / 2, and
     /// std::runtime_error if a pair solve returns a non-finite distance.
     ContactResult compute(const Packing& packing) const;

@@ -1,5 +1,5 @@
 #pragma once
-// Write-to-temporary-then-rename output, used by every writer (DESIGN.md §4, §6): a reader never
+// Write-to-temporary-then-rename output, used by every writer (docs/design.md §4, §6): a reader never
 // sees a half-written packing, results file or checkpoint, and a failed run leaves no debris.
 
 #include <filesystem>

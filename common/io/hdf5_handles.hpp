@@ -1,5 +1,5 @@
 #pragma once
-// Minimal RAII over the HDF5 C API for the packing and results files (DESIGN.md §4, §6).
+// Minimal RAII over the HDF5 C API for the packing and results files (docs/design.md §4, §6).
 // HDF5's automatic error printing is switched off; every failure becomes an Hdf5Error whose
 // message names the file, the object and HDF5's own reason.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The HDF5 packing file shared by every tool (DESIGN.md §4).
+// The HDF5 packing file shared by every tool (docs/design.md §4).
 
 #include "packing/packing.hpp"
 

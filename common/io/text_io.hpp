@@ -1,5 +1,5 @@
 #pragma once
-// Plain-text import/export of packings and an extended-XYZ export for OVITO (DESIGN.md §4
+// Plain-text import/export of packings and an extended-XYZ export for OVITO (docs/design.md §4
 // conventions: quaternions (w, x, y, z) body to lab, positions in [0, L)).
 
 #include "io/packing_io.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// The packing model shared by sbgen and sbanalyze (DESIGN.md §4).
+// The packing model shared by sbgen and sbanalyze (docs/design.md §4).
 
 #include "geometry/superball.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Checks that a packing read from a file can be trusted (DESIGN.md §4). Overlaps are not
+// Checks that a packing read from a file can be trusted (docs/design.md §4). Overlaps are not
 // checked here: the contact module reports them.
 
 #include "packing/packing.hpp"

@@ -258,7 +258,7 @@ Vector2d cuttingPlaneMinimum(F&& valueAndGradient, double radius, bool convex, i
     return best;
 }
 
-/// 1/mu = min H(u) / |d| over the plane u . d_hat = 1 (DESIGN.md §2): a convex problem in
+/// 1/mu = min H(u) / |d| over the plane u . d_hat = 1 (docs/design.md §2): a convex problem in
 /// the two tangent coordinates c, u = d_hat + P c.
 ScaleFactorResult generalScaleFactor(const MinkowskiSum& k, const Vector3d& warmNormal,
                                      const PairTolerances& tolerances) {

@@ -1,5 +1,5 @@
 #pragma once
-// Pair geometry of two identical oriented superballs (DESIGN.md §2).
+// Pair geometry of two identical oriented superballs (docs/design.md §2).
 //
 // With K = A + B the Minkowski sum (both bodies centrally symmetric) and d = r_B - r_A:
 //   scale factor     mu = max_{|n|=1} n.d / (h_A(n) + h_B(n))   (gauge of K at d)

@@ -1,5 +1,5 @@
 #pragma once
-// The resolver: the elastic impulse of a collision between two growing bodies (DESIGN.md §3,
+// The resolver: the elastic impulse of a collision between two growing bodies (docs/design.md §3,
 // Lubachevsky-Stillinger): the normal velocity of the two surfaces at the contact point, growth
 // included, is reversed, so afterwards they separate at least as fast as they grow together.
 

@@ -1,6 +1,6 @@
 #pragma once
 // Event-driven molecular dynamics of identical growing hard bodies in a cubic periodic box
-// (Donev-Torquato-Stillinger; DESIGN.md §3). Layers (STYLE.md): EventQueue (no physics),
+// (Donev-Torquato-Stillinger; docs/design.md §3). Layers (docs/design.md §7): EventQueue (no physics),
 // NeighbourLists (which pairs to test), the Shape (predictor and contact), resolveCollision
 // (impulse). Each particle holds its earliest predicted collision and the time it leaves its
 // neighbour-list sphere; a collision is stale when the partner's event counter has moved on
@@ -59,7 +59,7 @@ struct RunReport {
     std::uint64_t relists = 0; ///< neighbour-list exits
     std::uint64_t staleEvents = 0;
     std::uint64_t rechecks = 0; ///< predictions that stopped at a safe time, then redone
-    /// sum over collisions of r_ij . Delta p_j (the collision virial, DESIGN.md §3)
+    /// sum over collisions of r_ij . Delta p_j (the collision virial, docs/design.md §3)
     double virial = 0.0;
     bool interrupted = false;
 };

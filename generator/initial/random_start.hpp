@@ -1,5 +1,5 @@
 #pragma once
-// The DTS starting state (paper Sec. III A, DESIGN.md §3): N superballs of diameter D = 1 placed
+// The DTS starting state (paper Sec. III A, docs/design.md §3): N superballs of diameter D = 1 placed
 // at random without overlap, with uniformly random orientations, in the cubic box of packing
 // fraction phi_init; Maxwell velocities at kT = 1 (m = 1) with zero total momentum, and random
 // angular velocities at rotational kT = 1.
@@ -22,7 +22,7 @@ struct RandomPlacement {
 
 /// Random sequential addition of non-overlapping superballs of exponent p and diameter 1: a
 /// trial is accepted when every nearby body is outside its circumscribed sphere or the pair's
-/// scale factor mu exceeds 1 (DESIGN.md §2). Throws if it cannot place them within a generous
+/// scale factor mu exceeds 1 (docs/design.md §2). Throws if it cannot place them within a generous
 /// number of attempts.
 RandomPlacement randomPlacement(int particles, double p, double boxLength, Random& random);
 

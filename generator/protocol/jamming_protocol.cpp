@@ -174,7 +174,7 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
 }
 
 void JammingProtocol::finishWindow(double virial, double duration) {
-    // The window started at kT = 1 (rescaled); average with its end for the virial (DESIGN.md §3).
+    // The window started at kT = 1 (rescaled); average with its end for the virial (docs/design.md §3).
     // The virial theorem's kT is the translational one. A phase ends when two windows in a row
     // reach its pressure: one window's estimate spikes when a cluster of rotating near-cubes
     // chatters through its collision budget in almost no time.

@@ -1,5 +1,5 @@
 #pragma once
-// The DTS jamming protocol (paper Sec. III A, DESIGN.md §3): grow fast (gamma_fast) until the
+// The DTS jamming protocol (paper Sec. III A, docs/design.md §3): grow fast (gamma_fast) until the
 // reduced pressure reaches pressureSwitch, then slowly (gamma_slow) until pressureFinal (each in
 // two windows in a row, so one window's spike does not end a phase). Work
 // proceeds in windows of `collisionsPerWindow * N` collisions; after each window the collision

@@ -1,6 +1,6 @@
 #pragma once
 // What a shape's predictor and contact function see of a pair: everything in the pair's local
-// frame (displacement first, then motion), so gaps of 1e-13 D survive (DESIGN.md §2).
+// frame (displacement first, then motion), so gaps of 1e-13 D survive (docs/design.md §2).
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -23,7 +23,7 @@ struct PairMotion {
 };
 
 /// Free flight of the orientation: exp(omega tau / 2) q0 for lab-frame omega, exact (constant
-/// omega between collisions: isotropic inertia, DESIGN.md §3).
+/// omega between collisions: isotropic inertia, docs/design.md §3).
 inline Quaterniond advancedOrientation(const Quaterniond& q0, const Vector3d& omega, double tau) {
     const double speed = omega.norm();
     if (speed == 0.0 || tau == 0.0) return q0;

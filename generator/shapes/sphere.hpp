@@ -1,7 +1,7 @@
 #pragma once
 // The sphere as a shape of the event-driven engine: an exact quadratic predictor and the contact
 // of two spheres. Every shape answers the same two questions for a pair in the pair's local frame
-// (DESIGN.md §2-3): when do the two growing, moving bodies first touch, and where.
+// (docs/design.md §2-3): when do the two growing, moving bodies first touch, and where.
 
 #include "shapes/pair_motion.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The superball as a shape of the event-driven engine (DESIGN.md §2-3): collision prediction for
+// The superball as a shape of the event-driven engine (docs/design.md §2-3): collision prediction for
 // two translating, rotating, growing superballs that never misses a contact.
 //
 // Motion over tau >= 0 in the pair's frame: d(tau) = d + w tau, q_k(tau) = exp(omega_k tau / 2) q_k
@@ -110,7 +110,7 @@ class SuperballShape {
     double circumscribedRatio() const { return c_; }
     /// Inradius over semi-axis, min(1, 3^{1/2 - 1/(2p)}).
     double inscribedRatio() const { return cIn_; }
-    /// I / m of a body of diameter D (isotropic inertia, DESIGN.md §1).
+    /// I / m of a body of diameter D (isotropic inertia, docs/design.md §1).
     double inertiaPerMass(double diameter) const;
 
     /// Earliest delay in [0, horizon] at which the pair touches, or +inf if none; a safe recheck

@@ -1,4 +1,4 @@
-// Cell list, contact network and rattler removal (paper Sec. III A; DESIGN.md §2, §3).
+// Cell list, contact network and rattler removal (paper Sec. III A; docs/design.md §2, §3).
 
 #include "contacts/cell_list.hpp"
 #include "contacts/contact_network.hpp"

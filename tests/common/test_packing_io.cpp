@@ -1,4 +1,4 @@
-// Packing file I/O (DESIGN.md §4): HDF5 and text round trips, the OVITO export, every rejected
+// Packing file I/O (docs/design.md §4): HDF5 and text round trips, the OVITO export, every rejected
 // input, and the atomic output helper.
 
 #include "io/atomic_file.hpp"

@@ -1,4 +1,4 @@
-// Pair geometry (DESIGN.md §2): the aligned contact distance 2R/||u||_{2p}, argument order,
+// Pair geometry (docs/design.md §2): the aligned contact distance 2R/||u||_{2p}, argument order,
 // rigid-motion invariance, the sign at touching +/- 1e-12 D, the primal contact condition
 // and a brute-force cross-check of random rotated pairs.
 #include "pair/pair_geometry.hpp"

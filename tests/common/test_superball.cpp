@@ -1,4 +1,4 @@
-// Analytic truths of the superball (DESIGN.md §1): closed-form volumes and moments, the
+// Analytic truths of the superball (docs/design.md §1): closed-form volumes and moments, the
 // sphere/octahedron/cube limits, Monte Carlo cross-checks, support function and mean width.
 #include "geometry/superball.hpp"
 

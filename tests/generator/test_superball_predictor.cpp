@@ -1,5 +1,5 @@
-// The superball predictor (SuperballShape::collisionTime, DESIGN.md §3) against truths that do not
-// depend on it: a brute-force first contact from the sign of mu(tau) - 1 (DESIGN.md §2) on a fine
+// The superball predictor (SuperballShape::collisionTime, docs/design.md §3) against truths that do not
+// depend on it: a brute-force first contact from the sign of mu(tau) - 1 (docs/design.md §2) on a fine
 // grid, the exact sphere quadratic at p = 1, and the conservation laws of an elastic collision of
 // two rotating bodies in the engine.
 #include "engine/event_driven_md.hpp"
@@ -585,7 +585,7 @@ TEST(SuperballEngine, FreeCollisionConservesMomentumAngularMomentumAndEnergy) {
 }
 
 // A dense growing fluid of superballs (phi 0.3 -> ~0.45, kT rescaled to 1 as the protocol does):
-// after thousands of collisions no pair overlaps (DESIGN.md §3: the predictor never misses).
+// after thousands of collisions no pair overlaps (docs/design.md §3: the predictor never misses).
 TEST(SuperballEngine, NoOverlapAfterDenseGrowingRuns) {
     for (const double p : {1.5, 0.85}) {
         const int n = 64;
