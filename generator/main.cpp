@@ -16,6 +16,9 @@ namespace {
 
 volatile std::sig_atomic_t stopSignal = 0;
 
+/// Exit status of a run whose output fails the jam check (docs/design.md §3).
+constexpr int kNotJammed = 3;
+
 void requestStop(int signal) {
     stopSignal = signal;
 }
@@ -46,15 +49,24 @@ std::filesystem::path interruptCheckpointPath(const sbpack::GeneratorOptions& o)
     return path.replace_extension(".checkpoint.h5");
 }
 
-/// The final packing with the contact analysis of common/ in its provenance.
+/// The final packing with the contact analysis of common/ (the paper's tolerance) and the
+/// jam check in its provenance.
 sbpack::Packing finalPacking(const sbpack::JammingProtocol& protocol) {
     sbpack::Packing packing = protocol.checkpoint();
-    const sbpack::ContactResult contacts = sbpack::ContactNetwork({}).compute(packing);
-    packing.provenance["z_mean"] = contacts.meanContactNumber;
-    packing.provenance["rattler_fraction"] = contacts.rattlerFraction;
-    packing.provenance["contact_tolerance"] = contacts.parameters.tolerance;
-    packing.provenance["worst_gap_over_d"] = contacts.worstGap / (2.0 * packing.semiAxis);
-    packing.provenance["overlapping_pairs"] = static_cast<std::int64_t>(contacts.overlappingPairs);
+    const sbpack::JamCheck& jam = *protocol.status().jam;
+    const sbpack::ContactParameters paper{};
+    const sbpack::ContactResult contacts = jam.tolerance == paper.tolerance
+                                               ? jam.contacts
+                                               : sbpack::ContactNetwork(paper).compute(packing);
+    auto& log = packing.provenance;
+    log["z_mean"] = contacts.meanContactNumber;
+    log["rattler_fraction"] = contacts.rattlerFraction;
+    log["contact_tolerance"] = contacts.parameters.tolerance;
+    log["worst_gap_over_d"] = contacts.worstGap / (2.0 * packing.semiAxis);
+    log["overlapping_pairs"] = static_cast<std::int64_t>(contacts.overlappingPairs);
+    log["jammed"] = static_cast<std::int64_t>(jam.jammed);
+    log["jam_check"] = jam.verdict;
+    log["jam_check_tolerance"] = jam.tolerance;
     return packing;
 }
 
@@ -100,7 +112,11 @@ int generate(const sbpack::GeneratorOptions& o) {
                      o.out.c_str(), packing.packingFraction(), *packing.reducedPressure,
                      std::get<double>(packing.provenance.at("z_mean")),
                      std::get<double>(packing.provenance.at("rattler_fraction")));
-    return EXIT_SUCCESS;
+    const sbpack::JamCheck& jam = *protocol.status().jam;
+    if (jam.jammed) return EXIT_SUCCESS;
+    std::cerr << "sbgen: " << o.out.string() << " (written, marked jammed = 0): " << jam.verdict
+              << '\n';
+    return kNotJammed;
 }
 
 } // namespace

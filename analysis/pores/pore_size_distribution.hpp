@@ -1,6 +1,6 @@
 #pragma once
-// Pore-size distribution of the void phase (paper Sec. II B, Eqs. 13-15; docs/design.md §5, §6): the
-// complementary cumulative F(delta), the density P(delta), the moments <delta>, <delta^2>, the
+// Pore-size distribution of the void phase (paper Sec. II B, Eqs. 13-15; docs/design.md §5, §6):
+// the complementary cumulative F(delta), the density P(delta), the moments <delta>, <delta^2>, the
 // largest pore and the saturation check, in length units and scaled by the mean width w.
 
 #include "pores/distance_transform.hpp"

@@ -1,6 +1,7 @@
 #pragma once
-// Stage reports and cooperative interruption of long analyses (docs/design.md §7): one line per finished
-// stage, and an interrupt flag that compute loops poll once per chunk (as OpenVDB's interrupter).
+// Stage reports and cooperative interruption of long analyses (docs/design.md §7): one line per
+// finished stage, and an interrupt flag that compute loops poll once per chunk (as OpenVDB's
+// interrupter).
 
 #include <chrono>
 #include <iosfwd>

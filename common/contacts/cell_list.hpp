@@ -1,6 +1,7 @@
 #pragma once
 // Periodic cell list of a cubic box: visits each unordered pair of particles closer than an
-// interaction range exactly once, in O(N) (docs/design.md §7: the neighbour structure that picks pairs).
+// interaction range exactly once, in O(N) (docs/design.md §7: the neighbour structure that picks
+// pairs).
 
 #include "packing/packing.hpp"
 

@@ -41,8 +41,8 @@ class ContactNetwork {
     explicit ContactNetwork(ContactParameters parameters);
 
     /// Signed distances of all pairs whose centres are closer than 2 circumradius + tolerance D,
-    /// then iterative rattler removal (docs/design.md §3). Throws std::invalid_argument for a packing
-    /// with mismatched positions and orientations or a contact range above L / 2, and
+    /// then iterative rattler removal (docs/design.md §3). Throws std::invalid_argument for a
+    /// packing with mismatched positions and orientations or a contact range above L / 2, and
     /// std::runtime_error if a pair solve returns a non-finite distance.
     ContactResult compute(const Packing& packing) const;
 

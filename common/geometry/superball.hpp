@@ -1,5 +1,6 @@
 #pragma once
-// Superball |x|^{2p} + |y|^{2p} + |z|^{2p} <= R^{2p} in its body frame (docs/design.md §1, paper Eq. 1).
+// Superball |x|^{2p} + |y|^{2p} + |z|^{2p} <= R^{2p} in its body frame (docs/design.md §1, paper
+// Eq. 1).
 
 #include <Eigen/Core>
 

@@ -1,6 +1,6 @@
 #pragma once
-// Write-to-temporary-then-rename output, used by every writer (docs/design.md §4, §6): a reader never
-// sees a half-written packing, results file or checkpoint, and a failed run leaves no debris.
+// Write-to-temporary-then-rename output, used by every writer (docs/design.md §4, §6): a reader
+// never sees a half-written packing, results file or checkpoint, and a failed run leaves no debris.
 
 #include <filesystem>
 #include <stdexcept>

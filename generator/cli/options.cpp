@@ -35,7 +35,13 @@ at rate gamma (dD/dt = gamma sqrt(kT/m)) until the reduced pressure P = PV/(NkT)
   --quiet                 no progress lines on stderr
   --help, --version
 
-SIGINT or SIGTERM writes a checkpoint (to --checkpoint, else OUT with .checkpoint.h5) and exits.
+No jam is declared from the pressure alone: at --pressure-final the contact network must hold
+(at most 10 % rattlers at gaps below max(1e-10, 100 / P) D), and a pressure carried by a chain
+of particles that wraps around the periodic box (columns of near-cubes in small boxes) ends the
+run early. Such an output is still written, with provenance jammed = 0 and the reason.
+
+Exit status: 0 jammed; 1 bad input or error; 3 written but not jammed; 128 + signal when
+SIGINT or SIGTERM wrote a checkpoint (to --checkpoint, else OUT with .checkpoint.h5).
 )";
 
 GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args) {

@@ -1,10 +1,10 @@
 #pragma once
 // Event-driven molecular dynamics of identical growing hard bodies in a cubic periodic box
-// (Donev-Torquato-Stillinger; docs/design.md §3). Layers (docs/design.md §7): EventQueue (no physics),
-// NeighbourLists (which pairs to test), the Shape (predictor and contact), resolveCollision
-// (impulse). Each particle holds its earliest predicted collision and the time it leaves its
-// neighbour-list sphere; a collision is stale when the partner's event counter has moved on
-// since the prediction.
+// (Donev-Torquato-Stillinger; docs/design.md §3). Layers (docs/design.md §7): EventQueue (no
+// physics), NeighbourLists (which pairs to test), the Shape (predictor and contact),
+// resolveCollision (impulse). Each particle holds its earliest predicted collision and the time it
+// leaves its neighbour-list sphere; a collision is stale when the partner's event counter has moved
+// on since the prediction.
 //
 // Rotating shapes (Shape::kRotates) also carry an orientation and a constant angular velocity
 // between collisions; each pair keeps the predictor's memory (its last contact normal as the warm
@@ -61,6 +61,8 @@ struct RunReport {
     std::uint64_t rechecks = 0; ///< predictions that stopped at a safe time, then redone
     /// sum over collisions of r_ij . Delta p_j (the collision virial, docs/design.md §3)
     double virial = 0.0;
+    /// Particles that took part in at least one collision (the jam watch of the protocol).
+    std::uint64_t participants = 0;
     bool interrupted = false;
 };
 
@@ -69,7 +71,7 @@ template <class Shape> class EventDrivenMd {
     EventDrivenMd(Shape shape, double boxLength, std::vector<ParticleState> particles,
                   GrowthClock clock, EngineParameters parameters = {})
         : shape_(shape), box_(boxLength), state_(std::move(particles)), clock_(clock),
-          parameters_(parameters) {}
+          parameters_(parameters), collidedInRun_(state_.size(), 0) {}
 
     int size() const { return static_cast<int>(state_.size()); }
     double boxLength() const { return box_; }
@@ -118,6 +120,7 @@ template <class Shape> class EventDrivenMd {
     RunReport run(std::uint64_t maxCollisions, double maxDuration = kNever,
                   const volatile std::sig_atomic_t* stop = nullptr) {
         RunReport report;
+        ++run_;
         while (report.collisions < maxCollisions && !report.interrupted) {
             if (dirty_) rebuild();
             const double limit = std::min(horizon_, maxDuration - report.duration);
@@ -326,6 +329,11 @@ template <class Shape> class EventDrivenMd {
             report.virial += impulse * contact.normal.dot(m.displacement);
         }
         ++report.collisions;
+        for (const int k : {i, j})
+            if (collidedInRun_[k] != run_) {
+                collidedInRun_[k] = run_;
+                ++report.participants;
+            }
         ++counter_[i];
         ++counter_[j];
         changedAt_[i] = changedAt_[j] = t;
@@ -389,6 +397,8 @@ template <class Shape> class EventDrivenMd {
     std::vector<double> exit_;      ///< time each particle leaves its neighbour-list sphere
     std::vector<double> changedAt_; ///< time of each particle's last collision
     PairTable<PairRecord> pairs_;
+    std::uint64_t run_ = 0;                     ///< serial number of the current run()
+    std::vector<std::uint64_t> collidedInRun_;  ///< the last run() each particle collided in
     std::vector<PairMotion> motions_;           ///< predict()'s scratch: each neighbour's motion
     std::vector<std::pair<double, int>> order_; ///< and when its inscribed spheres touch
     double horizon_ = kNever;

@@ -1,8 +1,8 @@
 #pragma once
 // The growing diameter D(t) = D_base + gamma (elapsed + t), t being engine time since the last
-// synchronisation (docs/design.md §3). The growth clock `elapsed` is kept apart from the base size and
-// folded into it only once it is large (2^-20 D), so the tiny growth steps near jamming are never
-// lost to the rounding of D (the stall of `R += dR` near reduced pressure 1e13).
+// synchronisation (docs/design.md §3). The growth clock `elapsed` is kept apart from the base size
+// and folded into it only once it is large (2^-20 D), so the tiny growth steps near jamming are
+// never lost to the rounding of D (the stall of `R += dR` near reduced pressure 1e13).
 
 #include <cmath>
 

@@ -1,6 +1,6 @@
 #pragma once
-// Event queues that know nothing of physics (docs/design.md §7): each of n items (particles) holds one
-// pending event time; the queue returns the item with the earliest one. Ties go to the lower
+// Event queues that know nothing of physics (docs/design.md §7): each of n items (particles) holds
+// one pending event time; the queue returns the item with the earliest one. Ties go to the lower
 // index, so runs are deterministic.
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 #pragma once
-// The DTS starting state (paper Sec. III A, docs/design.md §3): N superballs of diameter D = 1 placed
-// at random without overlap, with uniformly random orientations, in the cubic box of packing
+// The DTS starting state (paper Sec. III A, docs/design.md §3): N superballs of diameter D = 1
+// placed at random without overlap, with uniformly random orientations, in the cubic box of packing
 // fraction phi_init; Maxwell velocities at kT = 1 (m = 1) with zero total momentum, and random
 // angular velocities at rotational kT = 1.
 

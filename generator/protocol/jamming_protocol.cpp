@@ -117,6 +117,8 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
     for (const auto& [name, counter] : SuperballPredictorStats::kCounters)
         status_.predictor.*counter = static_cast<long>(optionalCounter(packing, name, source));
     status_.windows = counterValue(packing, "windows", source);
+    status_.subsetWindows =
+        static_cast<std::int64_t>(optionalCounter(packing, "state_subset_windows", source));
     status_.wallSeconds = stateValue<double>(packing, "wall_time_s", source);
     if (packing.provenance.count("cpu_time_s") != 0)
         status_.cpuSeconds = stateValue<double>(packing, "cpu_time_s", source);
@@ -168,14 +170,17 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
                                      " collisions (collisions repeating at one instant): the "
                                      "reduced pressure (virial / duration) is undefined");
         finishWindow(report.virial, report.duration);
+        watchJam(report.participants);
         onWindow(status_);
     }
+    if (!status_.jam)
+        status_.jam = checkJam(checkpoint(), status_.reducedPressure, parameters_.jamCheck);
     return true;
 }
 
 void JammingProtocol::finishWindow(double virial, double duration) {
-    // The window started at kT = 1 (rescaled); average with its end for the virial (docs/design.md §3).
-    // The virial theorem's kT is the translational one. A phase ends when two windows in a row
+    // The window started at kT = 1 (rescaled); average with its end for the virial (docs/design.md
+    // §3). The virial theorem's kT is the translational one. A phase ends when two windows in a row
     // reach its pressure: one window's estimate spikes when a cluster of rotating near-cubes
     // chatters through its collision budget in almost no time.
     const double previous = status_.reducedPressure;
@@ -199,6 +204,23 @@ void JammingProtocol::finishWindow(double virial, double duration) {
         std::min(previous, status_.reducedPressure) >= parameters_.pressureFinal)
         status_.phase = Phase::Done;
     status_.packingFraction = packingFraction();
+}
+
+void JammingProtocol::watchJam(std::uint64_t participants) {
+    // A subset carries the pressure after this many windows in a row, then the jam is checked
+    // at 1, 2, 4, ... times as many (docs/design.md §3).
+    constexpr std::int64_t kSubsetWindows = 3;
+    const bool subset = status_.reducedPressure >= parameters_.pressureSwitch &&
+                        2 * participants < static_cast<std::uint64_t>(parameters_.particles);
+    status_.subsetWindows = subset ? status_.subsetWindows + 1 : 0;
+    const std::int64_t multiple = status_.subsetWindows / kSubsetWindows;
+    if (status_.phase == Phase::Done || status_.subsetWindows % kSubsetWindows != 0 ||
+        multiple == 0 || (multiple & (multiple - 1)) != 0)
+        return;
+    JamCheck check = checkJam(checkpoint(), status_.reducedPressure, parameters_.jamCheck);
+    if (!check.chain) return;
+    status_.phase = Phase::Done;
+    status_.jam = std::move(check);
 }
 
 double JammingProtocol::packingFraction() const {
@@ -255,6 +277,7 @@ Packing JammingProtocol::checkpoint() const {
     log["cpu_time_s"] = status_.cpuSeconds;
     log["state_format"] = std::string(kStateFormat);
     log["state_phase"] = static_cast<std::int64_t>(status_.phase);
+    log["state_subset_windows"] = status_.subsetWindows;
     log["state_base_diameter"] = clock.baseDiameter;
     log["state_growth_elapsed"] = clock.elapsed;
     log["state_growth_rate"] = clock.rate;

@@ -7,7 +7,14 @@
 // synchronised, so it can be checkpointed and resumed bit for bit. Spheres (p = 1) run on the
 // exact sphere engine; any other p on the rotating superball engine, whose thermostat rescales
 // translational and rotational kinetic energy separately to kT = 1 (equipartition).
+//
+// No jam is declared from the pressure alone (docs/design.md §3, "Jam check"): at the final
+// pressure the contact network must hold (few rattlers at gaps of order D / P), and a pressure
+// carried by a subset (fewer than half the particles colliding in several windows in a row past
+// the switch pressure) that turns out to be a chain wrapping around the periodic box ends the
+// run early, not jammed: such a chain is rigid, and the rest cannot grow into a jam.
 
+#include "contacts/jam_check.hpp"
 #include "engine/event_driven_md.hpp"
 #include "packing/packing.hpp"
 #include "shapes/sphere.hpp"
@@ -16,6 +23,7 @@
 #include <csignal>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <variant>
 
@@ -31,6 +39,8 @@ struct ProtocolParameters {
     double pressureSwitch = 1e6;
     double pressureFinal = 1e12;
     double collisionsPerWindow = 10.0; ///< per particle, between thermostat rescalings
+    /// The contact-network criterion of the jam, checked before a jam is declared.
+    JamCheckParameters jamCheck{};
 
     /// Throws std::invalid_argument naming the command-line option of the first bad value.
     void validate() const;
@@ -48,8 +58,14 @@ struct ProtocolStatus {
     std::uint64_t rechecks = 0; ///< superball predictions that stopped at a safe time
     std::uint64_t windows = 0;
     SuperballPredictorStats predictor; ///< the superball predictor's work, summed over the run
-    double wallSeconds = 0.0;          ///< summed over the run and every resumed part
-    double cpuSeconds = 0.0; ///< process CPU time, likewise (throughput on a shared machine)
+    /// Windows in a row, past the switch pressure, in which fewer than half the particles
+    /// collided: the pressure may come from a subset (then the jam is checked).
+    std::int64_t subsetWindows = 0;
+    /// The jam check, made when the final pressure is reached or when a subset carries the
+    /// pressure through a chain that wraps around the box (then the run ends, not jammed).
+    std::optional<JamCheck> jam;
+    double wallSeconds = 0.0; ///< summed over the run and every resumed part
+    double cpuSeconds = 0.0;  ///< process CPU time, likewise (throughput on a shared machine)
 };
 
 class JammingProtocol {
@@ -76,6 +92,9 @@ class JammingProtocol {
 
   private:
     void finishWindow(double virial, double duration);
+    /// After a window in which `participants` particles collided: the jam check at the final
+    /// pressure, or when a subset has carried the pressure for a while.
+    void watchJam(std::uint64_t participants);
     /// phi = N v1 / L^3 at the current diameter.
     double packingFraction() const;
 

@@ -95,8 +95,8 @@ Vector3d optimalNormalRate(const PairRates& rates, const Vector3d& n,
 }
 
 /// s at a warm normal by Newton steps on the unit sphere with backtracking, f(n) = n.d - h_i(n) -
-/// h_j(n) being concave about its maximum near contact (docs/design.md §2); the tangent Hessian of -f
-/// is P^T (d2h_i + d2h_j) P + f I. Unconverged when an eighth of a step still does not ascend,
+/// h_j(n) being concave about its maximum near contact (docs/design.md §2); the tangent Hessian of
+/// -f is P^T (d2h_i + d2h_j) P + f I. Unconverged when an eighth of a step still does not ascend,
 /// the Hessian is not positive definite or it takes more than `maxSteps` steps (slow near face
 /// normals of p > 1, where the Hessian diverges, and most evaluations of near-cubes).
 WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n, int maxSteps,

@@ -1,6 +1,6 @@
 #pragma once
-// The superball as a shape of the event-driven engine (docs/design.md §2-3): collision prediction for
-// two translating, rotating, growing superballs that never misses a contact.
+// The superball as a shape of the event-driven engine (docs/design.md §2-3): collision prediction
+// for two translating, rotating, growing superballs that never misses a contact.
 //
 // Motion over tau >= 0 in the pair's frame: d(tau) = d + w tau, q_k(tau) = exp(omega_k tau / 2) q_k
 // (lab-frame omega), R(tau) = (D + gamma tau) / 2, c = circumradius / R. For a fixed unit n the

@@ -1,7 +1,7 @@
-// The superball predictor (SuperballShape::collisionTime, docs/design.md §3) against truths that do not
-// depend on it: a brute-force first contact from the sign of mu(tau) - 1 (docs/design.md §2) on a fine
-// grid, the exact sphere quadratic at p = 1, and the conservation laws of an elastic collision of
-// two rotating bodies in the engine.
+// The superball predictor (SuperballShape::collisionTime, docs/design.md §3) against truths that do
+// not depend on it: a brute-force first contact from the sign of mu(tau) - 1 (docs/design.md §2) on
+// a fine grid, the exact sphere quadratic at p = 1, and the conservation laws of an elastic
+// collision of two rotating bodies in the engine.
 #include "engine/event_driven_md.hpp"
 #include "geometry/superball.hpp"
 #include "initial/random_start.hpp"

@@ -1,0 +1,117 @@
+#include "contacts/jam_check.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace sbpack {
+
+namespace {
+
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+    char line[160];
+    std::snprintf(line, sizeof line, pattern, a, b, c);
+    return line;
+}
+
+/// The axes along which a lattice vector wraps, e.g. "y" or "x and z".
+std::string axesOf(const Vector3d& wrap) {
+    std::string axes;
+    for (int k = 0; k < 3; ++k)
+        if (wrap[k] != 0.0) axes += (axes.empty() ? "" : " and ") + std::string(1, "xyz"[k]);
+    return axes;
+}
+
+/// The path from `from` up to the breadth-first tree's root.
+std::vector<int> pathToRoot(int from, const std::vector<int>& parent) {
+    std::vector<int> path{from};
+    while (parent[path.back()] >= 0)
+        path.push_back(parent[path.back()]);
+    return path;
+}
+
+/// The cycle closed by the non-tree edge (a, b): a up to the common ancestor, then down to b.
+std::vector<int> closedCycle(int a, int b, const std::vector<int>& parent) {
+    std::vector<int> up = pathToRoot(a, parent), down = pathToRoot(b, parent);
+    while (up.size() > 1 && down.size() > 1 && up[up.size() - 2] == down[down.size() - 2]) {
+        up.pop_back();
+        down.pop_back();
+    }
+    down.pop_back(); // the common ancestor, already the last of `up`
+    up.insert(up.end(), down.rbegin(), down.rend());
+    return up;
+}
+
+std::string verdictOf(const JamCheck& check, const Packing& packing, double maxRattlers) {
+    const double rattlers = check.contacts.rattlerFraction;
+    const std::string network =
+        format("rattler fraction %.3f at contact gap < %.0e D", rattlers, check.tolerance);
+    if (check.jammed) return "jammed: " + network;
+    if (check.chain) {
+        const SpanningChain& c = *check.chain;
+        return "not jammed: a chain of " + std::to_string(c.cycle.size()) +
+               " particles in contact wraps around the periodic box along " + axesOf(c.wrap) +
+               format(" (box %.2f D) and carries the pressure; ",
+                      packing.boxLength / packing.shape().diameter()) +
+               network +
+               ". Near-cubes stack into such columns in boxes a few D long: use more particles";
+    }
+    return "not jammed: " + network + format(" (above %.2f)", maxRattlers);
+}
+
+} // namespace
+
+std::optional<SpanningChain> findSpanningChain(const Packing& packing,
+                                               const std::vector<std::pair<int, int>>& contacts) {
+    const int n = static_cast<int>(packing.size());
+    const double box = packing.boxLength;
+    std::vector<std::vector<int>> neighbours(n);
+    for (const auto& [i, j] : contacts) {
+        neighbours[i].push_back(j);
+        neighbours[j].push_back(i);
+    }
+    std::vector<Vector3d> unwrapped(n);
+    std::vector<int> parent(n, -1), component(n, -1);
+    for (int root = 0; root < n; ++root) {
+        if (component[root] >= 0 || neighbours[root].empty()) continue;
+        std::vector<int> members{root};
+        component[root] = root;
+        unwrapped[root] = packing.positions[root];
+        for (std::size_t next = 0; next < members.size(); ++next) {
+            const int a = members[next];
+            for (const int b : neighbours[a]) {
+                const Vector3d reached =
+                    unwrapped[a] + minimumImage(packing.positions[b] - packing.positions[a], box);
+                if (component[b] < 0) {
+                    component[b] = root;
+                    parent[b] = a;
+                    unwrapped[b] = reached;
+                    members.push_back(b);
+                    continue;
+                }
+                const Vector3d wrap = ((reached - unwrapped[b]) / box).array().round() * box;
+                if (wrap.isZero(0.0)) continue;
+                return SpanningChain{wrap, closedCycle(a, b, parent)};
+            }
+        }
+    }
+    return std::nullopt;
+}
+
+JamCheck checkJam(const Packing& packing, double reducedPressure,
+                  const JamCheckParameters& parameters) {
+    if (!(reducedPressure > 0.0))
+        throw std::invalid_argument("jam check: reduced pressure must be positive");
+    JamCheck check;
+    check.tolerance =
+        std::max(parameters.minTolerance, parameters.gapsPerPressure / reducedPressure);
+    check.contacts =
+        ContactNetwork({check.tolerance, parameters.rattlerThreshold}).compute(packing);
+    check.jammed = check.contacts.rattlerFraction <= parameters.maxRattlerFraction;
+    if (!check.jammed) check.chain = findSpanningChain(packing, check.contacts.contacts);
+    check.verdict = verdictOf(check, packing, parameters.maxRattlerFraction);
+    return check;
+}
+
+} // namespace sbpack

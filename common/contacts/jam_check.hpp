@@ -1,0 +1,49 @@
+#pragma once
+// Is a packing jammed, or does its reduced pressure come from a subset? (docs/design.md §3,
+// "Jam check"). At reduced pressure P the load-bearing gaps are of order D / P, so the contact
+// network is taken at gap < max(1e-10, gapsPerPressure / P) D; a jammed packing has few
+// rattlers there. A pressure carried by a chain of particles that wraps around the periodic box
+// (a column of face-to-face near-cubes in a box a few D long) is no jam: the chain is rigid
+// along one axis while the rest of the packing is loose, and growth cannot proceed.
+
+#include "contacts/contact_network.hpp"
+
+#include <optional>
+#include <string>
+
+namespace sbpack {
+
+struct JamCheckParameters {
+    /// The contact tolerance at reduced pressure P is max(minTolerance, gapsPerPressure / P).
+    double minTolerance = 1e-10;
+    double gapsPerPressure = 100.0;
+    /// Jammed only if at most this fraction of the particles are rattlers.
+    double maxRattlerFraction = 0.1;
+    int rattlerThreshold = 4;
+};
+
+/// A connected set of contacts that wraps around the periodic box: following the contacts'
+/// minimum-image displacements around one of its cycles gains a nonzero lattice vector.
+struct SpanningChain {
+    Vector3d wrap;          ///< the lattice vector gained (multiples of L per axis)
+    std::vector<int> cycle; ///< the particles of one wrapping cycle, in order
+};
+
+struct JamCheck {
+    bool jammed = false;
+    double tolerance = 0.0; ///< contact gap tolerance used, in units of D
+    ContactResult contacts; ///< at that tolerance
+    /// Looked for only when not jammed: contacts that wrap around the box, carrying the pressure.
+    std::optional<SpanningChain> chain;
+    std::string verdict; ///< one line: why jammed or why not
+};
+
+/// The contact-network criterion of a jam at reduced pressure `reducedPressure` (> 0).
+JamCheck checkJam(const Packing& packing, double reducedPressure,
+                  const JamCheckParameters& parameters = {});
+
+/// The first wrapping cycle among `contacts` of the packing, if any.
+std::optional<SpanningChain> findSpanningChain(const Packing& packing,
+                                               const std::vector<std::pair<int, int>>& contacts);
+
+} // namespace sbpack

@@ -1,0 +1,91 @@
+// The jam check (docs/design.md §3): lattices with every particle load-bearing are jammed; a
+// column of face-to-face near-cubes that wraps around the box, with loose particles beside it,
+// is not, and the chain found is the one built (its wrap is the sum of its contacts'
+// minimum-image displacements).
+#include "contacts/jam_check.hpp"
+#include "io/text_io.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+namespace sbpack {
+namespace {
+
+const std::string kData = SBPACK_DATA_DIR;
+
+/// Six aligned p = 3 superballs stacked face to face along y, exactly touching (the contact
+/// distance of aligned bodies along an axis is D), wrapping around a box of 6 D, and `loose`
+/// particles well apart from the column and from each other.
+Packing column(int loose) {
+    Packing packing;
+    packing.p = 3.0;
+    packing.semiAxis = 0.5;
+    packing.boxLength = 6.0;
+    for (int k = 0; k < 6; ++k)
+        packing.positions.emplace_back(1.0, 0.5 + k, 1.0);
+    for (int k = 0; k < loose; ++k)
+        packing.positions.emplace_back(3.0 + 1.5 * (k % 2), 0.7 + 2.1 * (k / 2), 3.9);
+    packing.orientations.assign(packing.size(), Quaterniond::Identity());
+    return packing;
+}
+
+TEST(JamCheck, TheSimpleCubicLatticeOfSuperballsIsJammed) {
+    const Packing lattice = readTextPacking(kData + "/sc-lattice-p1.5.txt");
+    const JamCheck check = checkJam(lattice, 1e12);
+    EXPECT_TRUE(check.jammed) << check.verdict;
+    EXPECT_EQ(check.tolerance, 1e-10);
+    EXPECT_EQ(check.contacts.rattlerFraction, 0.0);
+    EXPECT_FALSE(check.chain.has_value()); // looked for only when not jammed
+    EXPECT_EQ(check.verdict.rfind("jammed: rattler fraction 0.000", 0), 0u) << check.verdict;
+}
+
+TEST(JamCheck, TheToleranceFollowsThePressure) {
+    const Packing lattice = readTextPacking(kData + "/fcc-spheres.txt");
+    EXPECT_DOUBLE_EQ(checkJam(lattice, 1e6).tolerance, 1e-4);
+    EXPECT_EQ(checkJam(lattice, 1e14).tolerance, 1e-10);
+    EXPECT_TRUE(checkJam(lattice, 1e6).jammed);
+    EXPECT_THROW(checkJam(lattice, 0.0), std::invalid_argument);
+}
+
+TEST(JamCheck, AColumnWrappingAroundTheBoxIsNoJam) {
+    const Packing packing = column(4);
+    const JamCheck check = checkJam(packing, 1e12);
+    EXPECT_FALSE(check.jammed);
+    EXPECT_EQ(check.contacts.contacts.size(), 6u); // the column's six faces, nothing else
+    EXPECT_EQ(check.contacts.rattlerFraction, 1.0);
+    ASSERT_TRUE(check.chain.has_value()) << check.verdict;
+    EXPECT_EQ(check.chain->wrap.x(), 0.0);
+    EXPECT_EQ(std::abs(check.chain->wrap.y()), 6.0);
+    EXPECT_EQ(check.chain->wrap.z(), 0.0);
+    // The cycle is the column, and its displacements add up to the wrap.
+    const std::vector<int>& cycle = check.chain->cycle;
+    EXPECT_EQ(std::set<int>(cycle.begin(), cycle.end()), (std::set<int>{0, 1, 2, 3, 4, 5}));
+    Vector3d sum = Vector3d::Zero();
+    for (std::size_t k = 0; k < cycle.size(); ++k) {
+        const int a = cycle[k], b = cycle[(k + 1) % cycle.size()];
+        sum += minimumImage(packing.positions[b] - packing.positions[a], packing.boxLength);
+    }
+    EXPECT_NEAR(std::abs(sum.y()), 6.0, 1e-12);
+    EXPECT_NE(check.verdict.find("a chain of 6 particles in contact wraps around the periodic "
+                                 "box along y (box 6.00 D)"),
+              std::string::npos)
+        << check.verdict;
+}
+
+TEST(JamCheck, AClusterThatDoesNotWrapIsNoChain) {
+    Packing packing = column(0);
+    packing.positions.pop_back(); // five in a row: an open chain in the box of 6 D
+    packing.orientations.pop_back();
+    const ContactResult contacts = ContactNetwork({}).compute(packing);
+    EXPECT_EQ(contacts.contacts.size(), 4u);
+    EXPECT_FALSE(findSpanningChain(packing, contacts.contacts).has_value());
+    const JamCheck check = checkJam(packing, 1e12);
+    EXPECT_FALSE(check.jammed);
+    EXPECT_FALSE(check.chain.has_value());
+    EXPECT_NE(check.verdict.find("not jammed: rattler fraction 1.000"), std::string::npos)
+        << check.verdict;
+}
+
+} // namespace
+} // namespace sbpack
