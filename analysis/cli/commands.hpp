@@ -1,23 +1,23 @@
 #pragma once
-// The command line of sbanalyze: its usage text and one function per command.
+// What sbanalyze's commands do once their command line is parsed (cli/command_line.hpp).
 
+#include "contacts/contact_network.hpp"
 #include "pipeline/run_settings.hpp"
 
+#include <iosfwd>
 #include <string>
 #include <vector>
 
 namespace sbpack {
 
-/// The full --help text.
-std::string usage();
-
-/// Parses the arguments of the analysis command (`sbanalyze FILE... [options]`). Throws
-/// std::invalid_argument naming the option and what is wrong with its value.
-RunSettings parseAnalyzeArguments(const std::vector<std::string>& args);
-
-/// Each returns the exit status; bad arguments throw std::invalid_argument.
-int analyzeCommand(const std::vector<std::string>& args);
-int infoCommand(const std::vector<std::string>& args);
-int convertCommand(const std::vector<std::string>& args);
+/// Each returns the exit status; bad input throws std::invalid_argument (or the reader's error)
+/// naming the file and the problem.
+int analyzeCommand(const RunSettings& settings);
+/// Reports every file; a bad one is an error line on `err`, and the status is then 1.
+int infoCommand(const std::vector<std::string>& files, const ContactParameters& parameters,
+                std::ostream& out, std::ostream& err);
+int convertCommand(const std::string& input, const std::string& output, std::ostream& err);
+/// The results schema as Markdown (docs/results-schema.md) or, with `json`, as JSON.
+int schemaCommand(bool json, std::ostream& out);
 
 } // namespace sbpack

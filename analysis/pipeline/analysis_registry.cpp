@@ -1,5 +1,7 @@
 #include "pipeline/analysis_registry.hpp"
 
+#include "pipeline/stages/stages.hpp"
+
 #include <array>
 #include <stdexcept>
 
@@ -10,34 +12,53 @@ namespace {
 constexpr std::array<Analysis, 1> kSpectralNeeds{Analysis::Voxels};
 constexpr std::array<Analysis, 1> kTransportNeeds{Analysis::PoreSizes};
 
+// One row per analysis (docs/architecture.md, "Add an analysis"); its results group is declared
+// in schema/results_schema.cpp, its stage in pipeline/stages/.
 constexpr std::array<AnalysisInfo, 6> kRegistry{{
     {Analysis::Contacts,
      "contacts",
+     "contacts",
      "contact network: mean contact number Z, rattler fraction, contacts per particle",
      VoxelGrid::None,
-     {}},
+     {},
+     "",
+     stages::runContacts,
+     nullptr},
     {Analysis::StructureFactor,
      "sq",
+     "structure_factor",
      "structure factor S(Q) of the centroids (Eq. 4)",
      VoxelGrid::None,
-     {}},
-    {Analysis::SpectralDensity, "chi",
+     {},
+     "",
+     stages::runStructureFactor,
+     stages::structureFactorMemory},
+    {Analysis::SpectralDensity, "chi", "spectral_density",
      "spectral density chi_V(Q) from the voxels by FFT (Eq. 12); exact too for spheres",
-     VoxelGrid::Spectral, kSpectralNeeds},
+     VoxelGrid::Spectral, kSpectralNeeds, "", stages::runSpectralDensity,
+     stages::spectralDensityMemory},
     {Analysis::Voxels,
      "voxels",
+     "voxelization",
      "voxelization on the --voxels grid: phi_voxel against phi",
      VoxelGrid::Spectral,
-     {}},
+     {},
+     ".vdb",
+     stages::runVoxels,
+     stages::voxelsMemory},
     {Analysis::PoreSizes,
      "pores",
+     "pore_size",
      "pore sizes on the --pore-voxels grid by exact periodic distance transform: F(delta), "
      "<delta>, <delta^2> (Eqs. 13-15)",
      VoxelGrid::Pore,
-     {}},
-    {Analysis::Transport, "transport",
+     {},
+     "-pore-size.vdb",
+     stages::runPoreSizes,
+     stages::poreSizesMemory},
+    {Analysis::Transport, "transport", "transport",
      "permeability k, survival time tau, relaxation time T1 from the pore sizes (Eqs. 16-20)",
-     VoxelGrid::None, kTransportNeeds},
+     VoxelGrid::None, kTransportNeeds, "", stages::runTransport, nullptr},
 }};
 
 void addWithNeeds(Analysis analysis, AnalysisSet& set) {
@@ -46,11 +67,29 @@ void addWithNeeds(Analysis analysis, AnalysisSet& set) {
         addWithNeeds(need, set);
 }
 
+void appendInRunOrder(Analysis analysis, const AnalysisSet& set, std::vector<Analysis>& order) {
+    if (set.count(analysis) == 0) return;
+    for (Analysis done : order)
+        if (done == analysis) return;
+    for (Analysis need : analysisInfo(analysis).needs)
+        appendInRunOrder(need, set, order);
+    order.push_back(analysis);
+}
+
 std::string knownNames() {
     std::string names;
     for (const AnalysisInfo& info : kRegistry)
         names += std::string(info.name) + ", ";
     return names + "all";
+}
+
+const AnalysisInfo& byName(std::string_view name) {
+    for (const AnalysisInfo& info : kRegistry)
+        if (info.name == name) return info;
+    throw std::invalid_argument("option --compute: " +
+                                (name.empty() ? std::string("empty analysis name")
+                                              : "unknown analysis '" + std::string(name) + "'") +
+                                " (known: " + knownNames() + ")");
 }
 
 } // namespace
@@ -75,18 +114,9 @@ AnalysisSet resolveAnalyses(std::string_view list) {
         if (name == "all") {
             for (const AnalysisInfo& info : kRegistry)
                 addWithNeeds(info.analysis, set);
-            continue;
+        } else {
+            addWithNeeds(byName(name).analysis, set);
         }
-        const AnalysisInfo* found = nullptr;
-        for (const AnalysisInfo& info : kRegistry)
-            if (info.name == name) found = &info;
-        if (found == nullptr)
-            throw std::invalid_argument("option --compute: " +
-                                        (name.empty()
-                                             ? std::string("empty analysis name")
-                                             : "unknown analysis '" + std::string(name) + "'") +
-                                        " (known: " + knownNames() + ")");
-        addWithNeeds(found->analysis, set);
     }
     return set;
 }
@@ -99,6 +129,13 @@ std::string analysisNames(const AnalysisSet& set) {
             names += info.name;
         }
     return names;
+}
+
+std::vector<Analysis> runOrder(const AnalysisSet& set) {
+    std::vector<Analysis> order;
+    for (const AnalysisInfo& info : kRegistry)
+        appendInRunOrder(info.analysis, set, order);
+    return order;
 }
 
 } // namespace sbpack

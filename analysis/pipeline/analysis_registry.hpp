@@ -1,12 +1,22 @@
 #pragma once
-// The analyses sbanalyze can run, by the names of --compute, with what each needs.
+// The analyses sbanalyze can run, by the names of --compute: what each needs, which results
+// group it fills (schema/results_schema.hpp) and the stage that runs it (pipeline/stage.hpp).
+// Adding an analysis: docs/architecture.md, "Add an analysis".
 
 #include <set>
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace sbpack {
+
+class FileContext;
+struct RunSettings;
+struct Packing;
+namespace schema {
+class Record;
+}
 
 enum class Analysis {
     Contacts,        ///< contact network, Z and rattlers (common/contacts)
@@ -21,15 +31,31 @@ enum class Analysis {
 /// paper's chi) or the pore grid (--pore-voxels, default 500 as the paper's pore sizes).
 enum class VoxelGrid { None, Spectral, Pore };
 
+/// The largest transient allocation of a stage, for the memory check before a run.
+struct StageMemory {
+    double bytes = 0.0;
+    std::string what; ///< e.g. "FFT grid 300^3"
+};
+
+/// Runs one analysis on the file of `context` and fills `record` (its results group); returns
+/// false when the analysis does not apply to this file (it has warned why; no group is written).
+using StageRun = bool (*)(FileContext& context, schema::Record& record);
+/// Estimates a stage's largest transient allocation; nullptr where it is negligible.
+using StageMemoryEstimate = StageMemory (*)(const Packing& packing, const RunSettings& settings);
+
 struct AnalysisInfo {
     Analysis analysis;
     std::string_view name;        ///< as in --compute
+    std::string_view group;       ///< its results group (schema::analysisGroups())
     std::string_view description; ///< one line for --help
     VoxelGrid grid;
-    std::span<const Analysis> needs; ///< analyses whose results it uses
+    std::span<const Analysis> needs; ///< analyses whose results it uses (they run first)
+    std::string_view vdbSuffix;      ///< with --vdb: exports DIR/<input stem><suffix>; "": none
+    StageRun run;
+    StageMemoryEstimate memory;
 };
 
-/// Every analysis, in the order they run and are reported.
+/// Every analysis, in the order they are listed (they run in this order, needs first).
 std::span<const AnalysisInfo> analysisRegistry();
 const AnalysisInfo& analysisInfo(Analysis analysis);
 
@@ -42,5 +68,8 @@ AnalysisSet resolveAnalyses(std::string_view list);
 
 /// The names of `set`, comma-separated, in registry order.
 std::string analysisNames(const AnalysisSet& set);
+
+/// `set` in the order its stages run: registry order, each analysis after what it needs.
+std::vector<Analysis> runOrder(const AnalysisSet& set);
 
 } // namespace sbpack

@@ -1,7 +1,10 @@
 #include "pipeline/ensemble.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
-#include <functional>
+#include <map>
 #include <numbers>
 #include <stdexcept>
 
@@ -23,6 +26,59 @@ EnsembleScalar ensembleScalar(std::span<const double> values) {
     return s;
 }
 
+namespace {
+
+/// One file's count-weighted sums of Q w, Q and the value in one bin.
+struct FileBin {
+    double qw = 0.0, q = 0.0, value = 0.0;
+    std::int64_t count = 0;
+};
+
+/// Bin index -> per file sums.
+using Bins = std::map<long, std::vector<FileBin>>;
+
+Bins binCurves(std::span<const ShellAverage> curves, std::span<const double> meanWidths,
+               double binWidthQw) {
+    Bins bins;
+    for (std::size_t f = 0; f < curves.size(); ++f) {
+        const ShellAverage& c = curves[f];
+        for (std::size_t i = 0; i < c.size(); ++i) {
+            const double qw = c.q[i] * meanWidths[f];
+            std::vector<FileBin>& bin = bins[std::lround(qw / binWidthQw)];
+            bin.resize(curves.size());
+            const auto w = static_cast<double>(c.count[i]);
+            bin[f].qw += w * qw;
+            bin[f].q += w * c.q[i];
+            bin[f].value += w * c.value[i];
+            bin[f].count += c.count[i];
+        }
+    }
+    return bins;
+}
+
+void appendBin(const std::vector<FileBin>& perFile, EnsembleCurve& out) {
+    std::vector<double> values;
+    double qw = 0.0, q = 0.0;
+    std::int64_t count = 0;
+    for (const FileBin& b : perFile) {
+        if (b.count == 0) continue;
+        const auto c = static_cast<double>(b.count);
+        values.push_back(b.value / c);
+        qw += b.qw / c;
+        q += b.q / c;
+        count += b.count;
+    }
+    const EnsembleScalar s = ensembleScalar(values);
+    out.qw.push_back(qw / s.files);
+    out.q.push_back(q / s.files);
+    out.mean.push_back(s.mean);
+    out.std.push_back(s.std);
+    out.count.push_back(count);
+    out.files.push_back(s.files);
+}
+
+} // namespace
+
 EnsembleCurve ensembleCurve(std::span<const ShellAverage> curves,
                             std::span<const double> meanWidths,
                             std::span<const double> boxLengths) {
@@ -32,139 +88,126 @@ EnsembleCurve ensembleCurve(std::span<const ShellAverage> curves,
     for (std::size_t f = 0; f < curves.size(); ++f)
         out.binWidthQw += 2.0 * std::numbers::pi * meanWidths[f] / boxLengths[f];
     out.binWidthQw /= static_cast<double>(curves.size());
-
-    // Per file and bin: count-weighted sums of Q w, Q and the value.
-    struct FileBin {
-        double qw = 0.0, q = 0.0, value = 0.0;
-        std::int64_t count = 0;
-    };
-    std::map<long, std::vector<FileBin>> bins;
-    for (std::size_t f = 0; f < curves.size(); ++f) {
-        const ShellAverage& c = curves[f];
-        for (std::size_t i = 0; i < c.size(); ++i) {
-            const double qw = c.q[i] * meanWidths[f];
-            std::vector<FileBin>& bin = bins[std::lround(qw / out.binWidthQw)];
-            bin.resize(curves.size());
-            const auto w = static_cast<double>(c.count[i]);
-            bin[f].qw += w * qw;
-            bin[f].q += w * c.q[i];
-            bin[f].value += w * c.value[i];
-            bin[f].count += c.count[i];
-        }
-    }
-    for (const auto& [index, perFile] : bins) {
-        std::vector<double> values;
-        double qw = 0.0, q = 0.0;
-        std::int64_t count = 0;
-        for (const FileBin& b : perFile) {
-            if (b.count == 0) continue;
-            const auto c = static_cast<double>(b.count);
-            values.push_back(b.value / c);
-            qw += b.qw / c;
-            q += b.q / c;
-            count += b.count;
-        }
-        const EnsembleScalar s = ensembleScalar(values);
-        out.qw.push_back(qw / s.files);
-        out.q.push_back(q / s.files);
-        out.mean.push_back(s.mean);
-        out.std.push_back(s.std);
-        out.count.push_back(count);
-        out.files.push_back(s.files);
-    }
+    for (const auto& [index, perFile] : binCurves(curves, meanWidths, out.binWidthQw))
+        appendBin(perFile, out);
     return out;
 }
 
 namespace {
 
-/// Statistics of one scalar over the files where `get` finds it.
-template <class Get> EnsembleScalar over(std::span<const FileResults> files, Get get) {
+/// The records of one group over the members that have it, with each one's file record.
+struct Sources {
+    std::vector<const schema::Record*> records;
+    std::vector<const schema::Record*> files;
+};
+
+void reduceScalar(const schema::Field& f, const Sources& in, schema::Record& out) {
     std::vector<double> values;
-    for (const FileResults& f : files)
-        if (const std::optional<double> v = get(f)) values.push_back(*v);
-    return ensembleScalar(values);
+    for (const schema::Record* r : in.records)
+        if (r->has(f.name)) values.push_back(r->number(f.name));
+    if (values.empty()) return; // an optional field no member has
+    const EnsembleScalar s = ensembleScalar(values);
+    out.set(f.name, s.mean).set(std::string(f.name) + "_std", s.std);
+}
+
+void reduceCurve(const schema::Field& f, const Sources& in, schema::Record& out) {
+    std::vector<ShellAverage> curves;
+    std::vector<double> widths, lengths;
+    for (std::size_t i = 0; i < in.records.size(); ++i) {
+        const schema::Record& r = *in.records[i];
+        curves.push_back({r.floats("Q"), r.floats(f.name), r.integers("count")});
+        widths.push_back(in.files[i]->number("mean_width"));
+        lengths.push_back(in.files[i]->number("box_length"));
+    }
+    const EnsembleCurve c = ensembleCurve(curves, widths, lengths);
+    out.set("bin_width_Q_w", c.binWidthQw)
+        .set("Q_w", c.qw)
+        .set("Q", c.q)
+        .set(f.name, c.mean)
+        .set(std::string(f.name) + "_std", c.std)
+        .set("count", c.count)
+        .set("files", c.files);
+}
+
+/// Statistics of the fields of `source` over `in` into a record of `target`.
+schema::Record reduce(const schema::Group& source, const schema::Group& target, const Sources& in) {
+    schema::Record out(target);
+    for (const schema::Field& f : source.fields) {
+        if (f.reduce == schema::Reduce::MeanStd) reduceScalar(f, in, out);
+        if (f.reduce == schema::Reduce::Curve) reduceCurve(f, in, out);
+    }
+    return out;
+}
+
+void checkSameEnsemble(const FileResults& first, const FileResults& other) {
+    if (other.p() == first.p() && other.particles() == first.particles()) return;
+    throw std::invalid_argument(fmt::format(
+        "ensemble: '{}' (p = {}, N = {}) and '{}' (p = {}, N = {}) differ in p or N and are "
+        "not averaged together",
+        first.input.string(), first.p(), first.particles(), other.input.string(), other.p(),
+        other.particles()));
 }
 
 } // namespace
 
-EnsembleResults computeEnsemble(std::span<const FileResults> files) {
-    EnsembleResults e;
-    e.files = static_cast<int>(files.size());
-    EnsembleGroup& root = e.groups[""];
-    root.scalars["phi"] = over(files, [](const FileResults& f) { return std::optional(f.phi); });
-    root.scalars["mean_width"] =
-        over(files, [](const FileResults& f) { return std::optional(f.meanWidth); });
-    root.scalars["box_length"] =
-        over(files, [](const FileResults& f) { return std::optional(f.boxLength); });
+const schema::Record* EnsembleResults::group(std::string_view name) const {
+    for (const schema::Record& g : groups)
+        if (g.group().name == name) return &g;
+    return nullptr;
+}
 
-    if (files.front().contacts) {
-        EnsembleGroup& g = e.groups["contacts"];
-        g.scalars["z_mean"] = over(files, [](const FileResults& f) {
-            return std::optional(f.contacts->result.meanContactNumber);
-        });
-        g.scalars["rattler_fraction"] = over(files, [](const FileResults& f) {
-            return std::optional(f.contacts->result.rattlerFraction);
-        });
+std::vector<std::vector<std::size_t>> ensembleMembers(std::span<const FileResults> files) {
+    std::vector<std::vector<std::size_t>> ensembles;
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        auto same = [&](const std::vector<std::size_t>& e) {
+            return files[e.front()].p() == files[i].p() &&
+                   files[e.front()].particles() == files[i].particles();
+        };
+        auto it = std::find_if(ensembles.begin(), ensembles.end(), same);
+        if (it == ensembles.end())
+            ensembles.push_back({i});
+        else
+            it->push_back(i);
     }
-    if (files.front().poreSizes) {
-        EnsembleGroup& g = e.groups["pore_size"];
-        g.scalars["mean_w"] = over(files, [](const FileResults& f) {
-            return std::optional(f.poreSizes->meanOverWidth());
-        });
-        g.scalars["second_moment_w2"] = over(files, [](const FileResults& f) {
-            return std::optional(f.poreSizes->secondMomentOverWidth2());
-        });
-        g.scalars["max_w"] = over(
-            files, [](const FileResults& f) { return std::optional(f.poreSizes->maxOverWidth()); });
+    return ensembles;
+}
+
+EnsembleResults computeEnsemble(std::span<const FileResults> files,
+                                std::vector<std::size_t> members) {
+    if (members.empty()) throw std::invalid_argument("ensemble: no members");
+    Sources all;
+    for (std::size_t m : members) {
+        if (m >= files.size()) throw std::invalid_argument(fmt::format("ensemble: no file {}", m));
+        checkSameEnsemble(files[members.front()], files[m]);
+        all.records.push_back(&files[m].root);
     }
-    if (files.front().transport) {
-        EnsembleGroup& g = e.groups["transport"];
-        g.scalars["permeability_w2"] = over(files, [](const FileResults& f) {
-            return std::optional(f.transport->permeabilityOverWidth2());
-        });
-        g.scalars["mean_survival_time_scaled"] = over(files, [](const FileResults& f) {
-            return std::optional(f.transport->meanSurvivalTimeScaled());
-        });
-        g.scalars["principal_relaxation_time_scaled"] = over(files, [](const FileResults& f) {
-            return std::optional(f.transport->principalRelaxationTimeScaled());
-        });
+    all.files = all.records;
+    EnsembleResults e;
+    e.root = reduce(schema::fileGroup(), schema::ensembleRootGroup(), all);
+    e.root.set("p", files[members.front()].p())
+        .set("n_particles", files[members.front()].particles())
+        .set("n_files", members.size())
+        .set("members", std::vector<std::int64_t>(members.begin(), members.end()));
+    for (const schema::Group& g : schema::analysisGroups()) {
+        Sources in;
+        for (std::size_t m : members)
+            if (const schema::Record* r = files[m].group(g.name)) {
+                in.records.push_back(r);
+                in.files.push_back(&files[m].root);
+            }
+        if (in.records.empty()) continue;
+        e.groups.push_back(reduce(g, schema::ensembleGroup(g.name), in));
+        e.groups.back().set("n_files", in.records.size());
     }
-    if (files.front().voxelization) {
-        EnsembleGroup& g = e.groups["voxelization"];
-        g.scalars["phi_voxel"] = over(
-            files, [](const FileResults& f) { return std::optional(f.voxelization->phiVoxel); });
-        g.scalars["phi_exact"] = over(
-            files, [](const FileResults& f) { return std::optional(f.voxelization->phiExact); });
-    }
-    // Curves: every file has the same analyses (one run, one --compute).
-    std::vector<double> widths, lengths;
-    for (const FileResults& f : files) {
-        widths.push_back(f.meanWidth);
-        lengths.push_back(f.boxLength);
-    }
-    if (files.front().structureFactor) {
-        std::vector<ShellAverage> curves;
-        for (const FileResults& f : files)
-            curves.push_back(f.structureFactor->shells);
-        e.groups["structure_factor"] =
-            EnsembleGroup{{}, ensembleCurve(curves, widths, lengths), std::string("S")};
-    }
-    if (files.front().spectralDensity) {
-        std::vector<ShellAverage> curves;
-        for (const FileResults& f : files)
-            curves.push_back(f.spectralDensity->shells);
-        EnsembleGroup& g = e.groups["spectral_density"] =
-            EnsembleGroup{{}, ensembleCurve(curves, widths, lengths), std::string("chi")};
-        g.scalars["phi_voxel"] = over(
-            files, [](const FileResults& f) { return std::optional(f.spectralDensity->phiVoxel); });
-        g.scalars["exact_error"] = over(files, [](const FileResults& f) {
-            return f.spectralDensity->exactSphere
-                       ? std::optional(f.spectralDensity->exactSphere->maxErrorOverPeak)
-                       : std::nullopt;
-        });
-        if (g.scalars["exact_error"].files == 0) g.scalars.erase("exact_error");
-    }
+    e.members = std::move(members);
     return e;
+}
+
+std::vector<EnsembleResults> computeEnsembles(std::span<const FileResults> files) {
+    std::vector<EnsembleResults> ensembles;
+    for (std::vector<std::size_t>& members : ensembleMembers(files))
+        ensembles.push_back(computeEnsemble(files, std::move(members)));
+    return ensembles;
 }
 
 } // namespace sbpack

@@ -1,14 +1,15 @@
 #pragma once
-// Ensemble statistics over several packings: mean and standard deviation of every scalar and
-// of the shell-averaged curves on a common grid in Q w.
+// Ensemble statistics over packings of equal p and N: mean and standard deviation of every
+// scalar the schema marks Reduce::MeanStd, and of the shell-averaged curves (Reduce::Curve) on a
+// common grid in Q w. Inputs that differ in p or N form separate ensembles.
 
 #include "pipeline/file_analysis.hpp"
+#include "schema/record.hpp"
 #include "shells/shell_average.hpp"
 
-#include <map>
-#include <optional>
+#include <cstddef>
 #include <span>
-#include <string>
+#include <string_view>
 #include <vector>
 
 namespace sbpack {
@@ -30,19 +31,7 @@ struct EnsembleCurve {
     std::vector<double> mean;        ///< mean over files of the value
     std::vector<double> std;         ///< sample standard deviation over files
     std::vector<std::int64_t> count; ///< wave vectors, all files together
-    std::vector<int> files;          ///< files with a shell in the bin
-};
-
-/// One results group ("" for the per-file root attributes): scalars and at most one curve.
-struct EnsembleGroup {
-    std::map<std::string, EnsembleScalar> scalars;
-    std::optional<EnsembleCurve> curve;
-    std::string curveName; ///< "S", "chi"
-};
-
-struct EnsembleResults {
-    int files = 0;
-    std::map<std::string, EnsembleGroup> groups; ///< by results-file group name
+    std::vector<std::int64_t> files; ///< files with a shell in the bin
 };
 
 /// Statistics of scalars given per file.
@@ -51,6 +40,25 @@ EnsembleScalar ensembleScalar(std::span<const double> values);
 EnsembleCurve ensembleCurve(std::span<const ShellAverage> curves,
                             std::span<const double> meanWidths, std::span<const double> boxLengths);
 
-EnsembleResults computeEnsemble(std::span<const FileResults> files);
+/// One ensemble (ensembles/<k>): its members (indices of the run's files) and its groups.
+struct EnsembleResults {
+    std::vector<std::size_t> members;
+    schema::Record root{schema::ensembleRootGroup()};
+    std::vector<schema::Record> groups;
+
+    /// The statistics of analysis group `name`; nullptr if no member has that group.
+    const schema::Record* group(std::string_view name) const;
+};
+
+/// The files grouped by (p, N), each group in input order, groups in order of first appearance.
+std::vector<std::vector<std::size_t>> ensembleMembers(std::span<const FileResults> files);
+
+/// Statistics over `members` of `files`. Throws std::invalid_argument, naming both inputs, if the
+/// members differ in p or N (they are never averaged together), or if there are none.
+EnsembleResults computeEnsemble(std::span<const FileResults> files,
+                                std::vector<std::size_t> members);
+
+/// One ensemble per (p, N) of ensembleMembers(files).
+std::vector<EnsembleResults> computeEnsembles(std::span<const FileResults> files);
 
 } // namespace sbpack

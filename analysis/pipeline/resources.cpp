@@ -1,35 +1,14 @@
 #include "pipeline/resources.hpp"
-#include "pores/distance_transform.hpp"
 
-#include "shells/shell_average.hpp"
-#include "spectral/spectral_density.hpp"
-#include "structure/structure_factor.hpp"
 #include "voxels/voxelization.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
-#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
 namespace sbpack {
-
-namespace {
-
-/// Float leaves of the .vdb export: 8^3 floats and their masks per block, at most every block.
-double vdbExportBytes(int voxels) {
-    return std::pow(std::ceil(voxels / 8.0), 3) * (512.0 * 4.0 + 200.0);
-}
-
-/// Phase tables and modes of the collective-density kernel up to shell s.
-double collectiveDensityBytes(const Packing& packing, int maxShell) {
-    const double modes = 2.0 / 3.0 * std::numbers::pi * std::pow(maxShell + 0.5, 3);
-    return 6.0 * 8.0 * static_cast<double>(packing.size()) * (maxShell + 1) + modes * 2.0 * 20.0;
-}
-
-} // namespace
 
 std::string formatBytes(double bytes) {
     const char* units[] = {"B", "kB", "MB", "GB", "TB", "PB"};
@@ -50,38 +29,19 @@ MemoryEstimate estimateMemory(const Packing& packing, const RunSettings& setting
         estimate.breakdown +=
             (estimate.breakdown.empty() ? "" : ", ") + what + " " + formatBytes(bytes);
     };
-    const double meanWidth = packing.shape().meanWidth();
-    const int sqShell = StructureFactor::maxShellFor(settings.maxQw, packing.boxLength, meanWidth);
     // Voxelizations are kept while the file is analysed, one per grid.
     for (VoxelGrid grid : settings.grids()) {
         const int m = settings.voxelsOf(grid);
         add("voxel tree " + std::to_string(m) + "^3", Voxelizer::memoryEstimateBytes(packing, m));
     }
     // The stages after the voxelization run one at a time: the largest counts.
-    double stage = 0.0;
-    std::string stageName;
-    auto consider = [&](const std::string& what, double bytes) {
-        if (bytes > stage) {
-            stage = bytes;
-            stageName = what;
+    StageMemory largest;
+    for (Analysis analysis : settings.analyses)
+        if (const StageMemoryEstimate memory = analysisInfo(analysis).memory) {
+            StageMemory stage = memory(packing, settings);
+            if (stage.bytes > largest.bytes) largest = std::move(stage);
         }
-    };
-    if (settings.runs(Analysis::StructureFactor))
-        consider("S(Q) tables", collectiveDensityBytes(packing, std::max(sqShell, 1)));
-    if (settings.runs(Analysis::SpectralDensity)) {
-        const int m = settings.voxels;
-        const int shell =
-            SpectralDensity::maxShellFor(settings.maxQw, packing.boxLength, meanWidth, m);
-        double bytes = SpectralDensity::memoryEstimateBytes(m);
-        if (packing.shape().isSphere())
-            bytes += collectiveDensityBytes(packing, std::max(shell, 1));
-        consider("FFT grid " + std::to_string(m) + "^3", bytes);
-    }
-    if (settings.runs(Analysis::PoreSizes))
-        consider("pore-size map " + std::to_string(settings.poreVoxels) + "^3",
-                 static_cast<double>(poreSizeMemoryBytes(settings.poreVoxels)));
-    if (!settings.vdbDirectory.empty()) consider(".vdb export", vdbExportBytes(settings.voxels));
-    if (stage > 0.0) add(stageName, stage);
+    if (largest.bytes > 0.0) add(largest.what, largest.bytes);
     return estimate;
 }
 

@@ -7,7 +7,10 @@
 #include "pipeline/summary_json.hpp"
 #include "voxels/voxelization.hpp"
 
+#include <fmt/format.h>
+
 #include <fstream>
+#include <map>
 #include <memory>
 #include <ostream>
 #include <set>
@@ -19,49 +22,52 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Strings are appended piecewise: GCC 12 misreports "literal" + string (-Wrestrict).
 std::string quotedName(const fs::path& file) {
-    std::string quoted = "'";
-    quoted += file.string();
-    quoted += '\'';
-    return quoted;
+    return fmt::format("'{}'", file.string());
 }
 
 /// "[2/5] packing.h5": the prefix of a file's progress lines.
 std::string fileContext(std::size_t index, std::size_t count, const fs::path& file) {
-    std::string context = "[";
-    context += std::to_string(index + 1);
-    context += '/';
-    context += std::to_string(count);
-    context += "] ";
-    context += file.string();
-    return context;
+    return fmt::format("[{}/{}] {}", index + 1, count, file.string());
 }
 
-/// Where each input's grids are exported with `suffix` (".vdb" for the voxels,
-/// "-pore-size.vdb" for the pore-size map): DIR/<stem><suffix>; stems must differ. Empty paths
-/// when nothing is exported.
-std::vector<fs::path> vdbTargets(const RunSettings& settings, Analysis analysis,
-                                 const std::string& suffix) {
-    std::vector<fs::path> targets(settings.inputs.size());
+/// The analyses of the run that export a grid with --vdb (AnalysisInfo::vdbSuffix).
+std::vector<const AnalysisInfo*> exporters(const RunSettings& settings, std::string& names) {
+    std::vector<const AnalysisInfo*> run;
+    for (const AnalysisInfo& info : analysisRegistry()) {
+        if (info.vdbSuffix.empty()) continue;
+        names += (names.empty() ? "" : " or ") + std::string(info.name);
+        if (settings.runs(info.analysis)) run.push_back(&info);
+    }
+    return run;
+}
+
+/// Where each input's grids are exported: DIR/<stem><suffix> per analysis with a vdbSuffix
+/// (".vdb" for the voxels, "-pore-size.vdb" for the pore-size map); stems must differ. Nothing
+/// without --vdb.
+std::vector<std::map<Analysis, fs::path>> vdbTargets(const RunSettings& settings) {
+    std::vector<std::map<Analysis, fs::path>> targets(settings.inputs.size());
     if (settings.vdbDirectory.empty()) return targets;
-    if (!settings.runs(Analysis::Voxels) && !settings.runs(Analysis::PoreSizes))
-        throw std::invalid_argument(
-            "option --vdb: exports the voxels or pores analyses, and neither is run");
+    std::string names;
+    const std::vector<const AnalysisInfo*> run = exporters(settings, names);
+    if (run.empty())
+        throw std::invalid_argument("option --vdb: exports the " + names +
+                                    " analyses, and none is run");
     std::error_code ec;
     if (!fs::is_directory(settings.vdbDirectory, ec))
         throw std::invalid_argument("option --vdb: " + quotedName(settings.vdbDirectory) +
                                     " is not a directory");
-    if (!settings.runs(analysis)) return targets;
     std::set<fs::path> seen;
-    for (std::size_t i = 0; i < settings.inputs.size(); ++i) {
-        targets[i] = settings.vdbDirectory / settings.inputs[i].stem();
-        targets[i] += suffix;
-        if (!seen.insert(targets[i]).second)
-            throw std::invalid_argument("option --vdb: two inputs would both be exported to " +
-                                        quotedName(targets[i]));
-        checkWritable(targets[i]);
-    }
+    for (std::size_t i = 0; i < settings.inputs.size(); ++i)
+        for (const AnalysisInfo* info : run) {
+            fs::path target = settings.vdbDirectory / settings.inputs[i].stem();
+            target += std::string(info->vdbSuffix);
+            if (!seen.insert(target).second)
+                throw std::invalid_argument("option --vdb: two inputs would both be exported to " +
+                                            quotedName(target));
+            checkWritable(target);
+            targets[i][info->analysis] = std::move(target);
+        }
     return targets;
 }
 
@@ -109,38 +115,71 @@ std::vector<Packing> readAndCheckInputs(const RunSettings& settings) {
 
 } // namespace
 
+namespace {
+
+/// Analyses every file; grids exported go to temporaries, added to `exports` for the commit.
+std::vector<FileResults> analyzeAll(const RunSettings& settings,
+                                    const std::vector<Packing>& packings, Progress& progress,
+                                    std::vector<std::unique_ptr<AtomicOutput>>& exports) {
+    const std::vector<std::map<Analysis, fs::path>> vdbFiles = vdbTargets(settings);
+    std::vector<FileResults> files;
+    for (std::size_t i = 0; i < packings.size(); ++i) {
+        progress.setContext(fileContext(i, packings.size(), settings.inputs[i]));
+        std::map<Analysis, VdbExport> targets;
+        for (const auto& [analysis, file] : vdbFiles[i]) {
+            exports.push_back(std::make_unique<AtomicOutput>(file));
+            targets[analysis] = VdbExport{exports.back()->temporaryPath(), file};
+        }
+        files.push_back(analyzeFile(packings[i], settings.inputs[i], settings, progress, targets));
+    }
+    progress.setContext("");
+    return files;
+}
+
+/// One ensemble per (p, N); a warning when the inputs make more than one.
+std::vector<EnsembleResults> ensemblesOf(const std::vector<FileResults>& files,
+                                         const Progress& progress) {
+    const Stopwatch clock;
+    std::vector<EnsembleResults> ensembles = computeEnsembles(files);
+    std::string detail;
+    for (const EnsembleResults& e : ensembles)
+        detail += fmt::format("{}p = {}, N = {}: {} file(s)", detail.empty() ? "" : "; ",
+                              e.root.number("p"), e.root.integer("n_particles"), e.members.size());
+    if (ensembles.size() > 1)
+        progress.warn(fmt::format("the inputs differ in p or N: {} ensembles, not averaged "
+                                  "together ({})",
+                                  ensembles.size(), detail));
+    progress.stageDone("ensembles", clock.seconds(), detail);
+    return ensembles;
+}
+
+/// The JSON summary to standard output now, or to a temporary of `settings.json`, returned.
+std::unique_ptr<AtomicOutput> writeJson(const RunSettings& settings, const RunResults& results,
+                                        std::ostream& out) {
+    if (settings.json == "-") writeJsonSummary(out, results, settings);
+    if (settings.json.empty() || settings.json == "-") return nullptr;
+    auto file = std::make_unique<AtomicOutput>(settings.json);
+    std::ofstream json(file->temporaryPath());
+    writeJsonSummary(json, results, settings);
+    json.close();
+    if (!json) throw OutputPathError("cannot write " + quotedName(settings.json));
+    return file;
+}
+
+} // namespace
+
 RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out) {
     const Stopwatch clock;
     const ThreadBudget budget(settings.threads);
     checkOutputs(settings);
-    const std::vector<fs::path> vdbFiles = vdbTargets(settings, Analysis::Voxels, ".vdb");
-    const std::vector<fs::path> poreVdbFiles =
-        vdbTargets(settings, Analysis::PoreSizes, "-pore-size.vdb");
+    vdbTargets(settings); // option errors before any reading
     const std::vector<Packing> packings = readAndCheckInputs(settings);
 
     Progress progress(settings.quiet ? nullptr : &log, &log);
     RunResults results;
-    // Exports go to temporaries, committed with the results file.
-    std::vector<std::unique_ptr<AtomicOutput>> exports;
-    for (std::size_t i = 0; i < packings.size(); ++i) {
-        progress.setContext(fileContext(i, packings.size(), settings.inputs[i]));
-        const auto exportTo = [&](const fs::path& file) -> std::optional<VdbExport> {
-            if (file.empty()) return std::nullopt;
-            exports.push_back(std::make_unique<AtomicOutput>(file));
-            return VdbExport{exports.back()->temporaryPath(), file};
-        };
-        const std::optional<VdbExport> vdb = exportTo(vdbFiles[i]);
-        const std::optional<VdbExport> poreVdb = exportTo(poreVdbFiles[i]);
-        results.files.push_back(
-            analyzeFile(packings[i], settings.inputs[i], settings, progress, vdb, poreVdb));
-    }
-    progress.setContext("");
-    if (results.files.size() > 1) {
-        const Stopwatch ensembleClock;
-        results.ensemble = computeEnsemble(results.files);
-        progress.stageDone("ensemble", ensembleClock.seconds(),
-                           std::to_string(results.files.size()) + " files");
-    }
+    std::vector<std::unique_ptr<AtomicOutput>> exports; // committed with the results file
+    results.files = analyzeAll(settings, packings, progress, exports);
+    results.ensembles = ensemblesOf(results.files, progress);
     results.runtimeSeconds = clock.seconds();
 
     std::unique_ptr<AtomicOutput> resultsFile;
@@ -148,16 +187,7 @@ RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostr
         resultsFile = std::make_unique<AtomicOutput>(settings.output);
         writeResultsFile(resultsFile->temporaryPath(), results, settings);
     }
-    std::unique_ptr<AtomicOutput> jsonFile;
-    if (settings.json == "-") {
-        writeJsonSummary(out, results, settings);
-    } else if (!settings.json.empty()) {
-        jsonFile = std::make_unique<AtomicOutput>(settings.json);
-        std::ofstream json(jsonFile->temporaryPath());
-        writeJsonSummary(json, results, settings);
-        json.close();
-        if (!json) throw OutputPathError("cannot write " + quotedName(settings.json));
-    }
+    const std::unique_ptr<AtomicOutput> jsonFile = writeJson(settings, results, out);
     for (const auto& e : exports)
         e->commit();
     if (jsonFile) jsonFile->commit();

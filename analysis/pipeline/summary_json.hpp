@@ -1,6 +1,7 @@
 #pragma once
-// The short JSON summary of a run (--json): per file the scalars and the main peak of each curve,
-// the ensemble's scalars, and the runtimes. Curves are in the results file only.
+// The short JSON summary of a run (--json): the results file's attributes under the same names
+// (docs/results-schema.md), per file and per ensemble, plus each curve's number of shells and
+// principal peak. Datasets (curves, per-particle values) are in the results file only.
 
 #include "pipeline/results_file.hpp"
 

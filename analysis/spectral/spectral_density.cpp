@@ -1,8 +1,8 @@
 #include "spectral/spectral_density.hpp"
 
 #include "parallel/parallel.hpp"
+#include "spectral/exact_spectral_density.hpp"
 #include "spectral/voxel_fourier_transform.hpp"
-#include "structure/collective_density.hpp"
 #include "structure/structure_factor.hpp"
 
 #include <algorithm>
@@ -59,7 +59,16 @@ double SpectralDensity::memoryEstimateBytes(int voxels) {
 
 SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Voxelization& voxels,
                                                const Progress& progress) const {
+    const VoxelFourierTransform transform(voxels, parameters_.fft, progress);
+    return compute(packing, voxels, transform, progress);
+}
+
+SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Voxelization& voxels,
+                                               const VoxelFourierTransform& transform,
+                                               const Progress& progress) const {
     const Stopwatch clock;
+    if (transform.voxels() != voxels.voxels())
+        throw std::invalid_argument("spectral density: the transform is of a different grid");
     if (voxels.boxLength() != packing.boxLength)
         throw std::invalid_argument("spectral density: the voxelization is of a box of edge " +
                                     std::to_string(voxels.boxLength()) + ", the packing's is " +
@@ -78,7 +87,6 @@ SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Vox
             "spectral density: no shell with Q w <= " + std::to_string(parameters_.maxQw) +
             " on a " + std::to_string(voxels.voxels()) + "^3 grid of this box");
 
-    const VoxelFourierTransform transform(voxels, parameters_.fft, progress);
     result.planSeconds = transform.planSeconds();
     result.fillSeconds = transform.fillSeconds();
     result.transformSeconds = transform.transformSeconds();
@@ -143,30 +151,16 @@ SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Vox
         result.exactSphere = std::move(comparison);
         result.exactSeconds = exactClock.seconds();
     }
-    result.runtimeSeconds = clock.seconds();
+    result.runtimeSeconds =
+        clock.seconds() + result.planSeconds + result.fillSeconds + result.transformSeconds;
     return result;
 }
 
 ShellAverage sphereSpectralDensity(const Packing& packing, int maxShell, const Progress& progress,
                                    bool serial) {
-    if (!packing.shape().isSphere())
-        throw std::invalid_argument("exact spectral density: the particles are not spheres (p = " +
-                                    std::to_string(packing.p) + ")");
     if (maxShell < 1) throw std::invalid_argument("exact spectral density: no shell");
-    const DensityModes modes = collectiveDensity(packing.positions, packing.boxLength,
-                                                 maxSquaredIndex(maxShell), progress, serial);
-    const double volume = std::pow(packing.boxLength, 3);
-    ShellAccumulator shells(packing.boxLength, maxShell);
-    for (std::size_t i = 0; i < modes.size(); ++i) {
-        const auto& n = modes.n[i];
-        const std::int64_t n2 =
-            std::int64_t{n[0]} * n[0] + std::int64_t{n[1]} * n[1] + std::int64_t{n[2]} * n[2];
-        const double q =
-            2.0 * std::numbers::pi * std::sqrt(static_cast<double>(n2)) / packing.boxLength;
-        const double m = sphereFormFactor(q, packing.semiAxis);
-        shells.add(n2, modes.intensity[i] * m * m / volume, 2); // Eq. 12; chi(Q) = chi(-Q)
-    }
-    return shells.average();
+    return shellAverage(
+        sphereWaveVectors(packing, maxSquaredIndex(maxShell), progress, serial), maxShell);
 }
 
 } // namespace sbpack

@@ -7,6 +7,7 @@
 #include "progress/progress.hpp"
 #include "shells/shell_average.hpp"
 #include "spectral/fftw_wisdom.hpp"
+#include "spectral/voxel_fourier_transform.hpp"
 #include "voxels/voxelization.hpp"
 
 #include <Eigen/Core>
@@ -77,6 +78,11 @@ class SpectralDensity {
     /// (sphereSpectralDensity) on the same shells. Throws std::invalid_argument if the
     /// voxelization is not of this packing's box or maxQw admits no shell.
     SpectralDensityResult compute(const Packing& packing, const Voxelization& voxels,
+                                  const Progress& progress) const;
+    /// The same from a transform of these voxels made by the caller (who may use it for more,
+    /// e.g. the hyperuniformity analysis's wave-vector spectrum): no second FFT.
+    SpectralDensityResult compute(const Packing& packing, const Voxelization& voxels,
+                                  const VoxelFourierTransform& transform,
                                   const Progress& progress) const;
 
     const SpectralDensityParameters& parameters() const { return parameters_; }

@@ -17,7 +17,8 @@ constexpr std::int64_t kParticleBlock = 128;
 /// Exact sin/cos every this many steps of the recurrence, which bounds its rounding drift.
 constexpr int kRecurrenceRestart = 16;
 
-/// floor(sqrt(m)) for m >= 0, exact.
+} // namespace
+
 int isqrt(std::int64_t m) {
     auto r = static_cast<std::int64_t>(std::sqrt(static_cast<double>(m)));
     while (r * r > m)
@@ -26,11 +27,6 @@ int isqrt(std::int64_t m) {
         ++r;
     return static_cast<int>(r);
 }
-
-/// cos(2 pi k x / L) and sin(2 pi k x / L) for k = 0..kmax, per particle (row j, length kmax+1).
-struct PhaseTable {
-    std::vector<double> c, s;
-};
 
 PhaseTable phaseTable(std::span<const Eigen::Vector3d> positions, int axis, double boxLength,
                       int kmax) {
@@ -57,6 +53,8 @@ PhaseTable phaseTable(std::span<const Eigen::Vector3d> positions, int axis, doub
     }
     return t;
 }
+
+namespace {
 
 // The hot loop is compiled twice, for AVX2 (x86-64-v3) and for any x86-64, picked at run time.
 #if defined(__GNUC__) && defined(__x86_64__)

@@ -24,6 +24,19 @@ struct DensityModes {
     std::size_t size() const { return n.size(); }
 };
 
+/// floor(sqrt(m)) for m >= 0, exact.
+int isqrt(std::int64_t m);
+
+/// cos(2 pi k x / L) and sin(2 pi k x / L) for k = 0..kmax, per particle (row j, length kmax+1).
+struct PhaseTable {
+    std::vector<double> c, s;
+};
+
+/// The phases of coordinate `axis` of every position: exact every 16 steps (2 pi (k x / L mod 1),
+/// the argument reduced exactly), by the angle-addition recurrence in between.
+PhaseTable phaseTable(std::span<const Eigen::Vector3d> positions, int axis, double boxLength,
+                      int kmax);
+
 /// |rho(Q)|^2 for every n of the half space with 1 <= |n|^2 <= maxN2, by direct summation in
 /// double precision. Separable: exp(-i Q.r) is the product of one factor per axis, tabulated per
 /// particle by recurrence; the four sign combinations (n_x, +-n_y, +-n_z) share their products.

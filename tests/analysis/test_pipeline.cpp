@@ -1,4 +1,4 @@
-#include "cli/commands.hpp"
+#include "cli/command_line.hpp"
 #include "io/hdf5_handles.hpp"
 #include "io/packing_io.hpp"
 #include "parallel/parallel.hpp"
@@ -6,6 +6,9 @@
 #include "pipeline/ensemble.hpp"
 #include "pipeline/resources.hpp"
 #include "pipeline/run.hpp"
+#include "spectral/spectral_density.hpp"
+#include "structure/structure_factor.hpp"
+#include "voxels/voxelization.hpp"
 
 #include "test_packings.hpp"
 
@@ -147,26 +150,33 @@ TEST(Pipeline, WritesTheResultsFileOfOneInput) {
     const Hdf5Handle h5 = openFileReadOnly(dir / "r.h5");
     const hid_t root = h5.get();
     EXPECT_EQ(readStringAttribute(root, "format"), "sbpack.results");
-    EXPECT_EQ(readInt64Attribute(root, "format_version"), 1);
-    EXPECT_EQ(readInt64Attribute(root, "n_particles"), 27);
-    EXPECT_DOUBLE_EQ(readDoubleAttribute(root, "p"), 1.5);
-    EXPECT_GT(readDoubleAttribute(root, "mean_width"), 1.0);
+    EXPECT_EQ(readInt64Attribute(root, "format_version"), schema::kFormatVersion);
+    EXPECT_EQ(readInt64Attribute(root, "n_files"), 1);
+    EXPECT_EQ(readStringAttribute(root, "runtime_s_units"), "s");
+    // One input has the layout of several: files/0 and ensembles/0.
+    const Hdf5Handle file = openGroup(openGroup(root, "files").get(), "0");
+    EXPECT_EQ(readInt64Attribute(file.get(), "n_particles"), 27);
+    EXPECT_DOUBLE_EQ(readDoubleAttribute(file.get(), "p"), 1.5);
+    EXPECT_GT(readDoubleAttribute(file.get(), "mean_width"), 1.0);
+    EXPECT_EQ(readStringAttribute(file.get(), "mean_width_units"), "length");
     for (const char* group : {"structure_factor", "spectral_density", "voxelization", "contacts"}) {
-        ASSERT_TRUE(hasLink(root, group)) << group;
-        EXPECT_TRUE(hasAttribute(openGroup(root, group).get(), "runtime_s")) << group;
+        ASSERT_TRUE(hasLink(file.get(), group)) << group;
+        EXPECT_TRUE(hasAttribute(openGroup(file.get(), group).get(), "runtime_s")) << group;
     }
-    const Hdf5Handle chi = openGroup(root, "spectral_density");
+    const Hdf5Handle chi = openGroup(file.get(), "spectral_density");
     EXPECT_EQ(readInt64Attribute(chi.get(), "voxels"), 40);
     EXPECT_DOUBLE_EQ(readDoubleAttribute(chi.get(), "phi_voxel"),
-                     results.files[0].voxelization->phiVoxel);
+                     results.files[0].group("voxelization")->number("phi_voxel"));
     for (const char* name : {"Q", "chi", "count", "Q_w"})
         EXPECT_TRUE(hasLink(chi.get(), name)) << name;
-    const Hdf5Handle vox = openGroup(root, "voxelization");
-    EXPECT_DOUBLE_EQ(readDoubleAttribute(vox.get(), "phi_exact"), results.files[0].phi);
-    const Hdf5Handle contacts = openGroup(root, "contacts");
+    const Hdf5Handle chiData(H5Dopen2(chi.get(), "chi", H5P_DEFAULT), H5Dclose);
+    EXPECT_EQ(readStringAttribute(chiData.get(), "units"), "length^3");
+    const Hdf5Handle vox = openGroup(file.get(), "voxelization");
+    EXPECT_DOUBLE_EQ(readDoubleAttribute(vox.get(), "phi_exact"), results.files[0].root.number("phi"));
+    const Hdf5Handle contacts = openGroup(file.get(), "contacts");
     EXPECT_TRUE(hasLink(contacts.get(), "counts"));
     EXPECT_DOUBLE_EQ(readDoubleAttribute(contacts.get(), "tolerance"), 1e-10);
-    EXPECT_FALSE(hasLink(root, "ensemble"));
+    EXPECT_TRUE(hasLink(openGroup(root, "ensembles").get(), "0"));
     EXPECT_EQ(dir.entries(), 2u); // the input and the results: no temporaries left
 }
 
@@ -180,32 +190,50 @@ TEST(Pipeline, SeveralInputsGetFilesAndAnEnsemble) {
     s.json = "-";
     std::ostringstream log, out;
     const RunResults results = runAnalyses(s, log, out);
-    EXPECT_NE(out.str().find("\"ensemble\""), std::string::npos);
+    EXPECT_NE(out.str().find("\"ensembles\""), std::string::npos);
     const Hdf5Handle h5 = openFileReadOnly(dir / "r.h5");
     EXPECT_EQ(readInt64Attribute(h5.get(), "n_files"), 2);
-    EXPECT_FALSE(hasLink(h5.get(), "structure_factor"));
-    EXPECT_FALSE(hasLink(h5.get(), "voxelization")); // sq alone voxelises nothing
+    EXPECT_EQ(readInt64Attribute(h5.get(), "n_ensembles"), 1);
     const Hdf5Handle files = openGroup(h5.get(), "files");
     EXPECT_EQ(readStringAttribute(openGroup(files.get(), "1").get(), "input"),
               (dir / "b.h5").string());
     EXPECT_TRUE(hasLink(openGroup(files.get(), "0").get(), "structure_factor"));
+    EXPECT_FALSE(hasLink(openGroup(files.get(), "0").get(), "voxelization")); // sq voxelises nothing
     // Identical inputs: the ensemble mean is each file's curve, the spread zero.
-    const EnsembleResults& e = *results.ensemble;
-    const EnsembleCurve& curve = *e.groups.at("structure_factor").curve;
-    const ShellAverage& one = results.files[0].structureFactor->shells;
-    ASSERT_EQ(curve.mean.size(), one.size());
-    for (std::size_t i = 0; i < one.size(); ++i) {
-        EXPECT_DOUBLE_EQ(curve.mean[i], one.value[i]);
-        EXPECT_EQ(curve.std[i], 0.0);
-        EXPECT_EQ(curve.files[i], 2);
-        EXPECT_EQ(curve.count[i], 2 * one.count[i]);
+    ASSERT_EQ(results.ensembles.size(), 1u);
+    const schema::Record& curve = *results.ensembles[0].group("structure_factor");
+    const schema::Record& one = *results.files[0].group("structure_factor");
+    const std::vector<double>& mean = curve.floats("S");
+    ASSERT_EQ(mean.size(), one.floats("S").size());
+    for (std::size_t i = 0; i < mean.size(); ++i) {
+        EXPECT_DOUBLE_EQ(mean[i], one.floats("S")[i]);
+        EXPECT_EQ(curve.floats("S_std")[i], 0.0);
+        EXPECT_EQ(curve.integers("files")[i], 2);
+        EXPECT_EQ(curve.integers("count")[i], 2 * one.integers("count")[i]);
     }
-    const Hdf5Handle ensemble = openGroup(h5.get(), "ensemble");
+    const Hdf5Handle ensemble = openGroup(openGroup(h5.get(), "ensembles").get(), "0");
     const Hdf5Handle sq = openGroup(ensemble.get(), "structure_factor");
     for (const char* name : {"Q_w", "Q", "S", "S_std", "count", "files"})
         EXPECT_TRUE(hasLink(sq.get(), name)) << name;
     EXPECT_DOUBLE_EQ(readDoubleAttribute(openGroup(ensemble.get(), "contacts").get(), "z_mean_std"),
                      0.0);
+}
+
+TEST(Pipeline, InputsOfOtherPOrNFormSeparateEnsembles) {
+    const TempDir dir("sbpack-test-pipeline-mixed");
+    writePacking(testing::latticePacking(1.0, 3, 1.2, 0.05, 7), dir / "a.h5");
+    writePacking(testing::latticePacking(1.5, 3, 1.35, 0.03, 5), dir / "b.h5");
+    writePacking(testing::latticePacking(1.0, 3, 1.2, 0.05, 8), dir / "c.h5");
+    RunSettings s = settingsFor({dir / "a.h5", dir / "b.h5", dir / "c.h5"}, dir / "r.h5");
+    s.analyses = resolveAnalyses("contacts");
+    std::ostringstream log, out;
+    const RunResults results = runAnalyses(s, log, out);
+    ASSERT_EQ(results.ensembles.size(), 2u);
+    EXPECT_EQ(results.ensembles[0].members, (std::vector<std::size_t>{0, 2}));
+    EXPECT_EQ(results.ensembles[1].members, (std::vector<std::size_t>{1}));
+    EXPECT_DOUBLE_EQ(results.ensembles[1].root.number("p"), 1.5);
+    std::vector<FileResults> mixed{results.files[0], results.files[1]};
+    EXPECT_THROW(computeEnsemble(mixed, {0, 1}), std::invalid_argument);
 }
 
 TEST(Pipeline, EnsembleCurvesShareAGridInQw) {

@@ -1,0 +1,300 @@
+#include "cli/command_line.hpp"
+
+#include "cli/commands.hpp"
+#include "cli/option_values.hpp"
+#include "info/library_versions.hpp"
+#include "parallel/parallel.hpp"
+#include "version.hpp"
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <ostream>
+#include <stdexcept>
+#include <thread>
+
+namespace sbpack {
+
+namespace {
+
+int hardwareThreads() {
+    return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+int parseInt(const std::string& option, const std::string& text) {
+    return static_cast<int>(parseInteger(option, text, INT32_MIN, INT32_MAX));
+}
+
+/// --compute's help: the registry's analyses, one a line.
+std::string computeHelp() {
+    std::string text = "analyses, comma-separated (default all); what they need is added (chi\n"
+                       "needs voxels) and nothing else runs (sq alone voxelises nothing):";
+    for (const AnalysisInfo& info : analysisRegistry())
+        text += fmt::format("\n  {:<10}{}", info.name, info.description);
+    return text + "\n  all       every analysis above";
+}
+
+constexpr const char* kFooter =
+    R"(Every input is read, validated and checked (at least 4 voxels across a particle, the memory
+the grids need against MemAvailable) before any analysis starts. On any error or interrupt
+(Ctrl-C) no output file is left behind and the exit status is 1. Each subcommand has its own
+--help (sbanalyze info --help).)";
+
+/// --tolerance and --rattler-threshold, shared by the analysis and info.
+void addContactOptions(CLI::App& app, ContactParameters& contacts) {
+    app.add_option_function<std::string>(
+           "--tolerance",
+           [&contacts](const std::string& v) {
+               contacts.tolerance = parseNumber("--tolerance", v);
+           },
+           "contact: gap < T D (default 1e-10, as the paper)")
+        ->type_name("T");
+    app.add_option_function<std::string>(
+           "--rattler-threshold",
+           [&contacts](const std::string& v) {
+               contacts.rattlerThreshold = parseInt("--rattler-threshold", v);
+           },
+           "rattler: fewer than K contacts, removed iteratively (default 4 = d + 1)")
+        ->type_name("K");
+}
+
+/// The command line and what it fills.
+class CommandLine {
+  public:
+    CommandLine();
+    void parse(int argc, const char* const* argv);
+    int run(std::ostream& out, std::ostream& err);
+    const RunSettings& settings() const { return settings_; }
+    CLI::App& app() { return app_; }
+
+  private:
+    void addAnalysisOptions();
+    void addGridOptions();
+    void addOutputOptions();
+    void addSubcommands();
+    void finishAnalysis();
+    void refuseAnalysisOptionsWith(const CLI::App& subcommand) const;
+
+    CLI::App app_{"sbanalyze: analysis of stored superball packings (threads: TBB, FFTW, "
+                  "OpenMP).",
+                  "sbanalyze"};
+    RunSettings settings_;
+    std::vector<std::string> inputs_;
+    CLI::App* info_ = nullptr;
+    ContactParameters infoContacts_;
+    std::vector<std::string> infoFiles_;
+    CLI::App* convert_ = nullptr;
+    std::string convertIn_, convertOut_;
+    CLI::App* schema_ = nullptr;
+    bool schemaMarkdown_ = false;
+    bool schemaJson_ = false;
+};
+
+CommandLine::CommandLine() {
+    settings_.threads = hardwareThreads();
+    settings_.analyses = resolveAnalyses("all");
+    settings_.fft.wisdomFile = defaultWisdomFile();
+    app_.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    app_.set_version_flag("--version", [] {
+        std::string text = std::string("sbanalyze ") + kVersion + '\n' + libraryVersions();
+        text.pop_back(); // CLI11 ends the line
+        return text;
+    });
+    app_.footer(kFooter);
+    app_.get_formatter()->column_width(28);
+    app_.add_option("FILE", inputs_, "packing files (.h5) to analyse, one after the other");
+    addAnalysisOptions();
+    addGridOptions();
+    addOutputOptions();
+    addSubcommands();
+    app_.require_subcommand(0, 1);
+}
+
+void CommandLine::addAnalysisOptions() {
+    RunSettings& s = settings_;
+    app_.add_option_function<std::string>(
+            "--compute", [&s](const std::string& v) { s.analyses = resolveAnalyses(v); },
+            computeHelp())
+        ->type_name("LIST");
+    app_.add_option_function<std::string>(
+            "--threads",
+            [&s](const std::string& v) {
+                s.threads = parseInt("--threads", v);
+                if (s.threads < 1 || s.threads > ThreadBudget::maxThreads())
+                    throw std::invalid_argument(fmt::format(
+                        "option --threads: {} is not in [1, {}] (4 times the hardware threads)",
+                        s.threads, ThreadBudget::maxThreads()));
+            },
+            fmt::format("threads for TBB, FFTW and OpenMP alike (default: the hardware's, {})",
+                        hardwareThreads()))
+        ->type_name("T");
+    addContactOptions(app_, s.contacts);
+    app_.add_flag("--quiet", s.quiet, "no progress lines (by default one per stage on stderr)");
+}
+
+void CommandLine::addGridOptions() {
+    RunSettings& s = settings_;
+    const auto grid = [](const char* option, int& m) {
+        return [option, &m](const std::string& v) {
+            m = parseInt(option, v);
+            if (m < 1)
+                throw std::invalid_argument(fmt::format("option {}: M must be positive", option));
+        };
+    };
+    app_.add_option_function<std::string>(
+            "--voxels", grid("--voxels", s.voxels),
+            "spectral grid, M^3 voxels of the box, for chi and voxels (default 300)")
+        ->type_name("M");
+    app_.add_option_function<std::string>(
+            "--pore-voxels", grid("--pore-voxels", s.poreVoxels),
+            "pore grid, M^3 voxels, of pores and transport (default 500, as the paper);\n"
+            "the exact periodic distance transform needs 5 bytes per voxel")
+        ->type_name("M");
+    app_.add_option_function<std::string>(
+            "--pore-points",
+            [&s](const std::string& v) {
+                s.porePoints = parseInteger("--pore-points", v, 0, std::int64_t(1) << 40);
+            },
+            "F(delta) from K random void points (seed 1), as the paper's 10^6, instead of\n"
+            "every void voxel (default 0: every void voxel)")
+        ->type_name("K");
+    app_.add_option_function<std::string>(
+            "--qmax",
+            [&s](const std::string& v) {
+                s.maxQw = parseNumber("--qmax", v);
+                if (!(s.maxQw > 0.0) || !std::isfinite(s.maxQw))
+                    throw std::invalid_argument("option --qmax: must be positive and finite");
+            },
+            "S(Q) and chi(Q) up to Q w <= X, w the mean width (default 30); chi also below\n"
+            "the grid's Nyquist limit |n| < M/2")
+        ->type_name("X");
+    app_.add_option_function<std::string>(
+            "--fft-plan", [&s](const std::string& v) { s.fft.planning = fftPlanningFromName(v); },
+            "FFTW planning: estimate, measure (default) or patient; measured plans are kept\n"
+            "in the wisdom file, so only the first run per size pays")
+        ->type_name("P");
+    app_.add_option_function<std::string>(
+            "--fft-wisdom",
+            [&s](const std::string& v) {
+                s.fft.wisdomFile = v == "none" ? std::filesystem::path() : std::filesystem::path(v);
+            },
+            "wisdom file (default $XDG_CACHE_HOME/sbpack/fftw-wisdom, else\n"
+            "~/.cache/sbpack/fftw-wisdom); none: no file. Failures only warn.")
+        ->type_name("FILE|none");
+}
+
+void CommandLine::addOutputOptions() {
+    RunSettings& s = settings_;
+    app_.add_option_function<std::string>(
+            "--out", [&s](const std::string& v) { s.output = v; },
+            "results file (HDF5): files/<i>/ per input, ensembles/<k>/ per (p, N) with the\n"
+            "mean and standard deviation; names and units in docs/results-schema.md")
+        ->type_name("FILE");
+    app_.add_option_function<std::string>(
+            "--json", [&s](const std::string& v) { s.json = v; },
+            "short JSON summary (the attributes, each curve's peak); - for standard output\n"
+            "(at least one of --out and --json is required)")
+        ->type_name("FILE|-");
+    app_.add_option_function<std::string>(
+            "--vdb", [&s](const std::string& v) { s.vdbDirectory = v; },
+            "export each voxelization as DIR/<input stem>.vdb, a float fog volume \"density\"\n"
+            "for Blender, Houdini or ParaView (implies voxels), and with pores the pore-size\n"
+            "map as DIR/<input stem>-pore-size.vdb (float grid \"pore_size\", length units)")
+        ->type_name("DIR");
+}
+
+void CommandLine::addSubcommands() {
+    info_ = app_.add_subcommand(
+        "info", "validate each packing and print N, p, L, R, phi, the mean width, the smallest\n"
+                "gap or worst overlap, Z over non-rattlers and the rattler fraction phi_R");
+    addContactOptions(*info_, infoContacts_);
+    info_->add_option("FILE", infoFiles_,
+                      "packing files (.h5); a bad one is reported, the others still are");
+    convert_ = app_.add_subcommand(
+        "convert", "convert between .h5 and .txt (a header with p, semi_axis, box_length, then\n"
+                   "x y z qw qx qy qz per particle), and to extended XYZ (.xyz) for OVITO");
+    convert_->add_option("IN", convertIn_, "packing to read (.h5 or .txt)")->required();
+    convert_->add_option("OUT", convertOut_, "packing to write (.h5, .txt or .xyz)")->required();
+    schema_ = app_.add_subcommand(
+        "schema", "print the results file's schema: groups, names, units (docs/results-schema.md)");
+    CLI::Option* markdown = schema_->add_flag("--markdown", schemaMarkdown_,
+                                              "Markdown, as docs/results-schema.md (the default)");
+    schema_->add_flag("--json", schemaJson_, "JSON, for programs")->excludes(markdown);
+}
+
+/// What the options imply together, checked once all are read.
+void CommandLine::finishAnalysis() {
+    settings_.inputs.assign(inputs_.begin(), inputs_.end());
+    if (!settings_.vdbDirectory.empty()) settings_.analyses.insert(Analysis::Voxels);
+    static_cast<void>(ContactNetwork(settings_.contacts)); // throws on a bad tolerance or threshold
+}
+
+void CommandLine::refuseAnalysisOptionsWith(const CLI::App& subcommand) const {
+    if (!inputs_.empty())
+        throw std::invalid_argument(fmt::format("'{}' before {}: files go after the subcommand",
+                                                inputs_.front(), subcommand.get_name()));
+    for (const CLI::Option* option : app_.get_options())
+        if (option->count() > 0)
+            throw std::invalid_argument(fmt::format("option {} is not an option of {}",
+                                                    option->get_name(), subcommand.get_name()));
+}
+
+void CommandLine::parse(int argc, const char* const* argv) {
+    app_.parse(argc, argv);
+    for (const CLI::App* sub : app_.get_subcommands())
+        refuseAnalysisOptionsWith(*sub);
+    finishAnalysis();
+}
+
+int CommandLine::run(std::ostream& out, std::ostream& err) {
+    if (info_->parsed()) return infoCommand(infoFiles_, infoContacts_, out, err);
+    if (convert_->parsed()) return convertCommand(convertIn_, convertOut_, err);
+    if (schema_->parsed()) return schemaCommand(schemaJson_, out);
+    return analyzeCommand(settings_);
+}
+
+} // namespace
+
+std::string usage() {
+    CommandLine commandLine;
+    return commandLine.app().help();
+}
+
+int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
+    CommandLine commandLine;
+    if (argc <= 1) {
+        err << commandLine.app().help();
+        return EXIT_FAILURE;
+    }
+    try {
+        commandLine.parse(argc, argv);
+        return commandLine.run(out, err);
+    } catch (const CLI::Success& e) { // --help, --version
+        return commandLine.app().exit(e, out, err);
+    } catch (const CLI::ParseError& e) {
+        err << "sbanalyze: error: " << e.what() << " (see sbanalyze --help)\n";
+    } catch (const std::exception& e) {
+        err << "sbanalyze: error: " << e.what() << '\n';
+    }
+    return EXIT_FAILURE;
+}
+
+RunSettings parseAnalyzeArguments(const std::vector<std::string>& args) {
+    std::vector<const char*> argv{"sbanalyze"};
+    for (const std::string& a : args)
+        argv.push_back(a.c_str());
+    CommandLine commandLine;
+    try {
+        commandLine.parse(static_cast<int>(argv.size()), argv.data());
+    } catch (const CLI::ParseError& e) {
+        throw std::invalid_argument(e.what());
+    }
+    if (!commandLine.app().get_subcommands().empty())
+        throw std::invalid_argument("not the analysis command: " + args.front());
+    return commandLine.settings();
+}
+
+} // namespace sbpack

@@ -1,0 +1,73 @@
+#pragma once
+// What a stage (one analysis of one file, pipeline/stages/) works with: the packing, the run's
+// settings, progress, where it exports, and the results of the stages it needs.
+
+#include "packing/packing.hpp"
+#include "pipeline/analysis_registry.hpp"
+#include "pipeline/run_settings.hpp"
+#include "progress/progress.hpp"
+#include "schema/record.hpp"
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <typeindex>
+#include <utility>
+
+namespace sbpack {
+
+/// Where a grid is exported: written to `temporary`, reported as `destination`.
+struct VdbExport {
+    std::filesystem::path temporary;
+    std::filesystem::path destination;
+};
+
+class FileContext {
+  public:
+    FileContext(const Packing& packing, const RunSettings& settings, const Progress& progress,
+                std::map<Analysis, VdbExport> exports)
+        : packing_(packing), settings_(settings), progress_(progress),
+          meanWidth_(packing.shape().meanWidth()), exports_(std::move(exports)) {}
+
+    const Packing& packing() const { return packing_; }
+    const RunSettings& settings() const { return settings_; }
+    const Progress& progress() const { return progress_; }
+    double meanWidth() const { return meanWidth_; }
+    /// Where `analysis` exports its grid (--vdb); nullptr when it does not.
+    const VdbExport* vdbExport(Analysis analysis) const {
+        const auto it = exports_.find(analysis);
+        return it == exports_.end() ? nullptr : &it->second;
+    }
+
+    /// Keeps a stage's result for the stages that need it (AnalysisInfo::needs); released once no
+    /// later stage of the file needs it.
+    template <class T> void keep(Analysis analysis, T value) {
+        kept_.insert_or_assign(analysis,
+                               Kept{typeid(T), std::make_shared<const T>(std::move(value))});
+    }
+    /// The result `analysis` kept; std::logic_error when there is none of type T (a stage that
+    /// uses another's result must list it in its needs).
+    template <class T> const T& kept(Analysis analysis) const {
+        const auto it = kept_.find(analysis);
+        if (it == kept_.end() || it->second.type != typeid(T))
+            throw std::logic_error(std::string("stage result not kept: ") +
+                                   std::string(analysisInfo(analysis).name));
+        return *static_cast<const T*>(it->second.value.get());
+    }
+    void release(Analysis analysis) { kept_.erase(analysis); }
+
+  private:
+    struct Kept {
+        std::type_index type;
+        std::shared_ptr<const void> value;
+    };
+    const Packing& packing_;
+    const RunSettings& settings_;
+    const Progress& progress_;
+    double meanWidth_;
+    std::map<Analysis, VdbExport> exports_;
+    std::map<Analysis, Kept> kept_;
+};
+
+} // namespace sbpack

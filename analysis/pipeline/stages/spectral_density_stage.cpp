@@ -1,0 +1,64 @@
+// chi: the spectral density chi_V(Q) of the kept spectral-grid voxelization.
+#include "pipeline/stage.hpp"
+#include "pipeline/stages/stages.hpp"
+#include "spectral/spectral_density.hpp"
+#include "voxels/voxelization.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace sbpack::stages {
+
+StageMemory spectralDensityMemory(const Packing& packing, const RunSettings& settings) {
+    const int m = settings.voxels;
+    double bytes = SpectralDensity::memoryEstimateBytes(m);
+    if (packing.shape().isSphere()) {
+        const int shell = SpectralDensity::maxShellFor(settings.maxQw, packing.boxLength,
+                                                       packing.shape().meanWidth(), m);
+        bytes += collectiveDensityBytes(packing, std::max(shell, 1));
+    }
+    return {bytes, fmt::format("FFT grid {}^3", m)};
+}
+
+namespace {
+
+void report(const Progress& progress, const SpectralDensityResult& chi) {
+    std::string detail =
+        fmt::format("{} shells, FFT plan {} s", chi.maxShell, describe(chi.planSeconds, 3));
+    if (chi.exactSphere)
+        detail += ", exact sphere path: max error / peak " +
+                  describe(chi.exactSphere->maxErrorOverPeak, 3);
+    progress.stageDone("spectral density", chi.runtimeSeconds, detail);
+}
+
+} // namespace
+
+bool runSpectralDensity(FileContext& context, schema::Record& record) {
+    SpectralDensityParameters parameters;
+    parameters.maxQw = context.settings().maxQw;
+    parameters.fft = context.settings().fft;
+    const SpectralDensityResult s =
+        SpectralDensity(parameters)
+            .compute(context.packing(), context.kept<Voxelization>(Analysis::Voxels),
+                     context.progress());
+    report(context.progress(), s);
+    record.set("voxels", s.voxels)
+        .set("phi_voxel", s.phiVoxel)
+        .set("voxel_size", s.voxelSize)
+        .set("qmax", s.parameters.maxQw)
+        .set("max_shell", s.maxShell)
+        .set("fft_planning", fftPlanningName(s.parameters.fft.planning))
+        .set("fft_plan_s", s.planSeconds)
+        .set("fft_s", s.fillSeconds + s.transformSeconds)
+        .set("shell_average_s", s.shellSeconds)
+        .set("runtime_s", s.runtimeSeconds);
+    setShells(record, s.shells, "chi", context.meanWidth());
+    if (s.exactSphere)
+        record.set("exact_s", s.exactSeconds)
+            .set("exact_error", s.exactSphere->maxErrorOverPeak)
+            .set("chi_exact", s.exactSphere->exact.value);
+    return true;
+}
+
+} // namespace sbpack::stages

@@ -1,0 +1,37 @@
+#pragma once
+// The stages of the registry's analyses (pipeline/analysis_registry.cpp): each runs its compute
+// object on one file, reports a progress line and fills its results group by the schema's names.
+
+#include "pipeline/analysis_registry.hpp"
+#include "shells/shell_average.hpp"
+
+#include <string>
+#include <string_view>
+
+namespace sbpack::stages {
+
+bool runContacts(FileContext& context, schema::Record& record);
+
+bool runStructureFactor(FileContext& context, schema::Record& record);
+StageMemory structureFactorMemory(const Packing& packing, const RunSettings& settings);
+
+bool runVoxels(FileContext& context, schema::Record& record);
+StageMemory voxelsMemory(const Packing& packing, const RunSettings& settings);
+
+bool runSpectralDensity(FileContext& context, schema::Record& record);
+StageMemory spectralDensityMemory(const Packing& packing, const RunSettings& settings);
+
+bool runPoreSizes(FileContext& context, schema::Record& record);
+StageMemory poreSizesMemory(const Packing& packing, const RunSettings& settings);
+
+bool runTransport(FileContext& context, schema::Record& record);
+
+/// "6.12345": a number for progress lines (6 significant digits unless `digits`).
+std::string describe(double value, int digits = 6);
+/// Sets the datasets Q, `valueName`, count and Q_w (Q times the mean width) of a curve.
+void setShells(schema::Record& record, const ShellAverage& shells, std::string_view valueName,
+               double meanWidth);
+/// Bytes of the collective-density tables of S(Q) (and the exact sphere chi) up to shell s.
+double collectiveDensityBytes(const Packing& packing, int maxShell);
+
+} // namespace sbpack::stages

@@ -1,0 +1,32 @@
+// sq: the structure factor S(Q) of the centroids.
+#include "pipeline/stage.hpp"
+#include "pipeline/stages/stages.hpp"
+#include "structure/structure_factor.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace sbpack::stages {
+
+StageMemory structureFactorMemory(const Packing& packing, const RunSettings& settings) {
+    const int shell = StructureFactor::maxShellFor(settings.maxQw, packing.boxLength,
+                                                   packing.shape().meanWidth());
+    return {collectiveDensityBytes(packing, std::max(shell, 1)), "S(Q) tables"};
+}
+
+bool runStructureFactor(FileContext& context, schema::Record& record) {
+    const double maxQw = context.settings().maxQw;
+    const StructureFactorResult s =
+        StructureFactor({maxQw}).compute(context.packing(), context.progress());
+    context.progress().stageDone(
+        "structure factor", s.runtimeSeconds,
+        fmt::format("{} shells up to Q w = {}", s.maxShell, describe(maxQw)));
+    record.set("qmax", s.parameters.maxQw)
+        .set("max_shell", s.maxShell)
+        .set("runtime_s", s.runtimeSeconds);
+    setShells(record, s.shells, "S", context.meanWidth());
+    return true;
+}
+
+} // namespace sbpack::stages

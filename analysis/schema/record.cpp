@@ -1,0 +1,74 @@
+#include "schema/record.hpp"
+
+#include <stdexcept>
+
+namespace sbpack::schema {
+
+namespace {
+
+std::string where(const Group& group, std::string_view name) {
+    return "results schema: " + std::string(group.path) + "/" + std::string(name);
+}
+
+/// Which alternative of Value a field holds.
+std::size_t valueIndex(const Field& f) {
+    if (f.type == Type::String) return 2;
+    if (f.kind == Kind::Attribute) return f.type == Type::Float ? 0 : 1;
+    return f.type == Type::Float ? 3 : 4;
+}
+
+} // namespace
+
+const Field& Record::field(std::string_view name) const {
+    const Field* f = findField(*group_, name);
+    if (f == nullptr) throw std::logic_error(where(*group_, name) + " is not declared");
+    return *f;
+}
+
+Record& Record::store(const Field& field, Value value) {
+    if (value.index() != valueIndex(field))
+        throw std::logic_error(where(*group_, field.name) + ": value of the wrong kind or type");
+    // Keep the schema's order: insert before the first entry declared after this field.
+    auto at = entries_.begin();
+    while (at != entries_.end() && at->field < &field)
+        ++at;
+    if (at != entries_.end() && at->field == &field)
+        at->value = std::move(value);
+    else
+        entries_.insert(at, Entry{&field, std::move(value)});
+    return *this;
+}
+
+const Value* Record::find(std::string_view name) const {
+    for (const Entry& e : entries_)
+        if (e.field->name == name) return &e.value;
+    return nullptr;
+}
+
+template <class T> const T& Record::get(std::string_view name) const {
+    const Value* v = find(name);
+    if (v == nullptr) throw std::logic_error(where(*group_, name) + " was not set");
+    if (const T* typed = std::get_if<T>(v)) return *typed;
+    throw std::logic_error(where(*group_, name) + " has another type");
+}
+
+double Record::number(std::string_view name) const {
+    const Value* v = find(name);
+    if (v != nullptr && std::holds_alternative<std::int64_t>(*v))
+        return static_cast<double>(std::get<std::int64_t>(*v));
+    return get<double>(name);
+}
+std::int64_t Record::integer(std::string_view name) const {
+    return get<std::int64_t>(name);
+}
+const std::string& Record::text(std::string_view name) const {
+    return get<std::string>(name);
+}
+const std::vector<double>& Record::floats(std::string_view name) const {
+    return get<std::vector<double>>(name);
+}
+const std::vector<std::int64_t>& Record::integers(std::string_view name) const {
+    return get<std::vector<std::int64_t>>(name);
+}
+
+} // namespace sbpack::schema

@@ -1,0 +1,262 @@
+#include "schema/results_schema.hpp"
+
+#include <array>
+#include <deque>
+#include <map>
+#include <stdexcept>
+
+namespace sbpack::schema {
+
+namespace {
+
+constexpr Kind A = Kind::Attribute;
+constexpr Kind D = Kind::Dataset;
+constexpr Type F = Type::Float;
+constexpr Type I = Type::Int;
+constexpr Type S = Type::String;
+constexpr Reduce Mean = Reduce::MeanStd;
+constexpr Reduce Curve = Reduce::Curve;
+constexpr Reduce No = Reduce::None;
+
+constexpr std::string_view kRuntime = "wall-clock time of this analysis";
+
+constexpr Field kRun[] = {
+    {"format", A, S, "", "\"sbpack.results\""},
+    {"format_version", A, I, "1", "2 (this layout)"},
+    {"sbanalyze_version", A, S, "", "version of the sbanalyze that wrote the file"},
+    {"compute", A, S, "", "the analyses run, comma-separated (--compute with what they need)"},
+    {"threads", A, I, "1", "threads of the run (--threads)"},
+    {"n_files", A, I, "1", "inputs: groups files/0 ... files/<n_files - 1>"},
+    {"n_ensembles", A, I, "1", "ensembles (inputs of equal p and N): ensembles/0 ..."},
+    {"runtime_s", A, F, "s", "wall-clock time of the whole run"},
+};
+
+constexpr Field kFile[] = {
+    {"input", A, S, "", "the packing file, as named on the command line"},
+    {"p", A, F, "1", "superball exponent"},
+    {"n_particles", A, I, "1", "N"},
+    {"box_length", A, F, "length", "cubic box edge L", Mean},
+    {"semi_axis", A, F, "length", "semi-axis R (major-axis length D = 2 R)"},
+    {"phi", A, F, "1", "packing fraction N v1 / L^3", Mean},
+    {"mean_width", A, F, "length", "mean width w of one superball", Mean},
+};
+
+constexpr Field kStructureFactor[] = {
+    {"qmax", A, F, "1", "shells up to Q w <= qmax (--qmax)"},
+    {"max_shell", A, I, "1", "number of shells"},
+    {"runtime_s", A, F, "s", kRuntime},
+    {"Q", D, F, "1/length", "mean |Q| of the shell's wave vectors Q = 2 pi n / L"},
+    {"S", D, F, "1", "S(Q), shell average of |sum_j exp(-i Q.r_j)|^2 / N (Eq. 4)", Curve},
+    {"count", D, I, "1", "wave vectors in the shell"},
+    {"Q_w", D, F, "1", "Q times the mean width"},
+};
+
+constexpr Field kSpectralDensity[] = {
+    {"voxels", A, I, "1", "M of the M^3 grid (--voxels)"},
+    {"phi_voxel", A, F, "1", "fraction of solid voxels", Mean},
+    {"voxel_size", A, F, "length", "a = L / M"},
+    {"qmax", A, F, "1", "shells up to Q w <= qmax (--qmax) and |n| < M / 2"},
+    {"max_shell", A, I, "1", "number of shells"},
+    {"fft_planning", A, S, "", "FFTW planning effort (--fft-plan)"},
+    {"fft_plan_s", A, F, "s", "FFTW planning time"},
+    {"fft_s", A, F, "s", "filling the grid and the FFT"},
+    {"shell_average_s", A, F, "s", "shell averaging"},
+    {"exact_s", A, F, "s", "spheres only: the exact path", No, true},
+    {"exact_error", A, F, "1",
+     "spheres only: max over shells of |chi - chi_exact| over the peak of chi_exact", Mean, true},
+    {"runtime_s", A, F, "s", kRuntime},
+    {"Q", D, F, "1/length", "mean |Q| of the shell's wave vectors"},
+    {"chi", D, F, "length^3",
+     "chi_V(Q) = |F(Q)|^2 [prod_i a sinc(Q_i a / 2)]^2 / V from the voxels (Eq. 12)", Curve},
+    {"count", D, I, "1", "wave vectors in the shell"},
+    {"Q_w", D, F, "1", "Q times the mean width"},
+    {"chi_exact", D, F, "length^3", "spheres only: chi_V(Q) without voxels", No, true},
+};
+
+constexpr Field kVoxelization[] = {
+    {"voxels", A, I, "1", "M of the M^3 grid (--voxels)"},
+    {"phi_voxel", A, F, "1", "fraction of solid voxels (centre inside a particle)", Mean},
+    {"phi_exact", A, F, "1", "N v1 / L^3", Mean},
+    {"voxel_size", A, F, "length", "a = L / M"},
+    {"solid_voxels", A, I, "1", "solid voxels"},
+    {"memory_bytes", A, I, "bytes", "memory of the OpenVDB tree"},
+    {"vdb_file", A, S, "", "with --vdb: the exported .vdb file", No, true},
+    {"runtime_s", A, F, "s", kRuntime},
+};
+
+constexpr Field kContacts[] = {
+    {"z_mean", A, F, "1", "mean contact number Z over the non-rattlers", Mean},
+    {"rattler_fraction", A, F, "1", "fraction of rattlers phi_R", Mean},
+    {"tolerance", A, F, "D", "contact: gap < tolerance D (--tolerance)"},
+    {"rattler_threshold", A, I, "1", "rattler: fewer contacts, removed iteratively"},
+    {"n_contacts", A, I, "1", "contacts (pairs)"},
+    {"overlapping_pairs", A, I, "1", "pairs that overlap"},
+    {"runtime_s", A, F, "s", kRuntime},
+    {"counts", D, I, "1", "contacts of each particle"},
+    {"rattler", D, I, "1", "1 for a rattler, else 0, per particle"},
+};
+
+constexpr Field kPoreSize[] = {
+    {"mean", A, F, "length", "<delta> (Eq. 14)"},
+    {"second_moment", A, F, "length^2", "<delta^2> (Eq. 15)"},
+    {"max", A, F, "length", "largest pore size"},
+    {"mean_w", A, F, "1", "<delta> / w", Mean},
+    {"second_moment_w2", A, F, "1", "<delta^2> / w^2", Mean},
+    {"max_w", A, F, "1", "largest pore size / w", Mean},
+    {"saturated", A, I, "1", "1 if max < w / 2 (the paper's check), else 0"},
+    {"voxels", A, I, "1", "M of the pore grid (--pore-voxels)"},
+    {"voxel_size", A, F, "length", "a = L / M"},
+    {"samples", A, I, "1", "void voxels or random void points in the statistics"},
+    {"method", A, S, "", "\"voxels\" or \"random voxels\" (--pore-points)"},
+    {"runtime_s", A, F, "s", kRuntime},
+    {"delta", D, F, "length", "pore sizes, delta[0] = 0"},
+    {"F", D, F, "1",
+     "F(delta) (Eq. 13), right-continuous steps: fraction of the void with pore size > delta[j]"},
+    {"delta_w", D, F, "1", "delta / w"},
+    {"P_delta", D, F, "length", "bin centres of the density P(delta)"},
+    {"P", D, F, "1/length", "P(delta), integrates to 1"},
+    {"P_delta_w", D, F, "1", "P_delta / w"},
+    {"P_w", D, F, "1", "P(delta) w, the density of delta / w"},
+};
+
+constexpr Field kTransport[] = {
+    {"zeta2", A, F, "1", "three-point parameter zeta_2 (Sec. V A interpolation)"},
+    {"formation_factor", A, F, "1", "formation factor F (Eq. 18)"},
+    {"permeability", A, F, "length^2", "k ~ <delta^2> / F (Eq. 17)"},
+    {"permeability_w2", A, F, "1", "k / w^2", Mean},
+    {"mean_survival_time", A, F, "time", "bound tau <= <delta>^2 / D (Eq. 19)"},
+    {"mean_survival_time_scaled", A, F, "1", "tau D / w^2", Mean},
+    {"principal_relaxation_time", A, F, "time", "bound T1 <= <delta^2> / D (Eq. 20)"},
+    {"principal_relaxation_time_scaled", A, F, "1", "T1 D / w^2", Mean},
+    {"diffusion_coefficient", A, F, "length^2/time", "D"},
+    {"runtime_s", A, F, "s", kRuntime},
+};
+
+// One row per analysis group (docs/architecture.md, "Add an analysis").
+constexpr std::array<Group, 6> kAnalysisGroups{{
+    {"structure_factor", "files/<i>/structure_factor", "S(Q) of the centroids (sq)",
+     kStructureFactor},
+    {"spectral_density", "files/<i>/spectral_density", "chi_V(Q) from the voxels (chi)",
+     kSpectralDensity},
+    {"voxelization", "files/<i>/voxelization", "the --voxels grid (voxels)", kVoxelization},
+    {"contacts", "files/<i>/contacts", "contact network (contacts)", kContacts},
+    {"pore_size", "files/<i>/pore_size", "pore sizes on the --pore-voxels grid (pores)", kPoreSize},
+    {"transport", "files/<i>/transport",
+     "transport estimates, diffusion-controlled limit (transport); absent where zeta_2 leaves "
+     "(0, 1]",
+     kTransport},
+}};
+
+constexpr Field kEnsembleOwn[] = {
+    {"p", A, F, "1", "superball exponent, common to the members"},
+    {"n_particles", A, I, "1", "N, common to the members"},
+    {"n_files", A, I, "1", "members"},
+    {"members", D, I, "1", "indices i of the members' groups files/<i>"},
+};
+
+constexpr Group kRunGroup{"", "/", "the run", kRun};
+constexpr Group kFileGroup{"", "files/<i>", "one input", kFile};
+
+/// The ensemble groups, derived from the fields and their Reduce, built once.
+class EnsembleSchemas {
+  public:
+    EnsembleSchemas() {
+        build("", "ensembles/<k>", "statistics over inputs of equal p and N", kEnsembleOwn,
+              kFileGroup);
+        for (const Group& g : kAnalysisGroups)
+            build(g.name, "ensembles/<k>/" + std::string(g.name),
+                  "statistics of " + std::string(g.path), {}, g);
+    }
+    const Group& operator[](std::string_view name) const {
+        const auto it = groups_.find(std::string(name));
+        if (it == groups_.end())
+            throw std::logic_error("results schema: no ensemble group '" + std::string(name) + "'");
+        return it->second.group;
+    }
+
+  private:
+    struct Owned {
+        std::vector<Field> fields;
+        Group group;
+    };
+    std::string_view keep(std::string text) { return texts_.emplace_back(std::move(text)); }
+
+    void addStatistics(std::vector<Field>& out, const Field& f) {
+        out.push_back({f.name, f.kind, Type::Float, f.units,
+                       keep("mean over the files: " + std::string(f.description)), No, f.optional});
+        out.push_back({keep(std::string(f.name) + "_std"), f.kind, Type::Float, f.units,
+                       keep("sample standard deviation of " + std::string(f.name) +
+                            " over the files (n - 1; 0 for one file)"),
+                       No, f.optional});
+    }
+    void addCurve(std::vector<Field>& out, const Field& f) {
+        const std::string v(f.name);
+        out.push_back({"bin_width_Q_w", A, F, "1",
+                       "bin width of the common Q w grid: the mean of the files' 2 pi w / L"});
+        out.push_back({"Q_w", D, F, "1", "mean Q w of the files' shells in the bin"});
+        out.push_back({"Q", D, F, "1/length", "mean Q of the files' shells in the bin"});
+        out.push_back({f.name, D, F, f.units, keep("mean over the files of " + v)});
+        out.push_back({keep(v + "_std"), D, F, f.units,
+                       keep("sample standard deviation of " + v + " over the files in the bin")});
+        out.push_back({"count", D, I, "1", "wave vectors in the bin, all files together"});
+        out.push_back({"files", D, I, "1", "files with a shell in the bin"});
+    }
+    void build(std::string_view name, std::string path, std::string title,
+               std::span<const Field> own, const Group& source) {
+        Owned& o = groups_[std::string(name)];
+        o.fields.assign(own.begin(), own.end());
+        if (!name.empty()) o.fields.push_back({"n_files", A, I, "1", "members with this group"});
+        for (const Field& f : source.fields) {
+            if (f.reduce == Reduce::MeanStd) addStatistics(o.fields, f);
+            if (f.reduce == Reduce::Curve) addCurve(o.fields, f);
+        }
+        o.group = {name, keep(std::move(path)), keep(std::move(title)), o.fields};
+    }
+
+    std::deque<std::string> texts_;
+    std::map<std::string, Owned> groups_;
+};
+
+const EnsembleSchemas& ensembleSchemas() {
+    static const EnsembleSchemas schemas;
+    return schemas;
+}
+
+} // namespace
+
+const Group& runGroup() {
+    return kRunGroup;
+}
+const Group& fileGroup() {
+    return kFileGroup;
+}
+std::span<const Group> analysisGroups() {
+    return kAnalysisGroups;
+}
+
+const Group* findAnalysisGroup(std::string_view name) {
+    for (const Group& g : kAnalysisGroups)
+        if (g.name == name) return &g;
+    return nullptr;
+}
+
+const Group& ensembleRootGroup() {
+    return ensembleSchemas()[""];
+}
+
+const Group& ensembleGroup(std::string_view name) {
+    if (name.empty()) throw std::logic_error("results schema: the ensemble root has no name");
+    return ensembleSchemas()[name];
+}
+
+const Field* findField(const Group& group, std::string_view name) {
+    for (const Field& f : group.fields)
+        if (f.name == name) return &f;
+    return nullptr;
+}
+
+std::string unitsAttributeName(std::string_view attribute) {
+    return std::string(attribute) + "_units";
+}
+
+} // namespace sbpack::schema

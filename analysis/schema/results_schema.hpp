@@ -1,0 +1,75 @@
+#pragma once
+// The results schema of sbanalyze, declared once (docs/architecture.md, docs/results-schema.md):
+// every group, attribute and dataset of the results file, with its type, units and description.
+// The HDF5 writer, the JSON summary, the ensemble reducer and the generated docs/results-schema.md
+// all read this table; values are filled by name into a Record (schema/record.hpp), which refuses
+// a name the table does not declare.
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sbpack::schema {
+
+inline constexpr std::string_view kFormat = "sbpack.results";
+inline constexpr std::string_view kSummaryFormat = "sbpack.summary";
+inline constexpr std::int64_t kFormatVersion = 2;
+
+enum class Kind { Attribute, Dataset };
+enum class Type { Float, Int, String };
+
+/// How the ensemble of a group reduces a field (docs/results-schema.md, "Ensembles").
+enum class Reduce {
+    None,    ///< not in the ensemble
+    MeanStd, ///< scalar: NAME (mean over files) and NAME_std (sample standard deviation)
+    Curve,   ///< shell-averaged curve (with the group's Q and count): mean and std on a Q w grid
+};
+
+struct Field {
+    std::string_view name;
+    Kind kind;
+    Type type;
+    /// "1" dimensionless, "length" (the packing's), "1/length", "length^2", "length^3", "time"
+    /// (length^2 / diffusion_coefficient), "length^2/time", "D" (the major axis 2 semi_axis),
+    /// "s" (wall clock), "bytes"; "" for strings.
+    std::string_view units;
+    std::string_view description;
+    Reduce reduce = Reduce::None;
+    bool optional = false; ///< written only in some cases (said in the description)
+};
+
+struct Group {
+    std::string_view name; ///< the group's name under files/<i>/ and ensembles/<k>/; "" for those
+    std::string_view path; ///< where it is in the file, e.g. "files/<i>/contacts"
+    std::string_view title;
+    std::span<const Field> fields;
+};
+
+/// The root of the results file: the run.
+const Group& runGroup();
+/// files/<i>: one input's attributes (its analyses are subgroups).
+const Group& fileGroup();
+/// files/<i>/<name>: one group per analysis, in the order they are documented.
+std::span<const Group> analysisGroups();
+/// The analysis group called `name`; nullptr if there is none.
+const Group* findAnalysisGroup(std::string_view name);
+/// ensembles/<k>: the ensemble's own attributes and the statistics of fileGroup()'s fields.
+const Group& ensembleRootGroup();
+/// ensembles/<k>/<name>: the statistics of analysis group `name` (derived from its fields).
+const Group& ensembleGroup(std::string_view name);
+
+/// The field called `name` in `group`; nullptr if there is none.
+const Field* findField(const Group& group, std::string_view name);
+
+/// Units attributes: a dataset has attribute "units"; a numeric attribute NAME has NAME_units.
+inline constexpr std::string_view kDatasetUnits = "units";
+std::string unitsAttributeName(std::string_view attribute);
+
+/// docs/results-schema.md (`sbanalyze schema --markdown`).
+std::string schemaMarkdown();
+/// The same table as JSON (`sbanalyze schema --json`), for readers in other languages.
+std::string schemaJson();
+
+} // namespace sbpack::schema

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Stiff cases of sbgen (issue 25): near-cubes p = 2, 3, 5, 10 at N = 200 and 1000, three seeds,
+# defaults but --gamma-slow 1e-2, to reduced pressure 1e12. Each output is either jammed (exit 0)
+# or refused (exit 3, provenance jammed = 0 with the reason); the summary checks every output
+# sbgen calls jammed with `sbanalyze info` at a gap tolerance of 1e-8 D (mean contacts per
+# particle >= 5, rattler fraction < 10 %, no overlap) and tabulates the predictor's work per
+# collision and the CPU time. Runs go over the cores with xargs -P (JOBS, default nproc); each
+# run is capped at SECONDS_CAP CPU-bound seconds (default 3600), a capped run is reported as such.
+# usage: bench/jamming_stiff.sh [BUILD_DIR] [WORK_DIR] [SEEDS] [P VALUES] [N VALUES]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${1:-$root/build} work=${2:-/tmp/sbpack-jamming-stiff}
+seeds=${3:-"1 2 3"} exponents=${4:-"2 3 5 10"} sizes=${5:-"200 1000"}
+cap=${SECONDS_CAP:-3600} jobs=${JOBS:-$(nproc)}
+mkdir -p "$work"
+run_one() { # p n seed
+    local out="$1/stiff-p$3-n$4-s$5.h5"
+    [ -f "$out" ] && return 0
+    local rc=0
+    /usr/bin/time -f "%U %S" -o "$out.time" timeout -s TERM "$2" "$6/generator/sbgen" --p "$3" \
+        --n "$4" --seed "$5" --gamma-slow 1e-2 --out "$out" --quiet 2> "$out.log" || rc=$?
+    echo "$rc" > "$out.rc"
+}
+export -f run_one
+for n in $sizes; do for p in $exponents; do for s in $seeds; do
+    echo "$work $cap $p $n $s $build"
+done; done; done | xargs -P "$jobs" -L 1 bash -c 'run_one "$@"' _
+/usr/bin/python3 "$root/bench/jamming_stiff_summary.py" "$work" "$build/analysis/sbanalyze"
