@@ -74,6 +74,7 @@ class CommandLine {
     void addAnalysisOptions();
     void addGridOptions();
     void addOutputOptions();
+    void addHyperuniformityOptions();
     void addSubcommands();
     void finishAnalysis();
     void refuseAnalysisOptionsWith(const CLI::App& subcommand) const;
@@ -171,6 +172,7 @@ void CommandLine::addGridOptions() {
             "S(Q) and chi(Q) up to Q w <= X, w the mean width (default 30); chi also below\n"
             "the grid's Nyquist limit |n| < M/2")
         ->type_name("X");
+    addHyperuniformityOptions();
     app_.add_option_function<std::string>(
             "--fft-plan", [&s](const std::string& v) { s.fft.planning = fftPlanningFromName(v); },
             "FFTW planning: estimate, measure (default) or patient; measured plans are kept\n"
@@ -184,6 +186,58 @@ void CommandLine::addGridOptions() {
             "wisdom file (default $XDG_CACHE_HOME/sbpack/fftw-wisdom, else\n"
             "~/.cache/sbpack/fftw-wisdom); none: no file. Failures only warn.")
         ->type_name("FILE|none");
+}
+
+/// "A,B" with 0 < A < B, for --alpha-window and --spread-times.
+ExponentWindow parseTimes(const std::string& option, const std::string& text) {
+    const auto comma = text.find(',');
+    if (comma == std::string::npos)
+        throw std::invalid_argument(fmt::format("option {}: '{}' is not T1,T2", option, text));
+    const ExponentWindow w{parseNumber(option, text.substr(0, comma)),
+                           parseNumber(option, text.substr(comma + 1))};
+    if (!(w.tMin > 0.0 && w.tMax > w.tMin && std::isfinite(w.tMax)))
+        throw std::invalid_argument(fmt::format("option {}: needs 0 < T1 < T2", option));
+    return w;
+}
+
+void CommandLine::addHyperuniformityOptions() {
+    RunSettings& s = settings_;
+    app_.add_option_function<std::string>(
+            "--chi-exact-qmax",
+            [&s](const std::string& v) {
+                s.chiExactQw = parseNumber("--chi-exact-qmax", v);
+                if (!(s.chiExactQw >= 0.0) || !std::isfinite(s.chiExactQw))
+                    throw std::invalid_argument("option --chi-exact-qmax: must be >= 0");
+            },
+            "hyper: chi_V without voxels at Q w <= X, where alpha, a0 and H are fitted\n"
+            "(default 3; 0: voxel data alone)")
+        ->type_name("X");
+    app_.add_option_function<std::string>(
+            "--fit-qmax",
+            [&s](const std::string& v) {
+                s.hyperuniformity.fitQmaxW = parseNumber("--fit-qmax", v);
+                if (!(s.hyperuniformity.fitQmaxW > 0.0))
+                    throw std::invalid_argument("option --fit-qmax: must be positive");
+            },
+            "hyper: fit chi_V = a0 + a1 Q^alpha over 0 < Q w <= X (default 1.4, as the paper)")
+        ->type_name("X");
+    app_.add_option_function<std::string>(
+            "--alpha-window",
+            [&s](const std::string& v) {
+                s.hyperuniformity.window = parseTimes("--alpha-window", v);
+            },
+            "hyper: alpha from E(t) over t D / w^2 in [T1, T2] (default: from the chi_V peak's\n"
+            "decay, 10 / (Q_peak w)^2, to a quarter of the box's cutoff time)")
+        ->type_name("T1,T2");
+    app_.add_option_function<std::string>(
+            "--spread-times",
+            [&s](const std::string& v) {
+                const ExponentWindow w = parseTimes("--spread-times", v);
+                s.hyperuniformity.tMin = w.tMin;
+                s.hyperuniformity.tMax = w.tMax;
+            },
+            "hyper: E(t) at t D / w^2 from T1 to T2, 20 a decade (default 1e-3,1e4)")
+        ->type_name("T1,T2");
 }
 
 void CommandLine::addOutputOptions() {

@@ -11,10 +11,11 @@ namespace {
 
 constexpr std::array<Analysis, 1> kSpectralNeeds{Analysis::Voxels};
 constexpr std::array<Analysis, 1> kTransportNeeds{Analysis::PoreSizes};
+constexpr std::array<Analysis, 1> kHyperuniformityNeeds{Analysis::SpectralDensity};
 
 // One row per analysis (docs/architecture.md, "Add an analysis"); its results group is declared
 // in schema/results_schema.cpp, its stage in pipeline/stages/.
-constexpr std::array<AnalysisInfo, 6> kRegistry{{
+constexpr std::array<AnalysisInfo, 7> kRegistry{{
     {Analysis::Contacts,
      "contacts",
      "contacts",
@@ -59,7 +60,22 @@ constexpr std::array<AnalysisInfo, 6> kRegistry{{
     {Analysis::Transport, "transport", "transport",
      "permeability k, survival time tau, relaxation time T1 from the pore sizes (Eqs. 16-20)",
      VoxelGrid::None, kTransportNeeds, "", stages::runTransport, nullptr},
+    {Analysis::Hyperuniformity, "hyper", "spreadability",
+     "excess spreadability E(t), alpha from its long-time decay, the fit a0 + a1 Q^alpha and H "
+     "(Eqs. 21-23, fit, HX), the Debye medium; chi_V exact at Q w <= --chi-exact-qmax",
+     VoxelGrid::Spectral, kHyperuniformityNeeds, "", stages::runHyperuniformity, nullptr,
+     stages::poolSpreadability},
 }};
+
+} // namespace
+
+const AnalysisInfo* analysisOfGroup(std::string_view group) {
+    for (const AnalysisInfo& info : kRegistry)
+        if (info.group == group) return &info;
+    return nullptr;
+}
+
+namespace {
 
 void addWithNeeds(Analysis analysis, AnalysisSet& set) {
     if (!set.insert(analysis).second) return;

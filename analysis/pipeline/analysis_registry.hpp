@@ -25,6 +25,7 @@ enum class Analysis {
     Voxels,          ///< the voxelization: phi_voxel against phi, optional .vdb export
     PoreSizes,       ///< pore-size distribution F(delta) from the periodic distance transform
     Transport,       ///< k, tau, T1 from the pore-size moments (diffusion-controlled limit)
+    Hyperuniformity, ///< excess spreadability, alpha, the small-Q fit and H (hyperuniformity/)
 };
 
 /// Which voxel grid an analysis works on: none, the spectral grid (--voxels, default 300 as the
@@ -42,6 +43,9 @@ struct StageMemory {
 using StageRun = bool (*)(FileContext& context, schema::Record& record);
 /// Estimates a stage's largest transient allocation; nullptr where it is negligible.
 using StageMemoryEstimate = StageMemory (*)(const Packing& packing, const RunSettings& settings);
+/// Adds to an ensemble's statistics of the analysis's group what the generic reduction cannot
+/// (the schema's Reduce::Pooled fields), from the reduced record itself.
+using EnsembleFinish = void (*)(schema::Record& ensembleGroup);
 
 struct AnalysisInfo {
     Analysis analysis;
@@ -53,7 +57,12 @@ struct AnalysisInfo {
     std::string_view vdbSuffix;      ///< with --vdb: exports DIR/<input stem><suffix>; "": none
     StageRun run;
     StageMemoryEstimate memory;
+    EnsembleFinish finishEnsemble = nullptr;
 };
+
+/// The analysis whose results group is `group`; nullptr for groups an analysis adds beside its
+/// own (e.g. hyper's hyperuniformity).
+const AnalysisInfo* analysisOfGroup(std::string_view group);
 
 /// Every analysis, in the order they are listed (they run in this order, needs first).
 std::span<const AnalysisInfo> analysisRegistry();

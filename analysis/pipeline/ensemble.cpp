@@ -129,12 +129,41 @@ void reduceCurve(const schema::Field& f, const Sources& in, schema::Record& out)
         .set("files", c.files);
 }
 
+/// Element-wise mean and standard deviation of a dataset on a grid common to the members.
+void reducePointwise(const schema::Field& f, const Sources& in, schema::Record& out) {
+    const std::size_t size = in.records.front()->floats(f.name).size();
+    std::vector<double> mean(size), std(size), values(in.records.size());
+    for (std::size_t j = 0; j < size; ++j) {
+        for (std::size_t i = 0; i < in.records.size(); ++i) {
+            const std::vector<double>& v = in.records[i]->floats(f.name);
+            if (v.size() != size)
+                throw std::logic_error("ensemble: " + std::string(f.name) + " differs in length");
+            values[i] = v[j];
+        }
+        const EnsembleScalar s = ensembleScalar(values);
+        mean[j] = s.mean;
+        std[j] = s.std;
+    }
+    out.set(f.name, mean).set(std::string(f.name) + "_std", std);
+}
+
+/// A grid every member has alike.
+void copySame(const schema::Field& f, const Sources& in, schema::Record& out) {
+    const std::vector<double>& first = in.records.front()->floats(f.name);
+    for (const schema::Record* r : in.records)
+        if (r->floats(f.name) != first)
+            throw std::logic_error("ensemble: " + std::string(f.name) + " differs between files");
+    out.set(f.name, first);
+}
+
 /// Statistics of the fields of `source` over `in` into a record of `target`.
 schema::Record reduce(const schema::Group& source, const schema::Group& target, const Sources& in) {
     schema::Record out(target);
     for (const schema::Field& f : source.fields) {
         if (f.reduce == schema::Reduce::MeanStd) reduceScalar(f, in, out);
         if (f.reduce == schema::Reduce::Curve) reduceCurve(f, in, out);
+        if (f.reduce == schema::Reduce::Pointwise) reducePointwise(f, in, out);
+        if (f.reduce == schema::Reduce::Same) copySame(f, in, out);
     }
     return out;
 }
@@ -198,6 +227,8 @@ EnsembleResults computeEnsemble(std::span<const FileResults> files,
         if (in.records.empty()) continue;
         e.groups.push_back(reduce(g, schema::ensembleGroup(g.name), in));
         e.groups.back().set("n_files", in.records.size());
+        if (const AnalysisInfo* info = analysisOfGroup(g.name); info && info->finishEnsemble)
+            info->finishEnsemble(e.groups.back());
     }
     e.members = std::move(members);
     return e;

@@ -49,6 +49,8 @@ FileResults analyzeFile(const Packing& packing, const std::filesystem::path& inp
             throw std::logic_error("results schema: no group '" + std::string(info.group) + "'");
         schema::Record record(*group);
         if (info.run(context, record)) results.groups.push_back(std::move(record));
+        for (schema::Record& extra : context.takeGroups())
+            results.groups.push_back(std::move(extra));
         // Big intermediates (the spectral voxelization) go as soon as nothing needs them.
         for (std::size_t j = 0; j <= i; ++j)
             if (!neededLater(order[j], order, i)) context.release(order[j]);

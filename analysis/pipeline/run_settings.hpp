@@ -2,6 +2,7 @@
 // Everything one sbanalyze run is asked to do (filled by the command line, cli/).
 
 #include "contacts/contact_network.hpp"
+#include "hyperuniformity/hyperuniformity.hpp"
 #include "pipeline/analysis_registry.hpp"
 #include "spectral/fftw_wisdom.hpp"
 
@@ -22,6 +23,10 @@ struct RunSettings {
     /// K: F(delta) from K random void points (seeded) instead of every void voxel when K > 0
     std::int64_t porePoints = 0;
     double maxQw = 30.0; ///< S(Q) and chi(Q) up to Q w <= maxQw
+    /// hyper: chi_V exactly (no voxels) at Q w <= chiExactQw; 0: voxel data alone
+    double chiExactQw = 3.0;
+    /// hyper: the fit a0 + a1 Q^alpha over Q w <= fitQw; times and an alpha window (t D / w^2)
+    HyperuniformityParameters hyperuniformity;
     ContactParameters contacts;
     FftSettings fft;
     bool quiet = false;

@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <typeindex>
 #include <utility>
+#include <vector>
 
 namespace sbpack {
 
@@ -57,6 +58,11 @@ class FileContext {
     }
     void release(Analysis analysis) { kept_.erase(analysis); }
 
+    /// A results group beyond the stage's own (an analysis that fills several, e.g. hyper).
+    void addGroup(schema::Record record) { groups_.push_back(std::move(record)); }
+    /// The groups added since the last call.
+    std::vector<schema::Record> takeGroups() { return std::exchange(groups_, {}); }
+
   private:
     struct Kept {
         std::type_index type;
@@ -68,6 +74,7 @@ class FileContext {
     double meanWidth_;
     std::map<Analysis, VdbExport> exports_;
     std::map<Analysis, Kept> kept_;
+    std::vector<schema::Record> groups_;
 };
 
 } // namespace sbpack

@@ -17,6 +17,9 @@ constexpr Type S = Type::String;
 constexpr Reduce Mean = Reduce::MeanStd;
 constexpr Reduce Curve = Reduce::Curve;
 constexpr Reduce No = Reduce::None;
+constexpr Reduce Pointwise = Reduce::Pointwise;
+constexpr Reduce Same = Reduce::Same;
+constexpr Reduce Pooled = Reduce::Pooled;
 
 constexpr std::string_view kRuntime = "wall-clock time of this analysis";
 
@@ -132,8 +135,73 @@ constexpr Field kTransport[] = {
     {"runtime_s", A, F, "s", kRuntime},
 };
 
+constexpr Field kSpreadability[] = {
+    {"source", A, S, "",
+     "chi_V used: \"voxel\" (the --voxels grid) or \"exact+voxel\" (exact at Q w <= "
+     "chi_exact_qmax, voxels beyond)"},
+    {"chi_exact_qmax", A, F, "1", "exact chi_V up to Q w <= this (--chi-exact-qmax; 0: none)"},
+    {"phi", A, F, "1", "the phi that normalises E: phi_voxel (voxel) or N v1 / V (exact+voxel)"},
+    {"alpha", A, F, "1", "-3 - 2 ln(E(t_fit_max) / E(t_fit_min)) / ln(t_fit_max / t_fit_min) (Eq. PLF)",
+     Mean},
+    {"alpha_stderr", A, F, "1", "standard deviation of alpha over the Poisson bootstrap replicas"},
+    {"bootstrap_replicas", A, I, "1", "bootstrap replicas over the wave vectors"},
+    {"alpha_window_low", A, F, "1",
+     "least alpha over the windows ending at t_fit_max / 2, t_fit_max, 2 t_fit_max"},
+    {"alpha_window_high", A, F, "1", "largest alpha over those windows"},
+    {"alpha_pooled", A, F, "1",
+     "ensembles only: alpha of the mean E(t) over the mean window (ln E interpolated in ln t)",
+     Pooled},
+    {"t_fit_min", A, F, "w^2/D",
+     "start of the alpha window: 10 / (Q_peak w)^2, the chi_V peak decayed (or --alpha-window)",
+     Mean},
+    {"t_fit_max", A, F, "w^2/D", "end of the alpha window: t_cutoff / 4 (or --alpha-window)",
+     Mean},
+    {"t_cutoff", A, F, "w^2/D", "t_c = 1 / (Q_min w)^2, the box's cutoff time"},
+    {"runtime_s", A, F, "s", kRuntime},
+    {"t", D, F, "w^2/D", "times t D / w^2, log-spaced (--spread-times)", Same},
+    {"excess", D, F, "1",
+     "E(t) = S(inf) - S(t) = (1 / (phi V)) sum_{Q != 0} chi_V(Q) exp(-Q^2 D t) (Eq. FT_spread)",
+     Pointwise},
+    {"local_exponent", D, F, "1", "nu(t) = d ln E / d ln t = -t <(Q w)^2>, weights chi_V exp(-Q^2 D t)"},
+    {"local_alpha", D, F, "1", "-3 - 2 nu(t): the alpha of a power law at each time"},
+    {"truncation_bound", D, F, "1",
+     "bound on what the wave vectors beyond the grid's Nyquist limit add to E(t)"},
+};
+
+constexpr Field kHyperuniformity[] = {
+    {"alpha", A, F, "1", "alpha of the fit, fixed from spreadability/alpha"},
+    {"a0", A, F, "w^3", "chi_V(0) / w^3 of the fit chi_V = a0 + a1 Q^alpha (Eq. fit), not clamped",
+     Mean},
+    {"a0_stderr", A, F, "w^3", "least-squares standard error of a0"},
+    {"a1", A, F, "w^(3+alpha)", "a1 of the fit, Q in units of 1 / w", Mean},
+    {"a1_stderr", A, F, "w^(3+alpha)", "least-squares standard error of a1"},
+    {"fit_points", A, I, "1", "wave vectors (one of each +-Q) in the fit window"},
+    {"q_fit_max_w", A, F, "1", "the fit window 0 < Q w <= q_fit_max_w (--fit-qmax)"},
+    {"H", A, F, "1", "hyperuniformity index a0 / chi_peak (Eq. HX)", Mean},
+    {"H_min", A, F, "1", "least H over fit windows 0.8 ... 1.5 q_fit_max_w"},
+    {"H_max", A, F, "1", "largest H over those windows"},
+    {"chi_peak", A, F, "w^3", "chi_V(Q_peak) / w^3, the largest shell average from the voxels"},
+    {"q_peak_w", A, F, "1", "Q_peak w"},
+    {"alpha_free", A, F, "1", "alpha of the free three-parameter fit (scan over [0, 4])"},
+    {"a0_free", A, F, "w^3", "a0 of the free fit"},
+    {"alpha_free_low", A, F, "1", "least alpha within one standard deviation of the free fit"},
+    {"alpha_free_high", A, F, "1", "largest such alpha"},
+    {"free_fit_degenerate", A, I, "1",
+     "1 when the free fit does not fix alpha (range over 0.5 or at the scan's end)"},
+    {"runtime_s", A, F, "s", "wall-clock time of the exact chi_V, the fits and the bootstrap"},
+};
+
+constexpr Field kSpreadabilityDebye[] = {
+    {"phi", A, F, "1", "phi of the Debye medium (the packing's)"},
+    {"t", D, F, "a^2/D", "times t D / a^2, the same numbers as spreadability/t", Same},
+    {"excess", D, F, "1",
+     "E(t) of the Debye medium, chi_V = 8 pi phi (1 - phi) a^3 / (1 + (k a)^2)^2 (Eq. deb, "
+     "normalised; docs/hyperuniformity.md)",
+     Pointwise},
+};
+
 // One row per analysis group (docs/architecture.md, "Add an analysis").
-constexpr std::array<Group, 6> kAnalysisGroups{{
+constexpr std::array<Group, 9> kAnalysisGroups{{
     {"structure_factor", "files/<i>/structure_factor", "S(Q) of the centroids (sq)",
      kStructureFactor},
     {"spectral_density", "files/<i>/spectral_density", "chi_V(Q) from the voxels (chi)",
@@ -145,6 +213,13 @@ constexpr std::array<Group, 6> kAnalysisGroups{{
      "transport estimates, diffusion-controlled limit (transport); absent where zeta_2 leaves "
      "(0, 1]",
      kTransport},
+    {"spreadability", "files/<i>/spreadability",
+     "excess spreadability and alpha (hyper; docs/hyperuniformity.md)", kSpreadability},
+    {"hyperuniformity", "files/<i>/hyperuniformity", "the small-Q fit of chi_V and H (hyper)",
+     kHyperuniformity},
+    {"spreadability_debye", "files/<i>/spreadability_debye",
+     "the Debye random medium's excess spreadability on the same time axis (hyper)",
+     kSpreadabilityDebye},
 }};
 
 constexpr Field kEnsembleOwn[] = {
@@ -209,6 +284,8 @@ class EnsembleSchemas {
         for (const Field& f : source.fields) {
             if (f.reduce == Reduce::MeanStd) addStatistics(o.fields, f);
             if (f.reduce == Reduce::Curve) addCurve(o.fields, f);
+            if (f.reduce == Reduce::Pointwise) addStatistics(o.fields, f);
+            if (f.reduce == Reduce::Same || f.reduce == Reduce::Pooled) o.fields.push_back(f);
         }
         o.group = {name, keep(std::move(path)), keep(std::move(title)), o.fields};
     }

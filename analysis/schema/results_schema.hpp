@@ -25,6 +25,13 @@ enum class Reduce {
     None,    ///< not in the ensemble
     MeanStd, ///< scalar: NAME (mean over files) and NAME_std (sample standard deviation)
     Curve,   ///< shell-averaged curve (with the group's Q and count): mean and std on a Q w grid
+    /// dataset on a grid common to every file (e.g. times): NAME and NAME_std element-wise
+    Pointwise,
+    /// the grid of the Pointwise datasets, the same in every file: copied
+    Same,
+    /// an ensemble's own value, computed from its statistics by the analysis's EnsembleFinish
+    /// (pipeline/analysis_registry.hpp); never set per file
+    Pooled,
 };
 
 struct Field {
@@ -33,7 +40,8 @@ struct Field {
     Type type;
     /// "1" dimensionless, "length" (the packing's), "1/length", "length^2", "length^3", "time"
     /// (length^2 / diffusion_coefficient), "length^2/time", "D" (the major axis 2 semi_axis),
-    /// "s" (wall clock), "bytes"; "" for strings.
+    /// "s" (wall clock), "bytes", "w^3" and "w^2/D" (in units of the mean width w and the
+    /// diffusion coefficient D); "" for strings.
     std::string_view units;
     std::string_view description;
     Reduce reduce = Reduce::None;

@@ -1,7 +1,9 @@
 // chi: the spectral density chi_V(Q) of the kept spectral-grid voxelization.
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
+#include "hyperuniformity/discrete_spectrum.hpp"
 #include "spectral/spectral_density.hpp"
+#include "spectral/voxel_fourier_transform.hpp"
 #include "voxels/voxelization.hpp"
 
 #include <fmt/format.h>
@@ -38,11 +40,16 @@ bool runSpectralDensity(FileContext& context, schema::Record& record) {
     SpectralDensityParameters parameters;
     parameters.maxQw = context.settings().maxQw;
     parameters.fft = context.settings().fft;
+    const Voxelization& voxels = context.kept<Voxelization>(Analysis::Voxels);
+    const VoxelFourierTransform transform(voxels, parameters.fft, context.progress());
     const SpectralDensityResult s =
-        SpectralDensity(parameters)
-            .compute(context.packing(), context.kept<Voxelization>(Analysis::Voxels),
-                     context.progress());
+        SpectralDensity(parameters).compute(context.packing(), voxels, transform,
+                                            context.progress());
     report(context.progress(), s);
+    if (context.settings().runs(Analysis::Hyperuniformity))
+        context.keep(Analysis::SpectralDensity,
+                     KeptSpectrum{voxelSpectrum(transform, voxels, context.meanWidth(), {}),
+                                  spectralPeak(s.shells.q, s.shells.value, context.meanWidth())});
     record.set("voxels", s.voxels)
         .set("phi_voxel", s.phiVoxel)
         .set("voxel_size", s.voxelSize)

@@ -3,6 +3,7 @@
 // object on one file, reports a progress line and fills its results group by the schema's names.
 
 #include "pipeline/analysis_registry.hpp"
+#include "hyperuniformity/hyperuniformity.hpp"
 #include "shells/shell_average.hpp"
 
 #include <string>
@@ -25,6 +26,15 @@ bool runPoreSizes(FileContext& context, schema::Record& record);
 StageMemory poreSizesMemory(const Packing& packing, const RunSettings& settings);
 
 bool runTransport(FileContext& context, schema::Record& record);
+
+/// What chi keeps for hyper: the voxel spectrum at every wave vector and the peak of chi_V.
+struct KeptSpectrum {
+    DiscreteSpectrum spectrum;
+    SpectralPeak peak;
+};
+bool runHyperuniformity(FileContext& context, schema::Record& record);
+/// alpha_pooled of an ensemble from its mean E(t) over the mean window.
+void poolSpreadability(schema::Record& ensembleGroup);
 
 /// "6.12345": a number for progress lines (6 significant digits unless `digits`).
 std::string describe(double value, int digits = 6);

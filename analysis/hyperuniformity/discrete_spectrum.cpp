@@ -1,0 +1,159 @@
+#include "hyperuniformity/discrete_spectrum.hpp"
+
+#include "parallel/parallel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace sbpack {
+
+namespace {
+
+/// Blocks of k_x planes summed apart and merged in order: the sums do not depend on the
+/// number of threads.
+constexpr int kPlaneBlocks = 16;
+
+/// Signed wave index of DFT index k: k for k <= M/2, else k - M.
+int signedIndex(int k, int m) {
+    return 2 * k <= m ? k : k - m;
+}
+
+double sinc(double x) {
+    return x == 0.0 ? 1.0 : std::sin(x) / x;
+}
+
+/// Per axis and DFT index k: [a sinc(pi n / M)]^2 (the cube form factor along that axis,
+/// Q a / 2 = pi n / M) or a^2.
+std::vector<double> axisFactors(int m, double a, bool cubeFormFactor) {
+    std::vector<double> f(m);
+    for (int k = 0; k < m; ++k) {
+        const double s = cubeFormFactor ? sinc(std::numbers::pi * signedIndex(k, m) / m) : 1.0;
+        f[k] = a * a * s * s;
+    }
+    return f;
+}
+
+/// sum of chi over every wave vector of the grid, per |n|^2.
+std::vector<double> gridSums(const VoxelFourierTransform& transform, const std::vector<double>& f,
+                             double volume, bool serial) {
+    const int m = transform.voxels();
+    const std::int64_t half = m / 2;
+    const std::size_t bins = static_cast<std::size_t>(3 * half * half + 1);
+    std::vector<std::vector<double>> partial(kPlaneBlocks, std::vector<double>(bins, 0.0));
+    parallelFor(
+        0, kPlaneBlocks, 1,
+        [&](std::int64_t begin, std::int64_t end) {
+            for (std::int64_t b = begin; b < end; ++b) {
+                std::vector<double>& sum = partial[b];
+                for (int kx = static_cast<int>(b * m / kPlaneBlocks);
+                     kx < static_cast<int>((b + 1) * m / kPlaneBlocks); ++kx) {
+                    const std::int64_t nx = signedIndex(kx, m);
+                    for (int ky = 0; ky < m; ++ky) {
+                        const std::int64_t ny = signedIndex(ky, m);
+                        const double fxy = f[kx] * f[ky] / volume;
+                        for (int kz = 0; kz <= m / 2; ++kz) {
+                            const std::int64_t n2 = nx * nx + ny * ny + std::int64_t{kz} * kz;
+                            if (n2 == 0) continue;
+                            sum[n2] += transform.weight(kz) * transform.power(kx, ky, kz) * fxy *
+                                       f[kz];
+                        }
+                    }
+                }
+            }
+        },
+        serial);
+    for (int b = 1; b < kPlaneBlocks; ++b)
+        for (std::size_t i = 0; i < bins; ++i)
+            partial[0][i] += partial[b][i];
+    return std::move(partial[0]);
+}
+
+double excessAtZero(const DiscreteSpectrum& s) {
+    double sum = 0.0;
+    for (const double v : s.sumByN2)
+        sum += v;
+    return sum / (s.phi * std::pow(s.boxLength, 3));
+}
+
+} // namespace
+
+DiscreteSpectrum voxelSpectrum(const VoxelFourierTransform& transform, const Voxelization& voxels,
+                               double meanWidth, const VoxelSpectrumOptions& options) {
+    if (transform.voxels() != voxels.voxels())
+        throw std::invalid_argument("voxel spectrum: the transform is of a different grid");
+    const int m = voxels.voxels();
+    const double boxLength = voxels.boxLength(), volume = std::pow(boxLength, 3);
+    const std::vector<double> f = axisFactors(m, voxels.voxelSize(), options.cubeFormFactor);
+    DiscreteSpectrum s;
+    s.source = "voxel";
+    s.boxLength = boxLength;
+    s.meanWidth = meanWidth;
+    s.phi = voxels.phiVoxel();
+    s.sumByN2 = gridSums(transform, f, volume, options.serial);
+    // Individually: |n_i| < M/2, so that +-n both lie in the grid.
+    const double reach = options.individualQw * boxLength / (2.0 * std::numbers::pi * meanWidth);
+    const std::int64_t inside = (m + 1) / 2 - 1;
+    s.individualMaxN2 = std::min(static_cast<std::int64_t>(std::floor(reach * reach)),
+                                 inside * inside);
+    s.modes = {boxLength, halfSpaceWaveVectors(s.individualMaxN2), {}};
+    for (const auto& n : s.modes.n) {
+        // F(-n) is the conjugate of F(n): read the stored one with k_z >= 0.
+        const int sign = n[2] < 0 ? -1 : 1;
+        const int kx = (sign * n[0] + m) % m, ky = (sign * n[1] + m) % m, kz = sign * n[2];
+        s.modes.chi.push_back(transform.power(kx, ky, kz) * f[kx] * f[ky] * f[kz] / volume);
+    }
+    if (options.cubeFormFactor) {
+        s.cutoffQ = 2.0 * std::numbers::pi * ((m + 1) / 2) / boxLength;
+        s.missingWeight = std::max(0.0, (1.0 - s.phi) - excessAtZero(s));
+    } else {
+        s.cutoffQ = std::numeric_limits<double>::infinity();
+    }
+    return s;
+}
+
+DiscreteSpectrum exactSpectrum(const ExactSpectralDensityResult& exact) {
+    DiscreteSpectrum s;
+    s.source = "exact";
+    s.boxLength = exact.boxLength;
+    s.meanWidth = exact.meanWidth;
+    s.phi = exact.phi;
+    s.cutoffQ = 2.0 * std::numbers::pi * std::sqrt(static_cast<double>(exact.maxN2 + 1)) /
+                exact.boxLength;
+    s.sumByN2.assign(static_cast<std::size_t>(exact.maxN2) + 1, 0.0);
+    for (std::size_t i = 0; i < exact.modes.size(); ++i)
+        s.sumByN2[exact.modes.n2(i)] += 2.0 * exact.modes.chi[i]; // +-n
+    s.modes = exact.modes;
+    s.individualMaxN2 = exact.maxN2;
+    s.missingWeight = std::max(0.0, (1.0 - s.phi) - excessAtZero(s));
+    return s;
+}
+
+DiscreteSpectrum withExactSmallQ(const DiscreteSpectrum& voxel,
+                                 const ExactSpectralDensityResult& exact) {
+    if (voxel.boxLength != exact.boxLength)
+        throw std::invalid_argument("spectrum: the exact and voxel spectra are of different boxes");
+    if (exact.maxN2 > voxel.individualMaxN2)
+        throw std::invalid_argument(
+            "spectrum: the voxel spectrum lists wave vectors one by one only up to |n|^2 = " +
+            std::to_string(voxel.individualMaxN2) + ", the exact one reaches " +
+            std::to_string(exact.maxN2));
+    DiscreteSpectrum s = voxel;
+    s.source = "exact+voxel";
+    s.phi = exact.phi;
+    s.missingWeight = voxel.missingWeight * voxel.phi / exact.phi;
+    for (std::int64_t n2 = 1; n2 <= exact.maxN2; ++n2)
+        s.sumByN2[n2] = 0.0;
+    for (std::size_t i = 0; i < exact.modes.size(); ++i) {
+        if (s.modes.n[i] != exact.modes.n[i])
+            throw std::logic_error("spectrum: wave vectors out of order");
+        s.modes.chi[i] = exact.modes.chi[i];
+        s.sumByN2[exact.modes.n2(i)] += 2.0 * exact.modes.chi[i];
+    }
+    return s;
+}
+
+} // namespace sbpack

@@ -1,0 +1,94 @@
+#include "hyperuniformity/hyperuniformity.hpp"
+
+#include "hyperuniformity/debye_medium.hpp"
+#include "hyperuniformity/spreadability_curve.hpp"
+#include "progress/progress.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sbpack {
+
+namespace {
+
+std::vector<double> logSpaced(double from, double to, int perDecade) {
+    const int intervals = std::max(1, static_cast<int>(std::ceil(perDecade * std::log10(to / from))));
+    std::vector<double> t(intervals + 1);
+    for (int i = 0; i <= intervals; ++i)
+        t[i] = from * std::pow(to / from, static_cast<double>(i) / intervals);
+    return t;
+}
+
+/// E(t), its local exponent, the truncation bound and the Debye curve on the time grid.
+void fillCurves(HyperuniformityResult& r, const SpreadabilityCurve& curve, double phi) {
+    r.t = logSpaced(r.parameters.tMin, r.parameters.tMax, r.parameters.pointsPerDecade);
+    for (const double t : r.t) {
+        const SpreadabilityCurve::Point p = curve.at(t);
+        r.excess.push_back(std::exp(p.logExcess));
+        r.localExponent.push_back(p.exponent);
+        r.localAlpha.push_back(-3.0 - 2.0 * p.exponent);
+        r.truncation.push_back(curve.truncationBound(t));
+        r.debyeExcess.push_back(debyeExcessSpreadability(t, phi));
+    }
+    r.cutoffTime = curve.cutoffTime();
+}
+
+/// The fits of chi_V at small Q over the wave vectors of every member.
+void fitSmallQ(HyperuniformityResult& r, std::span<const DiscreteSpectrum> members) {
+    const double q = r.parameters.fitQmaxW;
+    const double reach = q * kWindowFactors[std::size(kWindowFactors) - 1];
+    SmallQPoints all;
+    for (const DiscreteSpectrum& s : members)
+        all.append(smallQPoints(s, reach));
+    const SmallQPoints window = all.upTo(q);
+    r.fit = fitFixedExponent(window, r.alpha.alpha);
+    r.freeFit = fitFreeExponent(window);
+    r.h = r.fit.a0 / r.peak.chi;
+    r.hSpread = indexSpread(all, q, r.alpha.alpha, r.peak.chi);
+}
+
+} // namespace
+
+Hyperuniformity::Hyperuniformity(HyperuniformityParameters parameters)
+    : parameters_(std::move(parameters)) {
+    const HyperuniformityParameters& p = parameters_;
+    if (!(p.tMin > 0.0 && p.tMax > p.tMin && std::isfinite(p.tMax)))
+        throw std::invalid_argument("hyperuniformity: times must satisfy 0 < t_min < t_max");
+    if (p.pointsPerDecade < 1) throw std::invalid_argument("hyperuniformity: no time points");
+    if (!(p.fitQmaxW > 0.0 && std::isfinite(p.fitQmaxW)))
+        throw std::invalid_argument("hyperuniformity: --fit-qmax must be positive");
+    if (p.replicas < 0) throw std::invalid_argument("hyperuniformity: negative replicas");
+    if (p.window && !(p.window->tMin > 0.0 && p.window->tMax > p.window->tMin))
+        throw std::invalid_argument("hyperuniformity: --alpha-window needs 0 < T1 < T2");
+}
+
+HyperuniformityResult Hyperuniformity::compute(std::span<const DiscreteSpectrum> members,
+                                               const SpectralPeak& peak) const {
+    const Stopwatch clock;
+    if (!(peak.chi > 0.0 && peak.qw > 0.0))
+        throw std::invalid_argument("hyperuniformity: no peak of chi_V");
+    HyperuniformityResult r;
+    r.parameters = parameters_;
+    r.peak = peak;
+    const SpreadabilityCurve curve(members);
+    double phi = 0.0;
+    for (const DiscreteSpectrum& s : members)
+        phi += s.phi / static_cast<double>(members.size());
+    fillCurves(r, curve, phi);
+    r.window = parameters_.window ? *parameters_.window : findExponentWindow(curve, peak.qw);
+    r.alpha = estimateExponent(members, r.window, parameters_.replicas, parameters_.seed);
+    fitSmallQ(r, members);
+    r.runtimeSeconds = clock.seconds();
+    return r;
+}
+
+SpectralPeak spectralPeak(const std::vector<double>& q, const std::vector<double>& chi,
+                          double meanWidth) {
+    if (chi.empty()) throw std::invalid_argument("hyperuniformity: no chi_V shells for the peak");
+    const auto top = std::max_element(chi.begin(), chi.end());
+    const std::size_t i = static_cast<std::size_t>(top - chi.begin());
+    return {q[i] * meanWidth, *top / std::pow(meanWidth, 3)};
+}
+
+} // namespace sbpack

@@ -1,0 +1,81 @@
+#pragma once
+// The paper's hyperuniformity analysis of one spectrum or a pooled ensemble (Sec. II A, V B;
+// docs/hyperuniformity.md): the excess spreadability E(t) as a lattice sum over the box's wave
+// vectors (spreadability_curve.hpp), its local exponent, alpha from the long-time window with a
+// bootstrap error (spreadability_exponent.hpp), the fit a0 + a1 Q^alpha at that alpha and the
+// free fit (small_q_fit.hpp), H = a0 / chi_V(Q_peak), and the Debye medium on the same time axis
+// (debye_medium.hpp).
+
+#include "hyperuniformity/discrete_spectrum.hpp"
+#include "hyperuniformity/small_q_fit.hpp"
+#include "hyperuniformity/spreadability_exponent.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace sbpack {
+
+struct HyperuniformityParameters {
+    /// Times t D / w^2, log-spaced from tMin to tMax, pointsPerDecade per decade.
+    double tMin = 1e-3, tMax = 1e4;
+    int pointsPerDecade = 20;
+    /// The fit of chi_V over 0 < Q w <= fitQmaxW (the paper's 1.4).
+    double fitQmaxW = 1.4;
+    /// Bootstrap replicas of alpha (0: none).
+    int replicas = 200;
+    std::uint64_t seed = 1;
+    /// The alpha window, t D / w^2; unset: found (findExponentWindow).
+    std::optional<ExponentWindow> window;
+};
+
+/// The principal peak of chi_V (from a shell average), in the paper's units.
+struct SpectralPeak {
+    double qw = 0.0;  ///< Q_peak w
+    double chi = 0.0; ///< chi_V(Q_peak) / w^3
+};
+
+struct HyperuniformityResult {
+    HyperuniformityParameters parameters;
+    std::vector<double> t;              ///< t D / w^2
+    std::vector<double> excess;         ///< E(t) = S(inf) - S(t)
+    std::vector<double> localExponent;  ///< nu = d ln E / d ln t
+    std::vector<double> localAlpha;     ///< -3 - 2 nu
+    std::vector<double> truncation;     ///< bound on what the omitted wave vectors add to E(t)
+    std::vector<double> debyeExcess;    ///< Debye medium of the same phi at t D / a^2 = t
+    double cutoffTime = 0.0;            ///< t_c D / w^2
+    ExponentWindow window;
+    ExponentEstimate alpha;
+    PowerLawFit fit;                    ///< at alpha.alpha
+    FreeFit freeFit;
+    SpectralPeak peak;
+    double h = 0.0;                     ///< a0 / chi_peak
+    IndexSpread hSpread;
+    double runtimeSeconds = 0.0;
+};
+
+class Hyperuniformity {
+  public:
+    /// Throws std::invalid_argument unless 0 < tMin < tMax, pointsPerDecade >= 1,
+    /// fitQmaxW > 0, replicas >= 0 and a given window has 0 < tMin < tMax.
+    explicit Hyperuniformity(HyperuniformityParameters parameters);
+
+    /// The analysis of `members` pooled (one member: one box): E(t) is their mean, and the fits
+    /// of chi_V take the wave vectors of every member together. Throws std::domain_error when
+    /// there is no alpha window or too few wave vectors to fit (the box or the grid is too
+    /// small; the message names the option to change).
+    HyperuniformityResult compute(std::span<const DiscreteSpectrum> members,
+                                  const SpectralPeak& peak) const;
+
+    const HyperuniformityParameters& parameters() const { return parameters_; }
+
+  private:
+    HyperuniformityParameters parameters_;
+};
+
+/// The principal peak of a shell-averaged chi_V (length^3 against Q) in units of w.
+SpectralPeak spectralPeak(const std::vector<double>& q, const std::vector<double>& chi,
+                          double meanWidth);
+
+} // namespace sbpack

@@ -1,0 +1,70 @@
+#pragma once
+// The hyperuniformity exponent alpha from the long-time decay of the excess spreadability,
+// E(t) ~ t^{-(3 + alpha)/2} (paper Eq. PLF; docs/hyperuniformity.md, "alpha"). In a window
+// [t_1, t_2] alpha is the window's mean local exponent,
+//   alpha = -3 - 2 ln(E(t_2) / E(t_1)) / ln(t_2 / t_1)   (the mean of nu = d ln E / d ln t over
+// ln t), with an uncertainty from a Poisson bootstrap over the wave vectors (each one's chi_V is a
+// random variable around its mean). Times are t D / w^2.
+//
+// The window the code finds: it starts when the peak of chi_V has decayed away,
+// t_1 = kPeakDecay / (Q_peak w)^2 (the microscopic transient: the wave vectors near the peak
+// weigh exp(-(Q_peak w)^2 t) = e^{-10} of what they did), and ends at t_2 = t_c / 4, with
+// t_c = 1 / (Q_min w)^2 the finite box's cutoff, beyond which the lattice sum drifts from the
+// continuum and the decay turns exponential.
+
+#include "hyperuniformity/discrete_spectrum.hpp"
+#include "hyperuniformity/spreadability_curve.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+namespace sbpack {
+
+struct ExponentWindow {
+    double tMin = 0.0;
+    double tMax = 0.0;
+};
+
+/// (Q_peak w)^2 t at which the window starts.
+inline constexpr double kPeakDecay = 10.0;
+/// The window ends at t_c / kCutoffFraction.
+inline constexpr double kCutoffFraction = 4.0;
+/// A window narrower than this many decades in t gives no alpha.
+inline constexpr double kMinWindowDecades = 0.2;
+
+/// The window above for the curve's cutoff time and the peak at Q_peak w = peakQw. Throws
+/// std::domain_error when it is narrower than kMinWindowDecades (the box is too small, or
+/// the grid too coarse, for a long-time regime), naming both ends.
+ExponentWindow findExponentWindow(const SpreadabilityCurve& curve, double peakQw);
+
+/// alpha = -3 - 2 ln(E(t_2) / E(t_1)) / ln(t_2 / t_1), of a curve or of any ln E(t) (e.g. a
+/// continuum reference).
+double windowExponent(const SpreadabilityCurve& curve, const ExponentWindow& window);
+double windowExponent(const std::function<double(double)>& logExcess, const ExponentWindow& window);
+
+/// The same from E sampled at times t (ascending), ln E interpolated linearly in ln t at the
+/// window's ends (e.g. an ensemble's mean E(t)). Throws std::domain_error if the samples do
+/// not cover the window.
+double sampledExponent(const std::vector<double>& t, const std::vector<double>& excess,
+                       const ExponentWindow& window);
+
+struct ExponentEstimate {
+    double alpha = 0.0;
+    /// Standard deviation of alpha over the bootstrap replicas (0 when replicas = 0).
+    double standardError = 0.0;
+    int replicas = 0;
+    /// The least and largest alpha over the windows that end at t_2 / 2, t_2 and 2 t_2 (same
+    /// t_1): how much alpha owes to where the window ends.
+    double windowLow = 0.0, windowHigh = 0.0;
+};
+
+/// alpha of the pooled members in `window`, with the Poisson bootstrap: each wave vector listed
+/// one by one (DiscreteSpectrum::modes) is weighted by an independent Poisson(1) count in each
+/// replica (seeded; the same seed gives the same result).
+ExponentEstimate estimateExponent(std::span<const DiscreteSpectrum> members,
+                                  const ExponentWindow& window, int replicas,
+                                  std::uint64_t seed = 1);
+
+} // namespace sbpack

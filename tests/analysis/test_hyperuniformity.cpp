@@ -1,0 +1,280 @@
+// The hyperuniformity chain against analytic truths (docs/hyperuniformity.md): Parseval's sum
+// rule of the discrete spreadability, the Debye medium's normalisation and t^{-3/2} tail, the
+// superball form factor against the sphere's closed form, the cube bound and its own quadrature,
+// the exact spectral density of spheres by two independent paths, alpha of a perturbed lattice
+// (2 in the limit) and of random sequential addition (0), and the small-Q fit on exact data.
+
+#include "hyperuniformity/debye_medium.hpp"
+#include "hyperuniformity/discrete_spectrum.hpp"
+#include "hyperuniformity/hyperuniformity.hpp"
+#include "hyperuniformity/small_q_fit.hpp"
+#include "hyperuniformity/spreadability_curve.hpp"
+#include "hyperuniformity/spreadability_exponent.hpp"
+#include "numerics/tanh_sinh.hpp"
+#include "spectral/exact_spectral_density.hpp"
+#include "spectral/spectral_density.hpp"
+#include "spectral/superball_form_factor.hpp"
+#include "spectral/voxel_fourier_transform.hpp"
+#include "voxels/voxelization.hpp"
+
+#include "test_packings.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <random>
+
+namespace sbpack {
+namespace {
+
+const Progress quiet;
+constexpr double kPi = std::numbers::pi;
+
+TEST(Spreadability, DiscreteSumRuleIsParsevalsIdentity) {
+    // Without the cube form factor the grid's discrete transform sums to
+    // phi_voxel (1 - phi_voxel) V over k != 0: E(0) = 1 - phi_voxel exactly.
+    const Packing packing = testing::latticePacking(1.5, 3, 1.35, 0.05, 3);
+    const Voxelization voxels = Voxelizer({40}).compute(packing, quiet);
+    const VoxelFourierTransform transform(voxels, {FftPlanning::Estimate, {}}, quiet);
+    const double w = packing.shape().meanWidth();
+    VoxelSpectrumOptions plain;
+    plain.cubeFormFactor = false;
+    const DiscreteSpectrum s = voxelSpectrum(transform, voxels, w, plain);
+    const SpreadabilityCurve curve(std::span(&s, 1));
+    EXPECT_NEAR(curve.excess(0.0), 1.0 - voxels.phiVoxel(), 1e-12);
+    EXPECT_EQ(curve.truncationBound(0.0), 0.0);
+    // With the cube form factor weight moves beyond the grid; E(0) plus the reported missing
+    // weight restores the sum rule, and the bound covers it at t = 0.
+    const DiscreteSpectrum cube = voxelSpectrum(transform, voxels, w, {});
+    const SpreadabilityCurve cubes(std::span(&cube, 1));
+    EXPECT_LT(cubes.excess(0.0), 1.0 - voxels.phiVoxel());
+    EXPECT_NEAR(cubes.excess(0.0) + cubes.truncationBound(0.0), 1.0 - voxels.phiVoxel(), 1e-12);
+    // nu = -t <(Q w)^2> against a centred difference of ln E.
+    const double t = 0.05, h = 1e-4;
+    const double nu = (std::log(curve.excess(t * (1 + h))) - std::log(curve.excess(t * (1 - h)))) /
+                      (std::log1p(h) - std::log1p(-h));
+    EXPECT_NEAR(curve.at(t).exponent, nu, 1e-6);
+}
+
+TEST(Debye, ClosedFormMatchesQuadratureAndIsNormalised) {
+    const double phi = 0.35, a = 1.0;
+    // Inverse transform at r = 0: int d^3k / (2 pi)^3 chi(k) = phi (1 - phi).
+    const double variance = tanhSinh(
+        [&](double u) { // k = u / (1 - u)
+            const double k = u / (1 - u);
+            return k * k * debyeSpectralDensity(k, phi, a) / (2 * kPi * kPi) / ((1 - u) * (1 - u));
+        },
+        0.0, 1.0, 1e-14);
+    EXPECT_NEAR(variance, phi * (1 - phi), 1e-12);
+    EXPECT_NEAR(debyeExcessSpreadability(0.0, phi), 1 - phi, 1e-15);
+    for (const double s : {1e-3, 0.1, 1.0, 10.0, 49.0, 51.0, 300.0, 1e4}) {
+        const double quadrature = tanhSinh(
+            [&](double u) {
+                const double k = u / (1 - u);
+                return k * k * debyeSpectralDensity(k, phi, a) * std::exp(-k * k * s) /
+                       (2 * kPi * kPi * phi) / ((1 - u) * (1 - u));
+            },
+            0.0, 1.0, 1e-15);
+        EXPECT_NEAR(debyeExcessSpreadability(s, phi) / quadrature, 1.0, 1e-9) << s;
+    }
+    // The t^{-3/2} tail: alpha = 0 through the window exponent, once past the transient.
+    const auto logE = [&](double s) { return std::log(debyeExcessSpreadability(s, phi)); };
+    EXPECT_NEAR(windowExponent(logE, {1e2, 1e4}), 0.0, 0.02);
+    EXPECT_NEAR(debyeExcessSpreadability(1e6, phi) * std::pow(1e6, 1.5),
+                (1 - phi) / std::sqrt(kPi), 1e-5);
+}
+
+TEST(Debye, NoAlphaWindowInABoxOfTwentyA) {
+    // A box of 20 a: t_c / 4 = (20 / 2 pi)^2 / 4 = 2.5 a^2 / D, before the tail (the weight
+    // Q^2 chi_V peaks at Q a = 1, whose transient lasts to t = 10).
+    const double phi = 0.3, a = 1.0, box = 20.0;
+    DiscreteSpectrum s;
+    s.source = "exact";
+    s.boxLength = box;
+    s.meanWidth = a;
+    s.phi = phi;
+    s.cutoffQ = INFINITY;
+    const int reach = 60;
+    s.sumByN2.assign(3 * reach * reach + 1, 0.0);
+    for (int x = -reach; x <= reach; ++x)
+        for (int y = -reach; y <= reach; ++y)
+            for (int z = -reach; z <= reach; ++z) {
+                const std::int64_t n2 = x * x + y * y + z * z;
+                if (n2 == 0) continue;
+                const double q = 2 * kPi * std::sqrt(double(n2)) / box;
+                s.sumByN2[n2] += debyeSpectralDensity(q, phi, a);
+            }
+    const SpreadabilityCurve curve(std::span(&s, 1));
+    EXPECT_NEAR(curve.cutoffTime(), std::pow(box / (2 * kPi), 2), 1e-12);
+    EXPECT_THROW(findExponentWindow(curve, 1.0), std::domain_error);
+    // Where the omitted |n| > 60 have decayed, the lattice sum is the continuum's, less the
+    // Q = 0 term chi_V(0) / (phi V) (Poisson summation: the images of the autocovariance at
+    // distance 20 a weigh e^{-20}).
+    const double zero = debyeSpectralDensity(0.0, phi, a) / (phi * std::pow(box, 3));
+    for (const double t : {0.05, 0.5, 2.0})
+        EXPECT_NEAR((curve.excess(t) + zero) / debyeExcessSpreadability(t, phi), 1.0, 1e-5) << t;
+}
+
+TEST(FormFactor, SphereClosedFormAndSeriesAgainstQuadrature) {
+    std::mt19937_64 random(5);
+    std::normal_distribution<double> normal;
+    for (const double p : {1.0, 0.75, 1.5, 3.0}) {
+        const SuperballFormFactor m(Superball(p, 0.5));
+        const double w = Superball(p, 0.5).meanWidth();
+        for (int i = 0; i < 12; ++i) {
+            const Eigen::Vector3d dir = Eigen::Vector3d(normal(random), normal(random),
+                                                        normal(random)).normalized();
+            const double kw = 10.0 * (i + 0.5) / 12.0;
+            const Eigen::Vector3d k = dir * kw / w;
+            if (p == 1.0) {
+                EXPECT_NEAR(m(k) / m.volume(), sphereFormFactor(k.norm(), 0.5) / m.volume(), 1e-10)
+                    << kw;
+            }
+            if (k.norm() * Superball(p, 0.5).circumradius() <= SuperballFormFactor::kSeriesLimit) {
+                EXPECT_NEAR(m.series(k) / m.volume(), m.quadrature(k) / m.volume(), 1e-10)
+                    << "p " << p << " k w " << kw;
+            }
+            // The 48-fold symmetry: signs and permutations of the components.
+            const Eigen::Vector3d swapped(-k.z(), k.x(), -k.y());
+            EXPECT_NEAR(m(swapped), m(k), 1e-12 * m.volume());
+        }
+        EXPECT_DOUBLE_EQ(m(Eigen::Vector3d::Zero()), m.volume());
+    }
+}
+
+TEST(FormFactor, NearCubeWithinItsVolumeDefectOfTheCube) {
+    // |m_superball - m_cube| <= v_cube - v_superball: the two indicators differ only there.
+    for (const double p : {20.0, 200.0}) {
+        const Superball shape(p, 0.5);
+        const SuperballFormFactor m(shape);
+        const double defect = 1.0 - shape.volume();
+        for (const Eigen::Vector3d& k :
+             {Eigen::Vector3d(3.0, 0.0, 0.0), Eigen::Vector3d(2.0, 4.0, 1.0),
+              Eigen::Vector3d(7.0, 6.0, 5.0), Eigen::Vector3d(12.0, 1.0, 9.0)}) {
+            const double cube = cubeFormFactor(k, 1.0);
+            EXPECT_LE(std::abs(m(k) - cube), defect + 1e-10) << p << " " << k.transpose();
+        }
+    }
+}
+
+TEST(ExactSpectralDensity, SuperballPathOfSpheresEqualsTheSpherePath) {
+    const Packing spheres = testing::latticePacking(1.0, 4, 1.2, 0.1, 11);
+    const std::int64_t maxN2 = 30;
+    const WaveVectorSpectrum a = sphereWaveVectors(spheres, maxN2, quiet);
+    const WaveVectorSpectrum b = superballWaveVectors(spheres, maxN2, quiet);
+    ASSERT_EQ(a.size(), b.size());
+    double peak = 0.0;
+    for (const double c : a.chi)
+        peak = std::max(peak, c);
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        EXPECT_EQ(a.n[i], b.n[i]);
+        EXPECT_NEAR(a.chi[i], b.chi[i], 1e-10 * peak);
+    }
+}
+
+TEST(ExactSpectralDensity, VoxelsConvergeToIt) {
+    // chi at the smallest wave vectors, voxels against exact, for p = 1.5: the error falls
+    // as the grid is refined (M = 24 -> 48).
+    const Packing packing = testing::latticePacking(1.5, 3, 1.35, 0.05, 21);
+    const double w = packing.shape().meanWidth();
+    ExactSpectralDensityParameters parameters;
+    parameters.maxQw = 2.0 * kPi * w * 2.0 / packing.boxLength; // |n| <= 2
+    const ExactSpectralDensityResult exact =
+        ExactSpectralDensity(parameters).compute(packing, quiet);
+    double error[2];
+    for (const int m : {24, 48}) {
+        const Voxelization voxels = Voxelizer({m}).compute(packing, quiet);
+        const VoxelFourierTransform transform(voxels, {FftPlanning::Estimate, {}}, quiet);
+        const DiscreteSpectrum s = voxelSpectrum(transform, voxels, w, {});
+        double worst = 0.0;
+        for (std::size_t i = 0; i < exact.modes.size(); ++i)
+            worst = std::max(worst, std::abs(s.modes.chi[i] - exact.modes.chi[i]));
+        error[m / 48] = worst;
+    }
+    EXPECT_LT(error[1], 0.5 * error[0]);
+}
+
+/// alpha of an exact spectrum through the whole chain (the window found from the chi peak).
+HyperuniformityResult exactChain(const Packing& packing, double maxQw) {
+    ExactSpectralDensityParameters parameters;
+    parameters.maxQw = maxQw;
+    const ExactSpectralDensityResult exact =
+        ExactSpectralDensity(parameters).compute(packing, quiet);
+    const DiscreteSpectrum s = exactSpectrum(exact);
+    const int shells = static_cast<int>(maxQw * packing.boxLength / (2 * kPi * exact.meanWidth));
+    const ShellAverage chi = shellAverage(exact.modes, shells - 1);
+    HyperuniformityParameters hp;
+    hp.replicas = 40;
+    return Hyperuniformity(hp).compute(std::span(&s, 1),
+                                       spectralPeak(chi.q, chi.value, exact.meanWidth));
+}
+
+TEST(Hyperuniformity, PerturbedLatticeHasAlphaNearTwo) {
+    // 16^3 spheres of diameter 0.3 on a unit lattice, each displaced uniformly within its cell:
+    // S(Q) ~ Q^2 at small Q (alpha = 2 in the limit; the form factor bends it at reachable times).
+    Packing packing = testing::latticePacking(1.0, 16, 1.0, 0.5, 31, true);
+    packing.semiAxis = 0.15;
+    const HyperuniformityResult r = exactChain(packing, 3.0);
+    std::printf("perturbed lattice: alpha %.3f +- %.3f in t = [%.3g, %.3g]\n", r.alpha.alpha,
+                r.alpha.standardError, r.window.tMin, r.window.tMax);
+    EXPECT_GT(r.alpha.alpha, 1.6);
+    EXPECT_LT(r.alpha.alpha, 2.3);
+    EXPECT_GT(r.alpha.standardError, 0.0);
+    EXPECT_LT(r.window.tMin, r.window.tMax);
+}
+
+TEST(Hyperuniformity, RandomSequentialAdditionIsNotHyperuniform) {
+    // Random sequential addition of spheres to phi = 0.3: S(0) > 0, alpha = 0.
+    Packing packing;
+    packing.p = 1.0;
+    packing.semiAxis = 0.5;
+    const int n = 1500;
+    packing.boxLength = std::cbrt(n * (kPi / 6.0) / 0.3);
+    std::mt19937_64 random(41);
+    std::uniform_real_distribution<double> uniform(0.0, packing.boxLength);
+    while (static_cast<int>(packing.positions.size()) < n) {
+        const Vector3d r(uniform(random), uniform(random), uniform(random));
+        bool free = true;
+        for (const Vector3d& s : packing.positions) {
+            Vector3d d = r - s;
+            for (int i = 0; i < 3; ++i)
+                d[i] -= packing.boxLength * std::round(d[i] / packing.boxLength);
+            if (d.squaredNorm() < 1.0) {
+                free = false;
+                break;
+            }
+        }
+        if (free) {
+            packing.positions.push_back(r);
+            packing.orientations.push_back(Quaterniond::Identity());
+        }
+    }
+    const HyperuniformityResult r = exactChain(packing, 12.0);
+    std::printf("RSA: alpha %.3f +- %.3f in t = [%.3g, %.3g], a0 %.3g +- %.2g, H %.3g\n",
+                r.alpha.alpha, r.alpha.standardError, r.window.tMin, r.window.tMax, r.fit.a0,
+                r.fit.a0Error, r.h);
+    EXPECT_NEAR(r.alpha.alpha, 0.0, 0.3);
+}
+
+TEST(SmallQFit, RecoversAnExactPowerLaw) {
+    SmallQPoints points;
+    for (int i = 1; i <= 40; ++i) {
+        points.qw.push_back(0.05 * i);
+        points.chi.push_back(2e-4 + 1e-3 * std::pow(0.05 * i, 0.55));
+    }
+    const PowerLawFit fixed = fitFixedExponent(points, 0.55);
+    EXPECT_NEAR(fixed.a0, 2e-4, 1e-15);
+    EXPECT_NEAR(fixed.a1, 1e-3, 1e-15);
+    const FreeFit free = fitFreeExponent(points);
+    EXPECT_NEAR(free.best.alpha, 0.55, 1e-9);
+    EXPECT_FALSE(free.degenerate);
+    const IndexSpread spread = indexSpread(points, 1.4, 0.55, 0.02);
+    EXPECT_NEAR(spread.hMin, 0.01, 1e-10);
+    EXPECT_NEAR(spread.hMax, 0.01, 1e-10);
+    EXPECT_THROW(fitFixedExponent(points.upTo(0.1), 0.5), std::domain_error);
+}
+
+} // namespace
+} // namespace sbpack
