@@ -99,7 +99,7 @@ DiscreteSpectrum voxelSpectrum(const VoxelFourierTransform& transform, const Vox
     const std::int64_t inside = (m + 1) / 2 - 1;
     s.individualMaxN2 = std::min(static_cast<std::int64_t>(std::floor(reach * reach)),
                                  inside * inside);
-    s.modes = {boxLength, halfSpaceWaveVectors(s.individualMaxN2), {}};
+    s.modes = {boxLength, s.individualMaxN2, halfSpaceWaveVectors(s.individualMaxN2), {}};
     for (const auto& n : s.modes.n) {
         // F(-n) is the conjugate of F(n): read the stored one with k_z >= 0.
         const int sign = n[2] < 0 ? -1 : 1;

@@ -2,6 +2,7 @@
 
 #include "hyperuniformity/debye_medium.hpp"
 #include "hyperuniformity/spreadability_curve.hpp"
+#include "parallel/parallel.hpp"
 #include "progress/progress.hpp"
 
 #include <algorithm>
@@ -23,14 +24,19 @@ std::vector<double> logSpaced(double from, double to, int perDecade) {
 /// E(t), its local exponent, the truncation bound and the Debye curve on the time grid.
 void fillCurves(HyperuniformityResult& r, const SpreadabilityCurve& curve, double phi) {
     r.t = logSpaced(r.parameters.tMin, r.parameters.tMax, r.parameters.pointsPerDecade);
-    for (const double t : r.t) {
-        const SpreadabilityCurve::Point p = curve.at(t);
-        r.excess.push_back(std::exp(p.logExcess));
-        r.localExponent.push_back(p.exponent);
-        r.localAlpha.push_back(-3.0 - 2.0 * p.exponent);
-        r.truncation.push_back(curve.truncationBound(t));
-        r.debyeExcess.push_back(debyeExcessSpreadability(t, phi));
-    }
+    const std::size_t n = r.t.size();
+    for (auto* v : {&r.excess, &r.localExponent, &r.localAlpha, &r.truncation, &r.debyeExcess})
+        v->resize(n);
+    parallelFor(0, static_cast<std::int64_t>(n), 8, [&](std::int64_t begin, std::int64_t end) {
+        for (std::int64_t i = begin; i < end; ++i) {
+            const SpreadabilityCurve::Point p = curve.at(r.t[i]);
+            r.excess[i] = std::exp(p.logExcess);
+            r.localExponent[i] = p.exponent;
+            r.localAlpha[i] = -3.0 - 2.0 * p.exponent;
+            r.truncation[i] = curve.truncationBound(r.t[i]);
+            r.debyeExcess[i] = debyeExcessSpreadability(r.t[i], phi);
+        }
+    });
     r.cutoffTime = curve.cutoffTime();
 }
 

@@ -1,5 +1,7 @@
 #include "hyperuniformity/spreadability_exponent.hpp"
 
+#include "parallel/parallel.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -11,10 +13,35 @@ namespace sbpack {
 
 namespace {
 
+/// Poisson(1) by inversion of one uniform draw: the cumulative probabilities of 0 ... 17
+/// (the rest, below 1e-16, is folded into 17).
+class PoissonOne {
+  public:
+    PoissonOne() {
+        double p = std::exp(-1.0), sum = 0.0;
+        for (int k = 0; k < kSize; ++k) {
+            sum += p;
+            cumulative_[k] = sum;
+            p /= k + 1;
+        }
+    }
+    int operator()(std::mt19937_64& random) const {
+        const double u = std::uniform_real_distribution<double>(0.0, 1.0)(random);
+        int k = 0;
+        while (k + 1 < kSize && u >= cumulative_[k])
+            ++k;
+        return k;
+    }
+
+  private:
+    static constexpr int kSize = 18;
+    double cumulative_[kSize];
+};
+
 /// One replica of `s` (its sums only): each individually listed wave vector counted a
 /// Poisson(1) number of times.
 DiscreteSpectrum resampled(const DiscreteSpectrum& s, std::mt19937_64& random) {
-    std::poisson_distribution<int> poisson(1.0);
+    static const PoissonOne poisson;
     DiscreteSpectrum r;
     r.boxLength = s.boxLength;
     r.meanWidth = s.meanWidth;
@@ -24,11 +51,22 @@ DiscreteSpectrum resampled(const DiscreteSpectrum& s, std::mt19937_64& random) {
     r.sumByN2 = s.sumByN2;
     for (std::size_t i = 0; i < s.modes.size(); ++i) {
         const int count = poisson(random);
-        r.sumByN2[s.modes.n2(i)] += 2.0 * s.modes.chi[i] * (count - 1); // +-n
+        if (count != 1) r.sumByN2[s.modes.n2(i)] += 2.0 * s.modes.chi[i] * (count - 1); // +-n
     }
     for (double& v : r.sumByN2)
         v = std::max(v, 0.0); // rounding of the subtraction
     return r;
+}
+
+/// alpha of replica r (its own stream: the same for any number of threads).
+double replicaExponent(std::span<const DiscreteSpectrum> members, const ExponentWindow& window,
+                       std::uint64_t seed, int r) {
+    std::mt19937_64 random(seed * 1000003u + static_cast<std::uint64_t>(r));
+    std::vector<DiscreteSpectrum> replica;
+    replica.reserve(members.size());
+    for (const DiscreteSpectrum& s : members)
+        replica.push_back(resampled(s, random));
+    return windowExponent(SpreadabilityCurve(replica), window);
 }
 
 } // namespace
@@ -85,17 +123,16 @@ ExponentEstimate estimateExponent(std::span<const DiscreteSpectrum> members,
     }
     e.replicas = replicas;
     if (replicas < 2) return e;
-    std::mt19937_64 random(seed);
+    std::vector<double> alphas(static_cast<std::size_t>(replicas));
+    parallelFor(0, replicas, 1, [&](std::int64_t begin, std::int64_t end) {
+        for (std::int64_t r = begin; r < end; ++r)
+            alphas[r] = replicaExponent(members, window, seed, static_cast<int>(r));
+    });
     double mean = 0.0, m2 = 0.0;
     for (int r = 0; r < replicas; ++r) {
-        std::vector<DiscreteSpectrum> replica;
-        replica.reserve(members.size());
-        for (const DiscreteSpectrum& s : members)
-            replica.push_back(resampled(s, random));
-        const double alpha = windowExponent(SpreadabilityCurve(replica), window);
-        const double delta = alpha - mean;
+        const double delta = alphas[r] - mean;
         mean += delta / (r + 1);
-        m2 += delta * (alpha - mean);
+        m2 += delta * (alphas[r] - mean);
     }
     e.standardError = std::sqrt(m2 / (replicas - 1));
     return e;

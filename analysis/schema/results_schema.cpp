@@ -178,6 +178,7 @@ constexpr Field kHyperuniformity[] = {
     {"fit_points", A, I, "1", "wave vectors (one of each +-Q) in the fit window"},
     {"q_fit_max_w", A, F, "1", "the fit window 0 < Q w <= q_fit_max_w (--fit-qmax)"},
     {"H", A, F, "1", "hyperuniformity index a0 / chi_peak (Eq. HX)", Mean},
+    {"H_stderr", A, F, "1", "a0_stderr / chi_peak"},
     {"H_min", A, F, "1", "least H over fit windows 0.8 ... 1.5 q_fit_max_w"},
     {"H_max", A, F, "1", "largest H over those windows"},
     {"chi_peak", A, F, "w^3", "chi_V(Q_peak) / w^3, the largest shell average from the voxels"},

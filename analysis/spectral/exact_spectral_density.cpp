@@ -104,7 +104,7 @@ std::vector<std::array<int, 3>> halfSpaceWaveVectors(std::int64_t maxN2) {
 
 ShellAverage shellAverage(const WaveVectorSpectrum& spectrum, int maxShell) {
     const std::int64_t maxN2 = maxSquaredIndex(maxShell);
-    if (spectrum.size() == 0 || spectrum.n2(spectrum.size() - 1) < maxN2)
+    if (spectrum.size() == 0 || spectrum.maxN2 < maxN2)
         throw std::invalid_argument("shell average: the spectrum does not reach shell " +
                                     std::to_string(maxShell));
     ShellAccumulator shells(spectrum.boxLength, maxShell);
@@ -126,7 +126,7 @@ WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
     std::sort(order.begin(), order.end(),
               [&](std::size_t a, std::size_t b) { return before(modes.n[a], modes.n[b]); });
     const double volume = std::pow(packing.boxLength, 3);
-    WaveVectorSpectrum out{packing.boxLength, {}, {}};
+    WaveVectorSpectrum out{packing.boxLength, maxN2, {}, {}};
     out.n.reserve(order.size());
     out.chi.reserve(order.size());
     for (const std::size_t i : order) {
@@ -144,7 +144,7 @@ WaveVectorSpectrum superballWaveVectors(const Packing& packing, std::int64_t max
                                         const Progress& progress, bool serial) {
     if (maxN2 < 1) throw std::invalid_argument("exact spectral density: no wave vector");
     const SuperballFormFactor form(packing.shape());
-    WaveVectorSpectrum out{packing.boxLength, halfSpaceWaveVectors(maxN2), {}};
+    WaveVectorSpectrum out{packing.boxLength, maxN2, halfSpaceWaveVectors(maxN2), {}};
     const ParticleTables tables = particleTables(packing, isqrt(maxN2));
     constexpr int T = SuperballFormFactor::kTile;
     const auto tiles = static_cast<std::int64_t>((out.size() + T - 1) / T);

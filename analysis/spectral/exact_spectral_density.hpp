@@ -20,6 +20,9 @@ namespace sbpack {
 /// n_x = 0 and n_y > 0, or n_x = n_y = 0 and n_z > 0; ordered by |n|^2, then by n.
 struct WaveVectorSpectrum {
     double boxLength = 0.0;
+    /// Every wave vector with 1 <= |n|^2 <= maxN2 is listed (the largest listed |n|^2 can be
+    /// less: not every integer is a sum of three squares).
+    std::int64_t maxN2 = 0;
     std::vector<std::array<int, 3>> n;
     std::vector<double> chi; ///< length^3
 

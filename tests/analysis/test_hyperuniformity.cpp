@@ -174,6 +174,16 @@ TEST(ExactSpectralDensity, SuperballPathOfSpheresEqualsTheSpherePath) {
     }
 }
 
+TEST(ExactSpectralDensity, ShellsEndWhereNoWaveVectorLies) {
+    // Shell 12 ends at |n|^2 = 12 * 13 = 156 = 4 * 39, not a sum of three squares: the largest
+    // listed |n|^2 is 155, and the shell average must still be made.
+    const Packing spheres = testing::latticePacking(1.0, 3, 1.2, 0.1, 13);
+    const WaveVectorSpectrum a = sphereWaveVectors(spheres, maxSquaredIndex(12), quiet);
+    EXPECT_EQ(a.n2(a.size() - 1), 155);
+    EXPECT_EQ(shellAverage(a, 12).size(), 12u);
+    EXPECT_THROW(shellAverage(a, 13), std::invalid_argument);
+}
+
 TEST(ExactSpectralDensity, VoxelsConvergeToIt) {
     // chi at the smallest wave vectors, voxels against exact, for p = 1.5: the error falls
     // as the grid is refined (M = 24 -> 48).

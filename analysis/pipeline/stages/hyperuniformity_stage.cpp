@@ -58,6 +58,7 @@ schema::Record hyperuniformityRecord(const HyperuniformityResult& h, double seco
         .set("fit_points", h.fit.points)
         .set("q_fit_max_w", h.parameters.fitQmaxW)
         .set("H", h.h)
+        .set("H_stderr", h.fit.a0Error / h.peak.chi)
         .set("H_min", h.hSpread.hMin)
         .set("H_max", h.hSpread.hMax)
         .set("chi_peak", h.peak.chi)
@@ -94,12 +95,13 @@ bool runHyperuniformity(FileContext& context, schema::Record& record) {
     }
     context.progress().stageDone(
         "hyperuniformity", clock.seconds(),
-        fmt::format("alpha = {} +- {} (windows: {} .. {}; t D / w^2 in [{}, {}], {}), H = {} "
+        fmt::format("alpha = {} +- {} (windows: {} .. {}; t D / w^2 in [{}, {}], {}), H = {} +- {} "
                     "(a0 = {} w^3)",
                     describe(h.alpha.alpha, 3), describe(h.alpha.standardError, 2),
                     describe(h.alpha.windowLow, 3), describe(h.alpha.windowHigh, 3),
                     describe(h.window.tMin, 3), describe(h.window.tMax, 3), spectrum.source,
-                    describe(h.h, 3), describe(h.fit.a0, 3)));
+                    describe(h.h, 3), describe(h.fit.a0Error / h.peak.chi, 2),
+                    describe(h.fit.a0, 3)));
     setSpreadability(record, h, spectrum, context.settings().chiExactQw);
     context.addGroup(hyperuniformityRecord(h, clock.seconds()));
     context.addGroup(debyeRecord(h, spectrum.phi));
