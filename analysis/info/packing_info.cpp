@@ -11,7 +11,10 @@ PackingInfo packingInfo(const std::filesystem::path& file, const ContactParamete
     Packing packing = readPacking(file);
     const double meanWidth = packing.shape().meanWidth();
     ContactResult contacts = ContactNetwork(parameters).compute(packing);
-    return {std::move(packing), meanWidth, std::move(contacts)};
+    std::optional<JamCheck> jam;
+    if (packing.reducedPressure && *packing.reducedPressure > 0.0)
+        jam = checkJam(packing, *packing.reducedPressure);
+    return {std::move(packing), meanWidth, std::move(contacts), std::move(jam)};
 }
 
 void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info,
@@ -41,6 +44,10 @@ void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info
         << "  mean contacts    Z   = " << c.meanContactNumber << "  (non-rattlers)\n"
         << "  rattler fraction phi_R = " << c.rattlerFraction << "  (fewer than "
         << c.parameters.rattlerThreshold << " contacts, removed iteratively)\n";
+    if (info.jam)
+        out << "  jam check            " << info.jam->verdict << '\n';
+    else
+        out << "  jam check            none: the file has no reduced pressure\n";
     if (c.overlappingPairs > 0)
         out << "  warning: " << c.overlappingPairs << " overlapping pair(s); worst is ("
             << c.worstPairA << ", " << c.worstPairB << ") with depth " << std::setprecision(4)

@@ -2,10 +2,12 @@
 // `sbanalyze info`: validation and a one-screen summary of a stored packing.
 
 #include "contacts/contact_network.hpp"
+#include "contacts/jam_check.hpp"
 #include "packing/packing.hpp"
 
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 
 namespace sbpack {
 
@@ -13,6 +15,9 @@ struct PackingInfo {
     Packing packing;
     double meanWidth;
     ContactResult contacts; ///< Z, phi_R and the worst overlap
+    /// sbgen's jam check at the file's reduced pressure (docs/design.md §3, "Jam check");
+    /// absent when the file has no reduced pressure.
+    std::optional<JamCheck> jam;
 };
 
 /// Reads and validates FILE (throws with its name on bad input), then analyses contacts.
