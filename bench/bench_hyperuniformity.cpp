@@ -89,10 +89,11 @@ int main(int argc, char** argv) {
     const ExactSpectralDensityResult exact = ExactSpectralDensity({}).compute(packing, quiet);
     std::printf("%s: N = %zu, p = %g, exact chi at %zu wave vectors (Q w <= 3) in %.3f s\n\n",
                 argv[1], packing.size(), packing.p, 2 * exact.modes.size(), exact.runtimeSeconds);
-    std::printf("| M | voxels + FFT s | chi error / peak, RMS | max | alpha, voxel | a0 / w^3, voxel "
-                "| H, voxel | alpha, exact+voxel | a0 / w^3, exact+voxel | H, exact+voxel | "
-                "spreadability + fits s | with the bootstrap (200) s |\n"
-                "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "| M | voxels + FFT s | chi error / peak, RMS | max | alpha, voxel | a0 / w^3, voxel "
+        "| H, voxel | alpha, exact+voxel | a0 / w^3, exact+voxel | H, exact+voxel | "
+        "spreadability + fits s | with the bootstrap (200) s |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const int m : grids) {
         const Stopwatch clock;
         const Voxelization voxels = Voxelizer({m}).compute(packing, quiet);

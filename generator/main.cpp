@@ -123,14 +123,14 @@ int generate(const sbpack::GeneratorOptions& o) {
 
 int main(int argc, char** argv) {
     if (argc == 1) {
-        std::cerr << sbpack::kGeneratorUsage;
+        std::cerr << sbpack::generatorUsage();
         return EXIT_FAILURE;
     }
     try {
         const sbpack::GeneratorOptions o =
             sbpack::parseGeneratorOptions(std::vector<std::string>(argv + 1, argv + argc));
         if (o.help) {
-            std::cout << sbpack::kGeneratorUsage;
+            std::cout << sbpack::generatorUsage();
             return EXIT_SUCCESS;
         }
         if (o.version) {

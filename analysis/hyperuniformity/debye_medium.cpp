@@ -40,10 +40,9 @@ double debyeSpectralDensity(double k, double phi, double a) {
 
 double debyeExcessSpreadability(double s, double phi) {
     if (!(s >= 0.0)) throw std::invalid_argument("Debye spreadability: time must be >= 0");
-    const double h = s < kAsymptoticFrom
-                         ? (0.5 + s) * std::exp(s) * std::erfc(std::sqrt(s)) -
-                               std::sqrt(s / std::numbers::pi)
-                         : asymptotic(s);
+    const double h = s < kAsymptoticFrom ? (0.5 + s) * std::exp(s) * std::erfc(std::sqrt(s)) -
+                                               std::sqrt(s / std::numbers::pi)
+                                         : asymptotic(s);
     return 2.0 * (1.0 - phi) * h;
 }
 

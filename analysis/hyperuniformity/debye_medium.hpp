@@ -5,7 +5,8 @@
 // pi instead of 8 pi, which would make E(0) = (1 - phi) / 8):
 //   chi_V(k) = 8 pi phi (1 - phi) a^3 / (1 + (k a)^2)^2,
 // and its excess spreadability (Eq. FT_spread) in closed form, with s = t D / a^2,
-//   E(s) = 2 (1 - phi) [(1/2 + s) e^s erfc(sqrt s) - sqrt(s / pi)]  ~ (1 - phi) / sqrt(pi) s^{-3/2}.
+//   E(s) = 2 (1 - phi) [(1/2 + s) e^s erfc(sqrt s) - sqrt(s / pi)]  ~ (1 - phi) / sqrt(pi)
+//   s^{-3/2}.
 
 namespace sbpack {
 

@@ -58,8 +58,8 @@ std::vector<double> gridSums(const VoxelFourierTransform& transform, const std::
                         for (int kz = 0; kz <= m / 2; ++kz) {
                             const std::int64_t n2 = nx * nx + ny * ny + std::int64_t{kz} * kz;
                             if (n2 == 0) continue;
-                            sum[n2] += transform.weight(kz) * transform.power(kx, ky, kz) * fxy *
-                                       f[kz];
+                            sum[n2] +=
+                                transform.weight(kz) * transform.power(kx, ky, kz) * fxy * f[kz];
                         }
                     }
                 }
@@ -97,8 +97,8 @@ DiscreteSpectrum voxelSpectrum(const VoxelFourierTransform& transform, const Vox
     // Individually: |n_i| < M/2, so that +-n both lie in the grid.
     const double reach = options.individualQw * boxLength / (2.0 * std::numbers::pi * meanWidth);
     const std::int64_t inside = (m + 1) / 2 - 1;
-    s.individualMaxN2 = std::min(static_cast<std::int64_t>(std::floor(reach * reach)),
-                                 inside * inside);
+    s.individualMaxN2 =
+        std::min(static_cast<std::int64_t>(std::floor(reach * reach)), inside * inside);
     s.modes = {boxLength, s.individualMaxN2, halfSpaceWaveVectors(s.individualMaxN2), {}};
     for (const auto& n : s.modes.n) {
         // F(-n) is the conjugate of F(n): read the stored one with k_z >= 0.
@@ -107,7 +107,7 @@ DiscreteSpectrum voxelSpectrum(const VoxelFourierTransform& transform, const Vox
         s.modes.chi.push_back(transform.power(kx, ky, kz) * f[kx] * f[ky] * f[kz] / volume);
     }
     if (options.cubeFormFactor) {
-        s.cutoffQ = 2.0 * std::numbers::pi * ((m + 1) / 2) / boxLength;
+        s.cutoffQ = 2.0 * std::numbers::pi * std::ceil(0.5 * m) / boxLength; // ceil(M/2)
         s.missingWeight = std::max(0.0, (1.0 - s.phi) - excessAtZero(s));
     } else {
         s.cutoffQ = std::numeric_limits<double>::infinity();
@@ -121,8 +121,8 @@ DiscreteSpectrum exactSpectrum(const ExactSpectralDensityResult& exact) {
     s.boxLength = exact.boxLength;
     s.meanWidth = exact.meanWidth;
     s.phi = exact.phi;
-    s.cutoffQ = 2.0 * std::numbers::pi * std::sqrt(static_cast<double>(exact.maxN2 + 1)) /
-                exact.boxLength;
+    s.cutoffQ =
+        2.0 * std::numbers::pi * std::sqrt(static_cast<double>(exact.maxN2 + 1)) / exact.boxLength;
     s.sumByN2.assign(static_cast<std::size_t>(exact.maxN2) + 1, 0.0);
     for (std::size_t i = 0; i < exact.modes.size(); ++i)
         s.sumByN2[exact.modes.n2(i)] += 2.0 * exact.modes.chi[i]; // +-n

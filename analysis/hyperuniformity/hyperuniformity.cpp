@@ -14,7 +14,8 @@ namespace sbpack {
 namespace {
 
 std::vector<double> logSpaced(double from, double to, int perDecade) {
-    const int intervals = std::max(1, static_cast<int>(std::ceil(perDecade * std::log10(to / from))));
+    const int intervals =
+        std::max(1, static_cast<int>(std::ceil(perDecade * std::log10(to / from))));
     std::vector<double> t(intervals + 1);
     for (int i = 0; i <= intervals; ++i)
         t[i] = from * std::pow(to / from, static_cast<double>(i) / intervals);
@@ -56,8 +57,7 @@ void fitSmallQ(HyperuniformityResult& r, std::span<const DiscreteSpectrum> membe
 
 } // namespace
 
-Hyperuniformity::Hyperuniformity(HyperuniformityParameters parameters)
-    : parameters_(std::move(parameters)) {
+Hyperuniformity::Hyperuniformity(HyperuniformityParameters parameters) : parameters_(parameters) {
     const HyperuniformityParameters& p = parameters_;
     if (!(p.tMin > 0.0 && p.tMax > p.tMin && std::isfinite(p.tMax)))
         throw std::invalid_argument("hyperuniformity: times must satisfy 0 < t_min < t_max");

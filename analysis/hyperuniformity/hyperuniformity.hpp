@@ -38,19 +38,19 @@ struct SpectralPeak {
 
 struct HyperuniformityResult {
     HyperuniformityParameters parameters;
-    std::vector<double> t;              ///< t D / w^2
-    std::vector<double> excess;         ///< E(t) = S(inf) - S(t)
-    std::vector<double> localExponent;  ///< nu = d ln E / d ln t
-    std::vector<double> localAlpha;     ///< -3 - 2 nu
-    std::vector<double> truncation;     ///< bound on what the omitted wave vectors add to E(t)
-    std::vector<double> debyeExcess;    ///< Debye medium of the same phi at t D / a^2 = t
-    double cutoffTime = 0.0;            ///< t_c D / w^2
+    std::vector<double> t;             ///< t D / w^2
+    std::vector<double> excess;        ///< E(t) = S(inf) - S(t)
+    std::vector<double> localExponent; ///< nu = d ln E / d ln t
+    std::vector<double> localAlpha;    ///< -3 - 2 nu
+    std::vector<double> truncation;    ///< bound on what the omitted wave vectors add to E(t)
+    std::vector<double> debyeExcess;   ///< Debye medium of the same phi at t D / a^2 = t
+    double cutoffTime = 0.0;           ///< t_c D / w^2
     ExponentWindow window;
     ExponentEstimate alpha;
-    PowerLawFit fit;                    ///< at alpha.alpha
+    PowerLawFit fit; ///< at alpha.alpha
     FreeFit freeFit;
     SpectralPeak peak;
-    double h = 0.0;                     ///< a0 / chi_peak
+    double h = 0.0; ///< a0 / chi_peak
     IndexSpread hSpread;
     double runtimeSeconds = 0.0;
 };

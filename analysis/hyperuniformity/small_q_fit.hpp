@@ -25,9 +25,9 @@ SmallQPoints smallQPoints(const DiscreteSpectrum& spectrum, double qMaxW);
 
 struct PowerLawFit {
     double alpha = 0.0;
-    double a0 = 0.0, a1 = 0.0;                   ///< w^3 and w^{3 + alpha}
-    double a0Error = 0.0, a1Error = 0.0;         ///< standard errors of least squares
-    double residual = 0.0;                       ///< sum of squared residuals
+    double a0 = 0.0, a1 = 0.0;           ///< w^3 and w^{3 + alpha}
+    double a0Error = 0.0, a1Error = 0.0; ///< standard errors of least squares
+    double residual = 0.0;               ///< sum of squared residuals
     int points = 0;
 };
 

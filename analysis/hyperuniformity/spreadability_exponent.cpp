@@ -109,15 +109,14 @@ double sampledExponent(const std::vector<double>& t, const std::vector<double>& 
 }
 
 ExponentEstimate estimateExponent(std::span<const DiscreteSpectrum> members,
-                                  const ExponentWindow& window, int replicas,
-                                  std::uint64_t seed) {
+                                  const ExponentWindow& window, int replicas, std::uint64_t seed) {
     ExponentEstimate e;
     const SpreadabilityCurve curve(members);
     e.alpha = windowExponent(curve, window);
     e.windowLow = e.windowHigh = e.alpha;
     for (const double f : {0.5, 2.0}) {
-        const double alpha = windowExponent(curve, {window.tMin, std::max(f * window.tMax,
-                                                                         1.5 * window.tMin)});
+        const double alpha =
+            windowExponent(curve, {window.tMin, std::max(f * window.tMax, 1.5 * window.tMin)});
         e.windowLow = std::min(e.windowLow, alpha);
         e.windowHigh = std::max(e.windowHigh, alpha);
     }

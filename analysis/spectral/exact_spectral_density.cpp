@@ -78,8 +78,8 @@ void tileSums(const SuperballFormFactor& form, const ParticleTables& t,
         const std::size_t row = j * t.stride;
         for (int lane = 0; lane < T && first + lane < modes.size(); ++lane) {
             const auto& m = modes[first + lane];
-            acc[lane] += value[lane] * (phase(t.x, row, m[0]) * phase(t.y, row, m[1]) *
-                                        phase(t.z, row, m[2]));
+            acc[lane] += value[lane] *
+                         (phase(t.x, row, m[0]) * phase(t.y, row, m[1]) * phase(t.z, row, m[2]));
         }
     }
     for (int lane = 0; lane < T && first + lane < modes.size(); ++lane)
@@ -130,8 +130,8 @@ WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
     out.n.reserve(order.size());
     out.chi.reserve(order.size());
     for (const std::size_t i : order) {
-        const double q = 2.0 * std::numbers::pi * std::sqrt(static_cast<double>(squaredNorm(
-                                                      modes.n[i]))) /
+        const double q = 2.0 * std::numbers::pi *
+                         std::sqrt(static_cast<double>(squaredNorm(modes.n[i]))) /
                          packing.boxLength;
         const double m = sphereFormFactor(q, packing.semiAxis);
         out.n.push_back(modes.n[i]);

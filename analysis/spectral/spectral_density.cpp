@@ -63,51 +63,26 @@ SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Vox
     return compute(packing, voxels, transform, progress);
 }
 
-SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Voxelization& voxels,
-                                               const VoxelFourierTransform& transform,
-                                               const Progress& progress) const {
-    const Stopwatch clock;
-    if (transform.voxels() != voxels.voxels())
-        throw std::invalid_argument("spectral density: the transform is of a different grid");
-    if (voxels.boxLength() != packing.boxLength)
-        throw std::invalid_argument("spectral density: the voxelization is of a box of edge " +
-                                    std::to_string(voxels.boxLength()) + ", the packing's is " +
-                                    std::to_string(packing.boxLength));
-    SpectralDensityResult result;
-    result.parameters = parameters_;
-    result.voxels = voxels.voxels();
-    result.voxelSize = voxels.voxelSize();
-    result.phiVoxel = voxels.phiVoxel();
-    result.boxLength = packing.boxLength;
-    result.meanWidth = packing.shape().meanWidth();
-    result.maxShell =
-        maxShellFor(parameters_.maxQw, packing.boxLength, result.meanWidth, voxels.voxels());
-    if (result.maxShell < 1)
-        throw std::invalid_argument(
-            "spectral density: no shell with Q w <= " + std::to_string(parameters_.maxQw) +
-            " on a " + std::to_string(voxels.voxels()) + "^3 grid of this box");
+namespace {
 
-    result.planSeconds = transform.planSeconds();
-    result.fillSeconds = transform.fillSeconds();
-    result.transformSeconds = transform.transformSeconds();
-    const Stopwatch shellClock;
-
-    const int m = voxels.voxels();
-    const int s = result.maxShell;
-    const double a = voxels.voxelSize();
-    const double volume = std::pow(packing.boxLength, 3);
+/// Eq. 12 on the voxels: shells 1..s of |F|^2 [prod_i a sinc(Q_i a / 2)]^2 / V over the half
+/// space kept by the real-to-complex transform, with its weights. Each plane k_x with |n_x| <= s is
+/// summed into its own accumulator and merged in order (the result does not depend on threads).
+ShellAverage voxelShells(const VoxelFourierTransform& transform, double voxelSize, double boxLength,
+                         int s, const Progress& progress, bool serial) {
+    const int m = transform.voxels();
+    const double volume = std::pow(boxLength, 3);
     const std::int64_t maxN2 = maxSquaredIndex(s);
     // [a sinc(Q_i a / 2)]^2 per axis, Q_i a / 2 = pi n_i / M, for n_i in [-s, s].
     std::vector<double> formFactor2(2 * s + 1);
     for (int n = -s; n <= s; ++n) {
-        const double f = a * sinc(std::numbers::pi * n / m);
+        const double f = voxelSize * sinc(std::numbers::pi * n / m);
         formFactor2[n + s] = f * f;
     }
-    // The planes kx with |n_x| <= s, each summed into its own accumulator, merged in order.
     std::vector<int> planes;
     for (int kx = 0; kx < m; ++kx)
         if (std::abs(signedIndex(kx, m)) <= s) planes.push_back(kx);
-    std::vector<ShellAccumulator> partial(planes.size(), ShellAccumulator(packing.boxLength, s));
+    std::vector<ShellAccumulator> partial(planes.size(), ShellAccumulator(boxLength, s));
     parallelFor(
         0, static_cast<std::int64_t>(planes.size()), 1,
         [&](std::int64_t begin, std::int64_t end) {
@@ -131,24 +106,63 @@ SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Vox
                 }
             }
         },
-        parameters_.serial);
-    ShellAccumulator shells(packing.boxLength, s);
+        serial);
+    ShellAccumulator shells(boxLength, s);
     for (const ShellAccumulator& p : partial)
         shells.merge(p);
-    result.shells = shells.average();
-    result.shellSeconds = shellClock.seconds();
+    return shells.average();
+}
 
+/// Spheres: the exact shells and the voxel path's largest error against them over their peak.
+SphereComparison compareWithSpheres(const Packing& packing, const ShellAverage& voxel, int maxShell,
+                                    const Progress& progress, bool serial) {
+    SphereComparison comparison;
+    comparison.exact = sphereSpectralDensity(packing, maxShell, progress, serial);
+    double peak = 0.0, worst = 0.0;
+    for (std::size_t i = 0; i < comparison.exact.size(); ++i) {
+        peak = std::max(peak, comparison.exact.value[i]);
+        worst = std::max(worst, std::abs(voxel.value[i] - comparison.exact.value[i]));
+    }
+    comparison.maxErrorOverPeak = worst / peak;
+    return comparison;
+}
+
+} // namespace
+
+SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Voxelization& voxels,
+                                               const VoxelFourierTransform& transform,
+                                               const Progress& progress) const {
+    const Stopwatch clock;
+    if (transform.voxels() != voxels.voxels())
+        throw std::invalid_argument("spectral density: the transform is of a different grid");
+    if (voxels.boxLength() != packing.boxLength)
+        throw std::invalid_argument("spectral density: the voxelization is of a box of edge " +
+                                    std::to_string(voxels.boxLength()) + ", the packing's is " +
+                                    std::to_string(packing.boxLength));
+    SpectralDensityResult result;
+    result.parameters = parameters_;
+    result.voxels = voxels.voxels();
+    result.voxelSize = voxels.voxelSize();
+    result.phiVoxel = voxels.phiVoxel();
+    result.boxLength = packing.boxLength;
+    result.meanWidth = packing.shape().meanWidth();
+    result.maxShell =
+        maxShellFor(parameters_.maxQw, packing.boxLength, result.meanWidth, voxels.voxels());
+    if (result.maxShell < 1)
+        throw std::invalid_argument(
+            "spectral density: no shell with Q w <= " + std::to_string(parameters_.maxQw) +
+            " on a " + std::to_string(voxels.voxels()) + "^3 grid of this box");
+    result.planSeconds = transform.planSeconds();
+    result.fillSeconds = transform.fillSeconds();
+    result.transformSeconds = transform.transformSeconds();
+    const Stopwatch shellClock;
+    result.shells = voxelShells(transform, voxels.voxelSize(), packing.boxLength, result.maxShell,
+                                progress, parameters_.serial);
+    result.shellSeconds = shellClock.seconds();
     if (packing.shape().isSphere()) {
         const Stopwatch exactClock;
-        SphereComparison comparison;
-        comparison.exact = sphereSpectralDensity(packing, s, progress, parameters_.serial);
-        double peak = 0.0, worst = 0.0;
-        for (std::size_t i = 0; i < comparison.exact.size(); ++i) {
-            peak = std::max(peak, comparison.exact.value[i]);
-            worst = std::max(worst, std::abs(result.shells.value[i] - comparison.exact.value[i]));
-        }
-        comparison.maxErrorOverPeak = worst / peak;
-        result.exactSphere = std::move(comparison);
+        result.exactSphere = compareWithSpheres(packing, result.shells, result.maxShell, progress,
+                                                parameters_.serial);
         result.exactSeconds = exactClock.seconds();
     }
     result.runtimeSeconds =
@@ -159,8 +173,8 @@ SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Vox
 ShellAverage sphereSpectralDensity(const Packing& packing, int maxShell, const Progress& progress,
                                    bool serial) {
     if (maxShell < 1) throw std::invalid_argument("exact spectral density: no shell");
-    return shellAverage(
-        sphereWaveVectors(packing, maxSquaredIndex(maxShell), progress, serial), maxShell);
+    return shellAverage(sphereWaveVectors(packing, maxSquaredIndex(maxShell), progress, serial),
+                        maxShell);
 }
 
 } // namespace sbpack

@@ -1,6 +1,7 @@
 #include "spectral/superball_form_factor.hpp"
 
 #include "numerics/tanh_sinh.hpp"
+#include "parallel/vector_clones.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,13 +14,6 @@ namespace {
 
 /// Remainder bound of the series relative to v1 (docs/design.md §1 for the moments).
 constexpr double kSeriesTolerance = 1e-16;
-
-// The hot loop is compiled for AVX2 (x86-64-v3) and for any x86-64, picked at run time.
-#if defined(__GNUC__) && defined(__x86_64__)
-#define SBPACK_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define SBPACK_VECTOR_CLONES
-#endif
 
 /// Horner's scheme over u_x (outer), u_y, u_z (inner) of sum_{i+j+l <= N} c_ijl u_x^i u_y^j u_z^l,
 /// lane by lane over a tile (the lanes are independent: the compiler vectorises across them).
@@ -66,8 +60,7 @@ SuperballFormFactor::SuperballFormFactor(const Superball& shape)
             for (int l = 0; i + j + l <= kMaxOrder; ++l) {
                 const long double total = std::lgamma(1.0L + (2 * (i + j + l) + 3) * e);
                 coefficients_[(static_cast<std::size_t>(i) * kStride + j) * kStride + l] =
-                    static_cast<double>(
-                        std::exp(prefactor + axis[i] + axis[j] + axis[l] - total));
+                    static_cast<double>(std::exp(prefactor + axis[i] + axis[j] + axis[l] - total));
             }
 }
 
@@ -75,8 +68,7 @@ int SuperballFormFactor::order(double kNorm) const {
     const double s = kNorm * circumradius_;
     if (!(s <= kSeriesLimit))
         throw std::invalid_argument("superball form factor: |k| R_c = " + std::to_string(s) +
-                                    " is beyond the series' range " +
-                                    std::to_string(kSeriesLimit));
+                                    " is beyond the series' range " + std::to_string(kSeriesLimit));
     // term_n = s^{2n} / (2n)!; the remainder after N is at most term_{N+1} / (1 - r) with
     // r = s^2 / ((2N + 3)(2N + 4)) < 1, the ratio of the terms that follow.
     double term = 1.0;

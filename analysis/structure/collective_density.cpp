@@ -1,6 +1,7 @@
 #include "structure/collective_density.hpp"
 
 #include "parallel/parallel.hpp"
+#include "parallel/vector_clones.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -55,13 +56,6 @@ PhaseTable phaseTable(std::span<const Eigen::Vector3d> positions, int axis, doub
 }
 
 namespace {
-
-// The hot loop is compiled twice, for AVX2 (x86-64-v3) and for any x86-64, picked at run time.
-#if defined(__GNUC__) && defined(__x86_64__)
-#define SBPACK_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define SBPACK_VECTOR_CLONES
-#endif
 
 /// One row (n_x, n_y) of a plane over particles [begin, end): the sums over j of
 /// u_j cos(θz_j n_z), u_j sin(θz_j n_z), v_j cos, v_j sin for n_z < zl (real and imaginary

@@ -343,25 +343,20 @@ double Voxelizer::memoryEstimateBytes(const Packing& packing, int voxels) {
     return tree + candidates;
 }
 
-Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress) const {
-    const Stopwatch clock;
-    const int m = parameters_.voxels;
-    checkResolution(packing, m);
-    const Superball shape = packing.shape();
+namespace {
+
+/// The candidates of each block of kBlock^3 voxels: every periodic image of a particle whose
+/// circumscribed sphere (radius rc) reaches the block; block b's are
+/// candidates[start[b] .. start[b + 1]). Counting sort: O(N + blocks).
+struct BlockCandidates {
+    std::vector<std::int64_t> start;
+    std::vector<Candidate> candidates;
+};
+
+BlockCandidates blockCandidates(const Packing& packing, double rc, double a, int m, int blocks) {
     const double boxLength = packing.boxLength;
-    const double a = boxLength / m;
-    const double rc = shape.circumradius() * (1.0 + kSphereMargin);
-    const double ri = shape.inradius() * (1.0 - kSphereMargin);
-    const int blocks = (m + kBlock - 1) / kBlock;
     const std::int64_t blockCount = std::int64_t{blocks} * blocks * blocks;
-
-    // Lab-to-body rotations: x_body = R^T (x - r).
-    std::vector<Eigen::Matrix3d> toBody(packing.size());
-    for (std::size_t j = 0; j < packing.size(); ++j)
-        toBody[j] = packing.orientations[j].toRotationMatrix().transpose();
-
-    // Candidate lists per block, by counting sort: O(N + blocks).
-    std::vector<std::int64_t> start(blockCount + 1, 0);
+    BlockCandidates out{std::vector<std::int64_t>(blockCount + 1, 0), {}};
     auto forEachImageBlock = [&](auto&& visit) {
         for (std::size_t j = 0; j < packing.size(); ++j) {
             const Vector3d& r = packing.positions[j];
@@ -381,22 +376,30 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
                     }
         }
     };
-    forEachImageBlock([&](std::int64_t block, const Candidate&) { ++start[block + 1]; });
+    forEachImageBlock([&](std::int64_t block, const Candidate&) { ++out.start[block + 1]; });
     for (std::int64_t b = 0; b < blockCount; ++b)
-        start[b + 1] += start[b];
-    std::vector<Candidate> candidates(static_cast<std::size_t>(start.back()));
-    {
-        std::vector<std::int64_t> next(start.begin(), start.end() - 1);
-        forEachImageBlock(
-            [&](std::int64_t block, const Candidate& c) { candidates[next[block]++] = c; });
-    }
+        out.start[b + 1] += out.start[b];
+    out.candidates.resize(static_cast<std::size_t>(out.start.back()));
+    std::vector<std::int64_t> next(out.start.begin(), out.start.end() - 1);
+    forEachImageBlock(
+        [&](std::int64_t block, const Candidate& c) { out.candidates[next[block]++] = c; });
+    return out;
+}
 
-    // Each block: its 8 words, then a leaf (some solid), a tile (all solid) or nothing.
-    const ContainmentTest inside(shape);
-    const BlockGeometry geometry{m, a, rc, ri};
-    std::vector<std::unique_ptr<MaskLeaf>> leaves(blockCount);
-    std::vector<std::uint8_t> fullBlock(blockCount, 0);
-    std::vector<int> solidInBlock(blockCount, 0);
+/// Each block voxelised: a leaf (some solid), full (all solid) or nothing, and its solid count.
+struct BlockMasks {
+    std::vector<std::unique_ptr<MaskLeaf>> leaves;
+    std::vector<std::uint8_t> full;
+    std::vector<int> solid;
+};
+
+BlockMasks voxelizeBlocks(const BlockCandidates& in, const std::vector<Eigen::Matrix3d>& toBody,
+                          const ContainmentTest& inside, const BlockGeometry& geometry, int blocks,
+                          const Progress& progress, bool serial) {
+    const int m = geometry.m;
+    const std::int64_t blockCount = std::int64_t{blocks} * blocks * blocks;
+    BlockMasks out{std::vector<std::unique_ptr<MaskLeaf>>(blockCount),
+                   std::vector<std::uint8_t>(blockCount, 0), std::vector<int>(blockCount, 0)};
     parallelFor(
         0, blockCount, kBlocksPerTask,
         [&](std::int64_t begin, std::int64_t end) {
@@ -405,8 +408,8 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
                 const int ox = static_cast<int>(b / (std::int64_t{blocks} * blocks)) * kBlock;
                 const int oy = static_cast<int>((b / blocks) % blocks) * kBlock;
                 const int oz = static_cast<int>(b % blocks) * kBlock;
-                const std::span<const Candidate> mine(candidates.data() + start[b],
-                                                      candidates.data() + start[b + 1]);
+                const std::span<const Candidate> mine(in.candidates.data() + in.start[b],
+                                                      in.candidates.data() + in.start[b + 1]);
                 const auto words = voxelizeBlock(ox, oy, oz, mine, toBody, inside, geometry);
                 int count = 0;
                 bool full = ox + kBlock <= m && oy + kBlock <= m && oz + kBlock <= m;
@@ -414,18 +417,44 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
                     count += std::popcount(w);
                     full = full && w == ~std::uint64_t{0};
                 }
-                solidInBlock[b] = count;
+                out.solid[b] = count;
                 if (full) {
-                    fullBlock[b] = 1;
+                    out.full[b] = 1;
                 } else if (count > 0) {
                     auto leaf = std::make_unique<MaskLeaf>(openvdb::Coord(ox, oy, oz), false);
                     for (int x = 0; x < kBlock; ++x)
                         leaf->getValueMask().getWord<std::uint64_t>(x) = words[x];
-                    leaves[b] = std::move(leaf);
+                    out.leaves[b] = std::move(leaf);
                 }
             }
         },
-        parameters_.serial);
+        serial);
+    return out;
+}
+
+} // namespace
+
+Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress) const {
+    const Stopwatch clock;
+    const int m = parameters_.voxels;
+    checkResolution(packing, m);
+    const Superball shape = packing.shape();
+    const double boxLength = packing.boxLength;
+    const double a = boxLength / m;
+    const double rc = shape.circumradius() * (1.0 + kSphereMargin);
+    const double ri = shape.inradius() * (1.0 - kSphereMargin);
+    const int blocks = (m + kBlock - 1) / kBlock;
+    const std::int64_t blockCount = std::int64_t{blocks} * blocks * blocks;
+    // Lab-to-body rotations: x_body = R^T (x - r).
+    std::vector<Eigen::Matrix3d> toBody(packing.size());
+    for (std::size_t j = 0; j < packing.size(); ++j)
+        toBody[j] = packing.orientations[j].toRotationMatrix().transpose();
+    BlockMasks masks =
+        voxelizeBlocks(blockCandidates(packing, rc, a, m, blocks), toBody, ContainmentTest(shape),
+                       BlockGeometry{m, a, rc, ri}, blocks, progress, parameters_.serial);
+    auto& leaves = masks.leaves;
+    const auto& fullBlock = masks.full;
+    const auto& solidInBlock = masks.solid;
 
     // Assemble the tree (serial, O(blocks)): leaves and leaf-sized tiles of the level-1 nodes.
     auto grid = std::make_unique<Voxelization::Grid>();

@@ -1,7 +1,7 @@
 #pragma once
-// Voxelization of a packing (paper Sec. III B, docs/design.md §5): M^3 cubic voxels of edge a = L / M
-// tile the periodic box; voxel (i, j, k) has its centre at ((i + 1/2) a, (j + 1/2) a, (k + 1/2) a)
-// and is solid when that centre lies inside a particle or one of its periodic images
+// Voxelization of a packing (paper Sec. III B, docs/design.md §5): M^3 cubic voxels of edge a = L /
+// M tile the periodic box; voxel (i, j, k) has its centre at ((i + 1/2) a, (j + 1/2) a, (k + 1/2)
+// a) and is solid when that centre lies inside a particle or one of its periodic images
 // (Superball::contains on the body-frame vector; the paper's epsilon rescaling is not applied).
 // Stored sparsely as an OpenVDB mask grid; OpenVDB stays out of this header (pimpl).
 

@@ -3,104 +3,140 @@
 #include "cli/option_values.hpp"
 #include "io/atomic_file.hpp"
 
-#include <cmath>
+#include <CLI/CLI.hpp>
+
 #include <set>
 #include <stdexcept>
 
 namespace sbpack {
 
-const char* const kGeneratorUsage = R"(usage: sbgen --out FILE.h5 [options]
-       sbgen --resume CHECKPOINT.h5 --out FILE.h5 [--pressure-final P] [--checkpoint FILE.h5]
+namespace {
 
-Generates a maximally random jammed packing with the Donev-Torquato-Stillinger event-driven
+constexpr const char* kDescription =
+    R"(Generates a maximally random jammed packing with the Donev-Torquato-Stillinger event-driven
 molecular dynamics: N particles start at random (phi-init), fly, collide elastically and grow
 at rate gamma (dD/dt = gamma sqrt(kT/m)) until the reduced pressure P = PV/(NkT) diverges.
 
-  --p P                   superball exponent in [0.5, 1000] (default 1: spheres, exact fast
-                          path; otherwise rotating superballs)
-  --n N                   number of particles (default 1000)
-  --seed S                random seed (default 1); same seed and options: identical packing
-  --phi-init PHI          initial packing fraction in (0, 0.5) (default 0.2, as the paper)
-  --gamma-fast G          growth rate until --pressure-switch (default 0.01)
-  --gamma-slow G          growth rate from there to --pressure-final (default 1e-4)
-  --pressure-switch P     reduced pressure at which growth slows (default 1e6)
-  --pressure-final P      reduced pressure at which the packing is jammed (default 1e12)
-  --window W              collisions per particle between thermostat rescalings and
-                          pressure estimates (default 10)
-  --out FILE.h5           the packing (sbpack.packing format; see README), written atomically
-  --checkpoint FILE.h5    write a checkpoint there every --checkpoint-interval seconds
-  --checkpoint-interval S wall-clock seconds between checkpoints (default 600)
-  --resume FILE.h5        continue from a checkpoint (or a finished sbgen output, e.g. with a
-                          higher --pressure-final); the protocol options come from the file
-  --quiet                 no progress lines on stderr
-  --help, --version
+usage: sbgen --out FILE.h5 [options]
+       sbgen --resume CHECKPOINT.h5 --out FILE.h5 [--pressure-final P] [--checkpoint FILE.h5])";
 
-No jam is declared from the pressure alone: at --pressure-final the contact network must hold
+constexpr const char* kFooter =
+    R"(No jam is declared from the pressure alone: at --pressure-final the contact network must hold
 (at most 10 % rattlers at gaps below max(1e-10, 100 / P) D), and a pressure carried by a chain
 of particles that wraps around the periodic box (columns of near-cubes in small boxes) ends the
 run early. Such an output is still written, with provenance jammed = 0 and the reason.
 
 Exit status: 0 jammed; 1 bad input or error; 3 written but not jammed; 128 + signal when
-SIGINT or SIGTERM wrote a checkpoint (to --checkpoint, else OUT with .checkpoint.h5).
-)";
+SIGINT or SIGTERM wrote a checkpoint (to --checkpoint, else OUT with .checkpoint.h5).)";
 
-GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args) {
-    GeneratorOptions o;
-    std::set<std::string> protocolOptions;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a == "--help" || a == "-h") {
-            o.help = true;
-            continue;
-        }
-        if (a == "--version") {
-            o.version = true;
-            continue;
-        }
-        if (a == "--quiet") {
-            o.quiet = true;
-            continue;
-        }
-        if (a.rfind("--", 0) != 0) throw std::invalid_argument("unexpected argument '" + a + "'");
-        if (i + 1 == args.size()) throw std::invalid_argument("option " + a + " needs a value");
-        const std::string& v = args[++i];
-        ProtocolParameters& p = o.protocol;
-        if (a == "--out") {
-            o.out = v;
-        } else if (a == "--checkpoint") {
-            o.checkpoint = v;
-        } else if (a == "--checkpoint-interval") {
-            o.checkpointInterval = parseNumber(a, v);
-            if (!(o.checkpointInterval > 0.0))
-                throw std::invalid_argument("option " + a + ": must be positive");
-        } else if (a == "--resume") {
-            o.resume = v;
-        } else if (a == "--pressure-final") {
-            o.pressureFinal = p.pressureFinal = parseNumber(a, v);
-        } else {
-            protocolOptions.insert(a);
-            if (a == "--p") {
-                p.p = parseNumber(a, v);
-            } else if (a == "--n") {
-                p.particles = static_cast<int>(parseInteger(a, v, 2, 100000000));
-            } else if (a == "--seed") {
-                p.seed = static_cast<std::uint64_t>(parseInteger(a, v, 0, std::int64_t(1) << 53));
-            } else if (a == "--phi-init") {
-                p.phiInit = parseNumber(a, v);
-            } else if (a == "--gamma-fast") {
-                p.gammaFast = parseNumber(a, v);
-            } else if (a == "--gamma-slow") {
-                p.gammaSlow = parseNumber(a, v);
-            } else if (a == "--pressure-switch") {
-                p.pressureSwitch = parseNumber(a, v);
-            } else if (a == "--window") {
-                p.collisionsPerWindow = parseNumber(a, v);
-            } else {
-                throw std::invalid_argument("unknown option " + a + " (see sbgen --help)");
-            }
-        }
+/// sbgen's options, each defined once (CLI11); values are parsed by common/cli/option_values so
+/// every message names the option.
+class GeneratorCommandLine {
+  public:
+    GeneratorCommandLine() {
+        app_.footer(kFooter);
+        app_.get_formatter()->column_width(26);
+        app_.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+        app_.add_flag("--version", options_.version, "print the version and exit");
+        app_.add_flag("--quiet", options_.quiet, "no progress lines on stderr");
+        addProtocolOptions();
+        addFileOptions();
     }
-    if (o.help || o.version) return o;
+
+    CLI::App& app() { return app_; }
+    GeneratorOptions& options() { return options_; }
+    const std::set<std::string>& protocolOptions() const { return protocolOptions_; }
+
+  private:
+    /// A protocol option: `set` parses its value; noted, since --resume refuses them.
+    template <class Set> void protocol(const char* name, Set set, const char* help) {
+        app_.add_option_function<std::string>(
+                name,
+                [this, name, set](const std::string& v) {
+                    protocolOptions_.insert(name);
+                    set(name, v);
+                },
+                help)
+            ->type_name("X");
+    }
+    void addProtocolOptions();
+    void addFileOptions();
+
+    CLI::App app_{kDescription, "sbgen"};
+    GeneratorOptions options_;
+    std::set<std::string> protocolOptions_;
+};
+
+void GeneratorCommandLine::addProtocolOptions() {
+    ProtocolParameters& p = options_.protocol;
+    protocol(
+        "--p", [&p](auto n, auto v) { p.p = parseNumber(n, v); },
+        "superball exponent in [0.5, 1000] (default 1: spheres, exact fast path;\n"
+        "otherwise rotating superballs)");
+    protocol(
+        "--n",
+        [&p](auto n, auto v) { p.particles = static_cast<int>(parseInteger(n, v, 2, 100000000)); },
+        "number of particles (default 1000)");
+    protocol(
+        "--seed",
+        [&p](auto n, auto v) {
+            p.seed = static_cast<std::uint64_t>(parseInteger(n, v, 0, std::int64_t(1) << 53));
+        },
+        "random seed (default 1); same seed and options: identical packing");
+    protocol(
+        "--phi-init", [&p](auto n, auto v) { p.phiInit = parseNumber(n, v); },
+        "initial packing fraction in (0, 0.5) (default 0.2, as the paper)");
+    protocol(
+        "--gamma-fast", [&p](auto n, auto v) { p.gammaFast = parseNumber(n, v); },
+        "growth rate until --pressure-switch (default 0.01)");
+    protocol(
+        "--gamma-slow", [&p](auto n, auto v) { p.gammaSlow = parseNumber(n, v); },
+        "growth rate from there to --pressure-final (default 1e-4)");
+    protocol(
+        "--pressure-switch", [&p](auto n, auto v) { p.pressureSwitch = parseNumber(n, v); },
+        "reduced pressure at which growth slows (default 1e6)");
+    protocol(
+        "--window", [&p](auto n, auto v) { p.collisionsPerWindow = parseNumber(n, v); },
+        "collisions per particle between thermostat rescalings and pressure\n"
+        "estimates (default 10)");
+}
+
+void GeneratorCommandLine::addFileOptions() {
+    GeneratorOptions& o = options_;
+    app_.add_option_function<std::string>(
+            "--pressure-final",
+            [&o](const std::string& v) {
+                o.pressureFinal = o.protocol.pressureFinal = parseNumber("--pressure-final", v);
+            },
+            "reduced pressure at which the packing is jammed (default 1e12); the one\n"
+            "protocol option --resume accepts")
+        ->type_name("P");
+    app_.add_option_function<std::string>(
+            "--out", [&o](const std::string& v) { o.out = v; },
+            "the packing (sbpack.packing format; see README), written atomically")
+        ->type_name("FILE.h5");
+    app_.add_option_function<std::string>(
+            "--checkpoint", [&o](const std::string& v) { o.checkpoint = v; },
+            "write a checkpoint there every --checkpoint-interval seconds")
+        ->type_name("FILE.h5");
+    app_.add_option_function<std::string>(
+            "--checkpoint-interval",
+            [&o](const std::string& v) {
+                o.checkpointInterval = parseNumber("--checkpoint-interval", v);
+                if (!(o.checkpointInterval > 0.0))
+                    throw std::invalid_argument("option --checkpoint-interval: must be positive");
+            },
+            "wall-clock seconds between checkpoints (default 600)")
+        ->type_name("S");
+    app_.add_option_function<std::string>(
+            "--resume", [&o](const std::string& v) { o.resume = v; },
+            "continue from a checkpoint (or a finished sbgen output, e.g. with a higher\n"
+            "--pressure-final); the protocol options come from the file")
+        ->type_name("FILE.h5");
+}
+
+/// What the options imply together, checked once all are read.
+void finish(GeneratorOptions& o, const std::set<std::string>& protocolOptions) {
     if (o.out.empty()) throw std::invalid_argument("option --out: an output file is required");
     if (o.resume) {
         if (!protocolOptions.empty())
@@ -112,6 +148,36 @@ GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args) {
     }
     checkWritable(o.out);
     if (o.checkpoint) checkWritable(*o.checkpoint);
+}
+
+} // namespace
+
+std::string generatorUsage() {
+    GeneratorCommandLine commandLine;
+    return commandLine.app().help();
+}
+
+GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args) {
+    GeneratorCommandLine commandLine;
+    std::vector<const char*> argv{"sbgen"};
+    for (const std::string& a : args)
+        argv.push_back(a.c_str());
+    try {
+        commandLine.app().parse(static_cast<int>(argv.size()), argv.data());
+    } catch (const CLI::CallForHelp&) {
+        commandLine.options().help = true;
+        return commandLine.options();
+    } catch (const CLI::ExtrasError&) {
+        const std::vector<std::string> extras = commandLine.app().remaining();
+        for (const std::string& a : extras)
+            if (a.rfind("--", 0) == 0)
+                throw std::invalid_argument("unknown option " + a + " (see sbgen --help)");
+        throw std::invalid_argument("unexpected argument '" + extras.front() + "'");
+    } catch (const CLI::ParseError& e) {
+        throw std::invalid_argument(std::string(e.what()) + " (see sbgen --help)");
+    }
+    GeneratorOptions& o = commandLine.options();
+    if (!o.version) finish(o, commandLine.protocolOptions());
     return o;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// sbgen's command line: parsing and validation before any work starts.
+// sbgen's command line (CLI11): parsing and validation before any work starts.
 
 #include "protocol/jamming_protocol.hpp"
 
@@ -22,7 +22,8 @@ struct GeneratorOptions {
     bool version = false;
 };
 
-extern const char* const kGeneratorUsage;
+/// The --help text.
+std::string generatorUsage();
 
 /// Throws std::invalid_argument naming the option and the problem.
 GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args);

@@ -177,6 +177,32 @@ bool insideBoth(const SuperballPair& pair, const Vector3d& x) {
            pair.shape.gauge(pair.rotationB.transpose() * (x - pair.displacement)) < kInside;
 }
 
+/// Newton again from the face normal of either body with the largest plane gap (better than
+/// the unconverged `warm`'s); kept when it converges or ends higher.
+void restartFromFaces(const SuperballPair& pair, WarmNewton& warm,
+                      const SuperballPredictorLimits& limits, SuperballPredictorStats& stats,
+                      const PairRates* rates) {
+    Vector3d best = Vector3d::Zero();
+    double bestGap = warm.result.signedDistance;
+    for (const Matrix3d* rotation : {&pair.rotationA, &pair.rotationB})
+        for (int axis = 0; axis < 3; ++axis) {
+            const Vector3d face = rotation->col(axis);
+            const Vector3d n = face.dot(pair.displacement) >= 0.0 ? face : Vector3d(-face);
+            const double gap = n.dot(pair.displacement) -
+                               pair.shape.support(pair.rotationA.transpose() * n) -
+                               pair.shape.support(pair.rotationB.transpose() * n);
+            if (gap > bestGap) {
+                bestGap = gap;
+                best = n;
+            }
+        }
+    if (best.isZero(0.0)) return;
+    WarmNewton restart = newtonSignedDistance(pair, best, limits.newtonSteps, rates);
+    stats.newtonSteps += restart.result.iterations;
+    if (restart.converged || restart.result.signedDistance > warm.result.signedDistance)
+        warm = restart;
+}
+
 /// s of the pair from its cached normal (updated), or from the centre line when there is none
 /// (f has one maximum for s >= 0): Newton, else the robust solver. Where a lower bound on s will
 /// do, one above `boundSuffices` (unconverged Newton's last plane gap) is returned as it is.
@@ -190,28 +216,8 @@ WarmNewton exactSignedDistance(const SuperballPair& pair, Vector3d& normal, doub
     stats.newtonSteps += warm.result.iterations;
     // Unconverged below the bound (near-cubes, whose support functions are nearly piecewise
     // linear): Newton again from the best face normal of either body, where their contacts lie.
-    if (!warm.converged && warm.result.signedDistance <= boundSuffices && pair.shape.p() > 1.0) {
-        Vector3d best = Vector3d::Zero();
-        double bestGap = warm.result.signedDistance;
-        for (const Matrix3d* rotation : {&pair.rotationA, &pair.rotationB})
-            for (int axis = 0; axis < 3; ++axis) {
-                const Vector3d face = rotation->col(axis);
-                const Vector3d n = face.dot(pair.displacement) >= 0.0 ? face : Vector3d(-face);
-                const double gap = n.dot(pair.displacement) -
-                                   pair.shape.support(pair.rotationA.transpose() * n) -
-                                   pair.shape.support(pair.rotationB.transpose() * n);
-                if (gap > bestGap) {
-                    bestGap = gap;
-                    best = n;
-                }
-            }
-        if (!best.isZero(0.0)) {
-            WarmNewton restart = newtonSignedDistance(pair, best, limits.newtonSteps, rates);
-            stats.newtonSteps += restart.result.iterations;
-            if (restart.converged || restart.result.signedDistance > warm.result.signedDistance)
-                warm = restart;
-        }
-    }
+    if (!warm.converged && warm.result.signedDistance <= boundSuffices && pair.shape.p() > 1.0)
+        restartFromFaces(pair, warm, limits, stats, rates);
     std::optional<SignedDistanceResult> fast;
     if (warm.converged) fast = warm.result;
     if (!warm.converged && warm.result.signedDistance > boundSuffices) {
@@ -285,6 +291,286 @@ class PairTrajectory {
     Vector3d normalRate_ = Vector3d::Zero(); ///< of normal_ at lastTau_ (zero: unknown)
 };
 
+/// A bisection fallback of the refinement every this many steps when regula falsi stalls.
+constexpr int kBisectEvery = 4;
+/// A refinement step closer than this fraction of the bracket to its ends counts as stalled.
+constexpr double kStallFraction = 1e-3;
+/// The bracket is resolved when narrower than this many ulps (relative to 1 + tau).
+constexpr double kBracketWidth = 4e-16;
+/// The chord step tried first is at most this fraction of the chord's reach sqrt(8 g / M).
+constexpr double kChordReach = 0.9;
+/// Each further chord try is this fraction of the last.
+constexpr double kChordShrink = 0.125;
+
+/// The circumscribed spheres' window (tier 1 of the predictor): `enter`, when they first
+/// overlap (0 if now), and `end`, when they part for good (or the horizon); none if they do not
+/// meet before the horizon.
+struct SphereWindow {
+    double enter = 0.0;
+    double end = kNever;
+};
+std::optional<SphereWindow> circumscribedWindow(const PairMotion& m, double c, double horizon) {
+    const double D = m.diameter, gamma = m.growthRate;
+    const PairMotion spheres{m.displacement, m.relativeVelocity, {}, {}, {}, {}, c * D, c * gamma};
+    const double enter =
+        m.displacement.squaredNorm() <= c * c * D * D ? 0.0 : SphereShape{}.collisionTime(spheres);
+    if (enter >= horizon) return std::nullopt;
+    double end = horizon;
+    const double a = m.relativeVelocity.squaredNorm() - c * c * gamma * gamma;
+    if (a > 0.0) { // after the spheres part for good, nothing touches
+        const double b = m.displacement.dot(m.relativeVelocity) - c * c * D * gamma;
+        const double c0 = m.displacement.squaredNorm() - c * c * D * D;
+        end = std::min(end, (-b + std::sqrt(std::max(0.0, b * b - a * c0))) / a);
+    }
+    return SphereWindow{enter, end};
+}
+
+/// One prediction of a superball pair inside its circumscribed spheres' window (tiers 2 and 3,
+/// generator/shapes/superball_shape.hpp): the plane bounds of a normal (planeRate,
+/// planeCurvature, planeGap), conservative advancement along planes (alongPlane), Newton steps in
+/// time near contact (newtonInTime), the safeguarded refinement of a bracket (refine) and the
+/// certificate of a root (advance).
+class PairPrediction {
+  public:
+    PairPrediction(const PairMotion& m, double p, double c, double lever, SphereWindow window,
+                   Vector3d& normal, const SuperballPredictorLimits& limits,
+                   SuperballPredictorStats& stats)
+        : m_(m), p_(p), c_(c), growth_(std::max(m.growthRate, 0.0)), end_(window.end),
+          leverBound_(lever * 0.5 * (m.diameter + growth_ * window.end)),
+          radiusBound_(c * 0.5 * (m.diameter + growth_ * window.end)), limits_(limits),
+          stats_(stats), trajectory_(m, p, normal, limits, stats),
+          touching_(limits.contactGap * m.diameter), near_(limits.nearGap * m.diameter) {}
+
+    double end() const { return end_; }
+
+    // The plane bound's rate at unit normal n, valid up to `end` (R at its largest there):
+    // dh_k/dtau = (n x omega_k) . x_k with x_k the support point, and only its part normal to n
+    // counts, |x_perp|^2 = |x|^2 - h^2 <= (c^2 - c_in^2) R^2 (the lever; 0 for spheres).
+    double planeRate(const Vector3d& n) const {
+        return n.dot(m_.relativeVelocity) -
+               (n.cross(m_.angularVelocityI).norm() + n.cross(m_.angularVelocityJ).norm()) *
+                   leverBound_ -
+               c_ * growth_;
+    }
+
+    // Second-order bound of the same plane: along the rotation the body-frame direction of n
+    // runs on a circle, |u'| = |n x omega|, |u''| = |n x omega| |omega|, and a support function
+    // there has h'' = u'^T (d2h) u' + x . u'' >= -c R |n x omega| |omega| (h is convex); growth
+    // adds (R h_hat)'' = gamma h_hat' + R h_hat''. So g_n'' <= M_n = sum_k |n x omega_k|
+    // (c gamma + c R |omega_k|), g_n - M_n t^2 / 2 is concave, and on [t0, t1] g_n lies above its
+    // chord minus M_n (t - t0)(t1 - t) / 2 >= min(g0, g1) - M_n (t1 - t0)^2 / 8: one plane gap at
+    // t1 certifies the whole step, however fast the first-order bound says s could fall.
+    double planeCurvature(const Vector3d& n) const {
+        return n.cross(m_.angularVelocityI).norm() *
+                   (c_ * growth_ + radiusBound_ * m_.angularVelocityI.norm()) +
+               n.cross(m_.angularVelocityJ).norm() *
+                   (c_ * growth_ + radiusBound_ * m_.angularVelocityJ.norm());
+    }
+
+    // The plane gap g_n(tau) itself and its exact rate: two support points.
+    PlaneGap planeGap(const Vector3d& n, double tau) const {
+        const double diameter = m_.diameter + m_.growthRate * tau;
+        const Superball body(p_, 0.5 * diameter);
+        const Matrix3d qi =
+            advancedOrientation(m_.orientationI, m_.angularVelocityI, tau).toRotationMatrix();
+        const Matrix3d qj =
+            advancedOrientation(m_.orientationJ, m_.angularVelocityJ, tau).toRotationMatrix();
+        const Vector3d xI = qi * body.supportPoint(qi.transpose() * n);
+        const Vector3d xJ = qj * body.supportPoint(qj.transpose() * n);
+        return {n.dot(m_.displacement + m_.relativeVelocity * tau - xI - xJ),
+                planeGapRate(m_, diameter, n, xI, xJ)};
+    }
+
+    /// Tier 3 from `start` (the cached plane's gap `cached` at tau = 0 known): advancement along
+    /// the cached plane, then from exact samples along their planes, Newton steps in time near
+    /// contact, and the certificate of the root they reach.
+    Prediction advance(double start, const Vector3d& normal, PlaneGap cached, bool resolved,
+                       PairMemory& memory);
+
+  private:
+    Sample refine(Sample left, Sample right);
+    std::variant<double, Prediction> alongPlane(const Vector3d& n, double tau, PlaneGap g,
+                                                double reference);
+    std::optional<Sample> newtonInTime(const Sample& from);
+    /// Near contact and closing: Newton steps in time and the certificate of the root they
+    /// reach. The prediction when that decides it; else none, with `end` shortened to an
+    /// uncertified root.
+    std::optional<Prediction> rootNear(const Sample& now);
+    /// A chord step from (tau, g) along n that certifies, if any (chordStep false otherwise).
+    struct Chord {
+        bool step = false;
+        bool reachedEnd = false;
+        double tau = 0.0;
+        PlaneGap gap;
+    };
+    Chord chordStep(const Vector3d& n, double tau, const PlaneGap& g, double firstOrder,
+                    double curvature);
+
+    const PairMotion& m_;
+    double p_, c_, growth_;
+    double end_; ///< no contact is looked for beyond (shortened to an uncertified root)
+    double leverBound_, radiusBound_;
+    const SuperballPredictorLimits& limits_;
+    SuperballPredictorStats& stats_;
+    PairTrajectory trajectory_;
+    double touching_, near_;
+    int steps_ = 0;
+    Prediction atEnd_{kNever}; ///< what reaching `end` means: no contact, or a known one there
+};
+
+// Safeguarded Newton on s over a bracket gap(left) > 0 >= gap(right): the Newton step from
+// the end nearer to zero (s has an exact rate), regula falsi when it leaves the bracket and
+// bisection when that stalls. Returns the safe (left) end once it touches, so an overlap is
+// never accepted (or the right end at a rounding-level overlap). If it stalls (s jumps where
+// the pair solver's kinks make it inconsistent), the left end, not touching, becomes a safe
+// recheck time.
+Sample PairPrediction::refine(Sample left, Sample right) {
+    for (int k = 0; k < limits_.maxRefinementSteps; ++k) {
+        const double width = right.tau - left.tau;
+        if (left.gap <= touching_ || width <= kBracketWidth * (1.0 + right.tau)) return left;
+        if (right.gap >= -touching_) return right; // touching at rounding
+        const Sample& nearer = left.gap < -right.gap ? left : right;
+        double tau = nearer.rate < 0.0 ? nearer.tau - nearer.gap / nearer.rate : -1.0;
+        if (!(tau > left.tau && tau < right.tau))
+            tau = (left.tau * right.gap - right.tau * left.gap) / (right.gap - left.gap);
+        if (!(tau > left.tau + kStallFraction * width &&
+              tau < right.tau - kStallFraction * width) &&
+            k % kBisectEvery == kBisectEvery - 1)
+            tau = 0.5 * (left.tau + right.tau);
+        const Sample mid = trajectory_.at(tau);
+        ++stats_.refinementSteps;
+        (mid.gap > 0.0 ? left : right) = mid;
+    }
+    ++stats_.limitHits;
+    return left;
+}
+
+// The chord step where it certifies (up to `end`, or 0.9 of its reach sqrt(8 gap / M), then
+// eighths of that while longer than the first-order step). The first chord tried: where the
+// plane's tangent g + r t is still k = 32 times the chord's margin M t^2 / 8, the root of
+// (k M / 8) t^2 - r t - g (a guess from the exact rate, since g'' has no lower bound; only the
+// chord certifies). At p = 1.5 it halves the plane gaps per collision against trying 0.9 of the
+// chord's reach first.
+PairPrediction::Chord PairPrediction::chordStep(const Vector3d& n, double tau, const PlaneGap& g,
+                                                double firstOrder, double curvature) {
+    const double chord = curvature > 0.0 ? std::sqrt(8.0 * g.gap / curvature) : kNever;
+    const double margin = std::sqrt(g.rate * g.rate + 16.0 * curvature * g.gap);
+    const double likely =
+        g.rate > 0.0 ? (g.rate + margin) / (8.0 * curvature) : 2.0 * g.gap / (margin - g.rate);
+    for (double tryStep = std::min({end_ - tau, kChordReach * chord, likely});
+         g.gap > 0.0 && tryStep > firstOrder; tryStep *= kChordShrink) {
+        const PlaneGap far = planeGap(n, tau + tryStep);
+        ++stats_.planeSteps;
+        if (std::min(g.gap, far.gap) > 0.125 * curvature * tryStep * tryStep) {
+            ++stats_.chordSteps;
+            return {true, tau + tryStep >= end_, tau + tryStep, far};
+        }
+    }
+    return {};
+}
+
+// Advancement along the plane of unit n from (tau, gap), each step ending at a cheap plane
+// gap: a chord step where one certifies, else the first-order step gap / |plane rate|; until
+// the gap drops below half of `reference`. Returns the time reached, or the prediction when the
+// plane separates them up to `end` or the step limit is reached (a safe recheck time).
+std::variant<double, Prediction> PairPrediction::alongPlane(const Vector3d& n, double tau,
+                                                            PlaneGap g, double reference) {
+    const double rate = planeRate(n), curvature = planeCurvature(n);
+    do {
+        if (rate >= 0.0) return atEnd_; // this plane separates them up to `end`
+        if (++steps_ > limits_.maxAdvancementSteps) {
+            ++stats_.rechecks;
+            return Prediction{tau, false};
+        }
+        const double firstOrder = std::max(g.gap, touching_) / -rate;
+        const Chord chord = chordStep(n, tau, g, firstOrder, curvature);
+        if (chord.step) {
+            if (chord.reachedEnd) return atEnd_;
+            tau = chord.tau;
+            g = chord.gap;
+            continue;
+        }
+        tau += firstOrder;
+        if (tau >= end_) return atEnd_;
+        g = planeGap(n, tau);
+        ++stats_.planeSteps;
+    } while (g.gap > 0.5 * reference);
+    return tau;
+}
+
+// Newton steps in time from an exact sample, each iterate exact, until one touches (closing)
+// or brackets a root (then refined); none when an iterate turns away, would pass `end`, goes
+// beyond the reach where the root's certificate (M (t1 - t0)^2 / 2 < g(t0), in advance) keeps a
+// margin of four, M (t1 - t0)^2 / 2 <= g(t0) / 4 (the root normal's plane lies below s at
+// t0), or the limit is reached. Where s is convex in time the iterates approach the root from
+// outside, quadratically, and no step needs certifying on the way: the root found is
+// certified as the first one from the start.
+std::optional<Sample> PairPrediction::newtonInTime(const Sample& from) {
+    const double reach = from.tau + std::sqrt(0.5 * from.gap / planeCurvature(from.normal));
+    Sample last = from;
+    for (int k = 0; k < limits_.newtonStepsInTime; ++k) {
+        const double tau = last.tau - last.gap / last.rate;
+        if (!(tau > last.tau && tau <= std::min(end_, reach))) return std::nullopt;
+        const Sample trial = trajectory_.at(tau);
+        if (trial.gap <= 0.0) {
+            ++stats_.newtonBrackets;
+            return refine(last, trial);
+        }
+        if (trial.rate >= 0.0) return std::nullopt;
+        if (trial.gap <= touching_) return trial;
+        last = trial;
+    }
+    return std::nullopt;
+}
+
+// Near contact and closing, Newton steps in time; the root t1 they reach is the first one if
+// the root normal's plane certifies [t0, t1): with g'' <= M and g(t1) ~ 0,
+// g >= chord - M (t - t0)(t1 - t) / 2 > 0 there when g(t0) > M (t1 - t0)^2 / 2. Otherwise
+// (s dips below zero and back within the step: rare, spin-driven) advancement goes on
+// without Newton steps up to that root.
+std::optional<Prediction> PairPrediction::rootNear(const Sample& now) {
+    const double rate = planeRate(now.normal);
+    if (!(atEnd_.time == kNever && now.gap <= near_ && now.rate < 0.0 && rate < 0.0))
+        return std::nullopt;
+    const double tau = now.tau - now.gap / now.rate;
+    const std::optional<Sample> root =
+        tau > now.tau + now.gap / -rate ? newtonInTime(now) : std::nullopt;
+    if (!root) return std::nullopt;
+    if (root->gap > touching_) return Prediction{root->tau, false}; // refinement stalled
+    const double dt = root->tau - now.tau;
+    if (planeGap(root->normal, now.tau).gap > 0.5 * planeCurvature(root->normal) * dt * dt)
+        return Prediction{root->tau};
+    ++stats_.uncertifiedRoots;
+    end_ = root->tau;
+    atEnd_ = {root->tau};
+    return std::nullopt;
+}
+
+Prediction PairPrediction::advance(double start, const Vector3d& normal, PlaneGap cached,
+                                   bool resolved, PairMemory& memory) {
+    if (cached.gap > touching_) {
+        const auto reached = alongPlane(normal, 0.0, cached, cached.gap);
+        if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
+        start = std::max(start, std::get<double>(reached));
+    }
+    memory.gap = -kNever; // the exact evaluations move the normal on
+    Sample now = trajectory_.at(start);
+    if (start == 0.0 && now.gap < -touching_) ++stats_.startOverlaps;
+    for (;;) {
+        if (now.gap <= touching_ && now.rate < 0.0 && !(resolved && now.tau == 0.0))
+            return {now.tau};
+        if (const std::optional<Prediction> decided = rootNear(now)) return *decided;
+        const auto reached = alongPlane(now.normal, now.tau, {now.gap, now.planeRate}, now.gap);
+        if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
+        const Sample previous = now;
+        now = trajectory_.at(std::get<double>(reached));
+        if (now.gap <= 0.0 && previous.gap > touching_) {
+            const Sample root = refine(previous, now);
+            return {root.tau, root.gap <= touching_};
+        }
+    }
+}
+
 } // namespace
 
 SuperballShape::SuperballShape(double p)
@@ -296,6 +582,11 @@ double SuperballShape::inertiaPerMass(double diameter) const {
     return inertiaPerMassUnit_ * 0.25 * diameter * diameter;
 }
 
+// Tier 1: the circumscribed spheres meet before the horizon. Tier 2: the cached normal's
+// separating plane holds up to `end`, by the first-order bound from the remembered lower bound on
+// its gap (no support point) or from its exact gap, then by the chord to `end`; a pair without a
+// normal (after a rebuild) tries the centre line's. Either bound, with this motion's rate, is
+// left for the next prediction. Tier 3: conservative advancement on exact s (PairPrediction).
 Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, PairMemory& memory,
                                          bool resolved) const {
     ++stats.calls;
@@ -303,232 +594,31 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Pa
     const double remembered = memory.gap;
     memory.gap = -kNever; // unless a bound on this normal's gap now is known below
     const Prediction none{kNever};
-    const double D = m.diameter, gamma = m.growthRate, growth = std::max(gamma, 0.0);
     if (!(horizon > 0.0)) return none;
-
-    // Tier 1: the circumscribed spheres (diameter c D, growing at c gamma) meet before horizon.
-    const PairMotion spheres{m.displacement, m.relativeVelocity, {}, {}, {}, {},
-                             c_ * D,         c_ * gamma};
-    const double enter = m.displacement.squaredNorm() <= c_ * c_ * D * D
-                             ? 0.0
-                             : SphereShape{}.collisionTime(spheres);
-    if (enter >= horizon) {
+    const std::optional<SphereWindow> window = circumscribedWindow(m, c_, horizon);
+    if (!window) {
         ++stats.sphereRejections;
         return none;
     }
-    double end = horizon;
-    const double a = m.relativeVelocity.squaredNorm() - c_ * c_ * gamma * gamma;
-    if (a > 0.0) { // after the spheres part for good, nothing touches
-        const double b = m.displacement.dot(m.relativeVelocity) - c_ * c_ * D * gamma;
-        const double c0 = m.displacement.squaredNorm() - c_ * c_ * D * D;
-        end = std::min(end, (-b + std::sqrt(std::max(0.0, b * b - a * c0))) / a);
-    }
-
-    // The plane bound's rate at unit normal n, valid up to `end` (R at its largest there):
-    // dh_k/dtau = (n x omega_k) . x_k with x_k the support point, and only its part normal to n
-    // counts, |x_perp|^2 = |x|^2 - h^2 <= (c^2 - c_in^2) R^2 (the lever; 0 for spheres).
-    const double leverBound = lever_ * 0.5 * (D + growth * end);
-    auto planeRate = [&](const Vector3d& n) {
-        return n.dot(m.relativeVelocity) -
-               (n.cross(m.angularVelocityI).norm() + n.cross(m.angularVelocityJ).norm()) *
-                   leverBound -
-               c_ * growth;
-    };
-    // Second-order bound of the same plane: along the rotation the body-frame direction of n
-    // runs on a circle, |u'| = |n x omega|, |u''| = |n x omega| |omega|, and a support function
-    // there has h'' = u'^T (d2h) u' + x . u'' >= -c R |n x omega| |omega| (h is convex); growth
-    // adds (R h_hat)'' = gamma h_hat' + R h_hat''. So g_n'' <= M_n = sum_k |n x omega_k|
-    // (c gamma + c R |omega_k|), g_n - M_n t^2 / 2 is concave, and on [t0, t1] g_n lies above its
-    // chord minus M_n (t - t0)(t1 - t) / 2 >= min(g0, g1) - M_n (t1 - t0)^2 / 8: one plane gap at
-    // t1 certifies the whole step, however fast the first-order bound says s could fall.
-    const double radiusBound = c_ * 0.5 * (D + growth * end);
-    auto planeCurvature = [&](const Vector3d& n) {
-        return n.cross(m.angularVelocityI).norm() *
-                   (c_ * growth + radiusBound * m.angularVelocityI.norm()) +
-               n.cross(m.angularVelocityJ).norm() *
-                   (c_ * growth + radiusBound * m.angularVelocityJ.norm());
-    };
-    // The plane gap g_n(tau) itself and its exact rate: two support points.
-    auto planeGap = [&](const Vector3d& n, double tau) -> PlaneGap {
-        const double diameter = D + gamma * tau;
-        const Superball body(p_, 0.5 * diameter);
-        const Matrix3d qi =
-            advancedOrientation(m.orientationI, m.angularVelocityI, tau).toRotationMatrix();
-        const Matrix3d qj =
-            advancedOrientation(m.orientationJ, m.angularVelocityJ, tau).toRotationMatrix();
-        const Vector3d xI = qi * body.supportPoint(qi.transpose() * n);
-        const Vector3d xJ = qj * body.supportPoint(qj.transpose() * n);
-        return {n.dot(m.displacement + m.relativeVelocity * tau - xI - xJ),
-                planeGapRate(m, diameter, n, xI, xJ)};
-    };
-
-    // Tier 2: the cached normal's separating plane holds up to `end`, by the first-order bound
-    // from the remembered lower bound on its gap (no support point) or from its exact gap, then
-    // by the chord to `end`; a pair without a normal (after a rebuild) tries the centre line's.
-    // Either bound, with this motion's rate, is left for the next prediction.
+    PairPrediction prediction(m, p_, c_, lever_, *window, normal, limits, stats);
+    const double end = window->end;
     if (normal.isZero(0.0)) normal = m.displacement.normalized();
-    const double fall = std::min(0.0, planeRate(normal));
+    const double fall = std::min(0.0, prediction.planeRate(normal));
     auto separatedToEnd = [&](double gap) { return gap > 0.0 && gap + fall * end > 0.0; };
     if (separatedToEnd(remembered)) {
         ++stats.boundRejections;
         memory = {normal, remembered, fall, end};
         return none;
     }
-    const PlaneGap cached = planeGap(normal, 0.0);
-    const double cachedGap = cached.gap;
-    memory = {normal, cachedGap, fall, end};
-    if (separatedToEnd(cachedGap) || (cachedGap > 0.0 && end < kNever &&
-                                      std::min(cachedGap, planeGap(normal, end).gap) >
-                                          0.125 * planeCurvature(normal) * end * end)) {
+    const PlaneGap cached = prediction.planeGap(normal, 0.0);
+    memory = {normal, cached.gap, fall, end};
+    if (separatedToEnd(cached.gap) || (cached.gap > 0.0 && end < kNever &&
+                                       std::min(cached.gap, prediction.planeGap(normal, end).gap) >
+                                           0.125 * prediction.planeCurvature(normal) * end * end)) {
         ++stats.planeRejections;
         return none;
     }
-
-    // Tier 3: conservative advancement on exact s.
-    PairTrajectory trajectory(m, p_, normal, limits, stats);
-    const double touching = limits.contactGap * D, near = limits.nearGap * D;
-
-    // Safeguarded Newton on s over a bracket gap(left) > 0 >= gap(right): the Newton step from
-    // the end nearer to zero (s has an exact rate), regula falsi when it leaves the bracket and
-    // bisection when that stalls. Returns the safe (left) end once it touches, so an overlap is
-    // never accepted (or the right end at a rounding-level overlap). If it stalls (s jumps where
-    // the pair solver's kinks make it inconsistent), the left end, not touching, becomes a safe
-    // recheck time.
-    auto refine = [&](Sample left, Sample right) {
-        for (int k = 0; k < limits.maxRefinementSteps; ++k) {
-            const double width = right.tau - left.tau;
-            if (left.gap <= touching || width <= 4e-16 * (1.0 + right.tau)) return left;
-            if (right.gap >= -touching) return right; // touching at rounding
-            const Sample& nearer = left.gap < -right.gap ? left : right;
-            double tau = nearer.rate < 0.0 ? nearer.tau - nearer.gap / nearer.rate : -1.0;
-            if (!(tau > left.tau && tau < right.tau))
-                tau = (left.tau * right.gap - right.tau * left.gap) / (right.gap - left.gap);
-            if (!(tau > left.tau + 1e-3 * width && tau < right.tau - 1e-3 * width) && k % 4 == 3)
-                tau = 0.5 * (left.tau + right.tau);
-            const Sample mid = trajectory.at(tau);
-            ++stats.refinementSteps;
-            (mid.gap > 0.0 ? left : right) = mid;
-        }
-        ++stats.limitHits;
-        return left;
-    };
-
-    // Advancement along the plane of unit n from (tau, gap), each step ending at a cheap plane
-    // gap: the chord step where it certifies (up to `end`, or 0.9 of its reach sqrt(8 gap / M),
-    // then eighths of that while longer than the first-order step), else the first-order step gap /
-    // |plane rate|; until the gap drops below half of `reference`. Returns the time reached, or the
-    // prediction when the plane separates them up to `end` or the step limit is reached (a safe
-    // recheck time).
-    int steps = 0;
-    Prediction atEnd = none; // what reaching `end` means: no contact, or a known one there
-    auto alongPlane = [&](const Vector3d& n, double tau, PlaneGap g,
-                          double reference) -> std::variant<double, Prediction> {
-        const double rate = planeRate(n), curvature = planeCurvature(n);
-        do {
-            if (rate >= 0.0) return atEnd; // this plane separates them up to `end`
-            if (++steps > limits.maxAdvancementSteps) {
-                ++stats.rechecks;
-                return Prediction{tau, false};
-            }
-            const double firstOrder = std::max(g.gap, touching) / -rate;
-            const double chord = curvature > 0.0 ? std::sqrt(8.0 * g.gap / curvature) : kNever;
-            // The first chord tried: where the plane's tangent g + r t is still k = 32 times the
-            // chord's margin M t^2 / 8, the root of (k M / 8) t^2 - r t - g (a guess from the
-            // exact rate, since g'' has no lower bound; only the chord certifies). At p = 1.5 it
-            // halves the plane gaps per collision against trying 0.9 of the chord's reach first.
-            const double margin = std::sqrt(g.rate * g.rate + 16.0 * curvature * g.gap);
-            const double likely = g.rate > 0.0 ? (g.rate + margin) / (8.0 * curvature)
-                                               : 2.0 * g.gap / (margin - g.rate);
-            bool chordStep = false;
-            for (double tryStep = std::min({end - tau, 0.9 * chord, likely});
-                 g.gap > 0.0 && tryStep > firstOrder && !chordStep; tryStep *= 0.125) {
-                const PlaneGap far = planeGap(n, tau + tryStep);
-                ++stats.planeSteps;
-                if (std::min(g.gap, far.gap) > 0.125 * curvature * tryStep * tryStep) {
-                    ++stats.chordSteps;
-                    if (tau + tryStep >= end) return atEnd;
-                    tau += tryStep;
-                    g = far;
-                    chordStep = true;
-                }
-            }
-            if (chordStep) continue;
-            tau += firstOrder;
-            if (tau >= end) return atEnd;
-            g = planeGap(n, tau);
-            ++stats.planeSteps;
-        } while (g.gap > 0.5 * reference);
-        return tau;
-    };
-
-    // Newton steps in time from an exact sample, each iterate exact, until one touches (closing)
-    // or brackets a root (then refined); none when an iterate turns away, would pass `end`, goes
-    // beyond the reach where the root's certificate (M (t1 - t0)^2 / 2 < g(t0), below) keeps a
-    // margin of four, M (t1 - t0)^2 / 2 <= g(t0) / 4 (the root normal's plane lies below s at
-    // t0), or the limit is reached. Where s is convex in time the iterates approach the root from
-    // outside, quadratically, and no step needs certifying on the way: the root found is
-    // certified as the first one from the start (below).
-    auto newtonInTime = [&](const Sample& from) -> std::optional<Sample> {
-        const double reach = from.tau + std::sqrt(0.5 * from.gap / planeCurvature(from.normal));
-        Sample last = from;
-        for (int k = 0; k < limits.newtonStepsInTime; ++k) {
-            const double tau = last.tau - last.gap / last.rate;
-            if (!(tau > last.tau && tau <= std::min(end, reach))) return std::nullopt;
-            const Sample trial = trajectory.at(tau);
-            if (trial.gap <= 0.0) {
-                ++stats.newtonBrackets;
-                return refine(last, trial);
-            }
-            if (trial.rate >= 0.0) return std::nullopt;
-            if (trial.gap <= touching) return trial;
-            last = trial;
-        }
-        return std::nullopt;
-    };
-
-    // Advancement: along the cached plane first, then from exact samples along their planes.
-    // Near contact and closing, Newton steps in time; the root t1 they reach is the first one if
-    // the root normal's plane certifies [t0, t1): with g'' <= M and g(t1) ~ 0,
-    // g >= chord - M (t - t0)(t1 - t) / 2 > 0 there when g(t0) > M (t1 - t0)^2 / 2. Otherwise
-    // (s dips below zero and back within the step: rare, spin-driven) advancement goes on
-    // without Newton steps up to that root.
-    double start = enter;
-    if (cachedGap > touching) {
-        const auto reached = alongPlane(normal, 0.0, cached, cachedGap);
-        if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
-        start = std::max(start, std::get<double>(reached));
-    }
-    memory.gap = -kNever; // the exact evaluations move the normal on
-    Sample now = trajectory.at(start);
-    if (start == 0.0 && now.gap < -touching) ++stats.startOverlaps;
-    for (;;) {
-        if (now.gap <= touching && now.rate < 0.0 && !(resolved && now.tau == 0.0))
-            return {now.tau};
-        const double rate = planeRate(now.normal);
-        if (atEnd.time == kNever && now.gap <= near && now.rate < 0.0 && rate < 0.0) {
-            const double tau = now.tau - now.gap / now.rate;
-            const std::optional<Sample> root =
-                tau > now.tau + now.gap / -rate ? newtonInTime(now) : std::nullopt;
-            if (root) {
-                if (root->gap > touching) return {root->tau, false}; // refinement stalled
-                const double dt = root->tau - now.tau;
-                if (planeGap(root->normal, now.tau).gap >
-                    0.5 * planeCurvature(root->normal) * dt * dt)
-                    return {root->tau};
-                ++stats.uncertifiedRoots;
-                end = root->tau;
-                atEnd = {root->tau};
-            }
-        }
-        const auto reached = alongPlane(now.normal, now.tau, {now.gap, now.planeRate}, now.gap);
-        if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
-        const Sample previous = now;
-        now = trajectory.at(std::get<double>(reached));
-        if (now.gap <= 0.0 && previous.gap > touching) {
-            const Sample root = refine(previous, now);
-            return {root.tau, root.gap <= touching};
-        }
-    }
+    return prediction.advance(window->enter, normal, cached, resolved, memory);
 }
 
 PairContact SuperballShape::contact(const PairMotion& m, Vector3d& normal) const {

@@ -82,8 +82,8 @@ TEST(Debye, ClosedFormMatchesQuadratureAndIsNormalised) {
     // The t^{-3/2} tail: alpha = 0 through the window exponent, once past the transient.
     const auto logE = [&](double s) { return std::log(debyeExcessSpreadability(s, phi)); };
     EXPECT_NEAR(windowExponent(logE, {1e2, 1e4}), 0.0, 0.02);
-    EXPECT_NEAR(debyeExcessSpreadability(1e6, phi) * std::pow(1e6, 1.5),
-                (1 - phi) / std::sqrt(kPi), 1e-5);
+    EXPECT_NEAR(debyeExcessSpreadability(1e6, phi) * std::pow(1e6, 1.5), (1 - phi) / std::sqrt(kPi),
+                1e-5);
 }
 
 TEST(Debye, NoAlphaWindowInABoxOfTwentyA) {
@@ -124,8 +124,8 @@ TEST(FormFactor, SphereClosedFormAndSeriesAgainstQuadrature) {
         const SuperballFormFactor m(Superball(p, 0.5));
         const double w = Superball(p, 0.5).meanWidth();
         for (int i = 0; i < 12; ++i) {
-            const Eigen::Vector3d dir = Eigen::Vector3d(normal(random), normal(random),
-                                                        normal(random)).normalized();
+            const Eigen::Vector3d dir =
+                Eigen::Vector3d(normal(random), normal(random), normal(random)).normalized();
             const double kw = 10.0 * (i + 0.5) / 12.0;
             const Eigen::Vector3d k = dir * kw / w;
             if (p == 1.0) {

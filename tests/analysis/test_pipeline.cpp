@@ -178,7 +178,8 @@ TEST(Pipeline, WritesTheResultsFileOfOneInput) {
     const Hdf5Handle chiData(H5Dopen2(chi.get(), "chi", H5P_DEFAULT), H5Dclose);
     EXPECT_EQ(readStringAttribute(chiData.get(), "units"), "length^3");
     const Hdf5Handle vox = openGroup(file.get(), "voxelization");
-    EXPECT_DOUBLE_EQ(readDoubleAttribute(vox.get(), "phi_exact"), results.files[0].root.number("phi"));
+    EXPECT_DOUBLE_EQ(readDoubleAttribute(vox.get(), "phi_exact"),
+                     results.files[0].root.number("phi"));
     const Hdf5Handle contacts = openGroup(file.get(), "contacts");
     EXPECT_TRUE(hasLink(contacts.get(), "counts"));
     EXPECT_DOUBLE_EQ(readDoubleAttribute(contacts.get(), "tolerance"), 1e-10);
@@ -204,7 +205,8 @@ TEST(Pipeline, SeveralInputsGetFilesAndAnEnsemble) {
     EXPECT_EQ(readStringAttribute(openGroup(files.get(), "1").get(), "input"),
               (dir / "b.h5").string());
     EXPECT_TRUE(hasLink(openGroup(files.get(), "0").get(), "structure_factor"));
-    EXPECT_FALSE(hasLink(openGroup(files.get(), "0").get(), "voxelization")); // sq voxelises nothing
+    EXPECT_FALSE(
+        hasLink(openGroup(files.get(), "0").get(), "voxelization")); // sq voxelises nothing
     // Identical inputs: the ensemble mean is each file's curve, the spread zero.
     ASSERT_EQ(results.ensembles.size(), 1u);
     const schema::Record& curve = *results.ensembles[0].group("structure_factor");

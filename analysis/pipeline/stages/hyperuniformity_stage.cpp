@@ -1,5 +1,6 @@
-// hyper: the excess spreadability, alpha, the small-Q fit and H of one file (docs/hyperuniformity.md),
-// from the voxel spectrum chi kept, with chi_V exact at Q w <= --chi-exact-qmax.
+// hyper: the excess spreadability, alpha, the small-Q fit and H of one file
+// (docs/hyperuniformity.md), from the voxel spectrum chi kept, with chi_V exact at Q w <=
+// --chi-exact-qmax.
 #include "hyperuniformity/debye_medium.hpp"
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"

@@ -1,7 +1,7 @@
 // chi: the spectral density chi_V(Q) of the kept spectral-grid voxelization.
+#include "hyperuniformity/discrete_spectrum.hpp"
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
-#include "hyperuniformity/discrete_spectrum.hpp"
 #include "spectral/spectral_density.hpp"
 #include "spectral/voxel_fourier_transform.hpp"
 #include "voxels/voxelization.hpp"
@@ -43,8 +43,8 @@ bool runSpectralDensity(FileContext& context, schema::Record& record) {
     const Voxelization& voxels = context.kept<Voxelization>(Analysis::Voxels);
     const VoxelFourierTransform transform(voxels, parameters.fft, context.progress());
     const SpectralDensityResult s =
-        SpectralDensity(parameters).compute(context.packing(), voxels, transform,
-                                            context.progress());
+        SpectralDensity(parameters)
+            .compute(context.packing(), voxels, transform, context.progress());
     report(context.progress(), s);
     if (context.settings().runs(Analysis::Hyperuniformity))
         context.keep(Analysis::SpectralDensity,

@@ -2,8 +2,8 @@
 // The stages of the registry's analyses (pipeline/analysis_registry.cpp): each runs its compute
 // object on one file, reports a progress line and fills its results group by the schema's names.
 
-#include "pipeline/analysis_registry.hpp"
 #include "hyperuniformity/hyperuniformity.hpp"
+#include "pipeline/analysis_registry.hpp"
 #include "shells/shell_average.hpp"
 
 #include <string>
