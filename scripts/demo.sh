@@ -4,7 +4,8 @@
 # seconds; sbanalyze validates the packing, reports phi, the mean width, contacts Z and
 # rattlers, computes S(Q), the voxels, chi(Q), the pore sizes F(delta) and the transport
 # estimates into an HDF5 results file (the voxels and pore sizes also as .vdb), and exports the
-# packing for OVITO.
+# packing for OVITO, then draws the figures (S(Q), chi(Q), F(delta) as PNG; the box of 250 is
+# too small for the spreadability's long-time window, which sbanalyze says in a warning).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
@@ -15,3 +16,4 @@ build/analysis/sbanalyze info build/demo/mrj-spheres-250.h5
 build/analysis/sbanalyze build/demo/mrj-spheres-250.h5 --voxels 100 --pore-voxels 200 --qmax 15 \
   --out build/demo/mrj-spheres-250-results.h5 --vdb build/demo --json -
 build/analysis/sbanalyze convert build/demo/mrj-spheres-250.h5 build/demo/mrj-spheres-250.xyz
+/usr/bin/python3 scripts/figures.py build/demo/mrj-spheres-250-results.h5 build/demo
