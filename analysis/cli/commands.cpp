@@ -1,6 +1,7 @@
 #include "cli/commands.hpp"
 
 #include "info/packing_info.hpp"
+#include "io/atomic_file.hpp"
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
 #include "pipeline/run.hpp"
@@ -52,6 +53,8 @@ int infoCommand(const std::vector<std::string>& files, const ContactParameters& 
 int convertCommand(const std::string& input, const std::string& output, std::ostream& err) {
     const Format in = formatOf(input), out = formatOf(output);
     if (in == Format::Xyz) throw std::invalid_argument("'" + input + "': XYZ is output only");
+    checkWritable(output);
+    checkNotInput(output, input, "convert");
     const Packing packing = in == Format::Hdf5 ? readPacking(input) : readTextPacking(input);
     if (out == Format::Hdf5) writePacking(packing, output);
     if (out == Format::Text) writeTextPacking(packing, output);

@@ -84,10 +84,12 @@ void checkOutputs(const RunSettings& settings) {
         if (i == 1 && target == fs::weakly_canonical(outputs[0]))
             throw std::invalid_argument("--out and --json name the same file " +
                                         quotedName(outputs[i]));
-        for (const fs::path& input : settings.inputs)
+        for (const fs::path& input : settings.inputs) {
             if (target == fs::weakly_canonical(input))
                 throw std::invalid_argument("output " + quotedName(outputs[i]) +
                                             " is also an input");
+            checkNotInput(outputs[i], input, "input");
+        }
     }
 }
 

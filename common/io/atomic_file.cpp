@@ -42,8 +42,21 @@ void checkWritable(const fs::path& file) {
     if (::access(dir.c_str(), W_OK | X_OK) != 0)
         throw OutputPathError("cannot write '" + file.string() + "': directory '" + dir.string() +
                               "' is not writable");
-    if (fs::is_directory(file, ec))
+    const fs::file_status status = fs::status(file, ec);
+    if (fs::is_directory(status))
         throw OutputPathError("cannot write '" + file.string() + "': it is a directory");
+    if (fs::exists(status) && !fs::is_regular_file(status))
+        throw OutputPathError("cannot write '" + file.string() +
+                              "': it is not a regular file (a device, FIFO or socket), which the "
+                              "write through a temporary and a rename would replace; name a "
+                              "regular file");
+}
+
+void checkNotInput(const fs::path& output, const fs::path& input, const std::string& what) {
+    std::error_code ec;
+    if (fs::equivalent(output, input, ec))
+        throw OutputPathError("'" + output.string() + "' is also the input (" + what +
+                              " '" + input.string() + "'): write the output elsewhere");
 }
 
 AtomicOutput::AtomicOutput(fs::path finalPath) : final_(std::move(finalPath)) {

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 
 namespace sbpack {
 
@@ -14,9 +15,15 @@ class OutputPathError : public std::runtime_error {
 };
 
 /// Throws OutputPathError unless `file` could be created or replaced: its directory exists and
-/// is writable, and `file` is not itself a directory. Lets a program reject a bad output path
-/// before any work starts.
+/// is writable, and `file` is not itself a directory or another non-regular file (a device or
+/// FIFO would be replaced by the rename). Lets a program reject a bad output path before any
+/// work starts.
 void checkWritable(const std::filesystem::path& file);
+
+/// Throws OutputPathError when `output` names the same file as `input` (by device and inode,
+/// so through links and other spellings too); `what` says which input, e.g. "--resume".
+void checkNotInput(const std::filesystem::path& output, const std::filesystem::path& input,
+                   const std::string& what);
 
 /// A temporary file `.NAME.tmp-<pid>` next to `NAME`; commit() renames it onto `NAME`
 /// atomically (same directory). Destroying an uncommitted AtomicOutput removes the temporary.

@@ -162,12 +162,21 @@ Packing readContents(hid_t root, const std::string& file) {
 
 } // namespace
 
-Packing readPacking(const fs::path& file) {
+void checkInputFile(const fs::path& file) {
     const std::string name = file.string();
     std::error_code ec;
-    if (!fs::exists(file, ec)) throw PackingFileError("'" + name + "': no such file");
-    if (fs::is_directory(file, ec))
+    const fs::file_status status = fs::status(file, ec);
+    if (!fs::exists(status)) throw PackingFileError("'" + name + "': no such file");
+    if (fs::is_directory(status))
         throw PackingFileError("'" + name + "': is a directory, not a packing file");
+    if (!fs::is_regular_file(status))
+        throw PackingFileError("'" + name + "': is not a regular file (a FIFO, device or socket); "
+                               "packings are read from regular files only");
+}
+
+Packing readPacking(const fs::path& file) {
+    const std::string name = file.string();
+    checkInputFile(file);
     if (!std::ifstream(file)) throw PackingFileError("'" + name + "': cannot open for reading");
     if (!isHdf5File(file))
         throw PackingFileError("'" + name + "': not an HDF5 file (no HDF5 signature)");

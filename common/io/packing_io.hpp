@@ -17,6 +17,10 @@ class PackingFileError : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+/// Throws PackingFileError unless `file` is an existing regular file (after symlinks): a
+/// directory, FIFO, device or socket is refused before it is opened, so that no reader blocks.
+void checkInputFile(const std::filesystem::path& file);
+
 inline constexpr const char* kPackingFormat = "sbpack.packing";
 inline constexpr std::int64_t kPackingFormatVersion = 1;
 

@@ -52,9 +52,9 @@ std::vector<std::string> splitWhitespace(const std::string& line) {
 /// Reads the text file line by line and names the file and line in every error.
 class LineReader {
   public:
-    explicit LineReader(const fs::path& file) : name_(file.string()), in_(file) {
-        std::error_code ec;
-        if (!fs::exists(file, ec)) throw PackingFileError("'" + name_ + "': no such file");
+    /// The file is checked (checkInputFile) before it is opened.
+    explicit LineReader(const fs::path& file)
+        : name_((checkInputFile(file), file.string())), in_(file) {
         if (!in_) throw PackingFileError("'" + name_ + "': cannot open for reading");
     }
 

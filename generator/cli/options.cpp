@@ -148,6 +148,10 @@ void finish(GeneratorOptions& o, const std::set<std::string>& protocolOptions) {
     }
     checkWritable(o.out);
     if (o.checkpoint) checkWritable(*o.checkpoint);
+    if (o.resume) {
+        checkNotInput(o.out, *o.resume, "--resume");
+        if (o.checkpoint) checkNotInput(*o.checkpoint, *o.resume, "--resume");
+    }
 }
 
 } // namespace
