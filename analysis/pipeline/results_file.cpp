@@ -72,9 +72,9 @@ schema::Record runRecord(const RunResults& results, const RunSettings& settings)
     return r;
 }
 
-void writeResultsFile(const std::filesystem::path& file, const RunResults& results,
-                      const RunSettings& settings) {
-    Hdf5Handle h5 = createFile(file);
+std::string resultsFileImage(const std::string& name, const RunResults& results,
+                             const RunSettings& settings) {
+    Hdf5Handle h5 = createFile(name);
     writeRecord(h5.get(), runRecord(results, settings));
     {
         const Hdf5Handle files = createGroup(h5.get(), "files");
@@ -85,7 +85,7 @@ void writeResultsFile(const std::filesystem::path& file, const RunResults& resul
             writeNumbered(ensembles.get(), k, results.ensembles[k].root,
                           results.ensembles[k].groups);
     }
-    h5.close();
+    return fileImage(h5, name);
 }
 
 } // namespace sbpack

@@ -22,10 +22,11 @@ struct RunResults {
 /// The run's own attributes (the root of the results file).
 schema::Record runRecord(const RunResults& results, const RunSettings& settings);
 
-/// Writes `results` to `file` (a fresh file; the caller makes it atomic): the run's attributes at
-/// the root, files/<i> and ensembles/<k> as in docs/results-schema.md, every dataset with its
-/// `units` attribute and every numeric attribute NAME with NAME_units. Throws Hdf5Error.
-void writeResultsFile(const std::filesystem::path& file, const RunResults& results,
-                      const RunSettings& settings);
+/// The bytes of the results file of `results` (built in memory; the caller writes them through
+/// AtomicOutput): the run's attributes at the root, files/<i> and ensembles/<k> as in
+/// docs/results-schema.md, every dataset with its `units` attribute and every numeric attribute
+/// NAME with NAME_units. `name` is for messages. Throws Hdf5Error.
+std::string resultsFileImage(const std::string& name, const RunResults& results,
+                             const RunSettings& settings);
 
 } // namespace sbpack

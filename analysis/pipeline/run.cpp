@@ -14,6 +14,7 @@
 #include <memory>
 #include <ostream>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 
 namespace sbpack {
@@ -130,7 +131,7 @@ std::vector<FileResults> analyzeAll(const RunSettings& settings,
         std::map<Analysis, VdbExport> targets;
         for (const auto& [analysis, file] : vdbFiles[i]) {
             exports.push_back(std::make_unique<AtomicOutput>(file));
-            targets[analysis] = VdbExport{exports.back()->temporaryPath(), file};
+            targets[analysis] = VdbExport{exports.back().get(), file};
         }
         files.push_back(analyzeFile(packings[i], settings.inputs[i], settings, progress, targets));
     }
@@ -161,10 +162,9 @@ std::unique_ptr<AtomicOutput> writeJson(const RunSettings& settings, const RunRe
     if (settings.json == "-") writeJsonSummary(out, results, settings);
     if (settings.json.empty() || settings.json == "-") return nullptr;
     auto file = std::make_unique<AtomicOutput>(settings.json);
-    std::ofstream json(file->temporaryPath());
+    std::ostringstream json;
     writeJsonSummary(json, results, settings);
-    json.close();
-    if (!json) throw OutputPathError("cannot write " + quotedName(settings.json));
+    file->write(json.str());
     return file;
 }
 
@@ -187,7 +187,7 @@ RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostr
     std::unique_ptr<AtomicOutput> resultsFile;
     if (!settings.output.empty()) {
         resultsFile = std::make_unique<AtomicOutput>(settings.output);
-        writeResultsFile(resultsFile->temporaryPath(), results, settings);
+        resultsFile->write(resultsFileImage(settings.output.string(), results, settings));
     }
     const std::unique_ptr<AtomicOutput> jsonFile = writeJson(settings, results, out);
     for (const auto& e : exports)

@@ -2,6 +2,7 @@
 // What a stage (one analysis of one file, pipeline/stages/) works with: the packing, the run's
 // settings, progress, where it exports, and the results of the stages it needs.
 
+#include "io/atomic_file.hpp"
 #include "packing/packing.hpp"
 #include "pipeline/analysis_registry.hpp"
 #include "pipeline/run_settings.hpp"
@@ -18,9 +19,10 @@
 
 namespace sbpack {
 
-/// Where a grid is exported: written to `temporary`, reported as `destination`.
+/// Where a grid is exported: written through `output` (committed with the results), reported
+/// as `destination`.
 struct VdbExport {
-    std::filesystem::path temporary;
+    AtomicOutput* output;
     std::filesystem::path destination;
 };
 

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <memory>
 #include <span>
+#include <string>
 
 namespace sbpack {
 
@@ -40,6 +41,8 @@ class PoreSizeMap {
     /// value the pore size in length units, index (i, j, k) centred at ((i, j, k) + 0.5) a, with
     /// metadata box_length, voxels and units. Atomic (AtomicOutput); throws OutputPathError.
     void writeVdb(const std::filesystem::path& file) const;
+    /// The bytes of that .vdb file.
+    std::string vdbImage() const;
 
   private:
     friend PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t>, int, double, bool);

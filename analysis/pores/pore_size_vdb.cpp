@@ -4,14 +4,22 @@
 #include "io/atomic_file.hpp"
 #include "parallel/parallel.hpp"
 
+#include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 
 #include <cmath>
+#include <sstream>
+#include <string>
 
 namespace sbpack {
 
 void PoreSizeMap::writeVdb(const std::filesystem::path& file) const {
     AtomicOutput output(file);
+    output.write(vdbImage());
+    output.commit();
+}
+
+std::string PoreSizeMap::vdbImage() const {
     openvdb::initialize();
     const int m = voxels_;
     const std::int64_t plane = static_cast<std::int64_t>(m) * m;
@@ -57,10 +65,9 @@ void PoreSizeMap::writeVdb(const std::filesystem::path& file) const {
     grid->insertMeta("units", openvdb::StringMetadata(
                                   "length units of the packing; value = distance from the void "
                                   "voxel centre to the nearest solid voxel centre (periodic)"));
-    openvdb::io::File vdb(output.temporaryPath().string());
-    vdb.write({grid});
-    vdb.close();
-    output.commit();
+    std::ostringstream bytes(std::ios::binary);
+    openvdb::io::Stream(bytes).write({grid});
+    return std::move(bytes).str();
 }
 
 } // namespace sbpack

@@ -61,8 +61,11 @@ void exportWisdom(const fs::path& file, const Progress& progress) {
         std::error_code ec;
         if (file.has_parent_path()) fs::create_directories(file.parent_path(), ec);
         AtomicOutput out(file);
-        if (fftw_export_wisdom_to_filename(out.temporaryPath().c_str()) == 0)
-            throw OutputPathError("FFTW could not write '" + out.temporaryPath().string() + "'");
+        char* wisdom = fftw_export_wisdom_to_string();
+        if (wisdom == nullptr) throw OutputPathError("FFTW could not export its wisdom");
+        const std::string text(wisdom);
+        fftw_free(wisdom);
+        out.write(text);
         out.commit();
     } catch (const std::exception& e) {
         progress.warn(std::string("cannot store FFTW wisdom: ") + e.what());

@@ -4,7 +4,7 @@
 #include "io/atomic_file.hpp"
 #include "parallel/parallel.hpp"
 
-#include <openvdb/io/File.h>
+#include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/ValueTransformer.h>
 
@@ -276,9 +276,14 @@ void Voxelization::copySolidIndicator(std::span<double> values, std::int64_t row
 }
 
 void Voxelization::writeVdb(const std::filesystem::path& file) const {
+    AtomicOutput out(file);
+    out.write(vdbImage());
+    out.commit();
+}
+
+std::string Voxelization::vdbImage() const {
     static std::once_flag initialized;
     std::call_once(initialized, [] { openvdb::initialize(); });
-    AtomicOutput out(file);
     openvdb::FloatGrid::Ptr density = openvdb::FloatGrid::create(0.0f);
     density->setName("density");
     density->setGridClass(openvdb::GRID_FOG_VOLUME);
@@ -291,14 +296,9 @@ void Voxelization::writeVdb(const std::filesystem::path& file) const {
     density->insertMeta("voxels", openvdb::Int64Metadata(voxels_));
     density->insertMeta("phi_voxel", openvdb::DoubleMetadata(phiVoxel()));
     density->insertMeta("phi_exact", openvdb::DoubleMetadata(phiExact_));
-    try {
-        openvdb::io::File vdb(out.temporaryPath().string());
-        vdb.write(openvdb::GridCPtrVec{density});
-        vdb.close();
-    } catch (const openvdb::Exception& e) {
-        throw OutputPathError("cannot write '" + file.string() + "': " + e.what());
-    }
-    out.commit();
+    std::ostringstream bytes(std::ios::binary);
+    openvdb::io::Stream(bytes).write(openvdb::GridCPtrVec{density});
+    return std::move(bytes).str();
 }
 
 Voxelizer::Voxelizer(VoxelizationParameters parameters) : parameters_(parameters) {

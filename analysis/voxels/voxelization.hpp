@@ -13,6 +13,7 @@
 #include <memory>
 #include <span>
 #include <stdexcept>
+#include <string>
 
 namespace sbpack {
 
@@ -62,6 +63,8 @@ class Voxelization {
     /// Houdini or ParaView: a float fog volume "density" (1 in the particles, 0 elsewhere) in
     /// the packing's length units, with metadata p, box_length, voxels, phi_voxel, phi_exact.
     void writeVdb(const std::filesystem::path& file) const;
+    /// The bytes of that .vdb file (writeVdb writes them through AtomicOutput).
+    std::string vdbImage() const;
 
   private:
     friend class Voxelizer;

@@ -1,6 +1,7 @@
 #include "io/atomic_file.hpp"
 
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <fcntl.h>
 #include <string>
@@ -55,16 +56,35 @@ void checkWritable(const fs::path& file) {
 void checkNotInput(const fs::path& output, const fs::path& input, const std::string& what) {
     std::error_code ec;
     if (fs::equivalent(output, input, ec))
-        throw OutputPathError("'" + output.string() + "' is also the input (" + what +
-                              " '" + input.string() + "'): write the output elsewhere");
+        throw OutputPathError("'" + output.string() + "' is also the input (" + what + " '" +
+                              input.string() + "'): write the output elsewhere");
 }
+
+namespace {
+
+/// Removes the temporaries `prefix<pid>` in `dir` whose process is gone (killed before it
+/// could remove them); those of live processes stay.
+void removeStaleTemporaries(const fs::path& dir, const std::string& prefix) {
+    std::error_code ec;
+    for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (name.rfind(prefix, 0) != 0) continue;
+        const std::string pid = name.substr(prefix.size());
+        if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+        if (::kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH)
+            fs::remove(entry.path(), ec);
+    }
+}
+
+} // namespace
 
 AtomicOutput::AtomicOutput(fs::path finalPath) : final_(std::move(finalPath)) {
     checkWritable(final_);
-    std::string name = "."; // appended piecewise: GCC 12 misreports "." + string (-Wrestrict)
-    name += final_.filename().string();
-    name += ".tmp-" + std::to_string(::getpid());
-    temporary_ = directoryOf(final_) / name;
+    std::string prefix = "."; // appended piecewise: GCC 12 misreports "." + string (-Wrestrict)
+    prefix += final_.filename().string();
+    prefix += ".tmp-";
+    removeStaleTemporaries(directoryOf(final_), prefix);
+    temporary_ = directoryOf(final_) / (prefix + std::to_string(::getpid()));
     std::error_code ec;
     fs::remove(temporary_, ec); // a stale temporary of an earlier process with our pid
 }
@@ -73,6 +93,25 @@ AtomicOutput::~AtomicOutput() {
     if (committed_) return;
     std::error_code ec;
     fs::remove(temporary_, ec);
+}
+
+void AtomicOutput::write(std::string_view bytes) {
+    const int fd = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    if (fd < 0)
+        throw OutputPathError("cannot write '" + final_.string() + "': " + std::strerror(errno));
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            const std::string reason = n < 0 ? std::strerror(errno) : "no progress";
+            ::close(fd);
+            throw OutputPathError("cannot write '" + final_.string() + "': " + reason);
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    if (::close(fd) != 0)
+        throw OutputPathError("cannot write '" + final_.string() + "': " + std::strerror(errno));
 }
 
 void AtomicOutput::commit() {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace sbpack {
 
@@ -26,7 +27,9 @@ void checkNotInput(const std::filesystem::path& output, const std::filesystem::p
                    const std::string& what);
 
 /// A temporary file `.NAME.tmp-<pid>` next to `NAME`; commit() renames it onto `NAME`
-/// atomically (same directory). Destroying an uncommitted AtomicOutput removes the temporary.
+/// atomically (same directory). Destroying an uncommitted AtomicOutput removes the temporary;
+/// the temporaries of `NAME` left by processes that are gone (kill -9) are removed when the
+/// next AtomicOutput of `NAME` is made.
 class AtomicOutput {
   public:
     /// Checks the destination with checkWritable().
@@ -36,8 +39,13 @@ class AtomicOutput {
     ~AtomicOutput();
 
     const std::filesystem::path& finalPath() const { return final_; }
-    /// Where the writer writes; it must close the file before commit().
+    /// Where a writer that opens the file itself writes; it must close it before commit().
     const std::filesystem::path& temporaryPath() const { return temporary_; }
+    /// Writes `bytes` as the whole temporary, every write and the close checked: a full disk
+    /// or an I/O error throws OutputPathError naming finalPath() and the system's reason
+    /// ("No space left on device"), and the earlier file at finalPath() stays as it was. Every
+    /// sbpack writer builds its file in memory and writes it through here.
+    void write(std::string_view bytes);
     /// Flushes the temporary to disk and renames it onto finalPath(); throws OutputPathError.
     void commit();
 

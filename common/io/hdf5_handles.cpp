@@ -151,13 +151,28 @@ bool isHdf5File(const fs::path& file) {
     return H5Fis_hdf5(file.c_str()) > 0;
 }
 
-Hdf5Handle createFile(const fs::path& file) {
+Hdf5Handle createFile(const std::string& name) {
     silenceHdf5ErrorPrinting();
     Hdf5Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
-    H5Pset_libver_bounds(access.get(), H5F_LIBVER_V18, H5F_LIBVER_V18);
-    const hid_t id = H5Fcreate(file.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get());
-    if (id < 0) throw Hdf5Error("'" + file.string() + "': cannot create (" + hdf5Reason() + ")");
+    // In memory, grown by 1 MiB. The earliest file format: the widest compatibility, and its
+    // superblock is complete in the image of an open file (the later formats' superblock carries a
+    // checksum and status flags that are finished only at the close).
+    H5Pset_fapl_core(access.get(), std::size_t{1} << 20, 0);
+    const hid_t id = H5Fcreate(name.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get());
+    if (id < 0) throw Hdf5Error("'" + name + "': cannot create (" + hdf5Reason() + ")");
     return Hdf5Handle(id, H5Fclose);
+}
+
+std::string fileImage(Hdf5Handle& file, const std::string& name) {
+    if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0)
+        throw Hdf5Error("'" + name + "': cannot flush (" + hdf5Reason() + ")");
+    const ssize_t size = H5Fget_file_image(file.get(), nullptr, 0);
+    if (size < 0) throw Hdf5Error("'" + name + "': no file image (" + hdf5Reason() + ")");
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    if (H5Fget_file_image(file.get(), bytes.data(), bytes.size()) != size)
+        throw Hdf5Error("'" + name + "': cannot copy the file image (" + hdf5Reason() + ")");
+    file.close();
+    return bytes;
 }
 
 Hdf5Handle openFileReadOnly(const fs::path& file) {

@@ -48,7 +48,13 @@ class Hdf5Handle {
 bool isHdf5File(const std::filesystem::path& file);
 /// Creates (truncating) a file in the HDF5 1.8 format, which h5py and every current reader open
 /// and which stores attributes larger than 64 KiB (long provenance logs).
-Hdf5Handle createFile(const std::filesystem::path& file);
+/// A new HDF5 file held in memory (the core driver, no backing store); `name` is for messages.
+/// fileImage() closes it and returns its bytes, which the caller writes (AtomicOutput::write):
+/// HDF5 itself never writes to disk, so a full disk is a checked write error, never a failure
+/// inside HDF5's close.
+Hdf5Handle createFile(const std::string& name);
+/// Flushes and closes an in-memory file from createFile() and returns its bytes.
+std::string fileImage(Hdf5Handle& file, const std::string& name);
 Hdf5Handle openFileReadOnly(const std::filesystem::path& file);
 
 Hdf5Handle createGroup(hid_t parent, const std::string& name);

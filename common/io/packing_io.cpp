@@ -79,8 +79,9 @@ std::map<std::string, ProvenanceValue> readProvenance(hid_t root, const std::str
     return provenance;
 }
 
-void writeContents(const Packing& packing, const fs::path& temporary) {
-    Hdf5Handle file = createFile(temporary);
+/// The packing file's bytes (built in memory; docs/design.md §4).
+std::string fileContents(const Packing& packing, const std::string& name) {
+    Hdf5Handle file = createFile(name);
     const hid_t root = file.get();
     writeStringAttribute(root, "format", kPackingFormat);
     writeInt64Attribute(root, "format_version", kPackingFormatVersion);
@@ -109,7 +110,7 @@ void writeContents(const Packing& packing, const fs::path& temporary) {
     if (!packing.angularVelocities.empty())
         writeMatrixDataset(root, "angular_velocities", flatten(packing.angularVelocities), 3);
     if (!packing.provenance.empty()) writeProvenance(root, packing.provenance);
-    file.close();
+    return fileImage(file, name);
 }
 
 Packing readContents(hid_t root, const std::string& file) {
@@ -170,7 +171,8 @@ void checkInputFile(const fs::path& file) {
     if (fs::is_directory(status))
         throw PackingFileError("'" + name + "': is a directory, not a packing file");
     if (!fs::is_regular_file(status))
-        throw PackingFileError("'" + name + "': is not a regular file (a FIFO, device or socket); "
+        throw PackingFileError("'" + name +
+                               "': is not a regular file (a FIFO, device or socket); "
                                "packings are read from regular files only");
 }
 
@@ -196,7 +198,7 @@ Packing readPacking(const fs::path& file) {
 void writePacking(const Packing& packing, const fs::path& file) {
     validatePacking(packing, file.string());
     AtomicOutput output(file);
-    writeContents(packing, output.temporaryPath());
+    output.write(fileContents(packing, file.string()));
     output.commit();
 }
 

@@ -27,17 +27,12 @@ std::string full(double x) {
         std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::general, 17).ptr);
 }
 
-/// Writes `body` through AtomicOutput; throws OutputPathError if the stream fails.
+/// Writes what `body` puts into a stream through AtomicOutput (checked writes).
 template <typename Body> void writeTextFile(const fs::path& file, Body body) {
     AtomicOutput output(file);
-    {
-        std::ofstream out(output.temporaryPath());
-        body(out);
-        out.close();
-        if (!out)
-            throw OutputPathError("cannot write '" + output.temporaryPath().string() + "' (for '" +
-                                  file.string() + "')");
-    }
+    std::ostringstream out;
+    body(out);
+    output.write(out.str());
     output.commit();
 }
 
@@ -98,7 +93,7 @@ class LineReader {
 
 void writeTextPacking(const Packing& packing, const fs::path& file) {
     validatePacking(packing, file.string());
-    writeTextFile(file, [&](std::ofstream& out) {
+    writeTextFile(file, [&](std::ostream& out) {
         out << kTextMagic << "\n# p " << full(packing.p) << "\n# semi_axis "
             << full(packing.semiAxis) << "\n# box_length " << full(packing.boxLength)
             << "\n# n_particles " << packing.size() << "\n# columns x y z qw qx qy qz\n";
@@ -177,7 +172,7 @@ void writeExtendedXyz(const Packing& packing, const fs::path& file) {
     // |x|^2p + |y|^2p + |z|^2p = R^2p is phi = theta = 1/p, a = b = c = R. OVITO's
     // "Orientation" is the quaternion (x, y, z, w) rotating the shape into the lab frame.
     const std::string roundness = full(1.0 / packing.p);
-    writeTextFile(file, [&](std::ofstream& out) {
+    writeTextFile(file, [&](std::ostream& out) {
         out << packing.size() << "\nLattice=\"" << length << " 0 0 0 " << length << " 0 0 0 "
             << length << "\" Origin=\"0 0 0\" pbc=\"T T T\" "
             << "Properties=species:S:1:pos:R:3:orientation:R:4:aspherical_shape:R:3:"

@@ -17,6 +17,8 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace sbpack {
@@ -488,6 +490,50 @@ TEST_F(AtomicOutputTest, LeavesNoTemporaryWhenCommitted) {
     std::string content;
     std::ifstream(file("result.txt")) >> content;
     EXPECT_EQ(content, "new");
+}
+
+TEST_F(AtomicOutputTest, RemovesTheStaleTemporariesOfDeadProcessesOnly) {
+    const pid_t child = ::fork(); // a process that is gone: its pid is free
+    if (child == 0) ::_exit(0);
+    ASSERT_GT(child, 0);
+    ASSERT_EQ(::waitpid(child, nullptr, 0), child);
+    const fs::path dead = file(".result.h5.tmp-" + std::to_string(child));
+    const fs::path live = file(".result.h5.tmp-" + std::to_string(::getppid()));
+    const fs::path other = file(".other.h5.tmp-" + std::to_string(child));
+    for (const fs::path& p : {dead, live, other})
+        std::ofstream(p) << "partial";
+    {
+        AtomicOutput output(file("result.h5"));
+        output.write("new");
+        output.commit();
+    }
+    EXPECT_FALSE(fs::exists(dead));
+    EXPECT_TRUE(fs::exists(live));  // its process may still be writing
+    EXPECT_TRUE(fs::exists(other)); // another output's
+}
+
+TEST_F(AtomicOutputTest, WriteReplacesTheTemporaryAndCommitsIt) {
+    std::ofstream(file("result.txt")) << "old";
+    AtomicOutput output(file("result.txt"));
+    output.write("longer content");
+    output.write("new");
+    output.commit();
+    std::string content;
+    std::ifstream(file("result.txt")) >> content;
+    EXPECT_EQ(content, "new");
+}
+
+TEST_F(AtomicOutputTest, RefusesSpecialFilesAndItsOwnInput) {
+    ASSERT_EQ(::mkfifo(file("pipe.h5").c_str(), 0600), 0);
+    expectError<OutputPathError>([&] { checkWritable(file("pipe.h5")); },
+                                 {"pipe.h5", "not a regular file"});
+    expectError<PackingFileError>([&] { readPacking(file("pipe.h5")); },
+                                  {"pipe.h5", "not a regular file"});
+    std::ofstream(file("in.h5")) << "x";
+    fs::create_hard_link(file("in.h5"), file("link.h5"));
+    expectError<OutputPathError>([&] { checkNotInput(file("link.h5"), file("in.h5"), "convert"); },
+                                 {"link.h5", "is also the input"});
+    EXPECT_NO_THROW(checkNotInput(file("new.h5"), file("in.h5"), "convert"));
 }
 
 TEST_F(AtomicOutputTest, CheckWritableRejectsMissingDirectoryAndDirectoryTarget) {

@@ -76,7 +76,7 @@ bool runPoreSizes(FileContext& context, schema::Record& record) {
                     pores.saturated ? " (saturated)" : " (NOT below w/2)"));
     if (const VdbExport* vdb = context.vdbExport(Analysis::PoreSizes)) {
         const Stopwatch clock;
-        map.writeVdb(vdb->temporary);
+        vdb->output->write(map.vdbImage());
         context.progress().stageDone("pore vdb export", clock.seconds(), vdb->destination.string());
     }
     setPoreSizes(record, pores);

@@ -33,7 +33,7 @@ bool runVoxels(FileContext& context, schema::Record& record) {
         .set("runtime_s", voxels.runtimeSeconds());
     if (const VdbExport* vdb = context.vdbExport(Analysis::Voxels)) {
         const Stopwatch clock;
-        voxels.writeVdb(vdb->temporary);
+        vdb->output->write(voxels.vdbImage());
         record.set("vdb_file", vdb->destination.string());
         context.progress().stageDone("vdb export", clock.seconds(), vdb->destination.string());
     }
