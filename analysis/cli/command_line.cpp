@@ -5,6 +5,7 @@
 #include "info/library_versions.hpp"
 #include "parallel/parallel.hpp"
 #include "version.hpp"
+#include "voxels/voxelization.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -140,9 +141,7 @@ void CommandLine::addGridOptions() {
     RunSettings& s = settings_;
     const auto grid = [](const char* option, int& m) {
         return [option, &m](const std::string& v) {
-            m = parseInt(option, v);
-            if (m < 1)
-                throw std::invalid_argument(fmt::format("option {}: M must be positive", option));
+            m = static_cast<int>(parseInteger(option, v, 1, Voxelizer::kMaxVoxels));
         };
     };
     app_.add_option_function<std::string>(

@@ -1,5 +1,9 @@
 #include "pipeline/file_analysis.hpp"
 
+#include "contacts/contact_network.hpp"
+
+#include <fmt/format.h>
+
 #include <algorithm>
 
 namespace sbpack {
@@ -17,6 +21,16 @@ schema::Record fileRecord(const Packing& packing, const std::filesystem::path& i
         .set("phi", packing.packingFraction())
         .set("mean_width", meanWidth);
     return r;
+}
+
+/// A packing with overlapping pairs is analysed as given, with a warning (count and worst).
+void warnAboutOverlaps(const Packing& packing, const Progress& progress) {
+    const ContactResult c = ContactNetwork({}).compute(packing);
+    if (c.overlappingPairs == 0) return;
+    progress.warn(fmt::format(
+        "{} overlapping pair(s), the worst ({}, {}) by {:.3g} D: not a packing "
+        "of hard particles; analysed as given",
+        c.overlappingPairs, c.worstPairA, c.worstPairB, -c.worstGap / (2.0 * packing.semiAxis)));
 }
 
 /// Whether a stage after position `done` of `order` needs `analysis`.
@@ -39,6 +53,7 @@ const schema::Record* FileResults::group(std::string_view name) const {
 FileResults analyzeFile(const Packing& packing, const std::filesystem::path& input,
                         const RunSettings& settings, const Progress& progress,
                         const std::map<Analysis, VdbExport>& exports) {
+    warnAboutOverlaps(packing, progress);
     FileContext context(packing, settings, progress, exports);
     FileResults results{input, fileRecord(packing, input, context.meanWidth()), {}};
     const std::vector<Analysis> order = runOrder(settings.analyses);

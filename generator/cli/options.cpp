@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -135,6 +136,26 @@ void GeneratorCommandLine::addFileOptions() {
         ->type_name("FILE.h5");
 }
 
+/// The protocol's validation, its parameters named by their options.
+void validateAsOptions(const ProtocolParameters& protocol) {
+    static const std::map<std::string, std::string> kOption = {
+        {"n_particles", "--n"},
+        {"p", "--p"},
+        {"phi_init", "--phi-init"},
+        {"gamma_fast", "--gamma-fast"},
+        {"gamma_slow", "--gamma-slow"},
+        {"pressure_switch", "--pressure-switch"},
+        {"pressure_final", "--pressure-final"},
+        {"collisions_per_window", "--window"}};
+    try {
+        protocol.validate();
+    } catch (const ProtocolParameterError& e) {
+        const auto it = kOption.find(e.parameter());
+        throw std::invalid_argument("option " + (it == kOption.end() ? e.parameter() : it->second) +
+                                    ": " + e.problem());
+    }
+}
+
 /// What the options imply together, checked once all are read.
 void finish(GeneratorOptions& o, const std::set<std::string>& protocolOptions) {
     if (o.out.empty()) throw std::invalid_argument("option --out: an output file is required");
@@ -144,7 +165,7 @@ void finish(GeneratorOptions& o, const std::set<std::string>& protocolOptions) {
                                         ": the protocol comes from the --resume file and cannot "
                                         "change (only --pressure-final can)");
     } else {
-        o.protocol.validate();
+        validateAsOptions(o.protocol);
     }
     checkWritable(o.out);
     if (o.checkpoint) checkWritable(*o.checkpoint);

@@ -1,5 +1,6 @@
 #include "protocol/jamming_protocol.hpp"
 
+#include "contacts/contact_network.hpp"
 #include "geometry/superball.hpp"
 #include "initial/random_start.hpp"
 #include "version.hpp"
@@ -15,8 +16,20 @@ namespace {
 
 constexpr const char* kStateFormat = "sbgen.state/1";
 
-void require(bool ok, const std::string& option, const std::string& problem) {
-    if (!ok) throw std::invalid_argument("option " + option + ": " + problem);
+void require(bool ok, const std::string& parameter, const std::string& problem) {
+    if (!ok) throw ProtocolParameterError(parameter, problem);
+}
+
+/// A run cannot go on from overlapping particles: the event-driven dynamics assumes none.
+void refuseOverlaps(const Packing& packing, const std::string& source) {
+    const ContactResult c = ContactNetwork({}).compute(packing);
+    if (c.overlappingPairs > 0)
+        throw std::invalid_argument("'" + source + "': " + std::to_string(c.overlappingPairs) +
+                                    " overlapping pair(s), the worst (" +
+                                    std::to_string(c.worstPairA) + ", " +
+                                    std::to_string(c.worstPairB) +
+                                    "): cannot resume from "
+                                    "overlapping particles");
 }
 
 bool positiveFinite(double x) {
@@ -72,17 +85,20 @@ std::uint64_t optionalCounter(const Packing& packing, const std::string& key,
 } // namespace
 
 void ProtocolParameters::validate() const {
-    require(particles >= 2, "--n", "need at least 2 particles");
-    require(std::isfinite(p) && p >= 0.5 && p <= 1e3, "--p", "must be in [0.5, 1000]");
-    require(std::isfinite(phiInit) && phiInit > 0.0 && phiInit < 0.5, "--phi-init",
+    require(particles >= 2, "n_particles", "need at least 2 particles");
+    require(std::isfinite(p) && p >= 0.5 && p <= 1e3, "p", "must be in [0.5, 1000]");
+    require(std::isfinite(phiInit) && phiInit > 0.0 && phiInit < 0.5, "phi_init",
             "must be in (0, 0.5)");
-    require(positiveFinite(gammaFast), "--gamma-fast", "must be positive and finite");
-    require(positiveFinite(gammaSlow), "--gamma-slow", "must be positive and finite");
-    require(positiveFinite(pressureSwitch), "--pressure-switch", "must be positive and finite");
-    require(positiveFinite(pressureFinal), "--pressure-final", "must be positive and finite");
-    require(pressureFinal > pressureSwitch, "--pressure-final",
-            "must be larger than --pressure-switch");
-    require(positiveFinite(collisionsPerWindow), "--window", "must be positive and finite");
+    require(positiveFinite(gammaFast), "gamma_fast", "must be positive and finite");
+    require(positiveFinite(gammaSlow), "gamma_slow", "must be positive and finite");
+    require(positiveFinite(pressureSwitch), "pressure_switch", "must be positive and finite");
+    require(positiveFinite(pressureFinal), "pressure_final", "must be positive and finite");
+    require(pressureFinal > pressureSwitch, "pressure_final",
+            "must be larger than the switch pressure");
+    // A window is ceil(W N) collisions, an integer: W N in [1, 2^53].
+    require(positiveFinite(collisionsPerWindow) && collisionsPerWindow * particles >= 1.0 &&
+                collisionsPerWindow <= 1e6,
+            "collisions_per_window", "must be in (0, 1e6] with at least one collision a window");
 }
 
 JammingProtocol::JammingProtocol(const ProtocolParameters& parameters)
@@ -107,7 +123,12 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
     parameters_.pressureSwitch = stateValue<double>(packing, "pressure_switch", source);
     parameters_.pressureFinal = stateValue<double>(packing, "pressure_final", source);
     parameters_.collisionsPerWindow = stateValue<double>(packing, "collisions_per_window", source);
-    parameters_.validate();
+    try {
+        parameters_.validate();
+    } catch (const ProtocolParameterError& e) {
+        throw std::invalid_argument("'" + source + "': checkpoint parameter " + e.what());
+    }
+    refuseOverlaps(packing, source);
     status_.phase = static_cast<Phase>(stateValue<std::int64_t>(packing, "state_phase", source));
     status_.reducedPressure = stateValue<double>(packing, "final_reduced_pressure", source);
     status_.collisions = counterValue(packing, "collisions", source);

@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <variant>
 
@@ -42,8 +43,23 @@ struct ProtocolParameters {
     /// The contact-network criterion of the jam, checked before a jam is declared.
     JamCheckParameters jamCheck{};
 
-    /// Throws std::invalid_argument naming the command-line option of the first bad value.
+    /// Throws ProtocolParameterError naming the first bad parameter (by its provenance name,
+    /// e.g. "phi_init"; the command line maps it to its option).
     void validate() const;
+};
+
+/// A protocol parameter out of its range.
+class ProtocolParameterError : public std::invalid_argument {
+  public:
+    ProtocolParameterError(std::string parameter, const std::string& problem)
+        : std::invalid_argument(parameter + ": " + problem), parameter_(std::move(parameter)),
+          problem_(problem) {}
+    /// The parameter's name in the provenance, e.g. "collisions_per_window".
+    const std::string& parameter() const { return parameter_; }
+    const std::string& problem() const { return problem_; }
+
+  private:
+    std::string parameter_, problem_;
 };
 
 enum class Phase { Fast, Slow, Done };

@@ -301,6 +301,19 @@ TEST(Pipeline, BadInputLeavesNoOutput) {
     EXPECT_TRUE(availableMemoryBytes().has_value());
 }
 
+TEST(Pipeline, OverlappingParticlesAreAnalysedWithAWarning) {
+    const TempDir dir("sbpack-test-pipeline-overlap");
+    Packing packing = testing::latticePacking(1.0, 3, 1.2, 0.0, 9);
+    packing.positions[1] = packing.positions[0] + Vector3d(0.25, 0.0, 0.0);
+    writePacking(packing, dir / "a.h5");
+    RunSettings s = settingsFor({dir / "a.h5"}, dir / "r.h5");
+    s.analyses = resolveAnalyses("sq");
+    std::ostringstream log, out;
+    runAnalyses(s, log, out);
+    EXPECT_NE(log.str().find("overlapping pair(s), the worst (0, 1) by 0.75 D"), std::string::npos)
+        << log.str();
+}
+
 TEST(Pipeline, InterruptStopsAStageAtItsNextChunk) {
     const Packing packing = testing::latticePacking(1.5, 3, 1.35, 0.03, 5);
     requestInterrupt();

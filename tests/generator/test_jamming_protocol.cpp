@@ -47,26 +47,28 @@ void expectIdentical(const Packing& a, const Packing& b) {
         }
 }
 
-TEST(JammingProtocol, RejectsBadParametersNamingTheOption) {
+TEST(JammingProtocol, RejectsBadParametersNamingTheParameter) {
     const auto expectBad = [](auto change, const char* option) {
         ProtocolParameters p;
         change(p);
         try {
             p.validate();
             ADD_FAILURE() << option << " accepted";
-        } catch (const std::invalid_argument& e) {
-            EXPECT_NE(std::string(e.what()).find(option), std::string::npos) << e.what();
+        } catch (const ProtocolParameterError& e) {
+            EXPECT_EQ(e.parameter(), option) << e.what();
         }
     };
-    expectBad([](auto& p) { p.particles = 1; }, "--n");
-    expectBad([](auto& p) { p.p = 0.49; }, "--p");
-    expectBad([](auto& p) { p.p = NAN; }, "--p");
-    expectBad([](auto& p) { p.phiInit = 0.5; }, "--phi-init");
-    expectBad([](auto& p) { p.phiInit = 0.0; }, "--phi-init");
-    expectBad([](auto& p) { p.gammaFast = -0.01; }, "--gamma-fast");
-    expectBad([](auto& p) { p.gammaSlow = NAN; }, "--gamma-slow");
-    expectBad([](auto& p) { p.pressureSwitch = INFINITY; }, "--pressure-switch");
-    expectBad([](auto& p) { p.pressureFinal = p.pressureSwitch; }, "--pressure-final");
+    expectBad([](auto& p) { p.particles = 1; }, "n_particles");
+    expectBad([](auto& p) { p.p = 0.49; }, "p");
+    expectBad([](auto& p) { p.p = NAN; }, "p");
+    expectBad([](auto& p) { p.phiInit = 0.5; }, "phi_init");
+    expectBad([](auto& p) { p.phiInit = 0.0; }, "phi_init");
+    expectBad([](auto& p) { p.gammaFast = -0.01; }, "gamma_fast");
+    expectBad([](auto& p) { p.gammaSlow = NAN; }, "gamma_slow");
+    expectBad([](auto& p) { p.pressureSwitch = INFINITY; }, "pressure_switch");
+    expectBad([](auto& p) { p.pressureFinal = p.pressureSwitch; }, "pressure_final");
+    expectBad([](auto& p) { p.collisionsPerWindow = 1e30; }, "collisions_per_window");
+    expectBad([](auto& p) { p.collisionsPerWindow = 1e-4; }, "collisions_per_window");
 }
 
 TEST(JammingProtocol, SameSeedGivesIdenticalPacking) {
@@ -122,6 +124,23 @@ TEST(JammingProtocol, AFinishedRunContinuesToAHigherFinalPressure) {
     ASSERT_TRUE(more.run(nullptr, [](const ProtocolStatus&) {}));
     EXPECT_GE(more.status().reducedPressure, 1e9);
     EXPECT_GT(more.status().collisions, run.status().collisions);
+}
+
+TEST(JammingProtocol, RefusesToResumeFromOverlappingParticles) {
+    JammingProtocol run(smallRun(3));
+    ASSERT_TRUE(run.run(nullptr, [](const ProtocolStatus&) {}));
+    Packing overlapping = run.checkpoint();
+    overlapping.positions[1] = overlapping.positions[0] + Vector3d(0.1, 0.0, 0.0);
+    try {
+        JammingProtocol resumed(overlapping, "tampered.h5");
+        ADD_FAILURE() << "resumed from overlapping particles";
+    } catch (const std::invalid_argument& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("tampered.h5': "), std::string::npos) << message;
+        EXPECT_NE(message.find("overlapping pair(s), the worst (0, 1): cannot resume"),
+                  std::string::npos)
+            << message;
+    }
 }
 
 TEST(JammingProtocol, APackingWithoutGeneratorStateIsNotACheckpoint) {
