@@ -41,6 +41,7 @@ def structure_factor(f, ax):
 
 def spectral_density(f, axes):
     main, small = axes
+    fitted = False
     for g in inputs_with(f, "spectral_density"):
         s, w = g["spectral_density"], g.attrs["mean_width"]
         qw, chi = s["Q_w"][:], s["chi"][:] / w**3
@@ -48,6 +49,7 @@ def spectral_density(f, axes):
         keep = qw <= 4.0
         small.loglog(qw[keep], chi[keep], "o", ms=3, color=line.get_color())
         if "hyperuniformity" in g:
+            fitted = True
             h = g["hyperuniformity"].attrs
             x = qw[qw <= 1.5 * h["q_fit_max_w"]]
             small.loglog(x, h["a0"] + h["a1"] * x ** h["alpha"], "-", color=line.get_color(),
@@ -57,7 +59,8 @@ def spectral_density(f, axes):
     main.set(xlabel=r"$Q\bar w$", ylabel=r"$\tilde\chi_V(Q)/\bar w^3$",
              title="Spectral density (voxels, shell averages)")
     small.set(xlabel=r"$Q\bar w$", ylabel=r"$\tilde\chi_V(Q)/\bar w^3$",
-              title=r"Small $Q$ and the fit ($Q\bar w \leq$ fit-qmax dotted)")
+              title=r"Small $Q$ and the fit ($Q\bar w \leq$ fit-qmax dotted)" if fitted
+              else r"Small $Q$ (no hyper results: no fit)")
 
 
 def spreadability(f, axes):
