@@ -1,7 +1,8 @@
 #pragma once
 // The one parallel-for of sbanalyze (docs/design.md §7): TBB over an index range, with a serial
 // switch so that every parallel result can be compared with a serial one. Thread count is set once
-// per run by ThreadBudget and honoured by TBB, FFTW and OpenMP alike (no oversubscription).
+// per run by ThreadBudget and honoured by TBB and by FFTW, whose threads are OpenMP's
+// (libfftw3_omp), alike (no oversubscription).
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
