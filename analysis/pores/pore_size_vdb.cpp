@@ -3,12 +3,11 @@
 
 #include "io/atomic_file.hpp"
 #include "parallel/parallel.hpp"
+#include "voxels/vdb_image.hpp"
 
-#include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 namespace sbpack {
@@ -60,14 +59,9 @@ std::string PoreSizeMap::vdbImage() const {
         openvdb::math::Transform::createLinearTransform(voxelSize_);
     transform->postTranslate(openvdb::Vec3d(0.5 * voxelSize_)); // index (i, j, k): voxel centre
     grid->setTransform(transform);
-    grid->insertMeta("box_length", openvdb::DoubleMetadata(boxLength()));
-    grid->insertMeta("voxels", openvdb::Int32Metadata(m));
-    grid->insertMeta("units", openvdb::StringMetadata(
-                                  "length units of the packing; value = distance from the void "
-                                  "voxel centre to the nearest solid voxel centre (periodic)"));
-    std::ostringstream bytes(std::ios::binary);
-    openvdb::io::Stream(bytes).write({grid});
-    return std::move(bytes).str();
+    return sbpack::vdbImage(grid, boxLength(), m,
+                            "length units of the packing; value = distance from the void voxel "
+                            "centre to the nearest solid voxel centre (periodic)");
 }
 
 } // namespace sbpack

@@ -3,8 +3,8 @@
 
 #include "io/atomic_file.hpp"
 #include "parallel/parallel.hpp"
+#include "voxels/vdb_image.hpp"
 
-#include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/ValueTransformer.h>
 
@@ -15,7 +15,6 @@
 #include <bit>
 #include <cmath>
 #include <iomanip>
-#include <mutex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -282,8 +281,7 @@ void Voxelization::writeVdb(const std::filesystem::path& file) const {
 }
 
 std::string Voxelization::vdbImage() const {
-    static std::once_flag initialized;
-    std::call_once(initialized, [] { openvdb::initialize(); });
+    openvdb::initialize();
     openvdb::FloatGrid::Ptr density = openvdb::FloatGrid::create(0.0f);
     density->setName("density");
     density->setGridClass(openvdb::GRID_FOG_VOLUME);
@@ -292,13 +290,10 @@ std::string Voxelization::vdbImage() const {
     openvdb::tools::foreach (density->beginValueOn(),
                              [](const openvdb::FloatGrid::ValueOnIter& it) { it.setValue(1.0f); });
     density->insertMeta("p", openvdb::DoubleMetadata(p_));
-    density->insertMeta("box_length", openvdb::DoubleMetadata(boxLength_));
-    density->insertMeta("voxels", openvdb::Int64Metadata(voxels_));
     density->insertMeta("phi_voxel", openvdb::DoubleMetadata(phiVoxel()));
     density->insertMeta("phi_exact", openvdb::DoubleMetadata(phiExact_));
-    std::ostringstream bytes(std::ios::binary);
-    openvdb::io::Stream(bytes).write(openvdb::GridCPtrVec{density});
-    return std::move(bytes).str();
+    return sbpack::vdbImage(density, boxLength_, voxels_,
+                            "fog volume density: 1 in voxels whose centre is inside a particle");
 }
 
 Voxelizer::Voxelizer(VoxelizationParameters parameters) : parameters_(parameters) {
