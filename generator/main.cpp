@@ -70,6 +70,9 @@ sbpack::Packing finalPacking(const sbpack::JammingProtocol& protocol) {
     return packing;
 }
 
+/// Above this exponent a run is warned to be slow (measured, bench/RESULTS.md).
+constexpr double kSlowExponent = 10.0;
+
 int generate(const sbpack::GeneratorOptions& o) {
     using Clock = std::chrono::steady_clock;
     // Installed first: a signal during the set-up stops the run at its first event, with a
@@ -80,6 +83,11 @@ int generate(const sbpack::GeneratorOptions& o) {
         o.resume ? sbpack::JammingProtocol(sbpack::readPacking(*o.resume), o.resume->string())
                  : sbpack::JammingProtocol(o.protocol);
     if (o.resume && o.pressureFinal) protocol.setPressureFinal(*o.pressureFinal);
+    if (protocol.parameters().p > kSlowExponent)
+        std::cerr << "sbgen: warning: p = " << protocol.parameters().p
+                  << ": near-cubes this flat run at a few hundred collisions per CPU second "
+                     "(p = 100 and 1000: about 300 at N = 50), so a jam takes days; p <= 10 "
+                     "is practical (bench/RESULTS.md, \"Extreme p\")\n";
 
     const auto start = Clock::now();
     auto lastProgress = start, lastCheckpoint = start;

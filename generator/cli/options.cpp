@@ -72,8 +72,8 @@ void GeneratorCommandLine::addProtocolOptions() {
     ProtocolParameters& p = options_.protocol;
     protocol(
         "--p", [&p](auto n, auto v) { p.p = parseNumber(n, v); },
-        "superball exponent in [0.5, 1000] (default 1: spheres, exact fast path;\n"
-        "otherwise rotating superballs)");
+        "superball exponent in (0.5, 1000] (default 1: spheres, exact fast path;\n"
+        "otherwise rotating superballs); practical up to 10, above it a warning");
     protocol(
         "--n",
         [&p](auto n, auto v) { p.particles = static_cast<int>(parseInteger(n, v, 2, 100000000)); },
