@@ -334,6 +334,16 @@ std::vector<double> readMatrixDataset(hid_t parent, const std::string& name, std
              "has shape " + shape + ", expected " + std::to_string(rows) + " x " +
                  std::to_string(cols));
     }
+    // A huge extent with little behind it (unallocated chunks) is refused before the allocation:
+    // the stored bytes must be at least 1/1000 of the values' (more than any compression of
+    // coordinates).
+    const double needed = static_cast<double>(rows) * static_cast<double>(cols) * sizeof(double);
+    const auto stored = static_cast<double>(H5Dget_storage_size(dataset.get()));
+    if (needed > 1e6 && 1000.0 * stored < needed)
+        fail(parent, name, "dataset",
+             "claims " + std::to_string(rows) + " x " + std::to_string(cols) +
+                 " values but stores only " + std::to_string(static_cast<long long>(stored)) +
+                 " bytes");
     std::vector<double> values(rows * cols);
     checked(H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
             parent, name, "dataset", "read");

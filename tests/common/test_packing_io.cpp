@@ -178,6 +178,29 @@ TEST_F(PackingIo, ReaderWrapsPositionsAndNormalisesQuaternions) {
     EXPECT_NEAR(read.orientations[1].norm(), 1.0, 1e-15);
 }
 
+TEST_F(PackingIo, AHugeClaimWithNothingStoredIsRefusedBeforeAllocating) {
+    // n_particles = 1e9 and a chunked positions dataset of that extent, never written: reading it
+    // would allocate 24 GB of fill values.
+    const fs::path path = goodFile();
+    {
+        const Hdf5Handle h5 = openForEditing(path);
+        H5Adelete(h5.get(), "n_particles");
+        writeInt64Attribute(h5.get(), "n_particles", 1000000000);
+        H5Ldelete(h5.get(), "positions", H5P_DEFAULT);
+        const hsize_t dims[2] = {1000000000, 3}, chunk[2] = {1024, 3};
+        const Hdf5Handle space(H5Screate_simple(2, dims, nullptr), H5Sclose);
+        const Hdf5Handle layout(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+        H5Pset_chunk(layout.get(), 2, chunk);
+        const Hdf5Handle positions(H5Dcreate2(h5.get(), "positions", H5T_IEEE_F64LE, space.get(),
+                                              H5P_DEFAULT, layout.get(), H5P_DEFAULT),
+                                   H5Dclose);
+        ASSERT_GE(positions.get(), 0);
+    }
+    EXPECT_LT(fs::file_size(path), 1000000u); // a small file
+    expectError<PackingFileError>([&] { readPacking(path); },
+                                  {"positions", "claims 1000000000 x 3 values but stores only"});
+}
+
 TEST_F(PackingIo, MissingFile) {
     const fs::path path = file("absent.h5");
     expectError<PackingFileError>([&] { readPacking(path); }, {"absent.h5", "no such file"});
