@@ -14,12 +14,16 @@
 
 namespace {
 
+/// The first SIGINT or SIGTERM stops the run at the end of its window (an exact checkpoint);
+/// a second one stops it at its next event.
 volatile std::sig_atomic_t stopSignal = 0;
+volatile std::sig_atomic_t stopNow = 0;
 
 /// Exit status of a run whose output fails the jam check (docs/design.md §3).
 constexpr int kNotJammed = 3;
 
 void requestStop(int signal) {
+    if (stopSignal != 0) stopNow = 1;
     stopSignal = signal;
 }
 
@@ -82,7 +86,13 @@ int generate(const sbpack::GeneratorOptions& o) {
     sbpack::JammingProtocol protocol =
         o.resume ? sbpack::JammingProtocol(sbpack::readPacking(*o.resume), o.resume->string())
                  : sbpack::JammingProtocol(o.protocol);
-    if (o.resume && o.pressureFinal) protocol.setPressureFinal(*o.pressureFinal);
+    if (o.resume && o.pressureFinal) {
+        try {
+            protocol.setPressureFinal(*o.pressureFinal);
+        } catch (const sbpack::ProtocolParameterError& e) {
+            throw std::invalid_argument("option --pressure-final: " + e.problem());
+        }
+    }
     if (protocol.parameters().p > kSlowExponent)
         std::cerr << "sbgen: warning: p = " << protocol.parameters().p
                   << ": near-cubes this flat run at a few hundred collisions per CPU second "
@@ -92,7 +102,7 @@ int generate(const sbpack::GeneratorOptions& o) {
     const auto start = Clock::now();
     auto lastProgress = start, lastCheckpoint = start;
     const std::uint64_t startCollisions = protocol.status().collisions;
-    const bool done = protocol.run(&stopSignal, [&](const sbpack::ProtocolStatus& s) {
+    const bool done = protocol.run(&stopSignal, &stopNow, [&](const sbpack::ProtocolStatus& s) {
         const auto now = Clock::now();
         if (!o.quiet &&
             (now - lastProgress > std::chrono::seconds(2) || s.phase == sbpack::Phase::Done)) {
@@ -109,8 +119,11 @@ int generate(const sbpack::GeneratorOptions& o) {
     if (!done) {
         const std::filesystem::path path = interruptCheckpointPath(o);
         sbpack::writePacking(protocol.checkpoint(), path);
-        std::cerr << "sbgen: stopped by signal " << stopSignal << "; checkpoint written to "
-                  << path.string() << " (continue with --resume " << path.string() << ")\n";
+        std::cerr << "sbgen: stopped by signal " << stopSignal
+                  << (stopNow ? " (twice: mid-window, resumes the run but not bit for bit)"
+                              : " at the end of a window (resumes bit for bit)")
+                  << "; checkpoint written to " << path.string() << " (continue with --resume "
+                  << path.string() << ")\n";
         return 128 + stopSignal;
     }
     const sbpack::Packing packing = finalPacking(protocol);

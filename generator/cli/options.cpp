@@ -28,7 +28,9 @@ of particles that wraps around the periodic box (columns of near-cubes in small 
 run early. Such an output is still written, with provenance jammed = 0 and the reason.
 
 Exit status: 0 jammed; 1 bad input or error; 3 written but not jammed; 128 + signal when
-SIGINT or SIGTERM wrote a checkpoint (to --checkpoint, else OUT with .checkpoint.h5).)";
+SIGINT or SIGTERM wrote a checkpoint (to --checkpoint, else OUT with .checkpoint.h5). A signal
+stops the run at the end of its window, so the checkpoint resumes bit for bit; a second one
+stops it at once (that checkpoint resumes the run, not bit for bit).)";
 
 /// sbgen's options, each defined once (CLI11); values are parsed by common/cli/option_values so
 /// every message names the option.

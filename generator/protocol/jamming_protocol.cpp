@@ -168,6 +168,7 @@ void JammingProtocol::setPressureFinal(double pressure) {
 }
 
 bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
+                          const volatile std::sig_atomic_t* stopNow,
                           const std::function<void(const ProtocolStatus&)>& onWindow) {
     using Clock = std::chrono::steady_clock;
     const std::uint64_t perWindow = static_cast<std::uint64_t>(
@@ -176,7 +177,7 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
         const auto start = Clock::now();
         const std::clock_t cpuStart = std::clock();
         const RunReport report = std::visit(
-            [&](auto& engine) { return engine.run(perWindow, INFINITY, stop); }, engine_);
+            [&](auto& engine) { return engine.run(perWindow, INFINITY, stopNow); }, engine_);
         status_.collisions += report.collisions;
         status_.relists += report.relists;
         status_.staleEvents += report.staleEvents;
@@ -196,6 +197,7 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
         finishWindow(report.virial, report.duration);
         watchJam(report.participants);
         onWindow(status_);
+        if (stop != nullptr && *stop != 0 && status_.phase != Phase::Done) return false;
     }
     if (!status_.jam)
         status_.jam = checkJam(checkpoint(), status_.reducedPressure, parameters_.jamCheck);

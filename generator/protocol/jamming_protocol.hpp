@@ -92,9 +92,12 @@ class JammingProtocol {
     /// `source` if the packing carries no sbgen state.
     JammingProtocol(const Packing& checkpoint, const std::string& source);
 
-    /// Runs windows until Phase::Done or *stop; calls onWindow after every window (with the
-    /// protocol synchronised, so checkpoint() may be called there). Returns true when done.
-    bool run(const volatile std::sig_atomic_t* stop,
+    /// Runs windows until Phase::Done or a stop; calls onWindow after every window (with the
+    /// protocol synchronised, so checkpoint() may be called there). `stop` is looked at after
+    /// each window, so a run stopped by it is synchronised and its checkpoint resumes bit for bit
+    /// like a periodic one; `stopNow` interrupts the window at its next event (a checkpoint then
+    /// resumes the run, but not bit for bit). Returns true when done.
+    bool run(const volatile std::sig_atomic_t* stop, const volatile std::sig_atomic_t* stopNow,
              const std::function<void(const ProtocolStatus&)>& onWindow);
 
     const ProtocolParameters& parameters() const { return parameters_; }

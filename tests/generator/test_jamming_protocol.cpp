@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <filesystem>
 #include <optional>
 
@@ -73,9 +74,9 @@ TEST(JammingProtocol, RejectsBadParametersNamingTheParameter) {
 
 TEST(JammingProtocol, SameSeedGivesIdenticalPacking) {
     JammingProtocol a(smallRun(5)), b(smallRun(5)), c(smallRun(6));
-    ASSERT_TRUE(a.run(nullptr, [](const ProtocolStatus&) {}));
-    ASSERT_TRUE(b.run(nullptr, [](const ProtocolStatus&) {}));
-    ASSERT_TRUE(c.run(nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(a.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(b.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(c.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
     expectIdentical(a.checkpoint(), b.checkpoint());
     EXPECT_NE(a.checkpoint().positions[0], c.checkpoint().positions[0]);
     EXPECT_GE(a.status().reducedPressure, 1e7);
@@ -84,7 +85,7 @@ TEST(JammingProtocol, SameSeedGivesIdenticalPacking) {
 TEST(JammingProtocol, ResumingFromACheckpointFileGivesTheUninterruptedResult) {
     JammingProtocol uninterrupted(smallRun(9));
     std::optional<Packing> saved;
-    ASSERT_TRUE(uninterrupted.run(nullptr, [&](const ProtocolStatus& s) {
+    ASSERT_TRUE(uninterrupted.run(nullptr, nullptr, [&](const ProtocolStatus& s) {
         if (s.windows == 40) saved = uninterrupted.checkpoint();
     }));
     ASSERT_TRUE(saved.has_value());
@@ -93,14 +94,38 @@ TEST(JammingProtocol, ResumingFromACheckpointFileGivesTheUninterruptedResult) {
     JammingProtocol resumed(readPacking(file), file.string());
     std::filesystem::remove(file);
     EXPECT_EQ(resumed.status().windows, 40u);
-    ASSERT_TRUE(resumed.run(nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(resumed.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
+}
+
+TEST(JammingProtocol, AStopRequestEndsTheWindowAndResumesExactly) {
+    // A stop (SIGINT or SIGTERM in sbgen) raised mid-window takes effect at the window's end, so
+    // the checkpoint written then resumes bit for bit (p = 1.5: the rotating engine).
+    ProtocolParameters parameters = smallRun(11);
+    parameters.particles = 27;
+    parameters.p = 1.5;
+    parameters.pressureSwitch = 1e2;
+    parameters.pressureFinal = 1e4;
+    JammingProtocol uninterrupted(parameters);
+    ASSERT_TRUE(uninterrupted.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    volatile std::sig_atomic_t stop = 0;
+    JammingProtocol stopped(parameters);
+    ASSERT_FALSE(stopped.run(&stop, nullptr, [&](const ProtocolStatus& s) {
+        if (s.windows == 25) stop = SIGINT; // as the handler would, between two events
+    }));
+    EXPECT_EQ(stopped.status().windows, 25u);
+    const auto file = std::filesystem::temp_directory_path() / "sbgen-test-stop.h5";
+    writePacking(stopped.checkpoint(), file);
+    JammingProtocol resumed(readPacking(file), file.string());
+    std::filesystem::remove(file);
+    ASSERT_TRUE(resumed.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
     expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
 }
 
 TEST(JammingProtocol, SuperballRunsAreDeterministicAndResumeExactly) {
     JammingProtocol uninterrupted(smallSuperballRun(4));
     std::optional<Packing> saved;
-    ASSERT_TRUE(uninterrupted.run(nullptr, [&](const ProtocolStatus& s) {
+    ASSERT_TRUE(uninterrupted.run(nullptr, nullptr, [&](const ProtocolStatus& s) {
         if (s.windows == 20) saved = uninterrupted.checkpoint();
     }));
     ASSERT_TRUE(saved.has_value());
@@ -109,26 +134,26 @@ TEST(JammingProtocol, SuperballRunsAreDeterministicAndResumeExactly) {
     writePacking(*saved, file);
     JammingProtocol resumed(readPacking(file), file.string());
     std::filesystem::remove(file);
-    ASSERT_TRUE(resumed.run(nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(resumed.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
     expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
     JammingProtocol again(smallSuperballRun(4));
-    ASSERT_TRUE(again.run(nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(again.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
     expectIdentical(uninterrupted.checkpoint(), again.checkpoint());
 }
 
 TEST(JammingProtocol, AFinishedRunContinuesToAHigherFinalPressure) {
     JammingProtocol run(smallRun(3));
-    ASSERT_TRUE(run.run(nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(run.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
     JammingProtocol more(run.checkpoint(), "memory");
     more.setPressureFinal(1e9);
-    ASSERT_TRUE(more.run(nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(more.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
     EXPECT_GE(more.status().reducedPressure, 1e9);
     EXPECT_GT(more.status().collisions, run.status().collisions);
 }
 
 TEST(JammingProtocol, RefusesToResumeFromOverlappingParticles) {
     JammingProtocol run(smallRun(3));
-    ASSERT_TRUE(run.run(nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(run.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
     Packing overlapping = run.checkpoint();
     overlapping.positions[1] = overlapping.positions[0] + Vector3d(0.1, 0.0, 0.0);
     try {

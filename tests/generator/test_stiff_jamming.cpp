@@ -72,7 +72,7 @@ TEST_P(StiffJamming, AJamHasTheContactsOfOneAndARefusalNamesTheChain) {
     parameters.pressureSwitch = 1e4;
     parameters.pressureFinal = 1e8;
     JammingProtocol run(parameters);
-    ASSERT_TRUE(run.run(nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(run.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
     const ProtocolStatus& status = run.status();
     ASSERT_TRUE(status.jam.has_value());
     const Packing packing = run.checkpoint();
