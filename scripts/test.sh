@@ -1,7 +1,18 @@
 #!/usr/bin/env bash
 # Sets everything up, builds every target (benchmarks included) and runs the test suite.
+#   scripts/test.sh              Release build in build/ (what .ci/run runs)
+#   scripts/test.sh --sanitize   AddressSanitizer + UndefinedBehaviorSanitizer build of the whole
+#                                suite in build-sanitize/ (CMakePresets.json "sanitize"), then its
+#                                tests; docs/reliability.md
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh
+if [[ "${1:-}" == "--sanitize" ]]; then
+    cmake --preset sanitize >/dev/null
+    cmake --build --preset sanitize -j"$(nproc)"
+    # The suite without the static checks (clang-tidy reads the release compile commands).
+    ctest --preset sanitize -j"$(nproc)" -E "clang_tidy|clang_format"
+    exit
+fi
 scripts/build.sh
 ctest --test-dir build --output-on-failure -j"$(nproc)"
