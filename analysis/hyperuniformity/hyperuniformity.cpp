@@ -83,7 +83,7 @@ HyperuniformityResult Hyperuniformity::compute(std::span<const DiscreteSpectrum>
         phi += s.phi / static_cast<double>(members.size());
     fillCurves(r, curve, phi);
     r.window = parameters_.window ? *parameters_.window : findExponentWindow(curve, peak.qw);
-    r.alpha = estimateExponent(members, r.window, parameters_.replicas, parameters_.seed);
+    r.alpha = estimateExponent(curve, members, r.window, parameters_.replicas, parameters_.seed);
     fitSmallQ(r, members);
     r.runtimeSeconds = clock.seconds();
     return r;

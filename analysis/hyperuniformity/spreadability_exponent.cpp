@@ -108,10 +108,10 @@ double sampledExponent(const std::vector<double>& t, const std::vector<double>& 
     return windowExponent(logAt, window);
 }
 
-ExponentEstimate estimateExponent(std::span<const DiscreteSpectrum> members,
+ExponentEstimate estimateExponent(const SpreadabilityCurve& curve,
+                                  std::span<const DiscreteSpectrum> members,
                                   const ExponentWindow& window, int replicas, std::uint64_t seed) {
     ExponentEstimate e;
-    const SpreadabilityCurve curve(members);
     e.alpha = windowExponent(curve, window);
     e.windowLow = e.windowHigh = e.alpha;
     for (const double f : {0.5, 2.0}) {

@@ -60,10 +60,12 @@ struct ExponentEstimate {
     double windowLow = 0.0, windowHigh = 0.0;
 };
 
-/// alpha of the pooled members in `window`, with the Poisson bootstrap: each wave vector listed
+/// alpha of the pooled members in `window` from their `curve` (SpreadabilityCurve(members), made
+/// once by the caller), with the Poisson bootstrap: each wave vector listed
 /// one by one (DiscreteSpectrum::modes) is weighted by an independent Poisson(1) count in each
 /// replica (seeded; the same seed gives the same result).
-ExponentEstimate estimateExponent(std::span<const DiscreteSpectrum> members,
+ExponentEstimate estimateExponent(const SpreadabilityCurve& curve,
+                                  std::span<const DiscreteSpectrum> members,
                                   const ExponentWindow& window, int replicas,
                                   std::uint64_t seed = 1);
 
