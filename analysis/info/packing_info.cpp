@@ -11,10 +11,12 @@ PackingInfo packingInfo(const std::filesystem::path& file, const ContactParamete
     Packing packing = readPacking(file);
     const double meanWidth = packing.shape().meanWidth();
     ContactResult contacts = ContactNetwork(parameters).compute(packing);
+    ContactResolution resolution = resolveContacts(packing, parameters.tolerance);
     std::optional<JamCheck> jam;
     if (packing.reducedPressure && *packing.reducedPressure > 0.0)
         jam = checkJam(packing, *packing.reducedPressure);
-    return {std::move(packing), meanWidth, std::move(contacts), std::move(jam)};
+    return {std::move(packing), meanWidth, std::move(contacts), std::move(resolution),
+            std::move(jam)};
 }
 
 void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info,
@@ -40,10 +42,13 @@ void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info
         out << "  smallest gap         > " << c.parameters.tolerance
             << " D  (no pair within reach)\n";
     out << std::setprecision(6) << "  contacts (gap < " << c.parameters.tolerance
-        << " D): " << c.contacts.size() << '\n'
-        << "  mean contacts    Z   = " << c.meanContactNumber << "  (non-rattlers)\n"
-        << "  rattler fraction phi_R = " << c.rattlerFraction << "  (fewer than "
-        << c.parameters.rattlerThreshold << " contacts, removed iteratively)\n";
+        << " D): " << c.contacts.size() << '\n';
+    if (info.resolution.resolved.value_or(true))
+        out << "  mean contacts    Z   = " << c.meanContactNumber << "  (non-rattlers)\n"
+            << "  rattler fraction phi_R = " << c.rattlerFraction << "  (fewer than "
+            << c.parameters.rattlerThreshold << " contacts, removed iteratively)\n";
+    out << "  contact resolution   " << info.resolution.verdict << '\n';
+    if (info.resolution.gaps) out << describe(*info.resolution.gaps);
     if (info.jam)
         out << "  jam check            " << info.jam->verdict << '\n';
     else

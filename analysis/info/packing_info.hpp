@@ -2,6 +2,7 @@
 // `sbanalyze info`: validation and a one-screen summary of a stored packing.
 
 #include "contacts/contact_network.hpp"
+#include "contacts/contact_resolution.hpp"
 #include "contacts/jam_check.hpp"
 #include "packing/packing.hpp"
 
@@ -15,6 +16,8 @@ struct PackingInfo {
     Packing packing;
     double meanWidth;
     ContactResult contacts; ///< Z, phi_R and the worst overlap
+    /// Whether the tolerance separates the contacts at the file's pressure (else no Z).
+    ContactResolution resolution;
     /// sbgen's jam check at the file's reduced pressure (docs/design.md §3, "Jam check");
     /// absent when the file has no reduced pressure.
     std::optional<JamCheck> jam;

@@ -88,15 +88,22 @@ constexpr Field kVoxelization[] = {
 };
 
 constexpr Field kContacts[] = {
-    {"z_mean", A, F, "1", "mean contact number Z over the non-rattlers", Mean},
-    {"rattler_fraction", A, F, "1", "fraction of rattlers phi_R", Mean},
+    {"z_mean", A, F, "1", "mean contact number Z over the non-rattlers (NaN if not resolved)",
+     Mean},
+    {"rattler_fraction", A, F, "1", "fraction of rattlers phi_R (NaN if not resolved)", Mean},
     {"tolerance", A, F, "D", "contact: gap < tolerance D (--tolerance)"},
+    {"resolved", A, I, "1",
+     "1 if tolerance >= tolerance_needed (contacts separated), 0 if not, -1 without a pressure"},
+    {"tolerance_needed", A, F, "D", "100 / P: load-bearing gaps at the reduced pressure P"},
     {"rattler_threshold", A, I, "1", "rattler: fewer contacts, removed iteratively"},
     {"n_contacts", A, I, "1", "contacts (pairs)"},
     {"overlapping_pairs", A, I, "1", "pairs that overlap"},
     {"runtime_s", A, F, "s", kRuntime},
     {"counts", D, I, "1", "contacts of each particle"},
     {"rattler", D, I, "1", "1 for a rattler, else 0, per particle"},
+    {"gap_edges", D, F, "D", "if not resolved: decade edges of gap / D, 1e-16 .. 1e-2", No, true},
+    {"gap_counts", D, I, "1",
+     "if not resolved: pairs per decade (the first bin holds every gap below 1e-15 D)", No, true},
 };
 
 constexpr Field kPoreSize[] = {

@@ -93,6 +93,7 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
     result.parameters = parameters_;
     result.counts.assign(size, 0);
     result.worstGap = std::numeric_limits<double>::infinity();
+    std::vector<std::pair<std::pair<int, int>, double>> found; // contacts and their gaps / D
     const CellList cells(packing.positions, packing.boxLength, range);
     cells.forEachNeighbourPair([&](int i, int j, const Vector3d& d) {
         const SignedDistanceResult pair =
@@ -114,12 +115,16 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
         }
         if (s < -contactGap) ++result.overlappingPairs;
         if (s < contactGap) { // paper Sec. III A
-            result.contacts.emplace_back(i, j);
+            found.push_back({{i, j}, s / diameter});
             ++result.counts[i];
             ++result.counts[j];
         }
     });
-    std::sort(result.contacts.begin(), result.contacts.end());
+    std::sort(found.begin(), found.end());
+    for (const auto& [pair, gap] : found) {
+        result.contacts.push_back(pair);
+        result.gaps.push_back(gap);
+    }
 
     const int count = static_cast<int>(size);
     result.rattler =

@@ -1,0 +1,46 @@
+#pragma once
+// Honest contacts (docs/design.md §3, "Honest contacts"): does a contact tolerance separate a
+// packing's contacts from its near contacts? At reduced pressure P the load-bearing gaps reach
+// about gapsPerPressure / P D (the jam check's scale, contacts/jam_check.hpp), so a tolerance
+// below that leaves true contacts open and Z and phi_R at it mean nothing (e.g. spheres at
+// P = 1e10 and the paper's 1e-10 D: Z = 0, every particle a rattler). Then the distribution of
+// the gaps is reported instead of a Z.
+
+#include "contacts/contact_network.hpp"
+#include "contacts/jam_check.hpp"
+#include "packing/packing.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sbpack {
+
+/// Pairs by decade of gap / D: counts[k] pairs with gap in [edges[k], edges[k + 1]), the first
+/// bin also holding every gap below edges[0] (touching or rounding-level overlaps).
+struct GapDistribution {
+    std::vector<double> edges; ///< 1e-16, 1e-15, ..., 1e-2 (units of D)
+    std::vector<long> counts;  ///< one fewer than edges
+};
+
+struct ContactResolution {
+    /// Whether the tolerance separates the contacts; unknown without a reduced pressure.
+    std::optional<bool> resolved;
+    /// The smallest tolerance that does at the packing's pressure: gapsPerPressure / P (units D).
+    double neededTolerance = 0.0;
+    /// Filled only when not resolved: what to look at instead of Z.
+    std::optional<GapDistribution> gaps;
+    std::string verdict; ///< one line
+};
+
+/// The resolution of `tolerance` (units of D) for `packing` at its recorded reduced pressure.
+ContactResolution resolveContacts(const Packing& packing, double tolerance,
+                                  const JamCheckParameters& scale = {});
+
+/// Pairs with gaps below 1e-2 D, by decade.
+GapDistribution gapDistribution(const Packing& packing);
+
+/// One line per non-empty decade, e.g. "  [1e-09, 1e-08) D: 1234 pairs".
+std::string describe(const GapDistribution& gaps);
+
+} // namespace sbpack

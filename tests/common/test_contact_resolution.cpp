@@ -1,0 +1,65 @@
+// Honest contacts (docs/design.md §3, "Honest contacts"): a contact tolerance resolves a
+// packing's contacts only if it reaches the load-bearing gaps at its reduced pressure, 100 / P D.
+// An fcc lattice of spheres shrunk to a known gap g has exactly 6 N pairs at gap g (12
+// neighbours each) and none below sqrt(2) - 1 D beyond them: the gap distribution must put
+// all 6 N in g's decade.
+#include "contacts/contact_resolution.hpp"
+#include "io/text_io.hpp"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+
+namespace sbpack {
+namespace {
+
+const std::string kData = SBPACK_DATA_DIR;
+
+/// The fcc lattice (touching spheres, D = 1) with every nearest-neighbour gap equal to `gap` D.
+Packing fccWithGap(double gap, std::optional<double> pressure) {
+    Packing packing = readTextPacking(kData + "/fcc-spheres.txt");
+    const double contact = 2.0 * packing.semiAxis; // nearest-neighbour distance
+    packing.semiAxis = contact / (2.0 + 2.0 * gap);
+    packing.reducedPressure = pressure;
+    return packing;
+}
+
+TEST(ContactResolution, APressureTooLowForTheToleranceGivesTheGapDistribution) {
+    const Packing packing = fccWithGap(3e-9, 1e10);
+    const ContactResolution r = resolveContacts(packing, 1e-10);
+    ASSERT_TRUE(r.resolved.has_value());
+    EXPECT_FALSE(*r.resolved);
+    EXPECT_DOUBLE_EQ(r.neededTolerance, 1e-8);
+    EXPECT_NE(r.verdict.find("NOT resolved"), std::string::npos) << r.verdict;
+    ASSERT_TRUE(r.gaps.has_value());
+    const std::vector<long>& counts = r.gaps->counts;
+    const long pairs = 6 * static_cast<long>(packing.size());
+    EXPECT_EQ(std::accumulate(counts.begin(), counts.end(), 0L), pairs);
+    // edges 1e-16 ... 1e-2: [1e-9, 1e-8) is bin 7
+    EXPECT_EQ(counts[7], pairs);
+    EXPECT_NE(describe(*r.gaps).find("[1e-09, 1e-08) D: " + std::to_string(pairs) + " pairs"),
+              std::string::npos);
+}
+
+TEST(ContactResolution, AHighEnoughPressureResolvesThePapersTolerance) {
+    const ContactResolution r = resolveContacts(fccWithGap(3e-13, 1e12), 1e-10);
+    EXPECT_TRUE(r.resolved.value_or(false)) << r.verdict;
+    EXPECT_FALSE(r.gaps.has_value());
+    // The same packing read at a coarser tolerance is resolved at a lower pressure too.
+    EXPECT_TRUE(resolveContacts(fccWithGap(3e-13, 1e8), 1e-6).resolved.value_or(false));
+}
+
+TEST(ContactResolution, WithoutAPressureTheResolutionIsUnknown) {
+    const ContactResolution r = resolveContacts(fccWithGap(0.0, std::nullopt), 1e-10);
+    EXPECT_FALSE(r.resolved.has_value());
+    EXPECT_NE(r.verdict.find("no reduced pressure"), std::string::npos);
+}
+
+TEST(ContactResolution, TouchingPairsFallInTheFirstBin) {
+    const GapDistribution d = gapDistribution(fccWithGap(0.0, std::nullopt));
+    EXPECT_EQ(d.edges.size(), 15u);
+    EXPECT_EQ(d.counts.front(), 6 * 108L) << "fcc-spheres.txt: 108 spheres";
+}
+
+} // namespace
+} // namespace sbpack
