@@ -5,8 +5,8 @@ package adds the analyses as objects, a reader of results files and the figures 
 """
 from ._sbpack import Packing, __version__, generate
 from .analyses import (Contacts, Hyperuniformity, PoreSizes, SpectralDensity, StructureFactor,
-                       Transport)
+                       Transport, analyze)
 from .results import read_results
 
 __all__ = ["Packing", "generate", "Contacts", "StructureFactor", "SpectralDensity", "PoreSizes",
-           "Transport", "Hyperuniformity", "read_results", "__version__"]
+           "Transport", "Hyperuniformity", "analyze", "read_results", "__version__"]

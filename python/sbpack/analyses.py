@@ -98,3 +98,18 @@ class Hyperuniformity(_Analysis):
     _compute, _group = "hyper", "spreadability"
     _options = _COMMON + _FFT + ("chi_exact_qmax", "fit_qmax", "alpha_window", "bootstrap",
                                  "spread_times")
+
+
+def analyze(paths, out, compute="all", quiet=True, **options):
+    """``sbanalyze PATHS... --out OUT --compute COMPUTE [options]`` in-process (the same run:
+    every input checked first, ensembles of equal p and N, the results file written atomically);
+    returns ``read_results(out)``. Options as the command line's (``threads=2``, ``voxels=100``,
+    ``fft_plan="estimate"``, ...); warnings are RuntimeWarnings, stage lines go to sys.stderr
+    unless ``quiet``."""
+    from .results import read_results
+    args = [str(p) for p in ([paths] if isinstance(paths, (str, bytes)) else paths)]
+    args += ["--out", str(out), "--compute", compute] + (["--quiet"] if quiet else [])
+    for name, value in options.items():
+        args += _option(name, value)
+    _sbpack.analyze(args)
+    return read_results(out)

@@ -26,6 +26,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import matplotlib.ticker as ticker  # noqa: E402
 import numpy as np  # noqa: E402
 
 from .results import read_results  # noqa: E402
@@ -62,7 +63,7 @@ def spectral_density(runs, axes):
         if "hyperuniformity" in f:
             fitted = True
             h = f["hyperuniformity"]
-            x = qw[qw <= 1.5 * h["q_fit_max_w"]]
+            x = np.geomspace(qw[0], 1.5 * h["q_fit_max_w"], 100)
             small.loglog(x, h["a0"] + h["a1"] * x ** h["alpha"], "-", color=line.get_color(),
                          label=fr"$a_0 + a_1 Q^{{{h['alpha']:.2f}}}$, $H = {h['H']:.2g} \pm "
                                fr"{h['H_stderr']:.1g}$")
@@ -70,6 +71,10 @@ def spectral_density(runs, axes):
     ylabel = r"$\tilde\chi_V(Q)/\bar w^3$ (dimensionless)"
     main.set(xlabel=r"$Q\bar w$ (dimensionless)", ylabel=ylabel,
              title="Spectral density (voxels, shell averages)")
+    small.xaxis.set_major_locator(ticker.FixedLocator([0.1, 0.2, 0.5, 1, 2, 5, 10]))
+    for axis in (small.xaxis, small.yaxis):
+        axis.set_major_formatter(ticker.FormatStrFormatter("%g"))
+        axis.set_minor_formatter(ticker.NullFormatter())
     small.set(xlabel=r"$Q\bar w$ (dimensionless)", ylabel=ylabel,
               title=r"Small $Q$ and the fit ($Q\bar w \leq$ fit-qmax dotted)" if fitted
               else r"Small $Q$ (no hyper results: no fit)")
@@ -110,7 +115,7 @@ def pore_size(runs, ax):
 # versus_p: (results group, value, its std, the paper's column and scale, axis label)
 PANELS = [
     (None, "phi", r"$\phi$", "phi", 1.0),
-    ("contacts", "z_mean", r"$Z$ (non-rattlers)", "Z", 1.0),
+    ("contacts", "z_mean", r"$Z$ (over non-rattlers)", "Z", 1.0),
     ("contacts", "rattler_fraction", r"$\phi_R$ (rattler fraction)", "phi_R_percent", 0.01),
     ("spreadability", "alpha", r"$\alpha$ (from $E(t)$)", "alpha", 1.0),
     ("transport", "permeability_w2", r"$k/\bar w^2$", None, 1.0),
@@ -132,37 +137,55 @@ def paper_values(path=REFERENCE):
 
 
 def ensemble_points(runs, group, name):
-    """(p, mean, std) over every ensemble of every results file that has the value."""
-    points = []
+    """N -> (p, mean, std) rows, sorted by p, over every ensemble of every results file that has
+    the value (one series per N: ensembles of different N are not one curve)."""
+    series = {}
     for r in runs:
         for e in r["ensembles"]:
             g = e if group is None else e.get(group)
             if g is not None and name in g:
-                points.append((e["p"], g[name], g.get(name + "_std", 0.0)))
-    return np.array(sorted(points)).reshape(-1, 3)
+                series.setdefault(e["n_particles"], []).append(
+                    (e["p"], g[name], g.get(name + "_std", 0.0)))
+    return {n: np.array(sorted(rows)) for n, rows in sorted(series.items())}
+
+
+def paper_markers(ax, paper, column, scale):
+    p, v = paper[column]
+    sd_column = (column[: -len("_percent")] + "_sd_percent" if column.endswith("_percent")
+                 else column + "_sd")
+    sd = paper.get(sd_column)
+    yerr = sd[1] * scale if sd is not None and len(sd[1]) == len(v) else None
+    ax.errorbar(p, v * scale, yerr=yerr, fmt="s", mfc="none", color="k", ms=5, capsize=2,
+                label="paper (Maher et al.)")
 
 
 def versus_p(runs, axes):
     paper = paper_values()
+    sizes = sorted({e["n_particles"] for r in runs for e in r["ensembles"]})
+    colour = {n: f"C{i % 10}" for i, n in enumerate(sizes)}  # one colour per N in every panel
     for ax, (group, name, ylabel, column, scale) in zip(axes, PANELS):
-        pts = ensemble_points(runs, group, name)
-        if len(pts) == 0:
+        series = ensemble_points(runs, group, name)
+        if not series:
             ax.set_axis_off()
             continue
-        ax.errorbar(pts[:, 0], pts[:, 1], yerr=pts[:, 2], fmt="o-", ms=4, capsize=3,
-                    label="sbanalyze (ensemble mean $\\pm$ std)")
+        for n, pts in series.items():
+            ax.errorbar(pts[:, 0], pts[:, 1], yerr=pts[:, 2], fmt="o-", ms=4, lw=0.8,
+                        capsize=3, color=colour[n], label=f"N = {n} (mean $\\pm$ std)")
+        ps = [p for pts in series.values() for p in pts[:, 0]]
         if column is not None:
-            p, v = paper[column]
-            sd = paper.get(column.replace("_percent", "") + "_sd" +
-                           ("_percent" if column.endswith("_percent") else ""))
-            yerr = sd[1] * scale if sd is not None and len(sd[1]) == len(v) else None
-            ax.errorbar(p, v * scale, yerr=yerr, fmt="s", mfc="none", color="k", ms=5,
-                        capsize=2, label="paper (Maher et al.)")
+            paper_markers(ax, paper, column, scale)
+            ps += list(paper[column][0])
         else:
             ax.set_title("paper: figure only, no table", fontsize=8)
-        ax.set(xlabel=r"$p$ (dimensionless)", ylabel=ylabel + " (dimensionless)")
+        if max(ps) / min(ps) > 3.0:  # p over a decade: log axis
+            ax.set_xscale("log")
+            ax.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
+            ax.xaxis.set_minor_formatter(ticker.NullFormatter())
+        ax.set(xlabel=r"$p$", ylabel=ylabel)
     for ax in axes[len(PANELS):]:
         ax.set_axis_off()
+    axes[0].figure.suptitle("Against the superball exponent $p$ (every quantity dimensionless; "
+                            "markers: paper, Maher et al.)")
 
 
 def has_several_p(runs):
@@ -194,9 +217,9 @@ def packing_slice(packing, voxels, ax):
               cmap="Greys", vmin=0, vmax=1.6, interpolation="nearest")
     plt.colorbar(image, ax=ax, label=r"pore size $\delta/\bar w$ (void voxels)")
     x = (plane + 0.5) * packing.box_length / voxels / d
-    ax.set(xlabel=r"$z/D$", ylabel=r"$y/D$",
-           title=f"p = {packing.p:g}, N = {len(packing)}: slice x = {x:.2f} D, {voxels}$^3$ "
-                 "voxels (grey: particles)")
+    ax.set(xlabel=r"$z/D$ ($D$ = major axis)", ylabel=r"$y/D$")
+    ax.set_title(f"p = {packing.p:g}, N = {len(packing)}: plane x = {x:.2f} D of {voxels}$^3$ "
+                 "voxels\n(grey: particles; void coloured by pore size)", fontsize=9)
 
 
 def make_figures(paths, packing_path=None, slice_voxels=200):

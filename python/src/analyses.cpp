@@ -24,7 +24,7 @@ namespace sbpack::python {
 namespace {
 
 /// Each line sbanalyze would print as a warning, as a Python RuntimeWarning.
-void warnInPython(const std::string& lines) {
+void reportInPython(const std::string& lines) {
     std::istringstream in(lines);
     for (std::string line; std::getline(in, line);)
         if (PyErr_WarnEx(PyExc_RuntimeWarning, line.c_str(), 1) != 0) throw py::error_already_set();
@@ -50,7 +50,7 @@ class Analyzer {
             },
             requestInterrupt);
         clearInterrupt();
-        warnInPython(warnings.str());
+        reportInPython(warnings.str());
         py::dict groups;
         groups["file"] = recordToDict(results.root);
         for (const schema::Record& g : results.groups)
@@ -64,6 +64,18 @@ class Analyzer {
   private:
     RunSettings settings_;
 };
+
+/// A whole sbanalyze run (pipeline/run: every input checked first, the ensembles, the results
+/// file written atomically at the end); `args` as the command line's.
+void analyzeFiles(const std::vector<std::string>& args) {
+    const RunSettings settings = parseAnalyzeArguments(args);
+    std::ostringstream log;
+    std::ostringstream out;
+    clearInterrupt();
+    runInterruptibly([&] { runAnalyses(settings, log, out); }, requestInterrupt);
+    clearInterrupt();
+    reportInPython(log.str());
+}
 
 /// The plane x = (i + 1/2) a of the voxelization on an M^3 grid and of its pore-size map (the
 /// stages' Voxelizer and periodicDistanceTransform): (solid[j, k], pore size in length units,
@@ -108,6 +120,8 @@ void registerAnalyses(py::module_& m) {
         .def("compute", &Analyzer::compute, py::arg("packing"), py::arg("input") = "<python>")
         .def_property_readonly("analyses", &Analyzer::analyses)
         .def_property_readonly("threads", &Analyzer::threads);
+    m.def("analyze", &analyzeFiles, py::arg("args"),
+          "sbanalyze FILE... [options] in-process (args without the program name)");
     m.def("voxel_slice", &voxelSlice, py::arg("packing"), py::arg("voxels"), py::arg("plane"),
           py::arg("threads") = 1,
           "(solid, pore_size): plane x = (plane + 1/2) L / voxels of the voxelization and of "
