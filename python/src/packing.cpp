@@ -21,13 +21,13 @@ namespace fs = std::filesystem;
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 /// The HDF5 reader's message for a misshapen dataset (common/io/hdf5_handles.cpp):
-/// "'<source>': dataset '/positions' has shape 5 x 2, expected 5 x 3".
+/// "'<source>': dataset '/positions': has shape 5 x 2, expected 5 x 3".
 void checkShape(const Array& a, const char* name, py::ssize_t rows, py::ssize_t cols,
                 const std::string& source) {
     if (a.ndim() == 2 && a.shape(0) == rows && a.shape(1) == cols) return;
     std::string shape = "rank " + std::to_string(a.ndim());
     if (a.ndim() == 2) shape = std::to_string(a.shape(0)) + " x " + std::to_string(a.shape(1));
-    throw InvalidPacking("'" + source + "': dataset '/" + name + "' has shape " + shape +
+    throw InvalidPacking("'" + source + "': dataset '/" + name + "': has shape " + shape +
                          ", expected " + std::to_string(rows) + " x " + std::to_string(cols));
 }
 
