@@ -97,8 +97,8 @@ py::array_t<double> orientationsOf(const Packing& packing) {
 
 py::dict provenanceOf(const Packing& packing) {
     py::dict d;
-    for (const auto& [name, value] : packing.provenance)
-        std::visit([&d, &name](const auto& v) { d[py::str(name)] = v; }, value);
+    for (const auto& entry : packing.provenance) // (clang 14 captures no structured bindings)
+        std::visit([&d, &entry](const auto& v) { d[py::str(entry.first)] = v; }, entry.second);
     return d;
 }
 
