@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Overhead of the Python module against sbanalyze: S(Q) (--compute sq) on the same packing, the
-two interleaved in one run, best of R each (bench/RESULTS.md, "Python module").
+two interleaved in one run, R each (best and median) (bench/RESULTS.md, "Python module").
 
   Python: wall time of sbpack.StructureFactor(...).compute(packing) (the run's checks, the stage,
           the conversion of the results to numpy), the packing read beforehand;
@@ -13,6 +13,7 @@ usage: PYTHONPATH=build/python /usr/bin/python3 bench/bench_python.py [FILE.h5] 
 """
 import argparse
 import os
+import statistics
 import subprocess
 import tempfile
 import time
@@ -57,7 +58,10 @@ def main():
           f"best of {args.repeat}")
     print(f"  Python compute(): {best_py[0]:.4f} s (stage {best_py[1]:.4f} s)")
     print(f"  sbanalyze run:    {best_cli[0]:.4f} s (stage {best_cli[1]:.4f} s)")
-    print(f"  ratio Python / CLI: {best_py[0] / best_cli[0]:.3f}")
+    median_py = statistics.median(t for t, _ in py)
+    median_cli = statistics.median(t for t, _ in cli)
+    print(f"  ratio Python / CLI: {best_py[0] / best_cli[0]:.3f} (best), "
+          f"{median_py / median_cli:.3f} (median: {median_py:.4f} s / {median_cli:.4f} s)")
     print(f"  all Python: {' '.join(f'{t:.4f}' for t, _ in py)}")
     print(f"  all CLI:    {' '.join(f'{t:.4f}' for t, _ in cli)}")
 
