@@ -1,7 +1,7 @@
 // sbgen: serial generator of MRJ packings (Donev-Torquato-Stillinger event-driven MD).
 #include "cli/options.hpp"
-#include "contacts/contact_network.hpp"
 #include "io/packing_io.hpp"
+#include "protocol/final_packing.hpp"
 #include "protocol/jamming_protocol.hpp"
 #include "version.hpp"
 
@@ -51,25 +51,6 @@ std::filesystem::path interruptCheckpointPath(const sbpack::GeneratorOptions& o)
     if (o.checkpoint) return *o.checkpoint;
     std::filesystem::path path = o.out;
     return path.replace_extension(".checkpoint.h5");
-}
-
-/// The final packing with its contact analysis and the jam check in its provenance. The
-/// contacts are the jam check's: at the paper's tolerance 1e-10 D when the final pressure
-/// resolves it (P >= 1e12), else at 100 / P D, where the load-bearing gaps are (docs/design.md
-/// §3, "Honest contacts"; at 1e-10 D a packing at P = 1e10 has Z = 0).
-sbpack::Packing finalPacking(const sbpack::JammingProtocol& protocol) {
-    sbpack::Packing packing = protocol.checkpoint();
-    const sbpack::JamCheck& jam = *protocol.status().jam;
-    const sbpack::ContactResult& contacts = jam.contacts;
-    auto& log = packing.provenance;
-    log["z_mean"] = contacts.meanContactNumber;
-    log["rattler_fraction"] = contacts.rattlerFraction;
-    log["contact_tolerance"] = contacts.parameters.tolerance;
-    log["worst_gap_over_d"] = contacts.worstGap / (2.0 * packing.semiAxis);
-    log["overlapping_pairs"] = static_cast<std::int64_t>(contacts.overlappingPairs);
-    log["jammed"] = static_cast<std::int64_t>(jam.jammed);
-    log["jam_check"] = jam.verdict;
-    return packing;
 }
 
 /// Above this exponent a run is warned to be slow (measured, bench/RESULTS.md).
@@ -124,7 +105,7 @@ int generate(const sbpack::GeneratorOptions& o) {
                   << path.string() << ")\n";
         return 128 + stopSignal;
     }
-    const sbpack::Packing packing = finalPacking(protocol);
+    const sbpack::Packing packing = sbpack::finalPacking(protocol);
     sbpack::writePacking(packing, o.out);
     if (!o.quiet)
         std::fprintf(stderr,

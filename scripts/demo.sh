@@ -16,4 +16,4 @@ build/analysis/sbanalyze info build/demo/mrj-spheres-250.h5
 build/analysis/sbanalyze build/demo/mrj-spheres-250.h5 --voxels 100 --pore-voxels 200 --qmax 15 \
   --out build/demo/mrj-spheres-250-results.h5 --vdb build/demo --json -
 build/analysis/sbanalyze convert build/demo/mrj-spheres-250.h5 build/demo/mrj-spheres-250.xyz
-/usr/bin/python3 scripts/figures.py build/demo/mrj-spheres-250-results.h5 build/demo
+PYTHONPATH=build/python /usr/bin/python3 -m sbpack.plot build/demo/mrj-spheres-250-results.h5 --out build/demo

@@ -100,23 +100,27 @@ std::vector<Packing> readAndCheckInputs(const RunSettings& settings) {
     std::vector<Packing> packings;
     for (const fs::path& input : settings.inputs) {
         Packing packing = readPacking(input);
-        for (VoxelGrid grid : settings.grids()) {
-            try {
-                Voxelizer::checkResolution(packing, settings.voxelsOf(grid));
-            } catch (const VoxelResolutionError& e) {
-                throw std::invalid_argument(
-                    quotedName(input) + ": option " +
-                    (grid == VoxelGrid::Pore ? "--pore-voxels " : "--voxels ") +
-                    std::to_string(settings.voxelsOf(grid)) + ": " + e.what());
-            }
-        }
-        checkMemory(packing, settings, quotedName(input));
+        checkPackingForRun(packing, settings, input);
         packings.push_back(std::move(packing));
     }
     return packings;
 }
 
 } // namespace
+
+void checkPackingForRun(const Packing& packing, const RunSettings& settings,
+                        const std::filesystem::path& input) {
+    for (VoxelGrid grid : settings.grids()) {
+        try {
+            Voxelizer::checkResolution(packing, settings.voxelsOf(grid));
+        } catch (const VoxelResolutionError& e) {
+            throw std::invalid_argument(quotedName(input) + ": option " +
+                                        (grid == VoxelGrid::Pore ? "--pore-voxels " : "--voxels ") +
+                                        std::to_string(settings.voxelsOf(grid)) + ": " + e.what());
+        }
+    }
+    checkMemory(packing, settings, quotedName(input));
+}
 
 namespace {
 

@@ -6,6 +6,9 @@
 #include "pipeline/results_file.hpp"
 #include "pipeline/run_settings.hpp"
 
+#include "packing/packing.hpp"
+
+#include <filesystem>
 #include <iosfwd>
 
 namespace sbpack {
@@ -14,6 +17,12 @@ namespace sbpack {
 /// summary requested as "-" goes to `out`. Throws on bad input (before any analysis starts:
 /// threads, output paths, unreadable or invalid packings, grids too coarse, memory) and on
 /// failures, naming the file and the problem.
+/// The checks a packing passes before its analyses start (each grid puts at least 4 voxels across
+/// a particle; the memory the run needs is available); std::invalid_argument naming `input` and
+/// the option. runAnalyses makes them for every input; the Python module (python/) for its own.
+void checkPackingForRun(const Packing& packing, const RunSettings& settings,
+                        const std::filesystem::path& input);
+
 RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out);
 
 } // namespace sbpack

@@ -1,0 +1,115 @@
+"""The analyses of sbanalyze as objects (docs/python.md, "Analyses").
+
+Each takes the command line's options as keywords (``qmax=20`` is ``--qmax 20``; a pair such as
+``alpha_window=(1, 5.8)`` is ``--alpha-window 1,5.8``), checked by sbanalyze's own parser, so the
+defaults and the messages (``ValueError``) are the command line's. ``compute(packing)`` runs the
+same stages as ``sbanalyze --compute NAME`` on that packing and returns the object; the results
+are attributes named as in the results file (docs/results-schema.md), e.g. ``StructureFactor().
+compute(p).S``; ``groups`` holds every group the run filled, as dicts of numpy arrays and numbers.
+"""
+from . import _sbpack
+
+
+def _option(name, value):
+    if isinstance(value, (tuple, list)):
+        value = ",".join(str(v) for v in value)
+    return ["--" + name.replace("_", "-"), str(value)]
+
+
+class _Analysis:
+    _compute = ""   # the --compute name
+    _group = ""     # its results group
+    _options = ()   # the keywords it takes (the command line's options, dashes as underscores)
+
+    def __init__(self, **options):
+        unknown = sorted(set(options) - set(self._options))
+        if unknown:
+            raise TypeError(f"{type(self).__name__}: unknown option(s) {', '.join(unknown)} "
+                            f"(takes {', '.join(self._options)})")
+        args = ["--compute", self._compute]
+        for name, value in options.items():
+            args += _option(name, value)
+        self._analyzer = _sbpack.Analyzer(args)
+        self.groups = None
+
+    def compute(self, packing, input="<python>"):
+        """Runs the analysis on ``packing`` (an sbpack.Packing); returns self. ``input`` is the
+        name the results give the packing (``file['input']``). The GIL is released; Ctrl-C stops
+        it at its next chunk (KeyboardInterrupt)."""
+        self.groups = self._analyzer.compute(packing, input)
+        return self
+
+    @property
+    def threads(self):
+        return self._analyzer.threads
+
+    def __getattr__(self, name):
+        groups = self.__dict__.get("groups")
+        if groups is None:
+            raise AttributeError(f"{type(self).__name__}.{name}: call compute(packing) first")
+        for group in (self._group, *groups):
+            if group in groups and name in groups[group]:
+                return groups[group][name]
+        raise AttributeError(f"{type(self).__name__} has no result '{name}' "
+                             f"(groups: {', '.join(groups)})")
+
+    def __repr__(self):
+        state = "computed" if self.groups is not None else "not computed"
+        return f"<sbpack.{type(self).__name__} ({state})>"
+
+
+_COMMON = ("threads",)
+_FFT = ("voxels", "qmax", "fft_plan", "fft_wisdom")
+
+
+class Contacts(_Analysis):
+    """Contact network: z_mean, rattler_fraction, contacts per particle (--compute contacts)."""
+    _compute, _group = "contacts", "contacts"
+    _options = _COMMON + ("tolerance", "rattler_threshold")
+
+
+class StructureFactor(_Analysis):
+    """S(Q) of the centroids: Q, S, count, Q_w (--compute sq)."""
+    _compute, _group = "sq", "structure_factor"
+    _options = _COMMON + ("qmax",)
+
+
+class SpectralDensity(_Analysis):
+    """chi_V(Q) from the voxels (and exactly, for spheres): Q, chi, Q_w, ... (--compute chi)."""
+    _compute, _group = "chi", "spectral_density"
+    _options = _COMMON + _FFT
+
+
+class PoreSizes(_Analysis):
+    """F(delta), P(delta), <delta>, <delta^2> on the pore grid (--compute pores)."""
+    _compute, _group = "pores", "pore_size"
+    _options = _COMMON + ("pore_voxels", "pore_points")
+
+
+class Transport(_Analysis):
+    """k, tau, T1 from the pore sizes (--compute transport; the pore sizes come with it)."""
+    _compute, _group = "transport", "transport"
+    _options = _COMMON + ("pore_voxels", "pore_points")
+
+
+class Hyperuniformity(_Analysis):
+    """Excess spreadability, alpha, the fit a0 + a1 Q^alpha, H (--compute hyper; chi with it):
+    attributes from the groups spreadability, hyperuniformity, spreadability_debye, ..."""
+    _compute, _group = "hyper", "spreadability"
+    _options = _COMMON + _FFT + ("chi_exact_qmax", "fit_qmax", "alpha_window", "bootstrap",
+                                 "spread_times")
+
+
+def analyze(paths, out, compute="all", quiet=True, **options):
+    """``sbanalyze PATHS... --out OUT --compute COMPUTE [options]`` in-process (the same run:
+    every input checked first, ensembles of equal p and N, the results file written atomically);
+    returns ``read_results(out)``. Options as the command line's (``threads=2``, ``voxels=100``,
+    ``fft_plan="estimate"``, ...); warnings are RuntimeWarnings, stage lines go to sys.stderr
+    unless ``quiet``."""
+    from .results import read_results
+    args = [str(p) for p in ([paths] if isinstance(paths, (str, bytes)) else paths)]
+    args += ["--out", str(out), "--compute", compute] + (["--quiet"] if quiet else [])
+    for name, value in options.items():
+        args += _option(name, value)
+    _sbpack.analyze(args)
+    return read_results(out)

@@ -1,0 +1,131 @@
+// The analyses of sbanalyze for Python (docs/python.md, "Analyses"): options parsed by the command
+// line's own parser (the same names, defaults and messages), then the registry's stages on one
+// packing (pipeline/file_analysis), exactly as sbanalyze runs them; results as dicts by group.
+#include "bindings.hpp"
+
+#include "cli/command_line.hpp"
+#include "parallel/parallel.hpp"
+#include "pipeline/file_analysis.hpp"
+#include "pipeline/run.hpp"
+#include "pores/distance_transform.hpp"
+#include "progress/progress.hpp"
+#include "voxels/voxelization.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sbpack::python {
+
+namespace {
+
+/// Each line sbanalyze would print as a warning, as a Python RuntimeWarning.
+void reportInPython(const std::string& lines) {
+    std::istringstream in(lines);
+    for (std::string line; std::getline(in, line);)
+        if (PyErr_WarnEx(PyExc_RuntimeWarning, line.c_str(), 1) != 0) throw py::error_already_set();
+}
+
+class Analyzer {
+  public:
+    /// `args`: sbanalyze's options without files, e.g. {"--compute", "sq", "--qmax", "20"}.
+    explicit Analyzer(const std::vector<std::string>& args)
+        : settings_(parseAnalyzeArguments(args)) {}
+
+    /// {"file": files/<i> attributes, "<group>": the group, ...} for one packing.
+    py::dict compute(const Packing& packing, const std::string& input) const {
+        checkPackingForRun(packing, settings_, input);
+        std::ostringstream warnings;
+        FileResults results;
+        clearInterrupt();
+        runInterruptibly(
+            [&] {
+                const ThreadBudget budget(settings_.threads); // on the thread that computes
+                const Progress progress(nullptr, &warnings);
+                results = analyzeFile(packing, input, settings_, progress);
+            },
+            requestInterrupt);
+        clearInterrupt();
+        reportInPython(warnings.str());
+        py::dict groups;
+        groups["file"] = recordToDict(results.root);
+        for (const schema::Record& g : results.groups)
+            groups[py::str(std::string(g.group().name))] = recordToDict(g);
+        return groups;
+    }
+
+    std::string analyses() const { return analysisNames(settings_.analyses); }
+    int threads() const { return settings_.threads; }
+
+  private:
+    RunSettings settings_;
+};
+
+/// A whole sbanalyze run (pipeline/run: every input checked first, the ensembles, the results
+/// file written atomically at the end); `args` as the command line's.
+void analyzeFiles(const std::vector<std::string>& args) {
+    const RunSettings settings = parseAnalyzeArguments(args);
+    std::ostringstream log;
+    std::ostringstream out;
+    clearInterrupt();
+    runInterruptibly([&] { runAnalyses(settings, log, out); }, requestInterrupt);
+    clearInterrupt();
+    reportInPython(log.str());
+}
+
+/// The plane x = (i + 1/2) a of the voxelization on an M^3 grid and of its pore-size map (the
+/// stages' Voxelizer and periodicDistanceTransform): (solid[j, k], pore size in length units,
+/// 0 in the solid), for the figure of a packing slice (sbpack.plot).
+py::tuple voxelSlice(const Packing& packing, int voxels, int plane, int threads) {
+    Voxelizer::checkResolution(packing, voxels);
+    if (plane < 0 || plane >= voxels)
+        throw std::invalid_argument("plane " + std::to_string(plane) + " is not in [0, " +
+                                    std::to_string(voxels) + ")");
+    const auto m = static_cast<std::size_t>(voxels);
+    std::vector<std::uint8_t> mask(m * m * m);
+    std::vector<double> distance(m * m);
+    runInterruptibly(
+        [&] {
+            const ThreadBudget budget(threads);
+            const Progress progress;
+            Voxelizer({voxels}).compute(packing, progress).copySolidMask(mask);
+            const PoreSizeMap map =
+                periodicDistanceTransform(mask, voxels, packing.boxLength / voxels);
+            const auto d2 = map.squaredDistances().subspan(plane * m * m, m * m);
+            for (std::size_t i = 0; i < m * m; ++i)
+                distance[i] = std::sqrt(static_cast<double>(d2[i])) * map.voxelSize();
+        },
+        requestInterrupt);
+    clearInterrupt();
+    const auto n = static_cast<py::ssize_t>(m);
+    py::array_t<std::uint8_t> solid({n, n});
+    std::copy_n(mask.begin() + static_cast<std::ptrdiff_t>(plane * m * m), m * m,
+                solid.mutable_data());
+    py::array_t<double> pores({n, n});
+    std::copy(distance.begin(), distance.end(), pores.mutable_data());
+    return py::make_tuple(solid, pores);
+}
+
+} // namespace
+
+void registerAnalyses(py::module_& m) {
+    py::class_<Analyzer>(m, "Analyzer",
+                         "sbanalyze's analyses on one packing at a time; options as the command "
+                         "line's (docs/python.md)")
+        .def(py::init<const std::vector<std::string>&>(), py::arg("args"))
+        .def("compute", &Analyzer::compute, py::arg("packing"), py::arg("input") = "<python>")
+        .def_property_readonly("analyses", &Analyzer::analyses)
+        .def_property_readonly("threads", &Analyzer::threads);
+    m.def("analyze", &analyzeFiles, py::arg("args"),
+          "sbanalyze FILE... [options] in-process (args without the program name)");
+    m.def("voxel_slice", &voxelSlice, py::arg("packing"), py::arg("voxels"), py::arg("plane"),
+          py::arg("threads") = 1,
+          "(solid, pore_size): plane x = (plane + 1/2) L / voxels of the voxelization and of "
+          "the pore-size map (length units; 0 in the solid), as the pores analysis computes them");
+}
+
+} // namespace sbpack::python

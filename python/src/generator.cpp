@@ -1,0 +1,117 @@
+// sbpack.generate: sbgen's jamming protocol in-process (generator/protocol, docs/python.md,
+// "Generator"); a progress callback and Ctrl-C between windows, where the state is synchronised.
+#include "bindings.hpp"
+
+#include "protocol/final_packing.hpp"
+#include "protocol/jamming_protocol.hpp"
+
+#include <pybind11/stl.h>
+
+#include <chrono>
+#include <csignal>
+#include <map>
+#include <string>
+
+namespace sbpack::python {
+
+namespace {
+
+const char* phaseName(Phase phase) {
+    return phase == Phase::Fast ? "fast" : phase == Phase::Slow ? "slow" : "done";
+}
+
+py::dict statusDict(const ProtocolStatus& s) {
+    py::dict d;
+    d["phase"] = phaseName(s.phase);
+    d["phi"] = s.packingFraction;
+    d["reduced_pressure"] = s.reducedPressure;
+    d["collisions"] = s.collisions;
+    d["windows"] = s.windows;
+    d["wall_s"] = s.wallSeconds;
+    return d;
+}
+
+/// The protocol's validation, its parameters named by generate's keywords.
+void validateAsKeywords(const ProtocolParameters& parameters) {
+    static const std::map<std::string, std::string> kKeyword = {
+        {"n_particles", "n"}, {"collisions_per_window", "window"}};
+    try {
+        parameters.validate();
+    } catch (const ProtocolParameterError& e) {
+        const auto it = kKeyword.find(e.parameter());
+        throw py::value_error((it == kKeyword.end() ? e.parameter() : it->second) + ": " +
+                              e.problem());
+    }
+}
+
+/// Runs the protocol with the GIL released; after each window, with the GIL: Python's signals
+/// (Ctrl-C stops the run at the end of the window) and `progress` every `interval` seconds.
+bool runProtocol(JammingProtocol& protocol, const py::object& progress, double interval) {
+    volatile std::sig_atomic_t stop = 0;
+    volatile std::sig_atomic_t stopNow = 0;
+    auto last = std::chrono::steady_clock::now();
+    py::gil_scoped_release release;
+    return protocol.run(&stop, &stopNow, [&](const ProtocolStatus& s) {
+        py::gil_scoped_acquire acquire;
+        try {
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+            const auto now = std::chrono::steady_clock::now();
+            if (!progress.is_none() &&
+                (s.phase == Phase::Done ||
+                 std::chrono::duration<double>(now - last).count() >= interval)) {
+                progress(statusDict(s));
+                last = now;
+            }
+        } catch (py::error_already_set& e) {
+            e.restore(); // raised once the run has stopped
+            stop = 1;
+        }
+    });
+}
+
+Packing generate(const ProtocolParameters& parameters, const py::object& progress,
+                 double interval) {
+    validateAsKeywords(parameters);
+    JammingProtocol protocol(parameters);
+    const bool done = runProtocol(protocol, progress, interval);
+    if (PyErr_Occurred() != nullptr) throw py::error_already_set();
+    if (!done) throw std::logic_error("sbpack.generate: the protocol stopped without a reason");
+    if (!protocol.status().jam->jammed &&
+        PyErr_WarnEx(
+            PyExc_RuntimeWarning,
+            ("not jammed (provenance jammed = 0): " + protocol.status().jam->verdict).c_str(),
+            1) != 0)
+        throw py::error_already_set();
+    return finalPacking(protocol);
+}
+
+} // namespace
+
+void registerGenerator(py::module_& m) {
+    m.def(
+        "generate",
+        [](int n, double p, std::uint64_t seed, double phiInit, double gammaFast, double gammaSlow,
+           double pressureSwitch, double pressureFinal, double window, const py::object& progress,
+           double progressInterval) {
+            ProtocolParameters parameters;
+            parameters.particles = n;
+            parameters.p = p;
+            parameters.seed = seed;
+            parameters.phiInit = phiInit;
+            parameters.gammaFast = gammaFast;
+            parameters.gammaSlow = gammaSlow;
+            parameters.pressureSwitch = pressureSwitch;
+            parameters.pressureFinal = pressureFinal;
+            parameters.collisionsPerWindow = window;
+            return generate(parameters, progress, progressInterval);
+        },
+        py::kw_only(), py::arg("n") = 1000, py::arg("p") = 1.0, py::arg("seed") = 1,
+        py::arg("phi_init") = 0.2, py::arg("gamma_fast") = 0.01, py::arg("gamma_slow") = 1e-4,
+        py::arg("pressure_switch") = 1e6, py::arg("pressure_final") = 1e12,
+        py::arg("window") = 10.0, py::arg("progress") = py::none(),
+        py::arg("progress_interval") = 2.0,
+        "Jams a packing as sbgen does with the same options (docs/python.md); progress(status) "
+        "every progress_interval seconds; Ctrl-C stops at the end of the running window");
+}
+
+} // namespace sbpack::python

@@ -1,0 +1,136 @@
+// sbpack.Packing: the packing model of common/packing, read and written by common/io, built from
+// numpy arrays with the file readers' checks (docs/python.md, "Packing").
+#include "bindings.hpp"
+
+#include "io/packing_io.hpp"
+#include "io/text_io.hpp"
+#include "packing/validation.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
+#include <string>
+
+namespace sbpack::python {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+/// The HDF5 reader's message for a misshapen dataset (common/io/hdf5_handles.cpp):
+/// "'<source>': dataset '/positions': has shape 5 x 2, expected 5 x 3".
+void checkShape(const Array& a, const char* name, py::ssize_t rows, py::ssize_t cols,
+                const std::string& source) {
+    if (a.ndim() == 2 && a.shape(0) == rows && a.shape(1) == cols) return;
+    std::string shape = "rank " + std::to_string(a.ndim());
+    if (a.ndim() == 2) shape = std::to_string(a.shape(0)) + " x " + std::to_string(a.shape(1));
+    throw InvalidPacking("'" + source + "': dataset '/" + name + "': has shape " + shape +
+                         ", expected " + std::to_string(rows) + " x " + std::to_string(cols));
+}
+
+/// A packing from arrays, validated and canonicalised as the readers do (common/io).
+Packing fromArrays(const Array& positions, const Array& orientations, double boxLength, double p,
+                   double semiAxis, const std::string& source) {
+    const py::ssize_t n = positions.ndim() == 2 ? positions.shape(0) : 0;
+    checkShape(positions, "positions", n, 3, source);
+    checkShape(orientations, "orientations", n, 4, source);
+    Packing packing;
+    packing.p = p;
+    packing.boxLength = boxLength;
+    packing.semiAxis = semiAxis;
+    const auto r = positions.unchecked<2>();
+    const auto q = orientations.unchecked<2>();
+    for (py::ssize_t i = 0; i < n; ++i) {
+        packing.positions.emplace_back(r(i, 0), r(i, 1), r(i, 2));
+        packing.orientations.emplace_back(q(i, 0), q(i, 1), q(i, 2), q(i, 3));
+    }
+    validatePacking(packing, source);
+    canonicalizePacking(packing);
+    return packing;
+}
+
+bool isText(const fs::path& file) {
+    return file.extension() == ".txt";
+}
+
+Packing read(const fs::path& file) {
+    py::gil_scoped_release release;
+    return isText(file) ? readTextPacking(file) : readPacking(file);
+}
+
+void write(const Packing& packing, const fs::path& file) {
+    py::gil_scoped_release release;
+    if (isText(file)) {
+        writeTextPacking(packing, file);
+    } else if (file.extension() == ".xyz") {
+        writeExtendedXyz(packing, file);
+    } else {
+        writePacking(packing, file);
+    }
+}
+
+py::array_t<double> positionsOf(const Packing& packing) {
+    py::array_t<double> a({static_cast<py::ssize_t>(packing.size()), py::ssize_t(3)});
+    auto v = a.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < v.shape(0); ++i)
+        for (py::ssize_t k = 0; k < 3; ++k)
+            v(i, k) = packing.positions[i][k];
+    return a;
+}
+
+/// (w, x, y, z) per row, as the packing file.
+py::array_t<double> orientationsOf(const Packing& packing) {
+    py::array_t<double> a({static_cast<py::ssize_t>(packing.size()), py::ssize_t(4)});
+    auto v = a.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < v.shape(0); ++i) {
+        const Quaterniond& q = packing.orientations[i];
+        v(i, 0) = q.w();
+        v(i, 1) = q.x();
+        v(i, 2) = q.y();
+        v(i, 3) = q.z();
+    }
+    return a;
+}
+
+py::dict provenanceOf(const Packing& packing) {
+    py::dict d;
+    for (const auto& entry : packing.provenance) // (clang 14 captures no structured bindings)
+        std::visit([&d, &entry](const auto& v) { d[py::str(entry.first)] = v; }, entry.second);
+    return d;
+}
+
+} // namespace
+
+void registerPacking(py::module_& m) {
+    py::class_<Packing>(m, "Packing", "Identical superballs in a cubic periodic box")
+        .def(py::init(&fromArrays), py::arg("positions"), py::arg("orientations"),
+             py::arg("box_length"), py::arg("p") = 1.0, py::arg("semi_axis") = 0.5,
+             py::arg("source") = "arrays",
+             "From N x 3 positions and N x 4 unit quaternions (w, x, y, z); checked as the file "
+             "readers check (ValueError with their message, naming `source`)")
+        .def_static("read", &read, py::arg("path"), "Reads a .h5 (or .txt) packing file")
+        .def("write", &write, py::arg("path"), "Writes .h5, .txt or .xyz (OVITO), atomically")
+        .def_property_readonly("positions", &positionsOf, "N x 3 centroids in [0, L)")
+        .def_property_readonly("orientations", &orientationsOf, "N x 4 quaternions (w, x, y, z)")
+        .def_readonly("box_length", &Packing::boxLength)
+        .def_readonly("p", &Packing::p)
+        .def_readonly("semi_axis", &Packing::semiAxis)
+        .def_readonly("reduced_pressure", &Packing::reducedPressure)
+        .def_readonly("seed", &Packing::seed)
+        .def_property_readonly("phi", &Packing::packingFraction, "N v1 / L^3")
+        .def_property_readonly(
+            "mean_width", [](const Packing& p) { return p.shape().meanWidth(); },
+            "mean width w of one superball")
+        .def_property_readonly("provenance", &provenanceOf, "sbgen's parameters and run log")
+        .def("__len__", &Packing::size)
+        .def("__repr__", [](const Packing& p) {
+            return "<sbpack.Packing N=" + std::to_string(p.size()) +
+                   " p=" + py::repr(py::float_(p.p)).cast<std::string>() +
+                   " phi=" + py::repr(py::float_(p.packingFraction())).cast<std::string>() + ">";
+        });
+}
+
+} // namespace sbpack::python

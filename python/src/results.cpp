@@ -1,0 +1,48 @@
+// Results groups as Python dicts: the schema's names (docs/results-schema.md), datasets as numpy
+// arrays; and sbpack._sbpack.schema_json() for readers.
+#include "bindings.hpp"
+
+#include "schema/results_schema.hpp"
+
+#include <pybind11/numpy.h>
+
+#include <variant>
+
+namespace sbpack::python {
+
+namespace {
+
+template <class T> py::array_t<T> toArray(const std::vector<T>& values) {
+    py::array_t<T> a(static_cast<py::ssize_t>(values.size()));
+    std::copy(values.begin(), values.end(), a.mutable_data());
+    return a;
+}
+
+py::object toPython(const schema::Value& value) {
+    return std::visit(
+        [](const auto& v) -> py::object {
+            using T = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, std::vector<double>> ||
+                          std::is_same_v<T, std::vector<std::int64_t>>)
+                return toArray(v);
+            else
+                return py::cast(v);
+        },
+        value);
+}
+
+} // namespace
+
+py::dict recordToDict(const schema::Record& record) {
+    py::dict d;
+    for (const schema::Entry& e : record.entries())
+        d[py::str(std::string(e.field->name))] = toPython(e.value);
+    return d;
+}
+
+void registerResults(py::module_& m) {
+    m.def("schema_json", &schema::schemaJson,
+          "The results schema (groups, names, units) as JSON, as `sbanalyze schema --json`");
+}
+
+} // namespace sbpack::python

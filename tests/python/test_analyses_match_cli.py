@@ -1,0 +1,80 @@
+"""The module's analyses give sbanalyze's results bit for bit (the same stages on the same
+packing): every dataset and number of every group, for every data/*.h5, but the timings."""
+import glob
+import os
+import warnings
+
+import numpy as np
+import pytest
+
+import sbpack
+from conftest import DATA, FAST, cli_args, run
+
+PACKINGS = sorted(glob.glob(os.path.join(DATA, "*.h5")))
+OPTIONS = dict(FAST, voxels=100, pore_voxels=100, bootstrap=20)
+ANALYSES = [
+    (sbpack.Contacts, "contacts", {"tolerance": 1e-6}),
+    (sbpack.StructureFactor, "sq", {"qmax": 20}),
+    (sbpack.SpectralDensity, "chi", {}),
+    (sbpack.PoreSizes, "pores", {}),
+    (sbpack.Transport, "transport", {}),
+    (sbpack.Hyperuniformity, "hyper", {}),
+]
+def is_timing(name):
+    """Wall-clock times (units "s" in docs/results-schema.md: runtime_s, fft_s, ...)."""
+    return name.endswith("_s")
+
+
+def assert_same_group(cli, module, where):
+    names = {k for k in cli if k != "units" and not is_timing(k)}
+    assert names == {k for k in module if not is_timing(k)}, where
+    for name in names:
+        a, b = cli[name], module[name]
+        if isinstance(a, np.ndarray):
+            assert a.dtype == b.dtype and np.array_equal(a, b), f"{where}/{name}"
+        else:
+            assert a == b, f"{where}/{name}: {a} != {b}"
+
+
+@pytest.mark.parametrize("cls,compute,extra", ANALYSES, ids=[a[1] for a in ANALYSES])
+def test_module_equals_cli(sbanalyze, tmp_path, cls, compute, extra):
+    options = {k: v for k, v in {**OPTIONS, **extra}.items() if k in cls._options}
+    out = tmp_path / "cli.h5"
+    r = run([sbanalyze, *PACKINGS, "--compute", compute, "--quiet", "--out", str(out),
+             *cli_args(options)])
+    assert r.returncode == 0, r.stderr
+    files = sbpack.read_results(out)["files"]
+    analysis = cls(**options)
+    for path, cli in zip(PACKINGS, files):
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)  # skipped groups, as the CLI warns
+            groups = analysis.compute(sbpack.Packing.read(path), input=path).groups
+        assert set(groups) - {"file"} == {g for g in cli if isinstance(cli[g], dict)} - {"units"}
+        assert_same_group({k: v for k, v in cli.items() if not isinstance(v, dict)},
+                          groups["file"], path)
+        for group in set(groups) - {"file"}:
+            assert_same_group(cli[group], groups[group], f"{path}/{group}")
+
+
+def test_attributes_are_the_groups_values():
+    s = sbpack.StructureFactor(qmax=10, threads=2)
+    with pytest.raises(AttributeError, match="compute"):
+        s.S
+    s.compute(sbpack.Packing.read(os.path.join(DATA, "mrj-p1.5-1000.h5")))
+    assert np.array_equal(s.S, s.groups["structure_factor"]["S"])
+    assert s.qmax == 10 and len(s.Q) == s.max_shell
+    with pytest.raises(AttributeError, match="no result"):
+        s.chi
+
+
+def test_hyperuniformity_skipped_on_a_small_box_warns():
+    packing = sbpack.Packing.read(os.path.join(DATA, "dense-p10-200.h5"))
+    h = sbpack.Hyperuniformity(voxels=100, **FAST)
+    with pytest.warns(RuntimeWarning, match="alpha window"):
+        h.compute(packing)
+    assert "spreadability" not in h.groups and "spectral_density" in h.groups
+
+
+def test_unknown_option_is_a_type_error():
+    with pytest.raises(TypeError, match="unknown option.*voxels"):
+        sbpack.StructureFactor(voxels=10)

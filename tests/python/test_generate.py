@@ -1,0 +1,59 @@
+"""sbpack.generate runs sbgen's protocol in-process: the same packing as sbgen with the same seed
+and options, bit for bit (every dataset and provenance entry but the timings)."""
+import numpy as np
+import pytest
+
+import sbpack
+from conftest import run
+
+RUNS = {
+    "spheres": dict(n=30, seed=3, gamma_slow=1e-3, pressure_switch=1e5, pressure_final=1e8),
+    "superballs": dict(n=20, p=1.5, seed=3, gamma_slow=1e-2, pressure_switch=1e5,
+                       pressure_final=1e8),
+}
+TIMES = ("wall_time_s", "cpu_time_s")
+
+
+def sbgen_options(options):
+    flags = {"n": "--n", "p": "--p", "seed": "--seed", "gamma_slow": "--gamma-slow",
+             "pressure_switch": "--pressure-switch", "pressure_final": "--pressure-final"}
+    return [a for k, v in options.items() for a in (flags[k], str(v))]
+
+
+@pytest.mark.parametrize("case", RUNS)
+def test_generate_equals_sbgen(sbgen, tmp_path, case):
+    options = RUNS[case]
+    out = tmp_path / "sbgen.h5"
+    r = run([sbgen, *sbgen_options(options), "--quiet", "--out", str(out)])
+    assert r.returncode == 0, r.stderr
+    statuses = []
+    mine = sbpack.generate(**options, progress=statuses.append, progress_interval=0.0)
+    theirs = sbpack.Packing.read(out)
+    assert np.array_equal(mine.positions, theirs.positions)
+    assert np.array_equal(mine.orientations, theirs.orientations)
+    assert (mine.box_length, mine.p, mine.semi_axis, mine.reduced_pressure, mine.seed) == (
+        theirs.box_length, theirs.p, theirs.semi_axis, theirs.reduced_pressure, theirs.seed)
+    a, b = mine.provenance, theirs.provenance
+    assert set(a) == set(b)
+    assert {k: a[k] for k in a if k not in TIMES} == {k: b[k] for k in b if k not in TIMES}
+    assert a["jammed"] == 1 and mine.reduced_pressure >= options["pressure_final"]
+    assert statuses[-1]["phase"] == "done" and len(statuses) == statuses[-1]["windows"]
+    assert statuses[-1]["phi"] == pytest.approx(mine.phi, rel=1e-12)
+
+
+@pytest.mark.parametrize("options,message", [
+    (dict(phi_init=0.7), "phi_init: must be in"),
+    (dict(n=1), "n: need at least 2"),
+    (dict(p=0.5), "p: must be in"),
+    (dict(pressure_switch=1e9, pressure_final=1e8), "pressure_final: must be larger"),
+])
+def test_bad_parameters_raise_value_error(options, message):
+    with pytest.raises(ValueError, match=message):
+        sbpack.generate(**options)
+
+
+def test_an_exception_in_progress_stops_the_run():
+    def stop(status):
+        raise RuntimeError(f"stop at {status['windows']}")
+    with pytest.raises(RuntimeError, match="stop at 1$"):
+        sbpack.generate(n=200, seed=1, progress=stop, progress_interval=0.0)

@@ -1,0 +1,96 @@
+"""sbpack.Packing: files through the C++ readers and writers, arrays with the readers' checks and
+the command line's messages (ValueError)."""
+import os
+
+import h5py
+import numpy as np
+import pytest
+
+import sbpack
+from conftest import DATA, run
+
+P15 = os.path.join(DATA, "mrj-p1.5-1000.h5")
+
+
+def test_properties_of_a_stored_packing():
+    p = sbpack.Packing.read(P15)
+    with h5py.File(P15) as f:
+        assert np.array_equal(p.positions, f["positions"][:])
+        assert np.array_equal(p.orientations, f["orientations"][:])
+        assert p.box_length == f.attrs["box_length"] and p.p == f.attrs["p"]
+        assert p.semi_axis == f.attrs["semi_axis"] and len(p) == f.attrs["n_particles"]
+        assert abs(p.phi - f.attrs["phi"]) < 1e-12
+        assert p.provenance["seed"] == f["provenance"].attrs["seed"]
+    assert p.positions.shape == (1000, 3) and p.orientations.shape == (1000, 4)
+
+
+@pytest.mark.parametrize("suffix", [".h5", ".txt"])
+def test_round_trip_is_exact(tmp_path, suffix):
+    p = sbpack.Packing.read(P15)
+    path = tmp_path / f"copy{suffix}"
+    p.write(path)
+    q = sbpack.Packing.read(path)
+    assert np.array_equal(p.positions, q.positions)
+    assert np.array_equal(p.orientations, q.orientations)
+    assert (p.box_length, p.p, p.semi_axis) == (q.box_length, q.p, q.semi_axis)
+
+
+def test_arrays_make_the_same_packing_as_the_file():
+    p = sbpack.Packing.read(P15)
+    q = sbpack.Packing(p.positions, p.orientations, p.box_length, p=p.p, semi_axis=p.semi_axis)
+    assert np.array_equal(p.positions, q.positions) and q.phi == p.phi
+
+
+def text_packing(path, p, rows):
+    lines = ["# sbpack text packing v1", f"# p {p}", "# semi_axis 0.5", "# box_length 5",
+             f"# n_particles {len(rows)}"] + [" ".join(map(str, r)) for r in rows]
+    path.write_text("\n".join(lines) + "\n")
+
+
+def cli_error(sbanalyze, path, tmp_path):
+    r = run([sbanalyze, "convert", str(path), str(tmp_path / "out.h5")])
+    assert r.returncode == 1
+    return r.stderr.strip().removeprefix("sbanalyze: error: ")
+
+
+BAD = {
+    "nan position": (1.5, [[0, 0, 0, 1, 0, 0, 0], [float("nan"), 1, 1, 1, 0, 0, 0]]),
+    "unnormalised quaternion": (1.5, [[0, 0, 0, 1, 0, 0, 0], [1, 1, 1, 2, 0, 0, 0]]),
+    "p out of range": (0.3, [[0, 0, 0, 1, 0, 0, 0], [1, 1, 1, 1, 0, 0, 0]]),
+}
+
+
+@pytest.mark.parametrize("case", BAD)
+def test_bad_arrays_raise_the_clis_message(sbanalyze, tmp_path, case):
+    p, rows = BAD[case]
+    path = tmp_path / "bad.txt"
+    text_packing(path, p, rows)
+    rows = np.array(rows, dtype=float)
+    with pytest.raises(ValueError) as error:
+        sbpack.Packing(rows[:, :3], rows[:, 3:], 5.0, p=p, semi_axis=0.5, source=str(path))
+    assert str(error.value) == cli_error(sbanalyze, path, tmp_path)
+
+
+def test_wrong_shape_raises_the_clis_message(sbanalyze, tmp_path):
+    path = tmp_path / "shape.h5"
+    with h5py.File(path, "w") as f:
+        f.attrs.update({"format": "sbpack.packing", "format_version": np.int64(1), "p": 1.0,
+                        "box_length": 5.0, "semi_axis": 0.5, "n_particles": np.int64(2),
+                        "phi": 2 * np.pi / 6 / 125})
+        f["positions"] = np.zeros((2, 3))
+        f["orientations"] = np.zeros((2, 3))
+    with pytest.raises(ValueError) as error:
+        sbpack.Packing(np.zeros((2, 3)), np.zeros((2, 3)), 5.0, source=str(path))
+    assert str(error.value) == cli_error(sbanalyze, path, tmp_path)
+
+
+def test_bad_option_raises_the_clis_message(sbanalyze, tmp_path):
+    r = run([sbanalyze, P15, "--compute", "sq", "--qmax", "-1", "--json", "-"])
+    with pytest.raises(ValueError) as error:
+        sbpack.StructureFactor(qmax=-1)
+    assert r.returncode == 1 and str(error.value) in r.stderr
+
+
+def test_a_missing_file_is_an_os_error(tmp_path):
+    with pytest.raises(OSError, match="no such file"):
+        sbpack.Packing.read(tmp_path / "missing.h5")
