@@ -289,13 +289,21 @@ std::string readStringAttribute(hid_t object, const std::string& name) {
         H5free_memory(text);
         return value;
     }
+    // The raw bytes, in the file's own string type: HDF5's conversion to a NUL-terminated type
+    // would stop at the first NUL and hide what follows it.
     const size_t size = H5Tget_size(type.get());
-    const Hdf5Handle memoryType = stringType(size + 1, charset); // room for the terminator
-    H5Tset_strpad(memoryType.get(), H5T_STR_NULLTERM);
-    std::string buffer(size + 1, '\0');
+    const Hdf5Handle memoryType(H5Tcopy(type.get()), H5Tclose);
+    std::string buffer(size, '\0');
     checked(H5Aread(attribute.get(), memoryType.get(), buffer.data()), object, name, "attribute",
             "read");
-    return std::string(buffer.c_str());
+    // Padding is trailing spaces (SPACEPAD) or NULs; a NUL left before other characters would
+    // silently cut the string short (e.g. "sbpack.packing\0..." read as the format): refused.
+    const bool spaces = H5Tget_strpad(type.get()) == H5T_STR_SPACEPAD;
+    const std::size_t end = buffer.find_last_not_of(spaces ? ' ' : '\0');
+    buffer.resize(end == std::string::npos ? 0 : end + 1);
+    if (buffer.find('\0') != std::string::npos)
+        fail(object, name, "attribute", "a fixed-length string with an embedded NUL character");
+    return buffer;
 }
 
 void writeMatrixDataset(hid_t parent, const std::string& name, std::span<const double> values,

@@ -56,8 +56,17 @@ void validatePacking(const Packing& packing, const std::string& source) {
         reject(source, "reduced_pressure = " + formatDouble(*packing.reducedPressure) +
                            " (must be finite)");
 
+    if (2.0 * packing.semiAxis > packing.boxLength)
+        reject(source, "semi_axis = " + formatDouble(packing.semiAxis) +
+                           ": a particle is wider than the box (L = " +
+                           formatDouble(packing.boxLength) + ") and overlaps its own image");
     const std::size_t n = packing.positions.size();
     if (n == 0) reject(source, "no particles");
+    // Finite sizes can still overflow or underflow the volume (semi_axis 1e300 or 1e-300).
+    const double phi = packing.packingFraction();
+    if (!(std::isfinite(phi) && phi > 0.0))
+        reject(source, "packing fraction N v1 / L^3 = " + formatDouble(phi) +
+                           " (semi_axis and box_length out of range)");
     if (packing.orientations.size() != n)
         reject(source, std::to_string(n) + " positions but " +
                            std::to_string(packing.orientations.size()) +

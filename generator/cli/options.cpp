@@ -94,7 +94,8 @@ void GeneratorCommandLine::addProtocolOptions() {
         "growth rate until --pressure-switch (default 0.01)");
     protocol(
         "--gamma-slow", [&p](auto n, auto v) { p.gammaSlow = parseNumber(n, v); },
-        "growth rate from there to --pressure-final (default 1e-4)");
+        "growth rate from there to --pressure-final (default 1e-4 for spheres, 1e-2\n"
+        "for superballs: bench/RESULTS.md, \"Fidelity\")");
     protocol(
         "--pressure-switch", [&p](auto n, auto v) { p.pressureSwitch = parseNumber(n, v); },
         "reduced pressure at which growth slows (default 1e6)");

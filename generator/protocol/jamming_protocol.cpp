@@ -82,7 +82,32 @@ std::uint64_t optionalCounter(const Packing& packing, const std::string& key,
     return packing.provenance.count(key) == 0 ? 0 : counterValue(packing, key, source);
 }
 
+/// The engine's growth clock from a checkpoint, refused if tampered with: a non-positive size
+/// or rate, or a diameter that disagrees with the packing's semi_axis (a resume must continue
+/// the packing in the file, not silently another size).
+GrowthClock growthClockOf(const Packing& packing, const std::string& source) {
+    const GrowthClock clock{stateValue<double>(packing, "state_base_diameter", source),
+                            stateValue<double>(packing, "state_growth_elapsed", source),
+                            stateValue<double>(packing, "state_growth_rate", source)};
+    const auto refuse = [&](const std::string& problem) {
+        throw std::invalid_argument("'" + source + "': checkpoint state " + problem);
+    };
+    if (!positiveFinite(clock.baseDiameter)) refuse("state_base_diameter must be positive");
+    if (!positiveFinite(clock.rate)) refuse("state_growth_rate must be positive");
+    if (!(std::isfinite(clock.elapsed) && clock.elapsed >= 0.0))
+        refuse("state_growth_elapsed must be finite and non-negative");
+    const double diameter = 2.0 * packing.semiAxis;
+    if (std::abs(clock.diameter() - diameter) > 1e-12 * diameter)
+        refuse("gives the diameter " + std::to_string(clock.diameter()) +
+               ", not 2 semi_axis = " + std::to_string(diameter));
+    return clock;
+}
+
 } // namespace
+
+double ProtocolParameters::slowGrowthRate() const {
+    return gammaSlow.value_or(p == 1.0 ? 1e-4 : 1e-2);
+}
 
 void ProtocolParameters::validate() const {
     require(particles >= 2, "n_particles", "need at least 2 particles");
@@ -93,7 +118,7 @@ void ProtocolParameters::validate() const {
     require(std::isfinite(phiInit) && phiInit > 0.0 && phiInit < 0.5, "phi_init",
             "must be in (0, 0.5)");
     require(positiveFinite(gammaFast), "gamma_fast", "must be positive and finite");
-    require(positiveFinite(gammaSlow), "gamma_slow", "must be positive and finite");
+    require(!gammaSlow || positiveFinite(*gammaSlow), "gamma_slow", "must be positive and finite");
     require(positiveFinite(pressureSwitch), "pressure_switch", "must be positive and finite");
     require(positiveFinite(pressureFinal), "pressure_final", "must be positive and finite");
     require(pressureFinal > pressureSwitch, "pressure_final",
@@ -147,9 +172,7 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
     if (packing.provenance.count("cpu_time_s") != 0)
         status_.cpuSeconds = stateValue<double>(packing, "cpu_time_s", source);
     status_.packingFraction = packing.packingFraction();
-    const GrowthClock clock{stateValue<double>(packing, "state_base_diameter", source),
-                            stateValue<double>(packing, "state_growth_elapsed", source),
-                            stateValue<double>(packing, "state_growth_rate", source)};
+    const GrowthClock clock = growthClockOf(packing, source);
     std::vector<ParticleState> state(packing.size());
     for (std::size_t i = 0; i < packing.size(); ++i) {
         state[i] = {packing.positions[i], packing.velocities[i], packing.orientations[i]};
@@ -221,7 +244,7 @@ void JammingProtocol::finishWindow(double virial, double duration) {
             const double sustained = std::min(previous, status_.reducedPressure);
             if (status_.phase == Phase::Fast && sustained >= parameters_.pressureSwitch) {
                 status_.phase = Phase::Slow;
-                engine.setGrowthRate(parameters_.gammaSlow);
+                engine.setGrowthRate(parameters_.slowGrowthRate());
             }
         },
         engine_);
@@ -284,7 +307,7 @@ Packing JammingProtocol::checkpoint() const {
     log["seed"] = static_cast<std::int64_t>(parameters_.seed);
     log["phi_init"] = parameters_.phiInit;
     log["gamma_fast"] = parameters_.gammaFast;
-    log["gamma_slow"] = parameters_.gammaSlow;
+    log["gamma_slow"] = parameters_.slowGrowthRate();
     log["pressure_switch"] = parameters_.pressureSwitch;
     log["pressure_final"] = parameters_.pressureFinal;
     log["collisions_per_window"] = parameters_.collisionsPerWindow;

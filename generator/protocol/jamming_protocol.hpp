@@ -36,12 +36,19 @@ struct ProtocolParameters {
     std::uint64_t seed = 1;
     double phiInit = 0.2;
     double gammaFast = 0.01;
-    double gammaSlow = 1e-4;
+    /// Unset: slowGrowthRate()'s default for p.
+    std::optional<double> gammaSlow;
     double pressureSwitch = 1e6;
     double pressureFinal = 1e12;
     double collisionsPerWindow = 10.0; ///< per particle, between thermostat rescalings
     /// The contact-network criterion of the jam, checked before a jam is declared.
     JamCheckParameters jamCheck{};
+
+    /// The slow rate used: gammaSlow if set, else 1e-4 for spheres (Z = 5.978 +- 0.005 at
+    /// N = 1000, where 1e-3 leaves 5.94) and 1e-2 for superballs, whose Z keeps rising as the
+    /// slow phase slows (p = 1.5: 7.95 at 1e-2, 8.13 at 1e-3; paper 7.925) while each collision
+    /// costs ten times a sphere's (bench/RESULTS.md, "Fidelity").
+    double slowGrowthRate() const;
 
     /// Throws ProtocolParameterError naming the first bad parameter (by its provenance name,
     /// e.g. "phi_init"; the command line maps it to its option).

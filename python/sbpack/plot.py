@@ -159,15 +159,17 @@ def paper_markers(ax, paper, column, scale):
                 label="paper (Maher et al.)")
 
 
-def versus_p(runs, axes):
+def panels_with_data(runs):
+    """The PANELS the results have values for."""
+    return [panel for panel in PANELS if ensemble_points(runs, panel[0], panel[1])]
+
+
+def versus_p(runs, axes, panels):
     paper = paper_values()
     sizes = sorted({e["n_particles"] for r in runs for e in r["ensembles"]})
     colour = {n: f"C{i % 10}" for i, n in enumerate(sizes)}  # one colour per N in every panel
-    for ax, (group, name, ylabel, column, scale) in zip(axes, PANELS):
+    for ax, (group, name, ylabel, column, scale) in zip(axes, panels):
         series = ensemble_points(runs, group, name)
-        if not series:
-            ax.set_axis_off()
-            continue
         for n, pts in series.items():
             ax.errorbar(pts[:, 0], pts[:, 1], yerr=pts[:, 2], fmt="o-", ms=4, lw=0.8,
                         capsize=3, color=colour[n], label=f"N = {n} (mean $\\pm$ std)")
@@ -182,7 +184,7 @@ def versus_p(runs, axes):
             ax.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
             ax.xaxis.set_minor_formatter(ticker.NullFormatter())
         ax.set(xlabel=r"$p$", ylabel=ylabel)
-    for ax in axes[len(PANELS):]:
+    for ax in axes[len(panels):]:
         ax.set_axis_off()
     axes[0].figure.suptitle("Against the superball exponent $p$ (every quantity dimensionless; "
                             "markers: paper, Maher et al.)")
@@ -239,8 +241,11 @@ def make_figures(paths, packing_path=None, slice_voxels=200):
         figures["pore_size"], ax = plt.subplots(figsize=(6, 4))
         pore_size(runs, ax)
     if has_several_p(runs):
-        figures["versus_p"], axes = plt.subplots(2, 4, figsize=(15, 7))
-        versus_p(runs, axes.ravel())
+        panels = panels_with_data(runs)  # a grid of 4 columns, only as many rows as needed
+        rows, columns = (len(panels) + 3) // 4, min(4, len(panels))
+        figures["versus_p"], axes = plt.subplots(rows, columns, figsize=(3.8 * columns, 3.5 * rows),
+                                                 squeeze=False)
+        versus_p(runs, axes.ravel(), panels)
     packing_file = slice_packing(runs, packing_path)
     if packing_file is not None and slice_voxels > 0:
         from . import _sbpack

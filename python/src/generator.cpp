@@ -7,6 +7,8 @@
 
 #include <pybind11/stl.h>
 
+#include <optional>
+
 #include <chrono>
 #include <csignal>
 #include <map>
@@ -88,30 +90,33 @@ Packing generate(const ProtocolParameters& parameters, const py::object& progres
 } // namespace
 
 void registerGenerator(py::module_& m) {
+    using Option = std::optional<double>;
     m.def(
         "generate",
-        [](int n, double p, std::uint64_t seed, double phiInit, double gammaFast, double gammaSlow,
-           double pressureSwitch, double pressureFinal, double window, const py::object& progress,
+        [](int n, double p, std::uint64_t seed, Option phiInit, Option gammaFast, Option gammaSlow,
+           Option pressureSwitch, Option pressureFinal, Option window, const py::object& progress,
            double progressInterval) {
+            // Options left None keep ProtocolParameters' defaults, which are sbgen's.
             ProtocolParameters parameters;
             parameters.particles = n;
             parameters.p = p;
             parameters.seed = seed;
-            parameters.phiInit = phiInit;
-            parameters.gammaFast = gammaFast;
-            parameters.gammaSlow = gammaSlow;
-            parameters.pressureSwitch = pressureSwitch;
-            parameters.pressureFinal = pressureFinal;
-            parameters.collisionsPerWindow = window;
+            parameters.phiInit = phiInit.value_or(parameters.phiInit);
+            parameters.gammaFast = gammaFast.value_or(parameters.gammaFast);
+            if (gammaSlow) parameters.gammaSlow = gammaSlow;
+            parameters.pressureSwitch = pressureSwitch.value_or(parameters.pressureSwitch);
+            parameters.pressureFinal = pressureFinal.value_or(parameters.pressureFinal);
+            parameters.collisionsPerWindow = window.value_or(parameters.collisionsPerWindow);
             return generate(parameters, progress, progressInterval);
         },
         py::kw_only(), py::arg("n") = 1000, py::arg("p") = 1.0, py::arg("seed") = 1,
-        py::arg("phi_init") = 0.2, py::arg("gamma_fast") = 0.01, py::arg("gamma_slow") = 1e-4,
-        py::arg("pressure_switch") = 1e6, py::arg("pressure_final") = 1e12,
-        py::arg("window") = 10.0, py::arg("progress") = py::none(),
-        py::arg("progress_interval") = 2.0,
-        "Jams a packing as sbgen does with the same options (docs/python.md); progress(status) "
-        "every progress_interval seconds; Ctrl-C stops at the end of the running window");
+        py::arg("phi_init") = py::none(), py::arg("gamma_fast") = py::none(),
+        py::arg("gamma_slow") = py::none(), py::arg("pressure_switch") = py::none(),
+        py::arg("pressure_final") = py::none(), py::arg("window") = py::none(),
+        py::arg("progress") = py::none(), py::arg("progress_interval") = 2.0,
+        "Jams a packing as sbgen does with the same options and defaults (docs/python.md); "
+        "progress(status) every progress_interval seconds; Ctrl-C stops at the end of the "
+        "running window");
 }
 
 } // namespace sbpack::python

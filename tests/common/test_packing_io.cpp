@@ -201,6 +201,34 @@ TEST_F(PackingIo, AHugeClaimWithNothingStoredIsRefusedBeforeAllocating) {
                                   {"positions", "claims 1000000000 x 3 values but stores only"});
 }
 
+TEST_F(PackingIo, AFixedLengthStringWithAnEmbeddedNulIsRefused) {
+    // "sbpack.packing\0junk" as a C string is the right format name: it must not pass.
+    const fs::path path = goodFile();
+    {
+        const Hdf5Handle h5 = openForEditing(path);
+        H5Adelete(h5.get(), "format");
+        const std::string text("sbpack.packing\0junk", 19);
+        const Hdf5Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
+        H5Tset_size(type.get(), text.size());
+        H5Tset_strpad(type.get(), H5T_STR_NULLPAD);
+        const Hdf5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
+        const Hdf5Handle attribute(
+            H5Acreate2(h5.get(), "format", type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
+            H5Aclose);
+        ASSERT_GE(H5Awrite(attribute.get(), type.get(), text.data()), 0);
+    }
+    expectError<std::exception>([&] { readPacking(path); },
+                                {"packing.h5", "format", "embedded NUL"});
+}
+
+TEST_F(PackingIo, AParticleWiderThanTheBoxIsRefused) {
+    Packing packing = makePacking();
+    packing.semiAxis = 1e300; // what convert once wrote and could not read back
+    expectError<std::exception>([&] { writePacking(packing, file("wide.h5")); },
+                                {"semi_axis = 1e+300", "wider than the box"});
+    EXPECT_FALSE(fs::exists(file("wide.h5")));
+}
+
 TEST_F(PackingIo, MissingFile) {
     const fs::path path = file("absent.h5");
     expectError<PackingFileError>([&] { readPacking(path); }, {"absent.h5", "no such file"});

@@ -186,3 +186,65 @@ TEST(JammingProtocol, APackingWithoutGeneratorStateIsNotACheckpoint) {
 
 } // namespace
 } // namespace sbpack
+
+namespace sbpack {
+namespace {
+
+// The protocol's defaults (issue 18): the switch happens when two windows in a row reach 1e6,
+// and the slow rate actually used is slowGrowthRate()'s default for p, unless set.
+TEST(JammingProtocol, DefaultsSwitchAtTheirPressureAndUseTheSlowRateOfTheirShape) {
+    ProtocolParameters spheres;
+    EXPECT_EQ(spheres.slowGrowthRate(), 1e-4);
+    spheres.gammaSlow = 3e-3;
+    EXPECT_EQ(spheres.slowGrowthRate(), 3e-3);
+
+    ProtocolParameters superballs; // every default but the size and the end
+    superballs.p = 1.5;
+    superballs.particles = 27;
+    superballs.pressureFinal = 1e7;
+    EXPECT_EQ(superballs.slowGrowthRate(), 1e-2);
+    JammingProtocol protocol(superballs);
+    std::vector<std::pair<Phase, double>> windows; // phase after each window, and its pressure
+    ASSERT_TRUE(protocol.run(nullptr, nullptr, [&](const ProtocolStatus& s) {
+        windows.emplace_back(s.phase, s.reducedPressure);
+    }));
+    std::size_t first = 0;
+    while (first < windows.size() && windows[first].first == Phase::Fast)
+        ++first;
+    ASSERT_GE(first, 1u);
+    ASSERT_LT(first, windows.size());
+    EXPECT_GE(windows[first].second, 1e6); // the switch pressure, two windows in a row
+    EXPECT_GE(windows[first - 1].second, 1e6);
+    for (std::size_t k = 0; k + 1 < first; ++k) // not earlier
+        EXPECT_FALSE(windows[k].second >= 1e6 && windows[k + 1].second >= 1e6) << k;
+    const Packing out = protocol.checkpoint();
+    EXPECT_EQ(std::get<double>(out.provenance.at("gamma_fast")), 0.01);
+    EXPECT_EQ(std::get<double>(out.provenance.at("gamma_slow")), 1e-2);
+    EXPECT_EQ(std::get<double>(out.provenance.at("state_growth_rate")), 1e-2); // the rate in use
+}
+
+// A checkpoint whose engine state was tampered with is refused, naming it (issue 20, defect 7).
+TEST(JammingProtocol, RefusesATamperedGrowthClock) {
+    JammingProtocol run(smallRun(3));
+    run.run(nullptr, nullptr, [](const ProtocolStatus&) {});
+    const Packing good = run.checkpoint();
+    const auto refused = [&](auto edit, const std::string& words) {
+        Packing bad = good;
+        edit(bad);
+        try {
+            JammingProtocol resumed(bad, "bad.h5");
+            ADD_FAILURE() << "accepted: " << words;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+        }
+    };
+    refused([](Packing& p) { p.provenance["state_growth_rate"] = -0.01; },
+            "'bad.h5': checkpoint state state_growth_rate must be positive");
+    refused([](Packing& p) { p.provenance["state_base_diameter"] = 0.0; },
+            "state_base_diameter must be positive");
+    refused([](Packing& p) { p.semiAxis *= 0.99; }, "not 2 semi_axis");
+    EXPECT_NO_THROW(JammingProtocol(good, "good.h5"));
+}
+
+} // namespace
+} // namespace sbpack

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Reproduces the paper's ensembles (Maher, Stillinger & Torquato, Sec. III A and the appendix
+# tables): sbgen packings at each p with sbgen's defaults (the paper's protocol, README
+# "sbgen"), run in parallel over the cores, then one sbanalyze job over all of them (one
+# ensemble per p), the table of ours beside the paper's (scripts/reproduction_table.py) and the
+# figures (python3 -m sbpack.plot). Resumable: packings already written are kept, a run stopped
+# by a signal continues from its checkpoint.
+#
+#   scripts/reproduce-paper.sh [--n N] [--count C] [--p-list "P1 P2 ..."] [--jobs J]
+#                              [--work DIR] [--table FILE] [--compute LIST]
+#                              [--sbgen-options "..."] [--build DIR]
+# Defaults: N = 1000, C = 5, the paper's 12 p values, J = nproc, DIR = build/reproduce,
+# FILE = DIR/reproduction.md, LIST = contacts (add pores,transport,hyper for the rest).
+# The CI slice (tests/CMakeLists.txt, reproduce_paper_small): --n 40 --count 2 --p-list "1 1.5"
+# --sbgen-options "--pressure-final 1e8 --gamma-slow 1e-2".
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+n=1000 count=5 jobs=$(nproc) work=$root/build/reproduce table="" compute=contacts extra=""
+build=$root/build
+plist="0.85 0.9 0.95 0.975 1 1.025 1.05 1.1 1.2 1.3 1.4 1.5"
+usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; }
+while [ $# -gt 0 ]; do
+    case $1 in
+        --n) n=$2; shift 2 ;;
+        --count) count=$2; shift 2 ;;
+        --p-list) plist=$2; shift 2 ;;
+        --jobs) jobs=$2; shift 2 ;;
+        --work) work=$2; shift 2 ;;
+        --table) table=$2; shift 2 ;;
+        --compute) compute=$2; shift 2 ;;
+        --sbgen-options) extra=$2; shift 2 ;;
+        --build) build=$2; shift 2 ;;
+        -h|--help) usage; exit 0 ;;
+        *) echo "reproduce-paper.sh: unknown option '$1' (see --help)" >&2; exit 1 ;;
+    esac
+done
+table=${table:-$work/reproduction.md}
+mkdir -p "$work/packings" "$work/logs"
+for bin in generator/sbgen analysis/sbanalyze; do
+    [ -x "$build/$bin" ] || { echo "reproduce-paper.sh: $build/$bin missing: run scripts/build.sh" >&2; exit 1; }
+done
+
+# One line per packing still to make: "p seed".
+for p in $plist; do
+    for seed in $(seq 1 "$count"); do
+        [ -f "$work/packings/p$p-n$n-s$seed.h5" ] || echo "$p $seed"
+    done
+done | SBGEN="$build/generator/sbgen" WORK="$work" N="$n" EXTRA="$extra" \
+    xargs -r -P "$jobs" -L 1 bash -c '
+        name=p$0-n$N-s$1 out=$WORK/packings/p$0-n$N-s$1.h5 ck=$WORK/packings/p$0-n$N-s$1.checkpoint.h5
+        if [ -f "$ck" ]; then set -- --resume "$ck"; else set -- --p "$0" --n "$N" --seed "$1" $EXTRA; fi
+        "$SBGEN" "$@" --checkpoint "$ck" --checkpoint-interval 300 --quiet --out "$out" \
+            2> "$WORK/logs/$name.log"
+        rc=$?
+        [ $rc -eq 0 ] && rm -f "$ck"
+        [ $rc -eq 0 ] || [ $rc -eq 3 ] || { echo "sbgen $name: exit $rc (log $WORK/logs/$name.log)" >&2; exit 255; }
+        echo "sbgen $name: done" >&2'
+
+files=()
+for p in $plist; do
+    for seed in $(seq 1 "$count"); do files+=("$work/packings/p$p-n$n-s$seed.h5"); done
+done
+"$build/analysis/sbanalyze" "${files[@]}" --compute "$compute" --out "$work/results.h5" --quiet
+/usr/bin/python3 "$root/scripts/reproduction_table.py" "$work/results.h5" \
+    "$root/data/mst-reference-values.csv" > "$table"
+echo "reproduce-paper.sh: table $table" >&2
+PYTHONPATH="$build/python${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 -m sbpack.plot \
+    "$work/results.h5" --out "$work/figures" > /dev/null \
+    && echo "reproduce-paper.sh: figures in $work/figures" >&2
