@@ -63,10 +63,11 @@ def spectral_density(runs, axes):
         if "hyperuniformity" in f:
             fitted = True
             h = f["hyperuniformity"]
-            x = np.geomspace(qw[0], 1.5 * h["q_fit_max_w"], 100)
+            # Only over the fit window: beyond it the fit says nothing (and may turn negative).
+            x = np.geomspace(min(qw[0], h["q_fit_max_w"]) * 0.9, h["q_fit_max_w"], 100)
             small.loglog(x, h["a0"] + h["a1"] * x ** h["alpha"], "-", color=line.get_color(),
                          label=fr"$a_0 + a_1 Q^{{{h['alpha']:.2f}}}$, $H = {h['H']:.2g} \pm "
-                               fr"{h['H_stderr']:.1g}$")
+                               fr"{h['H_stderr']:.1g}$ ({h['fit_points']} exact $\chi_V$)")
             small.axvline(h["q_fit_max_w"], color="0.6", ls=":", lw=1)
     ylabel = r"$\tilde\chi_V(Q)/\bar w^3$ (dimensionless)"
     main.set(xlabel=r"$Q\bar w$ (dimensionless)", ylabel=ylabel,
