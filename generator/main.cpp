@@ -1,7 +1,7 @@
 // sbgen: serial generator of MRJ packings (Donev-Torquato-Stillinger event-driven MD).
 #include "cli/options.hpp"
 #include "io/packing_io.hpp"
-#include "io/read_deadline.hpp"
+#include "io/read_guard.hpp"
 #include "protocol/final_packing.hpp"
 #include "protocol/jamming_protocol.hpp"
 #include "version.hpp"
@@ -126,7 +126,7 @@ int generate(const sbpack::GeneratorOptions& o) {
 } // namespace
 
 int main(int argc, char** argv) {
-    sbpack::armReadDeadline("sbgen", 60.0); // io/read_deadline.hpp
+    sbpack::armReadGuard("sbgen", 60.0); // io/read_guard.hpp
     if (argc == 1) {
         std::cerr << sbpack::generatorUsage();
         return EXIT_FAILURE;

@@ -2,7 +2,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/hdf5_handles.hpp"
-#include "io/read_deadline.hpp"
+#include "io/read_guard.hpp"
 #include "packing/validation.hpp"
 
 #include <charconv>
@@ -183,7 +183,7 @@ Packing readPacking(const fs::path& file) {
     if (!std::ifstream(file)) throw PackingFileError("'" + name + "': cannot open for reading");
     if (!isHdf5File(file))
         throw PackingFileError("'" + name + "': not an HDF5 file (no HDF5 signature)");
-    const ReadDeadline deadline(file); // armed by the programs only (io/read_deadline.hpp)
+    const ReadGuard guard(file); // armed by the programs only (io/read_guard.hpp)
     try {
         Hdf5Handle h5;
         try {
