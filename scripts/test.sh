@@ -10,8 +10,9 @@ scripts/install-deps.sh
 if [[ "${1:-}" == "--sanitize" ]]; then
     cmake --preset sanitize >/dev/null
     cmake --build --preset sanitize -j"$(nproc)"
-    # The suite without the static checks (clang-tidy reads the release compile commands) and the
-    # downstream package test (a project built without the sanitizer cannot link it).
+    # The suite without the static checks (clang-tidy reads the release compile commands), the
+    # downstream package test (a project built without the sanitizer cannot link it) and the
+    # Python module (an instrumented extension cannot load into the uninstrumented python3).
     ctest --preset sanitize -j"$(nproc)" -E "clang_tidy|clang_format|install_package|downstream_find_package"
     exit
 fi
