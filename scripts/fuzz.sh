@@ -21,12 +21,16 @@ LSAN_OPTIONS=suppressions=$PWD/build-fuzz/lsan.supp build-fuzz/tests/fuzz/fuzz_p
     -max_total_time="$seconds" -artifact_prefix="$findings/" 2>&1 | grep -E "^#|INFO: fuzzed|DONE|ERROR|SUMMARY" | tail -20 || true
 # A finding is ours unless libhdf5 faults or loops by itself (frame #1 of the report inside it)
 # and the release sbanalyze ends on the input with its read-guard message (io/read_guard.hpp).
+# (Outputs are captured first: with pipefail, the program's own exit 1 would fail a grep pipe.)
 guarded() {
-    SBPACK_READ_DEADLINE_S=5 "$release/analysis/sbanalyze" info "$1" 2>&1 |
-        grep -q "reading did not finish\|the HDF5 library crashed reading it"
+    local said
+    said=$(SBPACK_READ_DEADLINE_S=5 "$release/analysis/sbanalyze" info "$1" 2>&1 || true)
+    grep -q "reading did not finish\|the HDF5 library crashed reading it" <<< "$said"
 }
 inside_hdf5() {
-    timeout 60 build-fuzz/tests/fuzz/fuzz_packing_reader "$1" 2>&1 | grep -q "#1 .*libhdf5"
+    local report
+    report=$(timeout 60 build-fuzz/tests/fuzz/fuzz_packing_reader "$1" 2>&1 || true)
+    grep -q "#1 .*libhdf5" <<< "$report"
 }
 status=0
 for input in "$findings"/*; do
