@@ -1,9 +1,10 @@
 #include "pipeline/resources.hpp"
 
+#include "parallel/available_memory.hpp"
+
 #include "voxels/voxelization.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -43,16 +44,6 @@ MemoryEstimate estimateMemory(const Packing& packing, const RunSettings& setting
         }
     if (largest.bytes > 0.0) add(largest.what, largest.bytes);
     return estimate;
-}
-
-std::optional<double> availableMemoryBytes() {
-    std::ifstream meminfo("/proc/meminfo");
-    std::string key;
-    double value = 0.0;
-    std::string unit;
-    while (meminfo >> key >> value >> unit)
-        if (key == "MemAvailable:") return value * (unit == "kB" ? 1024.0 : 1.0);
-    return std::nullopt;
 }
 
 void checkMemory(const Packing& packing, const RunSettings& settings, const std::string& source) {

@@ -2,6 +2,7 @@
 // Memory a run will need, checked before anything is allocated (refused with the estimate).
 
 #include "packing/packing.hpp"
+#include "parallel/available_memory.hpp"
 #include "pipeline/run_settings.hpp"
 
 #include <optional>
@@ -15,9 +16,6 @@ struct MemoryEstimate {
     std::string breakdown; ///< e.g. "FFT grid 217 MB, voxel tree 9 MB"
 };
 MemoryEstimate estimateMemory(const Packing& packing, const RunSettings& settings);
-
-/// MemAvailable of /proc/meminfo (bytes); nothing where it cannot be read.
-std::optional<double> availableMemoryBytes();
 
 /// "217 MB", "1.3 GB" (decimal units).
 std::string formatBytes(double bytes);

@@ -1,10 +1,10 @@
 #include "pores/distance_transform.hpp"
 
+#include "parallel/available_memory.hpp"
 #include "parallel/parallel.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -23,17 +23,6 @@ std::string gigabytes(std::uint64_t bytes) {
     return out.str();
 }
 
-/// MemAvailable of /proc/meminfo in bytes; 0 where it cannot be read.
-std::uint64_t availableMemory() {
-    std::ifstream meminfo("/proc/meminfo");
-    std::string key;
-    std::uint64_t kilobytes = 0;
-    std::string unit;
-    while (meminfo >> key >> kilobytes >> unit)
-        if (key == "MemAvailable:") return kilobytes * 1024;
-    return 0;
-}
-
 void checkVoxels(int voxels) {
     if (voxels < 1 || voxels > maxPoreSizeVoxels)
         throw std::invalid_argument("pore sizes: M = " + std::to_string(voxels) +
@@ -43,11 +32,11 @@ void checkVoxels(int voxels) {
 
 /// Throws std::runtime_error with the estimate when `bytes` exceed MemAvailable.
 void refuseUnlessAvailable(std::uint64_t bytes, int voxels, const std::string& what) {
-    const std::uint64_t available = availableMemory();
-    if (available != 0 && bytes > available)
+    const double available = availableMemoryBytes().value_or(0.0);
+    if (available > 0.0 && static_cast<double>(bytes) > available)
         throw std::runtime_error("pore sizes at M = " + std::to_string(voxels) + " need about " +
                                  gigabytes(bytes) + " (" + what + "), but only " +
-                                 gigabytes(available) +
+                                 gigabytes(static_cast<std::uint64_t>(available)) +
                                  " are available (MemAvailable); choose a smaller M");
 }
 
