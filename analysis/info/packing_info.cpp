@@ -53,10 +53,7 @@ void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info
         out << "  jam check            " << info.jam->verdict << '\n';
     else
         out << "  jam check            none: the file has no reduced pressure\n";
-    if (c.overlappingPairs > 0)
-        out << "  warning: " << c.overlappingPairs << " overlapping pair(s); worst is ("
-            << c.worstPairA << ", " << c.worstPairB << ") with depth " << std::setprecision(4)
-            << -c.worstGap / diameter << " D\n";
+    if (c.overlappingPairs > 0) out << "  warning: " << describeOverlaps(c, diameter) << '\n';
 }
 
 } // namespace sbpack

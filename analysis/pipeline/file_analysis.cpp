@@ -27,10 +27,8 @@ schema::Record fileRecord(const Packing& packing, const std::filesystem::path& i
 void warnAboutOverlaps(const Packing& packing, const Progress& progress) {
     const ContactResult c = ContactNetwork({}).compute(packing);
     if (c.overlappingPairs == 0) return;
-    progress.warn(fmt::format(
-        "{} overlapping pair(s), the worst ({}, {}) by {:.3g} D: not a packing "
-        "of hard particles; analysed as given",
-        c.overlappingPairs, c.worstPairA, c.worstPairB, -c.worstGap / (2.0 * packing.semiAxis)));
+    progress.warn(describeOverlaps(c, 2.0 * packing.semiAxis) +
+                  ": not a packing of hard particles; analysed as given");
 }
 
 /// Whether a stage after position `done` of `order` needs `analysis`.

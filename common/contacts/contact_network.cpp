@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -59,6 +60,15 @@ std::vector<bool> findRattlers(int count, const std::vector<std::pair<int, int>>
 }
 
 } // namespace
+
+std::string describeOverlaps(const ContactResult& contacts, double diameter) {
+    if (contacts.overlappingPairs == 0) return "";
+    char depth[32];
+    std::snprintf(depth, sizeof depth, "%.3g", -contacts.worstGap / diameter);
+    return std::to_string(contacts.overlappingPairs) + " overlapping pair(s), the worst (" +
+           std::to_string(contacts.worstPairA) + ", " + std::to_string(contacts.worstPairB) +
+           ") by " + depth + " D";
+}
 
 ContactNetwork::ContactNetwork(ContactParameters parameters) : parameters_(parameters) {
     if (!std::isfinite(parameters_.tolerance) || parameters_.tolerance < 0.0)

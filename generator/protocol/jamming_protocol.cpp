@@ -24,12 +24,9 @@ void require(bool ok, const std::string& parameter, const std::string& problem) 
 void refuseOverlaps(const Packing& packing, const std::string& source) {
     const ContactResult c = ContactNetwork({}).compute(packing);
     if (c.overlappingPairs > 0)
-        throw std::invalid_argument("'" + source + "': " + std::to_string(c.overlappingPairs) +
-                                    " overlapping pair(s), the worst (" +
-                                    std::to_string(c.worstPairA) + ", " +
-                                    std::to_string(c.worstPairB) +
-                                    "): cannot resume from "
-                                    "overlapping particles");
+        throw std::invalid_argument("'" + source +
+                                    "': " + describeOverlaps(c, packing.shape().diameter()) +
+                                    ": cannot resume from overlapping particles");
 }
 
 bool positiveFinite(double x) {
