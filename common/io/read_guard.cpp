@@ -59,13 +59,13 @@ ReadGuard::ReadGuard(const std::filesystem::path& file) {
                                      "file is corrupt; nothing was written\n",
                                      armed.program.c_str(), name.c_str());
     faultLength = std::min(sizeof faultMessage - 1, static_cast<std::size_t>(std::max(length, 0)));
-    watch_ = new Watch;
+    watch_ = std::make_unique<Watch>();
     struct sigaction fault {};
     fault.sa_handler = onReadFault;
     sigemptyset(&fault.sa_mask);
     sigaction(SIGSEGV, &fault, &watch_->segv);
     sigaction(SIGBUS, &fault, &watch_->bus);
-    watch_->thread = std::thread([watch = watch_, armed, name] {
+    watch_->thread = std::thread([watch = watch_.get(), armed, name] {
         std::unique_lock lock(watch->mutex);
         const auto wait = std::chrono::duration<double>(armed.seconds);
         if (watch->finished.wait_for(lock, wait, [watch] { return watch->done; })) return;
@@ -88,7 +88,6 @@ ReadGuard::~ReadGuard() {
     watch_->thread.join();
     sigaction(SIGSEGV, &watch_->segv, nullptr);
     sigaction(SIGBUS, &watch_->bus, nullptr);
-    delete watch_;
 }
 
 } // namespace sbpack

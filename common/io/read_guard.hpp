@@ -8,6 +8,7 @@
 // Libraries and the Python module leave it unarmed.
 
 #include <filesystem>
+#include <memory>
 #include <string>
 
 namespace sbpack {
@@ -26,7 +27,7 @@ class ReadGuard {
 
   private:
     struct Watch;
-    Watch* watch_ = nullptr;
+    std::unique_ptr<Watch> watch_; ///< none when unarmed
 };
 
 } // namespace sbpack

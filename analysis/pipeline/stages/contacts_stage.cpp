@@ -24,9 +24,10 @@ bool runContacts(FileContext& context, schema::Record& record) {
                                 describe(*resolution.gaps));
     const double nan = std::numeric_limits<double>::quiet_NaN();
     context.progress().stageDone("contacts", seconds,
-                                 fmt::format("Z = {}, rattler fraction {}",
-                                             describe(c.meanContactNumber),
-                                             describe(c.rattlerFraction)));
+                                 undetermined ? std::string("Z undetermined (not resolved)")
+                                              : fmt::format("Z = {}, rattler fraction {}",
+                                                            describe(c.meanContactNumber),
+                                                            describe(c.rattlerFraction)));
     record.set("z_mean", undetermined ? nan : c.meanContactNumber)
         .set("rattler_fraction", undetermined ? nan : c.rattlerFraction)
         .set("resolved", resolution.resolved ? std::int64_t{*resolution.resolved} : -1)
