@@ -196,10 +196,11 @@ void octahedronSignedDistance(const MinkowskiSum& k, SignedDistanceResult& resul
 
 // ---- General superballs 0.5 < p < inf ---------------------------------------------------
 
-/// The part of a convex polygon with a . x <= b (one Sutherland-Hodgman pass).
-std::vector<Vector2d> clipPolygon(const std::vector<Vector2d>& polygon, const Vector2d& a,
-                                  double b) {
-    std::vector<Vector2d> kept;
+/// The part of a convex polygon with a . x <= b (one Sutherland-Hodgman pass), into `kept`
+/// (reused storage: the search clips up to 200 times per call).
+void clipPolygon(const std::vector<Vector2d>& polygon, const Vector2d& a, double b,
+                 std::vector<Vector2d>& kept) {
+    kept.clear();
     for (std::size_t i = 0; i < polygon.size(); ++i) {
         const Vector2d& p = polygon[i];
         const Vector2d& q = polygon[(i + 1) % polygon.size()];
@@ -208,7 +209,6 @@ std::vector<Vector2d> clipPolygon(const std::vector<Vector2d>& polygon, const Ve
         if ((fp < 0.0 && fq > 0.0) || (fp > 0.0 && fq < 0.0))
             kept.push_back(p + (fp / (fp - fq)) * (q - p));
     }
-    return kept;
 }
 
 /// Centre of gravity of a convex polygon (the vertex mean where its area is lost to rounding).
@@ -234,11 +234,15 @@ Vector2d centroid(const std::vector<Vector2d>& polygon) {
 /// takes at least 4/9 of the polygon's area (Grunbaum), so ~150 evaluations reach rounding where
 /// nested golden sections took ~6000. For convex f the cut deepens to
 /// g . (x - c) <= f_best - f(c). `valueAndGradient(c, g)` returns f(c) and writes g.
+/// The search stops when the polygon is within `resolution` of its centroid.
 template <class F>
-Vector2d cuttingPlaneMinimum(F&& valueAndGradient, double radius, bool convex, int iterations,
-                             double& value) {
+Vector2d cuttingPlaneMinimum(F&& valueAndGradient, double radius, double resolution, bool convex,
+                             int iterations, double& value) {
     std::vector<Vector2d> polygon = {Vector2d(-radius, -radius), Vector2d(radius, -radius),
                                      Vector2d(radius, radius), Vector2d(-radius, radius)};
+    std::vector<Vector2d> clipped;
+    polygon.reserve(16);
+    clipped.reserve(16);
     Vector2d best = Vector2d::Zero(), gradient;
     value = std::numeric_limits<double>::infinity();
     for (int i = 0; i < iterations && polygon.size() >= 3; ++i) {
@@ -246,14 +250,15 @@ Vector2d cuttingPlaneMinimum(F&& valueAndGradient, double radius, bool convex, i
         double extent = 0.0;
         for (const Vector2d& vertex : polygon)
             extent = std::max(extent, (vertex - c).norm());
-        if (extent <= 1e-16 * radius) break;
+        if (extent <= resolution) break;
         const double fc = valueAndGradient(c, gradient);
         if (fc < value) {
             value = fc;
             best = c;
         }
         if (gradient.isZero(0.0) || !gradient.allFinite()) break;
-        polygon = clipPolygon(polygon, gradient, gradient.dot(c) + (convex ? value - fc : 0.0));
+        clipPolygon(polygon, gradient, gradient.dot(c) + (convex ? value - fc : 0.0), clipped);
+        polygon.swap(clipped);
     }
     return best;
 }
@@ -316,7 +321,7 @@ ScaleFactorResult generalScaleFactor(const MinkowskiSum& k, const Vector3d& warm
                 gradient = basis.transpose() * point;
                 return v.dot(point); // H(v) = v . grad H(v): H is homogeneous of degree one
             },
-            radius, true, tolerances.maxCuttingPlaneIterations, best);
+            radius, 1e-16 * radius, true, tolerances.maxCuttingPlaneIterations, best);
         if (best < h) {
             u = dHat + basis * cBest;
             h = best;
@@ -378,20 +383,12 @@ void generalSignedDistance(const MinkowskiSum& k, const PairTolerances& toleranc
         // Newton stalled on a kink: maximise f over the tangent plane of n, where f is
         // quasi-concave for s >= 0 (a local maximum, i.e. a bound on the depth, below).
         ++result.fallbacks;
-        const Eigen::Matrix<double, 3, 2> basis = tangentBasis(n);
-        auto minusFOnSphere = [&](const Vector2d& c, Vector2d& gradient) {
-            // f(u / |u|) = f~(u) / |u| at u = n + P c, f~(u) = u . (d - grad H(u)).
-            const Vector3d u = n + basis * c, toGap = d - k.supportPoint(u);
-            const double r2 = u.squaredNorm(), fu = u.dot(toGap);
-            gradient = -basis.transpose() * (toGap - fu * u / r2) / std::sqrt(r2);
-            return -fu / std::sqrt(r2);
-        };
-        double best = 0.0;
-        const Vector2d c = cuttingPlaneMinimum(minusFOnSphere, 0.6, false,
-                                               tolerances.maxCuttingPlaneIterations, best);
-        if (-best > f) {
-            n = (n + basis * c).normalized();
-            f = -best;
+        const LocalMaximum best =
+            tangentMaximum(k.pair(), n, 0.6, 6e-17, tolerances.maxCuttingPlaneIterations);
+        k.evaluations += best.evaluations;
+        if (best.value > f) {
+            n = best.normal;
+            f = best.value;
         }
     }
     result.normal = n;
@@ -416,6 +413,25 @@ double supportPlaneMismatch(const SuperballPair& pair, const Vector3d& n, double
     const double gaugeB = std::max(1.0, pair.shape.gauge(pair.rotationB.transpose() * aboveA));
     return std::min((contactB - belowB / gaugeA).norm(), (contactA - d - aboveA / gaugeB).norm()) -
            f;
+}
+
+LocalMaximum tangentMaximum(const SuperballPair& pair, const Vector3d& n, double radius,
+                            double resolution, int iterations) {
+    const MinkowskiSum k(pair);
+    const Vector3d& d = pair.displacement;
+    const Eigen::Matrix<double, 3, 2> basis = tangentBasis(n);
+    auto minusFOnSphere = [&](const Vector2d& c, Vector2d& gradient) {
+        // f(u / |u|) = f~(u) / |u| at u = n + P c, f~(u) = u . (d - grad H(u)).
+        const Vector3d u = n + basis * c, toGap = d - k.supportPoint(u);
+        const double r2 = u.squaredNorm(), fu = u.dot(toGap);
+        gradient = -basis.transpose() * (toGap - fu * u / r2) / std::sqrt(r2);
+        return -fu / std::sqrt(r2);
+    };
+    double best = 0.0;
+    const Vector2d c =
+        cuttingPlaneMinimum(minusFOnSphere, radius, resolution, false, iterations, best);
+    return {(n + basis * c).normalized(), -best, c.lpNorm<Eigen::Infinity>() < 0.5 * radius,
+            k.evaluations};
 }
 
 ScaleFactorResult scaleFactor(const SuperballPair& pair, const Vector3d& warmNormal,

@@ -80,6 +80,21 @@ double supportPlaneMismatch(const SuperballPair& pair, const Vector3d& n, double
 /// Orthonormal tangent basis (columns) of the plane orthogonal to the unit vector n.
 Eigen::Matrix<double, 3, 2> tangentBasis(const Vector3d& n);
 
+/// The largest f(n) = n.d - h_A(n) - h_B(n) over the normals (n + P c) / |n + P c|, |c_i| <= radius
+/// (P the tangent basis of the unit n), by the centre-of-gravity cutting-plane search, which
+/// needs no derivative where the support points of near-cubes jump (f is quasi-concave there for
+/// s >= 0). Stops when the search polygon is within `resolution` (radians, about) of its centre.
+/// `interior`: the maximum lies well inside the square (within half its radius), so it is a
+/// local maximum of f on the sphere, and the signed distance itself when >= 0.
+struct LocalMaximum {
+    Vector3d normal;
+    double value = 0.0;
+    bool interior = false;
+    int evaluations = 0; ///< support-point pairs evaluated
+};
+LocalMaximum tangentMaximum(const SuperballPair& pair, const Vector3d& n, double radius,
+                            double resolution, int iterations);
+
 /// mu of the pair. warmNormal, if non-zero, is a previous normal of the same pair.
 ScaleFactorResult scaleFactor(const SuperballPair& pair,
                               const Vector3d& warmNormal = Vector3d::Zero(),

@@ -14,12 +14,12 @@ using Eigen::Vector3d;
 
 /// Two identical bodies i and j at the current time.
 struct PairMotion {
-    Vector3d displacement;     ///< r_j - r_i (minimum image)
-    Vector3d relativeVelocity; ///< v_j - v_i
+    Vector3d displacement = Vector3d::Zero();     ///< r_j - r_i (minimum image)
+    Vector3d relativeVelocity = Vector3d::Zero(); ///< v_j - v_i
     Quaterniond orientationI = Quaterniond::Identity(), orientationJ = Quaterniond::Identity();
     Vector3d angularVelocityI = Vector3d::Zero(), angularVelocityJ = Vector3d::Zero();
-    double diameter;   ///< D now
-    double growthRate; ///< dD/dt = gamma
+    double diameter = 1.0;   ///< D now
+    double growthRate = 0.0; ///< dD/dt = gamma
 };
 
 /// Free flight of the orientation: exp(omega tau / 2) q0 for lab-frame omega, exact (constant

@@ -203,6 +203,31 @@ void restartFromFaces(const SuperballPair& pair, WarmNewton& warm,
         warm = restart;
 }
 
+/// Near contact, where warm Newton did not converge: the maximum of f over the normals near its
+/// last one, if it lies inside that neighbourhood (docs/design.md §3, "Near-cubes"). Near-cubes
+/// meeting edge to edge or edge to vertex have their optimal normal within rounding of the
+/// plane of an edge of each body, where the support point along the edge is undetermined (it
+/// runs as |u|^{q-1}, q - 1 = 1 / (2p - 1)): f is exact there but neither its gradient nor the
+/// supporting planes' mismatch can vanish, so Newton cannot certify it. The cutting-plane search
+/// needs no certificate (f is quasi-concave for s >= 0, and an interior maximum is the global
+/// one) and costs a fraction of the robust solver's scale factor and search over 0.6 rad.
+std::optional<SignedDistanceResult> localMaximum(const SuperballPair& pair, const Vector3d& n,
+                                                 const SuperballPredictorLimits& limits,
+                                                 SuperballPredictorStats& stats) {
+    ++stats.localSearches;
+    const LocalMaximum local =
+        tangentMaximum(pair, n, limits.localSearchRadius, limits.localSearchResolution,
+                       PairTolerances{}.maxCuttingPlaneIterations);
+    if (!local.interior) return std::nullopt;
+    SignedDistanceResult r;
+    r.signedDistance = local.value;
+    r.normal = local.normal;
+    r.contactA = pair.rotationA * pair.shape.supportPoint(pair.rotationA.transpose() * r.normal);
+    r.contactB = pair.displacement -
+                 pair.rotationB * pair.shape.supportPoint(pair.rotationB.transpose() * r.normal);
+    return r;
+}
+
 /// s of the pair from its cached normal (updated), or from the centre line when there is none
 /// (f has one maximum for s >= 0): Newton, else the robust solver. Where a lower bound on s will
 /// do, one above `boundSuffices` (unconverged Newton's last plane gap) is returned as it is.
@@ -220,6 +245,8 @@ WarmNewton exactSignedDistance(const SuperballPair& pair, Vector3d& normal, doub
         restartFromFaces(pair, warm, limits, stats, rates);
     std::optional<SignedDistanceResult> fast;
     if (warm.converged) fast = warm.result;
+    if (!warm.converged && warm.result.signedDistance <= boundSuffices && pair.shape.p() > 1.0)
+        fast = localMaximum(pair, warm.result.normal, limits, stats);
     if (!warm.converged && warm.result.signedDistance > boundSuffices) {
         fast = warm.result;
         ++stats.lowerBounds;

@@ -49,6 +49,12 @@ struct SuperballPredictorLimits {
     /// Along a trajectory each exact evaluation starts from the last optimal normal carried at
     /// its rate dn/dtau, while that turns it by less than this (radians).
     double maxNormalCarry = 0.1;
+    /// Near contact, an unconverged Newton's normal is polished by the cutting-plane search over
+    /// the normals within this (radians, about) of it before the robust pair solver is called.
+    double localSearchRadius = 1e-3;
+    /// The polish stops when its normal is known to this (radians, about): f is stationary or
+    /// has a kink |u|^q, q > 1, at its maximum, so its value is then exact to rounding.
+    double localSearchResolution = 1e-16;
 };
 
 /// What the predictor did, summed over calls (reset by the caller).
@@ -58,6 +64,7 @@ struct SuperballPredictorStats {
     long boundRejections = 0;   ///< the remembered bound on its gap shows it, unevaluated
     long planeRejections = 0;   ///< the cached normal's plane separates up to the horizon
     long evaluations = 0;       ///< exact signed distances (advancement, Newton, refinement)
+    long localSearches = 0;     ///< of those, near contact: Newton's normal polished locally
     long robustEvaluations = 0; ///< of those, by the robust pair solver (no warm Newton)
     long newtonSteps = 0;       ///< warm Newton iterations on the normal, over all evaluations
     long lowerBounds = 0;       ///< of those, far from contact: unconverged Newton's bound
@@ -78,6 +85,7 @@ struct SuperballPredictorStats {
         {"predictor_bound_rejections", &SuperballPredictorStats::boundRejections},
         {"predictor_plane_rejections", &SuperballPredictorStats::planeRejections},
         {"predictor_evaluations", &SuperballPredictorStats::evaluations},
+        {"predictor_local_searches", &SuperballPredictorStats::localSearches},
         {"predictor_robust_evaluations", &SuperballPredictorStats::robustEvaluations},
         {"predictor_newton_steps", &SuperballPredictorStats::newtonSteps},
         {"predictor_lower_bounds", &SuperballPredictorStats::lowerBounds},
