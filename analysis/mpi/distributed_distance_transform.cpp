@@ -84,8 +84,8 @@ std::vector<std::uint32_t> transpose(const MpiCommunicator& comm, std::vector<st
         }
         map = {};
         received.resize(static_cast<std::size_t>(out.y.size()) * m * m);
-        out.peakBytes = std::max(out.peakBytes,
-                                 static_cast<double>(sendBuffer.size() + received.size()) * 4);
+        out.peakBytes =
+            std::max(out.peakBytes, static_cast<double>(sendBuffer.size() + received.size()) * 4);
     });
     const RowType rowType(m);
     checkMpi(MPI_Alltoallv(sendBuffer.data(), send.counts.data(), send.offsets.data(),
@@ -121,7 +121,8 @@ DistanceSlab distributedDistanceTransform(const MpiCommunicator& comm,
     const std::size_t slabVoxels = static_cast<std::size_t>(x.size()) * m * m;
     if (mask.size() != slabVoxels)
         throw std::invalid_argument("distributed distance transform: the mask is not this rank's "
-                                    "slab of " + std::to_string(x.size()) + " planes");
+                                    "slab of " +
+                                    std::to_string(x.size()) + " planes");
     DistanceSlab out;
     out.voxels = m;
     out.y = slabOf(m, comm.size(), comm.rank());

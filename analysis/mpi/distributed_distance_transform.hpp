@@ -20,9 +20,9 @@ struct DistanceSlab {
     Slab y; ///< this rank's y-planes
     /// Squared distances (voxel units) at ((y - y.begin) M + x) M + z: the y-slab of the map.
     std::vector<std::uint32_t> squared;
-    std::uint32_t largest = 0;   ///< the largest squared distance of the whole grid
-    double peakBytes = 0.0;      ///< this rank's largest simultaneous buffers
-    double sentBytes = 0.0;      ///< what this rank sent to other ranks
+    std::uint32_t largest = 0; ///< the largest squared distance of the whole grid
+    double peakBytes = 0.0;    ///< this rank's largest simultaneous buffers
+    double sentBytes = 0.0;    ///< what this rank sent to other ranks
 };
 
 /// Collective. `mask`: this rank's x-slab slabOf(M, ranks, rank) of the solid mask,

@@ -35,8 +35,8 @@ std::vector<std::string> MpiCommunicator::allGather(const std::string& bytes) co
     checkMpi(MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, comm_), "MPI_Allgather");
     std::partial_sum(counts.begin(), counts.end() - 1, offsets.begin() + 1);
     std::string all(static_cast<std::size_t>(offsets.back()) + counts.back(), '\0');
-    checkMpi(MPI_Allgatherv(bytes.data(), mine, MPI_CHAR, all.data(), counts.data(),
-                            offsets.data(), MPI_CHAR, comm_),
+    checkMpi(MPI_Allgatherv(bytes.data(), mine, MPI_CHAR, all.data(), counts.data(), offsets.data(),
+                            MPI_CHAR, comm_),
              "MPI_Allgatherv");
     std::vector<std::string> parts;
     for (int r = 0; r < size_; ++r)
@@ -45,8 +45,8 @@ std::vector<std::string> MpiCommunicator::allGather(const std::string& bytes) co
 }
 
 void MpiCommunicator::sum(std::span<double> values) const {
-    checkMpi(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()),
-                           MPI_DOUBLE, MPI_SUM, comm_),
+    checkMpi(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE,
+                           MPI_SUM, comm_),
              "MPI_Allreduce");
 }
 
@@ -57,8 +57,8 @@ void MpiCommunicator::sum(std::span<std::int64_t> values) const {
 }
 
 void MpiCommunicator::max(std::span<double> values) const {
-    checkMpi(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()),
-                           MPI_DOUBLE, MPI_MAX, comm_),
+    checkMpi(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE,
+                           MPI_MAX, comm_),
              "MPI_Allreduce");
 }
 

@@ -37,7 +37,7 @@ unsigned plannerFlags(FftPlanning planning) {
 
 /// This rank's part of FFTW's transposed r2c transform of an M^3 grid.
 struct FftSlab {
-    ptrdiff_t complexCount = 0; ///< fftw_complex numbers to allocate
+    ptrdiff_t complexCount = 0;   ///< fftw_complex numbers to allocate
     ptrdiff_t n0 = 0, start0 = 0; ///< x-planes of the real input
     ptrdiff_t n1 = 0, start1 = 0; ///< y-planes of the transposed output
 };
@@ -130,9 +130,9 @@ fftw_plan_s* MpiGrids::plan(int m, double* data, const FftSettings& fft,
                             const Progress& progress) const {
     if (comm_.rank() == 0) importWisdom(fft.wisdomFile, progress);
     fftw_mpi_broadcast_wisdom(comm_.comm());
-    fftw_plan_s* p = fftw_mpi_plan_dft_r2c_3d(m, m, m, data, reinterpret_cast<fftw_complex*>(data),
-                                              comm_.comm(),
-                                              plannerFlags(fft.planning) | FFTW_MPI_TRANSPOSED_OUT);
+    fftw_plan_s* p =
+        fftw_mpi_plan_dft_r2c_3d(m, m, m, data, reinterpret_cast<fftw_complex*>(data), comm_.comm(),
+                                 plannerFlags(fft.planning) | FFTW_MPI_TRANSPOSED_OUT);
     if (p == nullptr)
         throw std::runtime_error("FFTW: cannot plan a distributed " + std::to_string(m) +
                                  "^3 transform");
@@ -182,14 +182,15 @@ SpectralDensityResult MpiGrids::spectralDensity(const Packing& packing, const Sl
     for (const std::string& bytes : comm_.allGather(encodeSums(shells.sums())))
         merged.mergeSums(decodeSums(bytes)); // in rank order: the same on every rank
     result.shellSeconds = clock.seconds();
-    result.runtimeSeconds = result.planSeconds + result.fillSeconds + result.transformSeconds +
-                            result.shellSeconds;
+    result.runtimeSeconds =
+        result.planSeconds + result.fillSeconds + result.transformSeconds + result.shellSeconds;
     chi.finish(packing, merged.average(), progress, result);
-    figures = {comm_.size(), static_cast<int>(largestOver(comm_, static_cast<double>(s.n0))),
-               largestOver(comm_, 16.0 * static_cast<double>(s.complexCount) +
-                                      static_cast<double>(voxels.slab.memoryBytes())),
-               sumOver(comm_, 16.0 * static_cast<double>(s.n0) * static_cast<double>(m - s.n1) *
-                                  (m / 2 + 1))};
+    const int half = m / 2 + 1; // complex numbers per row
+    figures = {
+        comm_.size(), static_cast<int>(largestOver(comm_, static_cast<double>(s.n0))),
+        largestOver(comm_, 16.0 * static_cast<double>(s.complexCount) +
+                               static_cast<double>(voxels.slab.memoryBytes())),
+        sumOver(comm_, 16.0 * static_cast<double>(s.n0) * static_cast<double>(m - s.n1) * half)};
     return result;
 }
 
@@ -225,13 +226,14 @@ PoreSizeDistributionResult MpiGrids::poreSizes(const Packing& packing, int voxel
         ++histogram[d];
     comm_.sum(std::span<std::int64_t>(histogram));
     PoreSizeDistributionResult r =
-        PoreSizeDistribution(parameters).fromHistogram(histogram, m, packing.boxLength / m,
-                                                       meanWidth);
+        PoreSizeDistribution(parameters)
+            .fromHistogram(histogram, m, packing.boxLength / m, meanWidth);
     r.runtimeSeconds = clock.seconds();
-    figures = {comm_.size(), static_cast<int>(largestOver(comm_, x.size())),
-               largestOver(comm_, std::max(map.peakBytes, 5.0 * static_cast<double>(x.size()) *
-                                                              m * m + treeBytes)),
-               sumOver(comm_, map.sentBytes)};
+    figures = {
+        comm_.size(), static_cast<int>(largestOver(comm_, x.size())),
+        largestOver(comm_, std::max(map.peakBytes,
+                                    5.0 * static_cast<double>(x.size()) * m * m + treeBytes)),
+        sumOver(comm_, map.sentBytes)};
     return r;
 }
 

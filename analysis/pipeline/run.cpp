@@ -136,7 +136,8 @@ void checkPackingForRun(const Packing& packing, const RunSettings& settings,
         }
     }
     // Distributed grids are checked per rank by the plan (pipeline/scale_plan.hpp).
-    if (settings.distribute == Distribution::Files) checkMemory(packing, settings, quotedName(input));
+    if (settings.distribute == Distribution::Files)
+        checkMemory(packing, settings, quotedName(input));
 }
 
 namespace {
@@ -285,7 +286,8 @@ RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostr
     results.ranks = comm.size();
     std::vector<std::unique_ptr<AtomicOutput>> exports; // committed with the results file
     IndexedFiles analysed;
-    collectively(comm, [&] { analysed = analyzeAll(settings, mine, packings, progress, exports, comm); });
+    collectively(comm,
+                 [&] { analysed = analyzeAll(settings, mine, packings, progress, exports, comm); });
     results.files = gatherFiles(std::move(analysed), settings, comm);
     if (comm.rank() == 0) {
         writeOutputs(settings, results, progress, clock, out, exports);

@@ -46,8 +46,7 @@ DistributionFigures spectralGridPlan(const Packing& packing, int voxels, int ran
     const int half = voxels / 2 + 1; // complex numbers per row of the r2c transform
     const double row = half;
     DistributionFigures f{ranks, slab, 0.0, 0.0};
-    f.memoryPerRankBytes =
-        16.0 * slab * voxels * row + slabTreeBytes(packing, voxels, slab);
+    f.memoryPerRankBytes = 16.0 * slab * voxels * row + slabTreeBytes(packing, voxels, slab);
     f.communicationBytes = transposeBytes(voxels, ranks, 16.0 * row);
     return f;
 }
@@ -81,8 +80,7 @@ void checkDistribution(const RunSettings& settings, const Communicator& comm) {
             "(cmake -DSBPACK_WITH_MPI=ON) and runs on one process; --plan still plans");
 }
 
-void checkPlanMemory(const RunSettings& settings, const std::vector<Packing>& packings,
-                     int ranks) {
+void checkPlanMemory(const RunSettings& settings, const std::vector<Packing>& packings, int ranks) {
     const std::optional<double> available = availableMemoryBytes();
     if (!available) return;
     for (const Packing& packing : packings) {
@@ -133,11 +131,11 @@ std::string planText(const RunSettings& settings, const std::vector<Packing>& pa
     if (settings.planRanks > 0) ranks = settings.planRanks;
     const bool grids = settings.distribute == Distribution::Grids;
     const std::size_t files = settings.inputs.size();
-    std::string text = fmt::format(
-        "sbanalyze plan: {} rank(s), --distribute {}, {} file(s){}\n", ranks,
-        grids ? "grids" : "files", files,
-        grids ? ", each on every rank"
-              : fmt::format(", at most {} per rank", (files + ranks - 1) / ranks));
+    std::string text =
+        fmt::format("sbanalyze plan: {} rank(s), --distribute {}, {} file(s){}\n", ranks,
+                    grids ? "grids" : "files", files,
+                    grids ? ", each on every rank"
+                          : fmt::format(", at most {} per rank", (files + ranks - 1) / ranks));
     for (std::size_t k = 0; k < packings.size(); ++k)
         text += fmt::format("'{}' (N = {}, p = {}):\n", settings.inputs[mine[k]].string(),
                             packings[k].size(), packings[k].p) +

@@ -30,7 +30,6 @@ constexpr std::string_view kRankMemory =
 constexpr std::string_view kCommunication =
     "--distribute grids only: bytes sent from rank to rank, all ranks together";
 
-
 constexpr Field kRun[] = {
     {"format", A, S, "", "\"sbpack.results\""},
     {"format_version", A, I, "1", "2 (this layout)"},

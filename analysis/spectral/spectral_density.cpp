@@ -148,9 +148,9 @@ SpectralDensityResult SpectralDensity::start(const Packing& packing, int voxels,
     result.meanWidth = packing.shape().meanWidth();
     result.maxShell = maxShellFor(parameters_.maxQw, packing.boxLength, result.meanWidth, voxels);
     if (result.maxShell < 1)
-        throw std::invalid_argument("spectral density: no shell with Q w <= " +
-                                    std::to_string(parameters_.maxQw) + " on a " +
-                                    std::to_string(voxels) + "^3 grid of this box");
+        throw std::invalid_argument(
+            "spectral density: no shell with Q w <= " + std::to_string(parameters_.maxQw) +
+            " on a " + std::to_string(voxels) + "^3 grid of this box");
     return result;
 }
 

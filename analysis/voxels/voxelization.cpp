@@ -121,11 +121,11 @@ std::uint64_t rowBits(int z0, int z1, int shift) {
 
 /// The geometry shared by all blocks.
 struct BlockGeometry {
-    int m;         ///< voxels per edge
-    double a;      ///< voxel edge
-    double rc, ri; ///< circumscribed and inscribed radii, with the shortcut margin
-    int x0, x1;    ///< the slab: x-planes [x0, x1)
-    int blocks;    ///< blocks along y and z
+    int m;                    ///< voxels per edge
+    double a;                 ///< voxel edge
+    double rc, ri;            ///< circumscribed and inscribed radii, with the shortcut margin
+    int x0, x1;               ///< the slab: x-planes [x0, x1)
+    int blocks;               ///< blocks along y and z
     int firstBlockX, blocksX; ///< the x-blocks the slab touches
 
     std::int64_t blockCount() const { return std::int64_t{blocksX} * blocks * blocks; }
@@ -323,8 +323,8 @@ Voxelizer::Voxelizer(VoxelizationParameters parameters) : parameters_(parameters
         parameters_.slabEnd > parameters.voxels)
         throw VoxelResolutionError("voxel grid: slab [" + std::to_string(parameters.slabBegin) +
                                    ", " + std::to_string(parameters_.slabEnd) +
-                                   ") is not a part of [0, " +
-                                   std::to_string(parameters.voxels) + ")");
+                                   ") is not a part of [0, " + std::to_string(parameters.voxels) +
+                                   ")");
 }
 
 int Voxelizer::minimumVoxels(const Packing& packing) {
@@ -433,8 +433,8 @@ BlockMasks voxelizeBlocks(const BlockCandidates& in, const std::vector<Eigen::Ma
                                                       in.candidates.data() + in.start[b + 1]);
                 const auto words = voxelizeBlock(ox, oy, oz, mine, toBody, inside, geometry);
                 int count = 0;
-                bool full = ox >= geometry.x0 && ox + kBlock <= geometry.x1 &&
-                            oy + kBlock <= m && oz + kBlock <= m;
+                bool full = ox >= geometry.x0 && ox + kBlock <= geometry.x1 && oy + kBlock <= m &&
+                            oz + kBlock <= m;
                 for (std::uint64_t w : words) {
                     count += std::popcount(w);
                     full = full && w == ~std::uint64_t{0};
@@ -468,8 +468,10 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
     const int blocks = (m + kBlock - 1) / kBlock;
     const int x0 = parameters_.slabBegin, x1 = parameters_.slabEnd;
     const int firstBlockX = x0 / kBlock;
-    const BlockGeometry geometry{m,       a,  rc,     ri, x0, x1, blocks, firstBlockX,
-                                 x1 > x0 ? (x1 - 1) / kBlock - firstBlockX + 1 : 0};
+    const BlockGeometry geometry{
+        m,      a,           rc,
+        ri,     x0,          x1,
+        blocks, firstBlockX, x1 > x0 ? (x1 - 1) / kBlock - firstBlockX + 1 : 0};
     const std::int64_t blockCount = geometry.blockCount();
     // Lab-to-body rotations: x_body = R^T (x - r).
     std::vector<Eigen::Matrix3d> toBody(packing.size());

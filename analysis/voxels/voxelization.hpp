@@ -27,8 +27,8 @@ struct VoxelizationParameters {
     int voxels = 300; ///< M, voxels along each box edge
     /// Execution only: run on the calling thread (the result is the same).
     bool serial = false;
-    /// Only the slab of x-planes [slabBegin, slabEnd) (slabEnd -1: M; may be empty), as one rank of a
-    /// distributed grid voxelises (docs/scale-out.md): only particles (and periodic images) whose
+    /// Only the slab of x-planes [slabBegin, slabEnd) (slabEnd -1: M; may be empty), as one rank of
+    /// a distributed grid voxelises (docs/scale-out.md): only particles (and periodic images) whose
     /// circumscribed sphere reaches the slab are visited, and the tree holds the slab alone.
     int slabBegin = 0;
     int slabEnd = -1;

@@ -65,12 +65,12 @@ void setPoreSizes(schema::Record& record, const PoreSizeDistributionResult& s) {
 bool runDistributedPoreSizes(FileContext& context, schema::Record& record) {
     DistributionFigures figures;
     PoreSizeDistributionResult pores = context.grids()->poreSizes(
-        context.packing(), context.settings().poreVoxels, PoreSizeParameters{},
-        context.meanWidth(), context.progress(), figures);
-    context.progress().stageDone(
-        "pore sizes", pores.runtimeSeconds,
-        fmt::format("{} ranks, <delta>/w = {}, max/w = {}", figures.ranks,
-                    describe(pores.meanOverWidth()), describe(pores.maxOverWidth())));
+        context.packing(), context.settings().poreVoxels, PoreSizeParameters{}, context.meanWidth(),
+        context.progress(), figures);
+    context.progress().stageDone("pore sizes", pores.runtimeSeconds,
+                                 fmt::format("{} ranks, <delta>/w = {}, max/w = {}", figures.ranks,
+                                             describe(pores.meanOverWidth()),
+                                             describe(pores.maxOverWidth())));
     setPoreSizes(record, pores);
     setDistribution(record, figures);
     context.keep(Analysis::PoreSizes, std::move(pores));

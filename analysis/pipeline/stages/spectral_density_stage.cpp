@@ -42,8 +42,9 @@ namespace {
 SpectralDensityResult wholeGrid(FileContext& context, const SpectralDensityParameters& parameters) {
     const Voxelization& voxels = context.kept<Voxelization>(Analysis::Voxels);
     const VoxelFourierTransform transform(voxels, parameters.fft, context.progress());
-    SpectralDensityResult s = SpectralDensity(parameters).compute(context.packing(), voxels,
-                                                                  transform, context.progress());
+    SpectralDensityResult s =
+        SpectralDensity(parameters)
+            .compute(context.packing(), voxels, transform, context.progress());
     if (context.settings().runs(Analysis::Hyperuniformity))
         context.keep(Analysis::SpectralDensity,
                      KeptSpectrum{voxelSpectrum(transform, voxels, context.meanWidth(), {}),
