@@ -65,7 +65,7 @@ void addContactOptions(CLI::App& app, ContactParameters& contacts) {
 /// The command line and what it fills.
 class CommandLine {
   public:
-    CommandLine();
+    explicit CommandLine(const Communicator& communicator = SerialCommunicator());
     void parse(int argc, const char* const* argv);
     int run(std::ostream& out, std::ostream& err);
     const RunSettings& settings() const { return settings_; }
@@ -73,6 +73,7 @@ class CommandLine {
 
   private:
     void addAnalysisOptions();
+    void addDistributionOptions();
     void addGridOptions();
     void addOutputOptions();
     void addHyperuniformityOptions();
@@ -83,6 +84,7 @@ class CommandLine {
     CLI::App app_{"sbanalyze: analysis of stored superball packings (threads: TBB, FFTW, "
                   "OpenMP).",
                   "sbanalyze"};
+    const Communicator& communicator_;
     RunSettings settings_;
     std::vector<std::string> inputs_;
     CLI::App* info_ = nullptr;
@@ -95,7 +97,7 @@ class CommandLine {
     bool schemaJson_ = false;
 };
 
-CommandLine::CommandLine() {
+CommandLine::CommandLine(const Communicator& communicator) : communicator_(communicator) {
     settings_.threads = hardwareThreads();
     settings_.analyses = resolveAnalyses("all");
     settings_.fft.wisdomFile = defaultWisdomFile();
@@ -134,7 +136,35 @@ void CommandLine::addAnalysisOptions() {
                         hardwareThreads()))
         ->type_name("T");
     addContactOptions(app_, s.contacts);
+    addDistributionOptions();
     app_.add_flag("--quiet", s.quiet, "no progress lines (by default one per stage on stderr)");
+}
+
+void CommandLine::addDistributionOptions() {
+    RunSettings& s = settings_;
+    app_.add_option_function<std::string>(
+            "--distribute",
+            [&s](const std::string& v) {
+                if (v != "files" && v != "grids")
+                    throw std::invalid_argument("option --distribute: '" + v +
+                                                "' is not files or grids");
+                s.distribute = v == "grids" ? Distribution::Grids : Distribution::Files;
+            },
+            "under mpirun (SBPACK_WITH_MPI): files (default) shares the inputs out over the\n"
+            "ranks; grids analyses each input on all ranks, each holding a slab of the\n"
+            "--voxels and --pore-voxels grids (chi, voxels, pores, transport; docs/scale-out.md)")
+        ->type_name("files|grids");
+    app_.add_flag("--plan", s.plan,
+                  "print the memory per rank and the communication of the run, then stop\n"
+                  "before any analysis (no output file is needed)");
+    app_.add_option_function<std::string>(
+            "--plan-ranks",
+            [&s](const std::string& v) {
+                s.planRanks = static_cast<int>(parseInteger("--plan-ranks", v, 1, 1 << 24));
+                s.plan = true;
+            },
+            "plan for P ranks instead of this run's (implies --plan)")
+        ->type_name("P");
 }
 
 void CommandLine::addGridOptions() {
@@ -315,7 +345,7 @@ int CommandLine::run(std::ostream& out, std::ostream& err) {
     if (info_->parsed()) return infoCommand(infoFiles_, infoContacts_, out, err);
     if (convert_->parsed()) return convertCommand(convertIn_, convertOut_, err);
     if (schema_->parsed()) return schemaCommand(schemaJson_, out);
-    return analyzeCommand(settings_);
+    return analyzeCommand(settings_, communicator_);
 }
 
 } // namespace
@@ -325,8 +355,9 @@ std::string usage() {
     return commandLine.app().help();
 }
 
-int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
-    CommandLine commandLine;
+int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+                   const Communicator& communicator) {
+    CommandLine commandLine(communicator);
     if (argc <= 1) {
         err << commandLine.app().help();
         return EXIT_FAILURE;

@@ -29,9 +29,9 @@ Format formatOf(const std::string& name) {
 
 } // namespace
 
-int analyzeCommand(const RunSettings& settings) {
+int analyzeCommand(const RunSettings& settings, const Communicator& communicator) {
     installInterruptHandler();
-    runAnalyses(settings, std::cerr, std::cout);
+    runAnalyses(settings, std::cerr, std::cout, communicator);
     return EXIT_SUCCESS;
 }
 

@@ -2,6 +2,7 @@
 // What sbanalyze's commands do once their command line is parsed (cli/command_line.hpp).
 
 #include "contacts/contact_network.hpp"
+#include "parallel/communicator.hpp"
 #include "pipeline/run_settings.hpp"
 
 #include <iosfwd>
@@ -12,7 +13,7 @@ namespace sbpack {
 
 /// Each returns the exit status; bad input throws std::invalid_argument (or the reader's error)
 /// naming the file and the problem.
-int analyzeCommand(const RunSettings& settings);
+int analyzeCommand(const RunSettings& settings, const Communicator& communicator);
 /// Reports every file; a bad one is an error line on `err`, and the status is then 1.
 int infoCommand(const std::vector<std::string>& files, const ContactParameters& parameters,
                 std::ostream& out, std::ostream& err);

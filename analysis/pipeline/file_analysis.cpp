@@ -50,9 +50,11 @@ const schema::Record* FileResults::group(std::string_view name) const {
 
 FileResults analyzeFile(const Packing& packing, const std::filesystem::path& input,
                         const RunSettings& settings, const Progress& progress,
-                        const std::map<Analysis, VdbExport>& exports) {
+                        const std::map<Analysis, VdbExport>& exports,
+                        const DistributedGrids* grids) {
     warnAboutOverlaps(packing, progress);
     FileContext context(packing, settings, progress, exports);
+    if (settings.distribute == Distribution::Grids) context.distributeGrids(grids);
     FileResults results{input, fileRecord(packing, input, context.meanWidth()), {}};
     const std::vector<Analysis> order = runOrder(settings.analyses);
     for (std::size_t i = 0; i < order.size(); ++i) {

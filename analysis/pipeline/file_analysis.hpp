@@ -28,9 +28,11 @@ struct FileResults {
 };
 
 /// Runs the analyses of `settings` on one packing (already validated), in runOrder, reporting one
-/// line per stage. `exports`: where analyses with a vdbSuffix export their grids.
+/// line per stage. `exports`: where analyses with a vdbSuffix export their grids; `grids`: the
+/// distributed grid computations under --distribute grids (every rank calls it), else nullptr.
 FileResults analyzeFile(const Packing& packing, const std::filesystem::path& input,
                         const RunSettings& settings, const Progress& progress,
-                        const std::map<Analysis, VdbExport>& exports = {});
+                        const std::map<Analysis, VdbExport>& exports = {},
+                        const DistributedGrids* grids = nullptr);
 
 } // namespace sbpack

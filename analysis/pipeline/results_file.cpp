@@ -66,6 +66,8 @@ schema::Record runRecord(const RunResults& results, const RunSettings& settings)
         .set("sbanalyze_version", kVersion)
         .set("compute", analysisNames(settings.analyses))
         .set("threads", settings.threads)
+        .set("ranks", results.ranks)
+        .set("distribute", settings.distribute == Distribution::Grids ? "grids" : "files")
         .set("n_files", results.files.size())
         .set("n_ensembles", results.ensembles.size())
         .set("runtime_s", results.runtimeSeconds);

@@ -17,6 +17,7 @@ struct RunResults {
     std::vector<FileResults> files;
     std::vector<EnsembleResults> ensembles; ///< one per (p, N) of the files
     double runtimeSeconds = 0.0;
+    int ranks = 1; ///< MPI processes of the run
 };
 
 /// The run's own attributes (the root of the results file).

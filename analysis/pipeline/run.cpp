@@ -3,7 +3,9 @@
 #include "io/atomic_file.hpp"
 #include "io/packing_io.hpp"
 #include "parallel/parallel.hpp"
+#include "pipeline/record_bytes.hpp"
 #include "pipeline/resources.hpp"
+#include "pipeline/scale_plan.hpp"
 #include "pipeline/summary_json.hpp"
 #include "voxels/voxelization.hpp"
 
@@ -94,13 +96,27 @@ void checkOutputs(const RunSettings& settings) {
     }
 }
 
-/// Everything that can be checked before the first analysis, so that bad input costs nothing.
-std::vector<Packing> readAndCheckInputs(const RunSettings& settings) {
+/// The inputs a rank analyses: all with one rank, --distribute grids or --plan, else every size-th
+/// from its rank on (round robin: neighbouring inputs, often alike in cost, go to different
+/// ranks).
+std::vector<std::size_t> filesOfRank(const RunSettings& settings, const Communicator& comm) {
+    std::vector<std::size_t> mine;
+    const bool all = settings.distribute == Distribution::Grids || settings.plan;
+    for (std::size_t i = all ? 0 : comm.rank(); i < settings.inputs.size();
+         i += all ? 1 : comm.size())
+        mine.push_back(i);
+    return mine;
+}
+
+/// Everything that can be checked before the first analysis, so that bad input costs nothing:
+/// the inputs of `mine` are read and validated.
+std::vector<Packing> readAndCheckInputs(const RunSettings& settings,
+                                        const std::vector<std::size_t>& mine) {
     if (settings.inputs.empty()) throw std::invalid_argument("no packing file given");
     std::vector<Packing> packings;
-    for (const fs::path& input : settings.inputs) {
-        Packing packing = readPacking(input);
-        checkPackingForRun(packing, settings, input);
+    for (std::size_t i : mine) {
+        Packing packing = readPacking(settings.inputs[i]);
+        checkPackingForRun(packing, settings, settings.inputs[i]);
         packings.push_back(std::move(packing));
     }
     return packings;
@@ -119,27 +135,68 @@ void checkPackingForRun(const Packing& packing, const RunSettings& settings,
                                         std::to_string(settings.voxelsOf(grid)) + ": " + e.what());
         }
     }
-    checkMemory(packing, settings, quotedName(input));
+    // Distributed grids are checked per rank by the plan (pipeline/scale_plan.hpp).
+    if (settings.distribute == Distribution::Files)
+        checkMemory(packing, settings, quotedName(input));
 }
 
 namespace {
 
-/// Analyses every file; grids exported go to temporaries, added to `exports` for the commit.
-std::vector<FileResults> analyzeAll(const RunSettings& settings,
-                                    const std::vector<Packing>& packings, Progress& progress,
-                                    std::vector<std::unique_ptr<AtomicOutput>>& exports) {
+/// "[rank 1] [2/5] packing.h5" with several ranks.
+std::string rankContext(const Communicator& comm, std::string context) {
+    if (comm.size() == 1) return context;
+    return context.empty() ? fmt::format("[rank {}]", comm.rank())
+                           : fmt::format("[rank {}] {}", comm.rank(), context);
+}
+
+/// Analyses the files `mine` (the packings read for them); grids exported go to temporaries,
+/// added to `exports` for the commit. With several ranks an error names its file.
+IndexedFiles analyzeAll(const RunSettings& settings, const std::vector<std::size_t>& mine,
+                        const std::vector<Packing>& packings, Progress& progress,
+                        std::vector<std::unique_ptr<AtomicOutput>>& exports,
+                        const Communicator& comm) {
     const std::vector<std::map<Analysis, fs::path>> vdbFiles = vdbTargets(settings);
-    std::vector<FileResults> files;
-    for (std::size_t i = 0; i < packings.size(); ++i) {
-        progress.setContext(fileContext(i, packings.size(), settings.inputs[i]));
+    IndexedFiles files;
+    for (std::size_t k = 0; k < mine.size(); ++k) {
+        const std::size_t i = mine[k];
+        progress.setContext(
+            rankContext(comm, fileContext(i, settings.inputs.size(), settings.inputs[i])));
         std::map<Analysis, VdbExport> targets;
         for (const auto& [analysis, file] : vdbFiles[i]) {
             exports.push_back(std::make_unique<AtomicOutput>(file));
             targets[analysis] = VdbExport{exports.back().get(), file};
         }
-        files.push_back(analyzeFile(packings[i], settings.inputs[i], settings, progress, targets));
+        try {
+            files.emplace_back(i, analyzeFile(packings[k], settings.inputs[i], settings, progress,
+                                              targets, comm.grids()));
+        } catch (const std::exception& e) {
+            if (comm.size() == 1) throw;
+            throw std::runtime_error(quotedName(settings.inputs[i]) + ": " + e.what());
+        }
     }
-    progress.setContext("");
+    progress.setContext(rankContext(comm, ""));
+    return files;
+}
+
+/// Collective: every rank's files on rank 0, in input order (empty elsewhere). With
+/// --distribute grids every rank holds every file and rank 0 keeps its own.
+std::vector<FileResults> gatherFiles(IndexedFiles mine, const RunSettings& settings,
+                                     const Communicator& comm) {
+    std::vector<IndexedFiles> parts;
+    if (comm.size() == 1 || settings.distribute == Distribution::Grids) {
+        parts.push_back(std::move(mine));
+    } else {
+        // allGather: every rank takes part in the same collective; only rank 0 decodes.
+        const std::vector<std::string> bytes = comm.allGather(encodeFiles(mine));
+        if (comm.rank() == 0)
+            for (const std::string& b : bytes)
+                parts.push_back(decodeFiles(b));
+    }
+    if (comm.rank() != 0) return {};
+    std::vector<FileResults> files(settings.inputs.size());
+    for (IndexedFiles& part : parts)
+        for (auto& [index, file] : part)
+            files.at(index) = std::move(file);
     return files;
 }
 
@@ -175,19 +232,18 @@ std::unique_ptr<AtomicOutput> writeJson(const RunSettings& settings, const RunRe
 } // namespace
 
 RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out) {
-    const Stopwatch clock;
-    const ThreadBudget budget(settings.threads);
-    checkOutputs(settings);
-    vdbTargets(settings); // option errors before any reading
-    const std::vector<Packing> packings = readAndCheckInputs(settings);
+    return runAnalyses(settings, log, out, SerialCommunicator());
+}
 
-    Progress progress(settings.quiet ? nullptr : &log, &log);
-    RunResults results;
-    std::vector<std::unique_ptr<AtomicOutput>> exports; // committed with the results file
-    results.files = analyzeAll(settings, packings, progress, exports);
+namespace {
+
+/// Rank 0: the ensembles, the results file and the JSON summary of the gathered files, committed
+/// with the exports.
+void writeOutputs(const RunSettings& settings, RunResults& results, const Progress& progress,
+                  const Stopwatch& clock, std::ostream& out,
+                  std::vector<std::unique_ptr<AtomicOutput>>& exports) {
     results.ensembles = ensemblesOf(results.files, progress);
     results.runtimeSeconds = clock.seconds();
-
     std::unique_ptr<AtomicOutput> resultsFile;
     if (!settings.output.empty()) {
         resultsFile = std::make_unique<AtomicOutput>(settings.output);
@@ -201,6 +257,43 @@ RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostr
         resultsFile->commit();
         progress.stageDone("wrote " + settings.output.string(),
                            clock.seconds() - results.runtimeSeconds);
+    }
+}
+
+} // namespace
+
+RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out,
+                       const Communicator& comm) {
+    const Stopwatch clock;
+    const ThreadBudget budget(settings.threads);
+    const std::vector<std::size_t> mine = filesOfRank(settings, comm);
+    std::vector<Packing> packings;
+    collectively(comm, [&] {
+        checkDistribution(settings, comm);
+        if (!settings.plan) checkOutputs(settings);
+        vdbTargets(settings); // option errors before any reading
+        packings = readAndCheckInputs(settings, mine);
+        if (settings.distribute == Distribution::Grids && !settings.plan)
+            checkPlanMemory(settings, packings, comm.size());
+    });
+    if (settings.plan) {
+        if (comm.rank() == 0) out << planText(settings, packings, mine, comm.size());
+        return {};
+    }
+
+    Progress progress(settings.quiet ? nullptr : &log, &log);
+    RunResults results;
+    results.ranks = comm.size();
+    std::vector<std::unique_ptr<AtomicOutput>> exports; // committed with the results file
+    IndexedFiles analysed;
+    collectively(comm,
+                 [&] { analysed = analyzeAll(settings, mine, packings, progress, exports, comm); });
+    results.files = gatherFiles(std::move(analysed), settings, comm);
+    if (comm.rank() == 0) {
+        writeOutputs(settings, results, progress, clock, out, exports);
+    } else {
+        for (const auto& e : exports)
+            e->commit();
     }
     return results;
 }

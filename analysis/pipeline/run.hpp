@@ -7,6 +7,7 @@
 #include "pipeline/run_settings.hpp"
 
 #include "packing/packing.hpp"
+#include "parallel/communicator.hpp"
 
 #include <filesystem>
 #include <iosfwd>
@@ -24,5 +25,14 @@ void checkPackingForRun(const Packing& packing, const RunSettings& settings,
                         const std::filesystem::path& input);
 
 RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out);
+
+/// The same on the ranks of `comm` (docs/scale-out.md), every rank calling it: --distribute files
+/// shares the inputs out round robin, --distribute grids analyses each input on all ranks
+/// together (comm.grids()). Errors are agreed on collectively (CollectiveError on every rank,
+/// naming the file), rank 0 gathers the per-file records in input order, runs the ensemble
+/// reducer and writes the outputs; its RunResults hold them (the other ranks' hold none).
+/// With settings.plan nothing runs: rank 0 prints the plan (pipeline/scale_plan.hpp) to `out`.
+RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out,
+                       const Communicator& comm);
 
 } // namespace sbpack

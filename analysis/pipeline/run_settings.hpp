@@ -11,6 +11,10 @@
 
 namespace sbpack {
 
+/// What the ranks of an MPI run share out (--distribute; docs/scale-out.md): whole files, or
+/// the slabs of each file's grids (chi, voxels, pores and transport beyond one node's memory).
+enum class Distribution { Files, Grids };
+
 struct RunSettings {
     std::vector<std::filesystem::path> inputs;
     AnalysisSet analyses;
@@ -30,6 +34,10 @@ struct RunSettings {
     ContactParameters contacts;
     FftSettings fft;
     bool quiet = false;
+    Distribution distribute = Distribution::Files;
+    /// --plan: print the per-rank memory and communication of the run and stop before any work
+    bool plan = false;
+    int planRanks = 0; ///< --plan-ranks P: plan for P ranks (0: the ranks of this run)
 
     bool runs(Analysis analysis) const { return analyses.count(analysis) != 0; }
     /// M of a grid; 0 for VoxelGrid::None.

@@ -19,6 +19,8 @@
 
 namespace sbpack {
 
+class DistributedGrids;
+
 /// Where a grid is exported: written through `output` (committed with the results), reported
 /// as `destination`.
 struct VdbExport {
@@ -42,6 +44,11 @@ class FileContext {
         const auto it = exports_.find(analysis);
         return it == exports_.end() ? nullptr : &it->second;
     }
+
+    /// The distributed grid computations (--distribute grids, pipeline/distributed_grids.hpp);
+    /// nullptr when each grid is whole on this process.
+    const DistributedGrids* grids() const { return grids_; }
+    void distributeGrids(const DistributedGrids* grids) { grids_ = grids; }
 
     /// Keeps a stage's result for the stages that need it (AnalysisInfo::needs); released once no
     /// later stage of the file needs it.
@@ -77,6 +84,7 @@ class FileContext {
     std::map<Analysis, VdbExport> exports_;
     std::map<Analysis, Kept> kept_;
     std::vector<schema::Record> groups_;
+    const DistributedGrids* grids_ = nullptr;
 };
 
 } // namespace sbpack

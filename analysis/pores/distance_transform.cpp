@@ -40,9 +40,11 @@ void refuseUnlessAvailable(std::uint64_t bytes, int voxels, const std::string& w
                                  " are available (MemAvailable); choose a smaller M");
 }
 
+} // namespace
+
 /// Scratch of one periodic line: the line with its periodic images on either side, and the
 /// sites of the lower envelope with their breakpoints.
-struct LineScratch {
+struct detail::LineScratch {
     explicit LineScratch(int voxels)
         : voxels(voxels), extended(2 * static_cast<std::size_t>(voxels) + 1), site(2 * voxels + 1),
           value(2 * voxels + 1), startNumerator(2 * voxels + 1), startDenominator(2 * voxels + 1) {}
@@ -57,6 +59,10 @@ struct LineScratch {
     std::vector<std::int64_t> startNumerator;
     std::vector<std::int64_t> startDenominator;
 };
+
+namespace {
+
+using detail::LineScratch;
 
 /// Copies a line (stride apart) into s.line(); returns the largest finite value, or kInfinite
 /// if some value is infinite.
@@ -241,6 +247,18 @@ std::uint32_t planeDistances(std::uint32_t* planeData, LineScratch& scratch) {
 }
 
 } // namespace
+
+PeriodicLineTransform::PeriodicLineTransform(int voxels)
+    : scratch_(std::make_unique<LineScratch>(voxels)) {}
+PeriodicLineTransform::~PeriodicLineTransform() = default;
+
+std::uint32_t PeriodicLineTransform::operator()(std::uint32_t* line, std::int64_t stride) {
+    periodicLineTransform(*scratch_, loadLine(*scratch_, line, stride), line, stride);
+    std::uint32_t largest = 0;
+    for (int p = 0; p < scratch_->voxels; ++p)
+        largest = std::max(largest, line[p * stride]);
+    return largest;
+}
 
 std::uint64_t poreSizeMemoryBytes(int voxels) {
     const auto m = static_cast<std::uint64_t>(std::max(voxels, 0));

@@ -22,6 +22,30 @@ void checkPoreSizeMemory(int voxels);
 /// Largest M accepted: keeps the envelope's integer arithmetic and its floors exact (see the .cpp).
 inline constexpr int maxPoreSizeVoxels = 16384;
 
+namespace detail {
+struct LineScratch;
+}
+
+/// "No site" in the min-plus passes (a void voxel before the first pass).
+inline constexpr std::uint32_t kNoSite = 0xffffffffu;
+
+/// One pass of the separable transform below along one line, for the passes of a distributed
+/// grid (docs/scale-out.md): the exact periodic min-plus transform
+/// out(p) = min_q f(q) + (min-image |p - q|)^2 in place on the M values of a line `stride`
+/// apart (f = kNoSite: no site; f = 0 on solid and kNoSite on void gives the squared 1-D
+/// distance to the nearest solid). Holds per-line scratch: one object per thread.
+class PeriodicLineTransform {
+  public:
+    explicit PeriodicLineTransform(int voxels);
+    PeriodicLineTransform(PeriodicLineTransform&&) noexcept = default;
+    ~PeriodicLineTransform();
+    /// Transforms the line; returns its largest value afterwards.
+    std::uint32_t operator()(std::uint32_t* line, std::int64_t stride);
+
+  private:
+    std::unique_ptr<detail::LineScratch> scratch_;
+};
+
 /// Squared distances, in voxel units, from every voxel centre to the nearest solid voxel centre
 /// of an M^3 periodic grid (minimum image), 0 on solid voxels. Index (i * M + j) * M + k with
 /// i, j, k the x, y, z voxel indices; voxel centre ((i + 0.5) a, (j + 0.5) a, (k + 0.5) a).

@@ -174,22 +174,29 @@ PoreSizeDistributionResult PoreSizeDistribution::compute(const PoreSizeMap& map,
     for (const auto& h : local)
         for (std::size_t n = 0; n < levels; ++n)
             histogram[n] += h[n];
+    PoreSizeDistributionResult r = fromHistogram(histogram, m, map.voxelSize(), meanWidth);
+    r.runtimeSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    return r;
+}
 
+PoreSizeDistributionResult
+PoreSizeDistribution::fromHistogram(std::span<const std::int64_t> histogram, int voxels,
+                                    double voxelSize, double meanWidth) const {
+    checkMeanWidth(meanWidth);
     std::vector<double> sizes;
     std::vector<std::int64_t> counts;
-    for (std::size_t n = 1; n < levels; ++n) // n = 0: solid voxels
+    for (std::size_t n = 1; n < histogram.size(); ++n) // n = 0: solid voxels
         if (histogram[n] > 0) {
-            sizes.push_back(map.voxelSize() * std::sqrt(static_cast<double>(n)));
+            sizes.push_back(voxelSize * std::sqrt(static_cast<double>(n)));
             counts.push_back(histogram[n]);
         }
     PoreSizeDistributionResult r =
         poreSizeStatistics(sizes, counts, meanWidth, parameters_.densityBins);
-    r.method = sampled ? "random voxels" : "voxels";
+    r.method = parameters_.randomPoints > 0 ? "random voxels" : "voxels";
     r.parameters = parameters_;
-    r.voxels = m;
-    r.voxelSize = map.voxelSize();
-    r.runtimeSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    r.voxels = voxels;
+    r.voxelSize = voxelSize;
     return r;
 }
 

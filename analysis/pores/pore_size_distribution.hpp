@@ -74,6 +74,12 @@ class PoreSizeDistribution {
     /// Statistics over every void voxel, or K random void points (parameters). Throws
     /// std::invalid_argument unless meanWidth is finite and positive.
     PoreSizeDistributionResult compute(const PoreSizeMap& map, double meanWidth) const;
+    /// The statistics from histogram[n] = the number of sampled voxels at squared distance n
+    /// (voxel units; n = 0 solid, not counted) of an M^3 grid of voxel size a: what compute()
+    /// does after its histogram, and what the ranks of a distributed grid do after summing
+    /// theirs (docs/scale-out.md). runtimeSeconds is left 0.
+    PoreSizeDistributionResult fromHistogram(std::span<const std::int64_t> histogram, int voxels,
+                                             double voxelSize, double meanWidth) const;
 
     const PoreSizeParameters& parameters() const { return parameters_; }
 

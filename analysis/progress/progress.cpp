@@ -4,6 +4,7 @@
 #include <csignal>
 #include <iomanip>
 #include <ostream>
+#include <sstream>
 
 namespace sbpack {
 
@@ -35,19 +36,23 @@ Progress::Progress(std::ostream* log, std::ostream* warnings) : log_(log), warni
 
 void Progress::stageDone(std::string_view stage, double seconds, std::string_view detail) const {
     if (log_ == nullptr) return;
-    *log_ << "sbanalyze: ";
-    if (!context_.empty()) *log_ << context_ << ": ";
-    *log_ << stage;
-    if (!detail.empty()) *log_ << ": " << detail;
-    *log_ << " (" << std::fixed << std::setprecision(3) << seconds << " s)" << std::defaultfloat
-          << std::endl;
+    // One write per line: the ranks of an MPI run share standard error (docs/scale-out.md).
+    std::ostringstream line;
+    line << "sbanalyze: ";
+    if (!context_.empty()) line << context_ << ": ";
+    line << stage;
+    if (!detail.empty()) line << ": " << detail;
+    line << " (" << std::fixed << std::setprecision(3) << seconds << " s)\n";
+    *log_ << line.str() << std::flush;
 }
 
 void Progress::warn(std::string_view message) const {
     if (warnings_ == nullptr) return;
-    *warnings_ << "sbanalyze: warning: ";
-    if (!context_.empty()) *warnings_ << context_ << ": ";
-    *warnings_ << message << std::endl;
+    std::ostringstream line;
+    line << "sbanalyze: warning: ";
+    if (!context_.empty()) line << context_ << ": ";
+    line << message << '\n';
+    *warnings_ << line.str() << std::flush;
 }
 
 void Progress::checkInterrupt() const {

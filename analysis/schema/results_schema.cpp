@@ -22,13 +22,22 @@ constexpr Reduce Same = Reduce::Same;
 constexpr Reduce Pooled = Reduce::Pooled;
 
 constexpr std::string_view kRuntime = "wall-clock time of this analysis";
+// The figures of a distributed grid (--distribute grids; docs/scale-out.md), in each grid's group.
+constexpr std::string_view kRanks = "--distribute grids only: ranks sharing the grid's x-slabs";
+constexpr std::string_view kSlab = "--distribute grids only: x-planes of the largest rank's slab";
+constexpr std::string_view kRankMemory =
+    "--distribute grids only: the largest rank's grid memory (its allocations)";
+constexpr std::string_view kCommunication =
+    "--distribute grids only: bytes sent from rank to rank, all ranks together";
 
 constexpr Field kRun[] = {
     {"format", A, S, "", "\"sbpack.results\""},
     {"format_version", A, I, "1", "2 (this layout)"},
     {"sbanalyze_version", A, S, "", "version of the sbanalyze that wrote the file"},
     {"compute", A, S, "", "the analyses run, comma-separated (--compute with what they need)"},
-    {"threads", A, I, "1", "threads of the run (--threads)"},
+    {"threads", A, I, "1", "threads of the run (--threads), per rank"},
+    {"ranks", A, I, "1", "MPI processes of the run (1 without mpirun; docs/scale-out.md)"},
+    {"distribute", A, S, "", "what the ranks shared out (--distribute): files or grids"},
     {"n_files", A, I, "1", "inputs: groups files/0 ... files/<n_files - 1>"},
     {"n_ensembles", A, I, "1", "ensembles (inputs of equal p and N): ensembles/0 ..."},
     {"runtime_s", A, F, "s", "wall-clock time of the whole run"},
@@ -64,6 +73,10 @@ constexpr Field kSpectralDensity[] = {
     {"fft_plan_s", A, F, "s", "FFTW planning time"},
     {"fft_s", A, F, "s", "filling the grid and the FFT"},
     {"shell_average_s", A, F, "s", "shell averaging"},
+    {"ranks", A, I, "1", kRanks, No, true},
+    {"slab", A, I, "1", kSlab, No, true},
+    {"memory_per_rank_bytes", A, F, "bytes", kRankMemory, No, true},
+    {"communication_bytes", A, F, "bytes", kCommunication, No, true},
     {"exact_s", A, F, "s", "spheres only: the exact path", No, true},
     {"exact_error", A, F, "1",
      "spheres only: max over shells of |chi - chi_exact| over the peak of chi_exact", Mean, true},
@@ -84,6 +97,10 @@ constexpr Field kVoxelization[] = {
     {"solid_voxels", A, I, "1", "solid voxels"},
     {"memory_bytes", A, I, "bytes", "memory of the OpenVDB tree"},
     {"vdb_file", A, S, "", "with --vdb: the exported .vdb file", No, true},
+    {"ranks", A, I, "1", kRanks, No, true},
+    {"slab", A, I, "1", kSlab, No, true},
+    {"memory_per_rank_bytes", A, F, "bytes", kRankMemory, No, true},
+    {"communication_bytes", A, F, "bytes", kCommunication, No, true},
     {"runtime_s", A, F, "s", kRuntime},
 };
 
@@ -118,6 +135,10 @@ constexpr Field kPoreSize[] = {
     {"voxel_size", A, F, "length", "a = L / M"},
     {"samples", A, I, "1", "void voxels or random void points in the statistics"},
     {"method", A, S, "", "\"voxels\" or \"random voxels\" (--pore-points)"},
+    {"ranks", A, I, "1", kRanks, No, true},
+    {"slab", A, I, "1", kSlab, No, true},
+    {"memory_per_rank_bytes", A, F, "bytes", kRankMemory, No, true},
+    {"communication_bytes", A, F, "bytes", kCommunication, No, true},
     {"runtime_s", A, F, "s", kRuntime},
     {"delta", D, F, "length", "pore sizes, delta[0] = 0"},
     {"F", D, F, "1",

@@ -40,6 +40,25 @@ void ShellAccumulator::merge(const ShellAccumulator& other) {
     }
 }
 
+std::vector<double> ShellAccumulator::sums() const {
+    std::vector<double> out(sumQ_);
+    out.insert(out.end(), sumValue_.begin(), sumValue_.end());
+    for (std::int64_t c : count_)
+        out.push_back(static_cast<double>(c));
+    return out;
+}
+
+void ShellAccumulator::mergeSums(const std::vector<double>& sums) {
+    const std::size_t n = count_.size();
+    if (sums.size() != 3 * n)
+        throw std::invalid_argument("shell average: merging sums of different shells");
+    for (std::size_t s = 0; s < n; ++s) {
+        sumQ_[s] += sums[s];
+        sumValue_[s] += sums[n + s];
+        count_[s] += static_cast<std::int64_t>(sums[2 * n + s]);
+    }
+}
+
 ShellAverage ShellAccumulator::average() const {
     ShellAverage out;
     for (std::size_t s = 0; s < count_.size(); ++s) {

@@ -36,6 +36,11 @@ class ShellAccumulator {
     /// standing for `weight` wave vectors (2 for n when -n is left out by symmetry).
     void add(std::int64_t n2, double value, std::int64_t weight);
     void merge(const ShellAccumulator& other);
+    /// The sums as numbers (sum Q, sum value, count per shell; counts exact below 2^53), and
+    /// merging such numbers in: how ranks of a distributed grid combine their shells in rank
+    /// order (docs/scale-out.md).
+    std::vector<double> sums() const;
+    void mergeSums(const std::vector<double>& sums);
     /// Throws std::logic_error if a shell is empty (it never is when every n was added).
     ShellAverage average() const;
 

@@ -65,43 +65,49 @@ SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Vox
 
 namespace {
 
-/// Eq. 12 on the voxels: shells 1..s of |F|^2 [prod_i a sinc(Q_i a / 2)]^2 / V over the half
-/// space kept by the real-to-complex transform, with its weights. Each plane k_x with |n_x| <= s is
-/// summed into its own accumulator and merged in order (the result does not depend on threads).
-ShellAverage voxelShells(const VoxelFourierTransform& transform, double voxelSize, double boxLength,
-                         int s, const Progress& progress, bool serial) {
-    const int m = transform.voxels();
-    const double volume = std::pow(boxLength, 3);
-    const std::int64_t maxN2 = maxSquaredIndex(s);
-    // [a sinc(Q_i a / 2)]^2 per axis, Q_i a / 2 = pi n_i / M, for n_i in [-s, s].
+/// [a sinc(Q_i a / 2)]^2 per axis, Q_i a / 2 = pi n_i / M, for n_i in [-s, s].
+std::vector<double> voxelFormFactors(double voxelSize, int m, int s) {
     std::vector<double> formFactor2(2 * s + 1);
     for (int n = -s; n <= s; ++n) {
         const double f = voxelSize * sinc(std::numbers::pi * n / m);
         formFactor2[n + s] = f * f;
     }
+    return formFactor2;
+}
+
+} // namespace
+
+ShellAccumulator spectralShellSums(const SpectrumSlab& slab, double voxelSize, double boxLength,
+                                   int s, const Progress& progress, bool serial) {
+    const int m = slab.voxels;
+    const std::int64_t half = m / 2 + 1;
+    const double volume = std::pow(boxLength, 3);
+    const std::int64_t maxN2 = maxSquaredIndex(s);
+    const std::vector<double> formFactor2 = voxelFormFactors(voxelSize, m, s);
     std::vector<int> planes;
-    for (int kx = 0; kx < m; ++kx)
-        if (std::abs(signedIndex(kx, m)) <= s) planes.push_back(kx);
+    for (int outer = slab.outerBegin; outer < slab.outerEnd; ++outer)
+        if (std::abs(signedIndex(outer, m)) <= s) planes.push_back(outer);
     std::vector<ShellAccumulator> partial(planes.size(), ShellAccumulator(boxLength, s));
     parallelFor(
         0, static_cast<std::int64_t>(planes.size()), 1,
         [&](std::int64_t begin, std::int64_t end) {
             for (std::int64_t p = begin; p < end; ++p) {
                 progress.checkInterrupt();
-                const int kx = planes[p];
-                const int nx = signedIndex(kx, m);
-                for (int ky = 0; ky < m; ++ky) {
-                    const int ny = signedIndex(ky, m);
-                    const std::int64_t nxy2 = std::int64_t{nx} * nx + std::int64_t{ny} * ny;
-                    if (nxy2 > maxN2) continue;
-                    const double fxy = formFactor2[nx + s] * formFactor2[ny + s];
+                const int no = signedIndex(planes[p], m);
+                const double* plane = slab.data + (planes[p] - slab.outerBegin) * m * half * 2;
+                for (int inner = 0; inner < m; ++inner) {
+                    const int ni = signedIndex(inner, m);
+                    const std::int64_t n2io = std::int64_t{no} * no + std::int64_t{ni} * ni;
+                    if (n2io > maxN2) continue;
+                    const double fxy = formFactor2[no + s] * formFactor2[ni + s];
                     for (int kz = 0; kz <= s; ++kz) {
-                        const std::int64_t n2 = nxy2 + std::int64_t{kz} * kz;
+                        const std::int64_t n2 = n2io + std::int64_t{kz} * kz;
                         if (n2 > maxN2) break;
                         if (n2 == 0) continue;
-                        const double chi =
-                            transform.power(kx, ky, kz) * fxy * formFactor2[kz + s] / volume;
-                        partial[p].add(n2, chi, transform.weight(kz));
+                        const double* c = plane + (inner * half + kz) * 2;
+                        const double power = c[0] * c[0] + c[1] * c[1];
+                        const int weight = kz == 0 || 2 * kz == m ? 1 : 2;
+                        partial[p].add(n2, power * fxy * formFactor2[kz + s] / volume, weight);
                     }
                 }
             }
@@ -110,8 +116,10 @@ ShellAverage voxelShells(const VoxelFourierTransform& transform, double voxelSiz
     ShellAccumulator shells(boxLength, s);
     for (const ShellAccumulator& p : partial)
         shells.merge(p);
-    return shells.average();
+    return shells;
 }
+
+namespace {
 
 /// Spheres: the exact shells and the voxel path's largest error against them over their peak.
 SphereComparison compareWithSpheres(const Packing& packing, const ShellAverage& voxel, int maxShell,
@@ -129,6 +137,36 @@ SphereComparison compareWithSpheres(const Packing& packing, const ShellAverage& 
 
 } // namespace
 
+SpectralDensityResult SpectralDensity::start(const Packing& packing, int voxels,
+                                             double phiVoxel) const {
+    SpectralDensityResult result;
+    result.parameters = parameters_;
+    result.voxels = voxels;
+    result.voxelSize = packing.boxLength / voxels;
+    result.phiVoxel = phiVoxel;
+    result.boxLength = packing.boxLength;
+    result.meanWidth = packing.shape().meanWidth();
+    result.maxShell = maxShellFor(parameters_.maxQw, packing.boxLength, result.meanWidth, voxels);
+    if (result.maxShell < 1)
+        throw std::invalid_argument(
+            "spectral density: no shell with Q w <= " + std::to_string(parameters_.maxQw) +
+            " on a " + std::to_string(voxels) + "^3 grid of this box");
+    return result;
+}
+
+void SpectralDensity::finish(const Packing& packing, ShellAverage shells, const Progress& progress,
+                             SpectralDensityResult& result) const {
+    const Stopwatch clock;
+    result.shells = std::move(shells);
+    if (packing.shape().isSphere()) {
+        const Stopwatch exactClock;
+        result.exactSphere = compareWithSpheres(packing, result.shells, result.maxShell, progress,
+                                                parameters_.serial);
+        result.exactSeconds = exactClock.seconds();
+    }
+    result.runtimeSeconds += clock.seconds();
+}
+
 SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Voxelization& voxels,
                                                const VoxelFourierTransform& transform,
                                                const Progress& progress) const {
@@ -139,34 +177,19 @@ SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Vox
         throw std::invalid_argument("spectral density: the voxelization is of a box of edge " +
                                     std::to_string(voxels.boxLength()) + ", the packing's is " +
                                     std::to_string(packing.boxLength));
-    SpectralDensityResult result;
-    result.parameters = parameters_;
-    result.voxels = voxels.voxels();
-    result.voxelSize = voxels.voxelSize();
-    result.phiVoxel = voxels.phiVoxel();
-    result.boxLength = packing.boxLength;
-    result.meanWidth = packing.shape().meanWidth();
-    result.maxShell =
-        maxShellFor(parameters_.maxQw, packing.boxLength, result.meanWidth, voxels.voxels());
-    if (result.maxShell < 1)
-        throw std::invalid_argument(
-            "spectral density: no shell with Q w <= " + std::to_string(parameters_.maxQw) +
-            " on a " + std::to_string(voxels.voxels()) + "^3 grid of this box");
+    SpectralDensityResult result = start(packing, voxels.voxels(), voxels.phiVoxel());
     result.planSeconds = transform.planSeconds();
     result.fillSeconds = transform.fillSeconds();
     result.transformSeconds = transform.transformSeconds();
     const Stopwatch shellClock;
-    result.shells = voxelShells(transform, voxels.voxelSize(), packing.boxLength, result.maxShell,
-                                progress, parameters_.serial);
+    const SpectrumSlab whole{transform.data(), voxels.voxels(), 0, voxels.voxels()};
+    ShellAverage shells = spectralShellSums(whole, voxels.voxelSize(), packing.boxLength,
+                                            result.maxShell, progress, parameters_.serial)
+                              .average();
     result.shellSeconds = shellClock.seconds();
-    if (packing.shape().isSphere()) {
-        const Stopwatch exactClock;
-        result.exactSphere = compareWithSpheres(packing, result.shells, result.maxShell, progress,
-                                                parameters_.serial);
-        result.exactSeconds = exactClock.seconds();
-    }
     result.runtimeSeconds =
         clock.seconds() + result.planSeconds + result.fillSeconds + result.transformSeconds;
+    finish(packing, std::move(shells), progress, result);
     return result;
 }
 

@@ -59,6 +59,23 @@ struct SpectralDensityResult {
     double runtimeSeconds = 0.0;
 };
 
+/// The wave vectors of a real-to-complex transform of an M^3 grid, or of one slab of it: planes
+/// [outerBegin, outerEnd) of the outer index, coefficient (outer, inner, kz) interleaved at
+/// (((outer - outerBegin) M + inner) (M/2 + 1) + kz) 2. The whole transform has outer = kx,
+/// inner = ky; a rank of FFTW's MPI transform with transposed output outer = ky, inner = kx
+/// (docs/scale-out.md). Eq. 12 is symmetric in the two, so one shell sum serves both.
+struct SpectrumSlab {
+    const double* data;
+    int voxels;
+    int outerBegin, outerEnd;
+};
+
+/// The shell sums of Eq. 12 over the wave vectors of `slab`, shells 1..maxShell: |F|^2
+/// [prod_i a sinc(Q_i a / 2)]^2 / V over the half space kz <= M/2 with its weights. Each outer
+/// plane sums into its own accumulator, merged in order (independent of the threads).
+ShellAccumulator spectralShellSums(const SpectrumSlab& slab, double voxelSize, double boxLength,
+                                   int maxShell, const Progress& progress, bool serial);
+
 /// Compute object (docs/design.md §7): parameters validated at construction.
 class SpectralDensity {
   public:
@@ -84,6 +101,13 @@ class SpectralDensity {
     SpectralDensityResult compute(const Packing& packing, const Voxelization& voxels,
                                   const VoxelFourierTransform& transform,
                                   const Progress& progress) const;
+
+    /// The parts of compute() around the shell sums, for a distributed transform: start() fills
+    /// the grid's figures and maxShell (std::invalid_argument when no shell fits), finish() takes
+    /// the shells and adds the exact sphere path and the runtime.
+    SpectralDensityResult start(const Packing& packing, int voxels, double phiVoxel) const;
+    void finish(const Packing& packing, ShellAverage shells, const Progress& progress,
+                SpectralDensityResult& result) const;
 
     const SpectralDensityParameters& parameters() const { return parameters_; }
 

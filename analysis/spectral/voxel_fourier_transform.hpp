@@ -28,6 +28,8 @@ class VoxelFourierTransform {
         const std::int64_t i = ((std::int64_t{kx} * voxels_ + ky) * halfLength_ + kz) * 2;
         return {data_.get()[i], data_.get()[i + 1]};
     }
+    /// The coefficients, interleaved (re, im), at ((kx M + ky) (M/2 + 1) + kz) 2.
+    const double* data() const { return data_.get(); }
     /// |F(k)|^2.
     double power(int kx, int ky, int kz) const { return std::norm(coefficient(kx, ky, kz)); }
     /// How many wave vectors (k, -k) the stored kz stands for: 1 on the planes kz = 0 and

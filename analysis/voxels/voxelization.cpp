@@ -121,9 +121,21 @@ std::uint64_t rowBits(int z0, int z1, int shift) {
 
 /// The geometry shared by all blocks.
 struct BlockGeometry {
-    int m;         ///< voxels per edge
-    double a;      ///< voxel edge
-    double rc, ri; ///< circumscribed and inscribed radii, with the shortcut margin
+    int m;                    ///< voxels per edge
+    double a;                 ///< voxel edge
+    double rc, ri;            ///< circumscribed and inscribed radii, with the shortcut margin
+    int x0, x1;               ///< the slab: x-planes [x0, x1)
+    int blocks;               ///< blocks along y and z
+    int firstBlockX, blocksX; ///< the x-blocks the slab touches
+
+    std::int64_t blockCount() const { return std::int64_t{blocksX} * blocks * blocks; }
+    /// Origin (voxel indices) of block b of the slab's blocks.
+    std::array<int, 3> origin(std::int64_t b) const {
+        const std::int64_t plane = std::int64_t{blocks} * blocks;
+        return {static_cast<int>(b / plane + firstBlockX) * kBlock,
+                static_cast<int>((b / blocks) % blocks) * kBlock,
+                static_cast<int>(b % blocks) * kBlock};
+    }
 };
 
 /// The 8 words of block (ox, oy, oz) from its candidates. Per row (x, y) the solid voxels of one
@@ -135,7 +147,8 @@ std::array<std::uint64_t, kBlock> voxelizeBlock(int ox, int oy, int oz,
                                                 const std::vector<Eigen::Matrix3d>& toBody,
                                                 const ContainmentTest& inside,
                                                 const BlockGeometry& g) {
-    const int lastX = std::min(g.m, ox + kBlock) - 1;
+    const int lastX = std::min(g.x1, ox + kBlock) - 1;
+    const int firstX = std::max(g.x0, ox);
     const int lastY = std::min(g.m, oy + kBlock) - 1;
     const int lastZ = std::min(g.m, oz + kBlock) - 1;
     const double rc2 = g.rc * g.rc, ri2 = g.ri * g.ri;
@@ -143,7 +156,7 @@ std::array<std::uint64_t, kBlock> voxelizeBlock(int ox, int oy, int oz,
     for (const Candidate& candidate : candidates) {
         const Vector3d& c = candidate.centre;
         const Eigen::Matrix3d& rotation = toBody[candidate.particle];
-        const auto [x0, x1] = voxelRange(c.x(), g.rc, g.a, ox, lastX);
+        const auto [x0, x1] = voxelRange(c.x(), g.rc, g.a, firstX, lastX);
         const auto [y0, y1] = voxelRange(c.y(), g.rc, g.a, oy, lastY);
         for (int x = x0; x <= x1; ++x) {
             const double dx = (x + 0.5) * g.a - c.x();
@@ -189,21 +202,23 @@ std::array<std::uint64_t, kBlock> voxelizeBlock(int ox, int oy, int oz,
     return words;
 }
 
-/// Writes block (ox, oy, oz) of the tree into values[(x * m + y) * rowStride + z] as 0 or 1.
+/// Writes block (ox, oy, oz) of the tree into values[((x - x0) * m + y) * rowStride + z] as 0
+/// or 1, for the planes x0 <= x < x1.
 template <class T>
 void copyBlock(const MaskTree& tree, std::int64_t ox, std::int64_t oy, std::int64_t oz,
-               std::int64_t m, T* values, std::int64_t rowStride) {
+               std::int64_t m, std::int64_t x0, std::int64_t x1, T* values,
+               std::int64_t rowStride) {
     const openvdb::Coord origin(static_cast<openvdb::Int32>(ox), static_cast<openvdb::Int32>(oy),
                                 static_cast<openvdb::Int32>(oz));
     const MaskLeaf* leaf = tree.probeConstLeaf(origin);
     const bool tile = leaf == nullptr && tree.isValueOn(origin);
-    for (std::int64_t x = ox; x < std::min(m, ox + kBlock); ++x) {
+    for (std::int64_t x = std::max(ox, x0); x < std::min(x1, ox + kBlock); ++x) {
         const std::uint64_t word =
             leaf != nullptr
                 ? leaf->getValueMask().getWord<std::uint64_t>(static_cast<openvdb::Index>(x - ox))
                 : (tile ? ~std::uint64_t{0} : 0);
         for (std::int64_t y = oy; y < std::min(m, oy + kBlock); ++y) {
-            T* row = values + (x * m + y) * rowStride;
+            T* row = values + ((x - x0) * m + y) * rowStride;
             const std::int64_t shift = (y - oy) * kBlock - oz;
             for (std::int64_t z = oz; z < std::min(m, oz + kBlock); ++z)
                 row[z] = static_cast<T>((word >> (shift + z)) & 1);
@@ -222,7 +237,8 @@ Voxelization::Voxelization(std::unique_ptr<Grid> grid, VoxelizationParameters pa
                            double runtimeSeconds)
     : grid_(std::move(grid)), parameters_(parameters), voxels_(parameters.voxels),
       boxLength_(boxLength), p_(p), phiExact_(phiExact), solidCount_(solidCount),
-      runtimeSeconds_(runtimeSeconds) {}
+      runtimeSeconds_(runtimeSeconds), slabBegin_(parameters.slabBegin),
+      slabEnd_(parameters.slabEnd) {}
 
 Voxelization::Voxelization(Voxelization&&) noexcept = default;
 Voxelization& Voxelization::operator=(Voxelization&&) noexcept = default;
@@ -230,7 +246,8 @@ Voxelization::~Voxelization() = default;
 
 double Voxelization::phiVoxel() const {
     const auto m = static_cast<double>(voxels_);
-    return static_cast<double>(solidCount_) / (m * m * m);
+    if (slabEnd_ == slabBegin_) return 0.0;
+    return static_cast<double>(solidCount_) / (m * m * (slabEnd_ - slabBegin_));
 }
 
 std::size_t Voxelization::memoryBytes() const {
@@ -246,22 +263,23 @@ bool Voxelization::solid(std::int64_t i, std::int64_t j, std::int64_t k) const {
 
 template <class T>
 void Voxelization::copySolid(std::span<T> values, std::int64_t rowStride, const char* what) const {
-    const std::int64_t m = voxels_;
-    if (rowStride < m || values.size() != static_cast<std::size_t>(m * m * rowStride))
+    const std::int64_t m = voxels_, x0 = slabBegin_, x1 = slabEnd_;
+    if (rowStride < m || values.size() != static_cast<std::size_t>((x1 - x0) * m * rowStride))
         throw std::invalid_argument(std::string(what) + ": the destination has " +
-                                    std::to_string(values.size()) + " entries, not M^2 * " +
+                                    std::to_string(values.size()) + " entries, not " +
+                                    std::to_string(x1 - x0) + " * M * " +
                                     std::to_string(rowStride) + " for M = " + std::to_string(m));
     const MaskTree& tree = grid_->grid->tree();
     const std::int64_t blocks = (m + kBlock - 1) / kBlock;
     // One task per slab of 8 x-planes: contiguous output, no two tasks share a cache line.
     parallelFor(
-        0, blocks, 1,
+        x0 / kBlock, (x1 + kBlock - 1) / kBlock, 1,
         [&](std::int64_t begin, std::int64_t end) {
             for (std::int64_t bx = begin; bx < end; ++bx)
                 for (std::int64_t by = 0; by < blocks; ++by)
                     for (std::int64_t bz = 0; bz < blocks; ++bz)
-                        copyBlock(tree, bx * kBlock, by * kBlock, bz * kBlock, m, values.data(),
-                                  rowStride);
+                        copyBlock(tree, bx * kBlock, by * kBlock, bz * kBlock, m, x0, x1,
+                                  values.data(), rowStride);
         },
         parameters_.serial);
 }
@@ -300,6 +318,13 @@ Voxelizer::Voxelizer(VoxelizationParameters parameters) : parameters_(parameters
     if (parameters.voxels < 1 || parameters.voxels > kMaxVoxels)
         throw VoxelResolutionError("voxel grid: M = " + std::to_string(parameters.voxels) +
                                    " is not in [1, " + std::to_string(kMaxVoxels) + "]");
+    if (parameters_.slabEnd == -1) parameters_.slabEnd = parameters.voxels;
+    if (parameters_.slabBegin < 0 || parameters_.slabBegin > parameters_.slabEnd ||
+        parameters_.slabEnd > parameters.voxels)
+        throw VoxelResolutionError("voxel grid: slab [" + std::to_string(parameters.slabBegin) +
+                                   ", " + std::to_string(parameters_.slabEnd) +
+                                   ") is not a part of [0, " + std::to_string(parameters.voxels) +
+                                   ")");
 }
 
 int Voxelizer::minimumVoxels(const Packing& packing) {
@@ -348,9 +373,10 @@ struct BlockCandidates {
     std::vector<Candidate> candidates;
 };
 
-BlockCandidates blockCandidates(const Packing& packing, double rc, double a, int m, int blocks) {
-    const double boxLength = packing.boxLength;
-    const std::int64_t blockCount = std::int64_t{blocks} * blocks * blocks;
+BlockCandidates blockCandidates(const Packing& packing, const BlockGeometry& g) {
+    const double boxLength = packing.boxLength, rc = g.rc, a = g.a;
+    const int m = g.m, blocks = g.blocks;
+    const std::int64_t blockCount = g.blockCount();
     BlockCandidates out{std::vector<std::int64_t>(blockCount + 1, 0), {}};
     auto forEachImageBlock = [&](auto&& visit) {
         for (std::size_t j = 0; j < packing.size(); ++j) {
@@ -359,14 +385,16 @@ BlockCandidates blockCandidates(const Packing& packing, double rc, double a, int
                 for (double sy : imageShifts(r.y(), rc, boxLength))
                     for (double sz : imageShifts(r.z(), rc, boxLength)) {
                         const Vector3d c = r + Vector3d(sx, sy, sz);
-                        const auto [x0, x1] = voxelRange(c.x(), rc, a, 0, m - 1);
+                        const auto [x0, x1] = voxelRange(c.x(), rc, a, g.x0, g.x1 - 1);
                         const auto [y0, y1] = voxelRange(c.y(), rc, a, 0, m - 1);
                         const auto [z0, z1] = voxelRange(c.z(), rc, a, 0, m - 1);
                         if (x0 > x1 || y0 > y1 || z0 > z1) continue;
                         for (int bx = x0 / kBlock; bx <= x1 / kBlock; ++bx)
                             for (int by = y0 / kBlock; by <= y1 / kBlock; ++by)
                                 for (int bz = z0 / kBlock; bz <= z1 / kBlock; ++bz)
-                                    visit((std::int64_t{bx} * blocks + by) * blocks + bz,
+                                    visit((std::int64_t{bx - g.firstBlockX} * blocks + by) *
+                                                  blocks +
+                                              bz,
                                           Candidate{c, static_cast<int>(j)});
                     }
         }
@@ -389,10 +417,10 @@ struct BlockMasks {
 };
 
 BlockMasks voxelizeBlocks(const BlockCandidates& in, const std::vector<Eigen::Matrix3d>& toBody,
-                          const ContainmentTest& inside, const BlockGeometry& geometry, int blocks,
+                          const ContainmentTest& inside, const BlockGeometry& geometry,
                           const Progress& progress, bool serial) {
     const int m = geometry.m;
-    const std::int64_t blockCount = std::int64_t{blocks} * blocks * blocks;
+    const std::int64_t blockCount = geometry.blockCount();
     BlockMasks out{std::vector<std::unique_ptr<MaskLeaf>>(blockCount),
                    std::vector<std::uint8_t>(blockCount, 0), std::vector<int>(blockCount, 0)};
     parallelFor(
@@ -400,14 +428,13 @@ BlockMasks voxelizeBlocks(const BlockCandidates& in, const std::vector<Eigen::Ma
         [&](std::int64_t begin, std::int64_t end) {
             progress.checkInterrupt();
             for (std::int64_t b = begin; b < end; ++b) {
-                const int ox = static_cast<int>(b / (std::int64_t{blocks} * blocks)) * kBlock;
-                const int oy = static_cast<int>((b / blocks) % blocks) * kBlock;
-                const int oz = static_cast<int>(b % blocks) * kBlock;
+                const auto [ox, oy, oz] = geometry.origin(b);
                 const std::span<const Candidate> mine(in.candidates.data() + in.start[b],
                                                       in.candidates.data() + in.start[b + 1]);
                 const auto words = voxelizeBlock(ox, oy, oz, mine, toBody, inside, geometry);
                 int count = 0;
-                bool full = ox + kBlock <= m && oy + kBlock <= m && oz + kBlock <= m;
+                bool full = ox >= geometry.x0 && ox + kBlock <= geometry.x1 && oy + kBlock <= m &&
+                            oz + kBlock <= m;
                 for (std::uint64_t w : words) {
                     count += std::popcount(w);
                     full = full && w == ~std::uint64_t{0};
@@ -439,14 +466,20 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
     const double rc = shape.circumradius() * (1.0 + kSphereMargin);
     const double ri = shape.inradius() * (1.0 - kSphereMargin);
     const int blocks = (m + kBlock - 1) / kBlock;
-    const std::int64_t blockCount = std::int64_t{blocks} * blocks * blocks;
+    const int x0 = parameters_.slabBegin, x1 = parameters_.slabEnd;
+    const int firstBlockX = x0 / kBlock;
+    const BlockGeometry geometry{
+        m,      a,           rc,
+        ri,     x0,          x1,
+        blocks, firstBlockX, x1 > x0 ? (x1 - 1) / kBlock - firstBlockX + 1 : 0};
+    const std::int64_t blockCount = geometry.blockCount();
     // Lab-to-body rotations: x_body = R^T (x - r).
     std::vector<Eigen::Matrix3d> toBody(packing.size());
     for (std::size_t j = 0; j < packing.size(); ++j)
         toBody[j] = packing.orientations[j].toRotationMatrix().transpose();
     BlockMasks masks =
-        voxelizeBlocks(blockCandidates(packing, rc, a, m, blocks), toBody, ContainmentTest(shape),
-                       BlockGeometry{m, a, rc, ri}, blocks, progress, parameters_.serial);
+        voxelizeBlocks(blockCandidates(packing, geometry), toBody, ContainmentTest(shape), geometry,
+                       progress, parameters_.serial);
     auto& leaves = masks.leaves;
     const auto& fullBlock = masks.full;
     const auto& solidInBlock = masks.solid;
@@ -465,10 +498,8 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
         if (leaves[b]) {
             tree.addLeaf(leaves[b].release());
         } else if (fullBlock[b]) {
-            const int bx = static_cast<int>(b / (std::int64_t{blocks} * blocks));
-            const int by = static_cast<int>((b / blocks) % blocks);
-            const int bz = static_cast<int>(b % blocks);
-            tree.addTile(1, openvdb::Coord(bx * kBlock, by * kBlock, bz * kBlock), true, true);
+            const auto [ox, oy, oz] = geometry.origin(b);
+            tree.addTile(1, openvdb::Coord(ox, oy, oz), true, true);
         }
     }
     return Voxelization(std::move(grid), parameters_, boxLength, packing.p,

@@ -27,6 +27,11 @@ struct VoxelizationParameters {
     int voxels = 300; ///< M, voxels along each box edge
     /// Execution only: run on the calling thread (the result is the same).
     bool serial = false;
+    /// Only the slab of x-planes [slabBegin, slabEnd) (slabEnd -1: M; may be empty), as one rank of
+    /// a distributed grid voxelises (docs/scale-out.md): only particles (and periodic images) whose
+    /// circumscribed sphere reaches the slab are visited, and the tree holds the slab alone.
+    int slabBegin = 0;
+    int slabEnd = -1;
 };
 
 /// The immutable result: which voxels are solid.
@@ -40,8 +45,11 @@ class Voxelization {
     double boxLength() const { return boxLength_; }
     double voxelSize() const { return boxLength_ / voxels_; }
     std::int64_t solidCount() const { return solidCount_; }
-    /// Fraction of solid voxels.
+    /// Fraction of solid voxels (of the slab's, for a slab).
     double phiVoxel() const;
+    /// The x-planes [slabBegin, slabEnd) held (the whole grid: 0, M).
+    int slabBegin() const { return slabBegin_; }
+    int slabEnd() const { return slabEnd_; }
     /// N v1 / L^3 of the packing voxelized.
     double phiExact() const { return phiExact_; }
     /// Memory held by the OpenVDB tree (bytes).
@@ -52,7 +60,8 @@ class Voxelization {
     /// Whether voxel (i, j, k) is solid; indices are taken modulo M (periodic box).
     bool solid(std::int64_t i, std::int64_t j, std::int64_t k) const;
     /// Fills mask[(i * M + j) * M + k] with 1 (solid) or 0 for every voxel; parallel by blocks of
-    /// the grid. Throws std::invalid_argument unless mask.size() == M^3.
+    /// the grid. Throws std::invalid_argument unless mask.size() == M^3. For a slab, i counts
+    /// from slabBegin() and the size is (slabEnd() - slabBegin()) M^2 (also below).
     void copySolidMask(std::span<std::uint8_t> mask) const;
     /// Fills values[(i * M + j) * rowStride + k] with 1.0 (solid) or 0.0 for k < M, leaving
     /// the padding k >= M of each row alone (FFTW's in-place real-to-complex layout).
@@ -82,6 +91,8 @@ class Voxelization {
     double phiExact_;
     std::int64_t solidCount_;
     double runtimeSeconds_;
+    int slabBegin_;
+    int slabEnd_;
 };
 
 /// Compute object (docs/design.md §7): parameters validated at construction.
@@ -92,7 +103,7 @@ class Voxelizer {
     /// Fewest voxels across the narrowest width of a particle (twice its inradius).
     static constexpr double kMinVoxelsAcross = 4.0;
 
-    /// Throws VoxelResolutionError unless 1 <= voxels <= kMaxVoxels.
+    /// Throws VoxelResolutionError unless 1 <= voxels <= kMaxVoxels and the slab is in [0, M].
     explicit Voxelizer(VoxelizationParameters parameters);
 
     /// Smallest M that puts kMinVoxelsAcross voxels across the particles of `packing`.

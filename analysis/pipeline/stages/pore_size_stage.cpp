@@ -61,9 +61,26 @@ void setPoreSizes(schema::Record& record, const PoreSizeDistributionResult& s) {
         .set("P_w", s.densityTimesWidth());
 }
 
+/// --distribute grids: F(delta) of the slabs' distance transform (pipeline/distributed_grids.hpp).
+bool runDistributedPoreSizes(FileContext& context, schema::Record& record) {
+    DistributionFigures figures;
+    PoreSizeDistributionResult pores = context.grids()->poreSizes(
+        context.packing(), context.settings().poreVoxels, PoreSizeParameters{}, context.meanWidth(),
+        context.progress(), figures);
+    context.progress().stageDone("pore sizes", pores.runtimeSeconds,
+                                 fmt::format("{} ranks, <delta>/w = {}, max/w = {}", figures.ranks,
+                                             describe(pores.meanOverWidth()),
+                                             describe(pores.maxOverWidth())));
+    setPoreSizes(record, pores);
+    setDistribution(record, figures);
+    context.keep(Analysis::PoreSizes, std::move(pores));
+    return true;
+}
+
 } // namespace
 
 bool runPoreSizes(FileContext& context, schema::Record& record) {
+    if (context.grids() != nullptr) return runDistributedPoreSizes(context, record);
     const PoreSizeMap map = poreSizeMap(context, context.settings().poreVoxels);
     PoreSizeParameters parameters;
     parameters.randomPoints = context.settings().porePoints;

@@ -36,20 +36,37 @@ void report(const Progress& progress, const SpectralDensityResult& chi) {
 
 } // namespace
 
-bool runSpectralDensity(FileContext& context, schema::Record& record) {
-    SpectralDensityParameters parameters;
-    parameters.maxQw = context.settings().maxQw;
-    parameters.fft = context.settings().fft;
+namespace {
+
+/// chi of the kept whole voxelization; the voxel spectrum kept for hyper.
+SpectralDensityResult wholeGrid(FileContext& context, const SpectralDensityParameters& parameters) {
     const Voxelization& voxels = context.kept<Voxelization>(Analysis::Voxels);
     const VoxelFourierTransform transform(voxels, parameters.fft, context.progress());
-    const SpectralDensityResult s =
+    SpectralDensityResult s =
         SpectralDensity(parameters)
             .compute(context.packing(), voxels, transform, context.progress());
-    report(context.progress(), s);
     if (context.settings().runs(Analysis::Hyperuniformity))
         context.keep(Analysis::SpectralDensity,
                      KeptSpectrum{voxelSpectrum(transform, voxels, context.meanWidth(), {}),
                                   spectralPeak(s.shells.q, s.shells.value, context.meanWidth())});
+    return s;
+}
+
+} // namespace
+
+bool runSpectralDensity(FileContext& context, schema::Record& record) {
+    SpectralDensityParameters parameters;
+    parameters.maxQw = context.settings().maxQw;
+    parameters.fft = context.settings().fft;
+    DistributionFigures figures;
+    const SpectralDensityResult s =
+        context.grids() == nullptr
+            ? wholeGrid(context, parameters)
+            : context.grids()->spectralDensity(context.packing(),
+                                               context.kept<SlabVoxels>(Analysis::Voxels),
+                                               parameters, context.progress(), figures);
+    report(context.progress(), s);
+    if (context.grids() != nullptr) setDistribution(record, figures);
     record.set("voxels", s.voxels)
         .set("phi_voxel", s.phiVoxel)
         .set("voxel_size", s.voxelSize)

@@ -26,6 +26,13 @@ void setShells(schema::Record& record, const ShellAverage& shells, std::string_v
         .set("Q_w", qw);
 }
 
+void setDistribution(schema::Record& record, const DistributionFigures& figures) {
+    record.set("ranks", figures.ranks)
+        .set("slab", figures.slab)
+        .set("memory_per_rank_bytes", figures.memoryPerRankBytes)
+        .set("communication_bytes", figures.communicationBytes);
+}
+
 double collectiveDensityBytes(const Packing& packing, int maxShell) {
     const double modes = 2.0 / 3.0 * std::numbers::pi * std::pow(maxShell + 0.5, 3);
     return 6.0 * 8.0 * static_cast<double>(packing.size()) * (maxShell + 1) + modes * 2.0 * 20.0;

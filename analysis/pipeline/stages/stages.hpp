@@ -4,6 +4,7 @@
 
 #include "hyperuniformity/hyperuniformity.hpp"
 #include "pipeline/analysis_registry.hpp"
+#include "pipeline/distributed_grids.hpp"
 #include "shells/shell_average.hpp"
 
 #include <string>
@@ -35,6 +36,9 @@ struct KeptSpectrum {
 bool runHyperuniformity(FileContext& context, schema::Record& record);
 /// alpha_pooled of an ensemble from its mean E(t) over the mean window.
 void poolSpreadability(schema::Record& ensembleGroup);
+
+/// The figures of a distributed grid (ranks, slab, memory per rank, communication).
+void setDistribution(schema::Record& record, const DistributionFigures& figures);
 
 /// "6.12345": a number for progress lines (6 significant digits unless `digits`).
 std::string describe(double value, int digits = 6);

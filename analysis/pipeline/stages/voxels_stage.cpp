@@ -16,7 +16,33 @@ StageMemory voxelsMemory(const Packing&, const RunSettings& settings) {
     return {std::pow(std::ceil(settings.voxels / 8.0), 3) * (512.0 * 4.0 + 200.0), ".vdb export"};
 }
 
+namespace {
+
+/// --distribute grids: this rank's slab, kept for chi; the whole grid's figures.
+bool runSlabVoxels(FileContext& context, schema::Record& record) {
+    const int m = context.settings().voxels;
+    SlabVoxels voxels = context.grids()->voxelize(context.packing(), m, context.progress());
+    context.progress().stageDone(
+        "voxelization", voxels.slab.runtimeSeconds(),
+        fmt::format("{}^3 over {} ranks, slab [{}, {}), phi_voxel = {} (phi = {})", m,
+                    voxels.figures.ranks, voxels.slab.slabBegin(), voxels.slab.slabEnd(),
+                    describe(voxels.phiVoxel()), describe(voxels.slab.phiExact())));
+    record.set("voxels", m)
+        .set("phi_voxel", voxels.phiVoxel())
+        .set("phi_exact", voxels.slab.phiExact())
+        .set("voxel_size", voxels.slab.voxelSize())
+        .set("solid_voxels", voxels.solidCount)
+        .set("memory_bytes", static_cast<std::int64_t>(voxels.slab.memoryBytes()))
+        .set("runtime_s", voxels.slab.runtimeSeconds());
+    setDistribution(record, voxels.figures);
+    context.keep(Analysis::Voxels, std::move(voxels));
+    return true;
+}
+
+} // namespace
+
 bool runVoxels(FileContext& context, schema::Record& record) {
+    if (context.grids() != nullptr) return runSlabVoxels(context, record);
     const int m = context.settings().voxels;
     Voxelization voxels = Voxelizer({m}).compute(context.packing(), context.progress());
     context.progress().stageDone(
