@@ -3,6 +3,7 @@
 // interaction range exactly once, in O(N) (docs/design.md §7: the neighbour structure that picks
 // pairs).
 
+#include "geometry/periodic_cells.hpp"
 #include "packing/packing.hpp"
 
 #include <Eigen/Core>
@@ -12,7 +13,8 @@
 
 namespace sbpack {
 
-/// Cells of edge >= range in a cubic periodic box of edge L. With at least 3 cells per side each
+/// Cells of edge >= range in a cubic periodic box of edge L (PeriodicCells' rule). With at least 3
+/// cells per side each
 /// cell is paired with itself and 13 of its 26 neighbours (a half shell); smaller boxes use a
 /// single cell. Pairs are found by minimum image, which is unambiguous only for range <= L / 2.
 class CellList {
@@ -21,7 +23,7 @@ class CellList {
     /// unless 0 < L < inf, 0 < range <= L / 2, the positions are finite and N fits an int.
     CellList(const std::vector<Vector3d>& positions, double boxLength, double range);
 
-    int cellsPerSide() const { return cellsPerSide_; }
+    int cellsPerSide() const { return cells_.perSide(); }
 
     /// Calls callback(i, j, d) once for each pair i < j with |d| < range, where
     /// d = minimumImage(r_j - r_i, L).
@@ -34,7 +36,7 @@ class CellList {
     std::vector<Vector3d> positions_;
     double boxLength_;
     double rangeSquared_;
-    int cellsPerSide_;
+    PeriodicCells cells_;
     std::vector<int> cellStart_; ///< cell c: [cellStart_[c], cellStart_[c + 1])
     std::vector<int> particlesInCellOrder_;
 };
@@ -57,7 +59,7 @@ template <class Callback> void CellList::visitPair(int a, int b, Callback& callb
 }
 
 template <class Callback> void CellList::forEachNeighbourPair(Callback&& callback) const {
-    const int n = cellsPerSide_;
+    const int n = cells_.perSide();
     const int* order = particlesInCellOrder_.data();
     if (n == 1) {
         const int count = static_cast<int>(particlesInCellOrder_.size());
@@ -66,21 +68,6 @@ template <class Callback> void CellList::forEachNeighbourPair(Callback&& callbac
                 visitPair(order[a], order[b], callback);
         return;
     }
-    // Half shell: the 13 neighbour offsets whose first non-zero component is positive.
-    static constexpr std::array<std::array<int, 3>, 13> halfShell = {{{1, -1, -1},
-                                                                      {1, -1, 0},
-                                                                      {1, -1, 1},
-                                                                      {1, 0, -1},
-                                                                      {1, 0, 0},
-                                                                      {1, 0, 1},
-                                                                      {1, 1, -1},
-                                                                      {1, 1, 0},
-                                                                      {1, 1, 1},
-                                                                      {0, 1, -1},
-                                                                      {0, 1, 0},
-                                                                      {0, 1, 1},
-                                                                      {0, 0, 1}}};
-    auto wrap = [n](int k) { return k < 0 ? k + n : (k >= n ? k - n : k); };
     for (int cx = 0; cx < n; ++cx)
         for (int cy = 0; cy < n; ++cy)
             for (int cz = 0; cz < n; ++cz) {
@@ -90,9 +77,8 @@ template <class Callback> void CellList::forEachNeighbourPair(Callback&& callbac
                 for (int a = begin; a < end; ++a)
                     for (int b = a + 1; b < end; ++b)
                         visitPair(order[a], order[b], callback);
-                for (const auto& offset : halfShell) {
-                    const int other = (wrap(cx + offset[0]) * n + wrap(cy + offset[1])) * n +
-                                      wrap(cz + offset[2]);
+                for (const auto& offset : PeriodicCells::kHalfShell) {
+                    const int other = cells_.index(cx + offset[0], cy + offset[1], cz + offset[2]);
                     const int otherBegin = cellStart_[other];
                     const int otherEnd = cellStart_[other + 1];
                     for (int a = begin; a < end; ++a)
