@@ -154,12 +154,19 @@ void CommandLine::addGridOptions() {
             "the exact periodic distance transform needs 5 bytes per voxel")
         ->type_name("M");
     app_.add_option_function<std::string>(
+            "--pores", [&s](const std::string& v) { s.poreMethod = poreMethodFromName(v); },
+            "pore sizes: voxel (default; distance between voxel centres, as the paper),\n"
+            "refined (each void voxel centre's distance to the nearest particle surface,\n"
+            "certified; 4 more bytes per voxel) or exact (K random points, no voxels)")
+        ->type_name("voxel|refined|exact");
+    app_.add_option_function<std::string>(
             "--pore-points",
             [&s](const std::string& v) {
                 s.porePoints = parseInteger("--pore-points", v, 0, std::int64_t(1) << 40);
             },
-            "F(delta) from K random void points (seed 1), as the paper's 10^6, instead of\n"
-            "every void voxel (default 0: every void voxel)")
+            "K random points: voxel and refined, F(delta) from K random void voxels (seed 1)\n"
+            "instead of every void voxel (default 0: every one); exact, K points of the void\n"
+            "(default 0: 10^6, as the paper); random samples record their standard errors")
         ->type_name("K");
     app_.add_option_function<std::string>(
             "--qmax",
