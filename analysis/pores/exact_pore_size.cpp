@@ -62,10 +62,38 @@ double powerMinusOne(double u, double m) {
     return std::pow(u, m - 1.0);
 }
 
-/// Projection of xi (>= 0, outside) onto { u >= 0, sum u_i^{2p} <= 1 }, 0.5 < p: KKT
-/// u_i + kappa u_i^{2p-1} = xi_i with sum u_i^{2p} = 1; the sum falls monotonically with kappa,
-/// whose root lies in [max(0, max xi - 1), 3 max xi] (the largest u_i is >= 3^{-1/(2p)}).
-Vector3d projectOntoSuperball(const Vector3d& xi, double p) {
+/// y^e for y >= 0: products and roots at e = 2, 3 and 3/2 (p = 1, 1.5, 0.75), else std::pow.
+double powerOf(double y, double e) {
+    if (e == 2.0) return y * y;
+    if (e == 3.0) return y * y * y;
+    if (e == 1.5) return y * std::sqrt(y);
+    return std::pow(y, e);
+}
+
+/// Newton's start for kappa from the radial point u_r = xi / g(xi) on the surface, with
+/// s = sum xi_i^e = g^e: the least-squares kappa of u + kappa u^m = xi, i.e. the step from u_r
+/// along the surface normal there, which is exact at the axes, on the diagonals and as the
+/// point approaches the surface.
+double kappaStart(const Vector3d& xi, double e, double s) {
+    const double m = e - 1.0;
+    const double inverseGauge = e == 3.0 ? 1.0 / std::cbrt(s) : std::pow(s, -1.0 / e);
+    double along = 0.0, norm = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        if (!(xi[i] > 0.0)) continue;
+        const double u = xi[i] * inverseGauge;
+        const double normal = powerMinusOne(u, m) * u; // u^m
+        along += (xi[i] - u) * normal;
+        norm += normal * normal;
+    }
+    return along / norm;
+}
+
+/// Projection of xi (>= 0, outside: s = sum xi_i^{2p} > 1) onto { u >= 0, sum u_i^{2p} <= 1 },
+/// 0.5 < p: KKT u_i + kappa u_i^{2p-1} = xi_i with sum u_i^{2p} = 1; the sum falls monotonically
+/// with kappa, whose root lies in [max(0, max xi - 1), 3 max xi] (the largest u_i is
+/// >= 3^{-1/(2p)}). Safeguarded Newton in kappa until the sum is 1 to rounding (then u is the
+/// projection onto that surface) or kappa stops moving.
+Vector3d projectOntoSuperball(const Vector3d& xi, double p, double s) {
     const double e = 2.0 * p, m = e - 1.0;
     const double largest = xi.maxCoeff();
     double lo = std::max(0.0, largest - 1.0), hi = 3.0 * largest;
@@ -84,15 +112,11 @@ Vector3d projectOntoSuperball(const Vector3d& xi, double p) {
         }
         return c;
     };
-    // Start from the radial scaling u = xi / g(xi), exact for the sphere.
-    const double gauge = std::pow(xi.array().pow(e).sum(), 1.0 / e);
-    const int axis = static_cast<int>(std::max_element(xi.data(), xi.data() + 3) - xi.data());
-    const double uAxis = xi[axis] / gauge;
-    double kappa = std::clamp((xi[axis] - uAxis) / std::pow(uAxis, m), lo, hi);
+    double kappa = std::clamp(kappaStart(xi, e, s), lo, hi);
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
         double derivative = 0.0;
         const double c = evaluate(kappa, derivative);
-        if (c == 0.0) break;
+        if (std::abs(c) <= 4e-16) break; // on the surface to rounding
         (c > 0.0 ? lo : hi) = kappa;
         double next = derivative < 0.0 ? kappa - c / derivative : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
@@ -108,13 +132,24 @@ Vector3d projectOntoSuperball(const Vector3d& xi, double p) {
 
 } // namespace
 
+double gaugePower(const Superball& shape, const Vector3d& xBody) {
+    double s = 0.0;
+    for (int i = 0; i < 3; ++i)
+        s += powerOf(std::abs(xBody[i]) / shape.semiAxis(), 2.0 * shape.p());
+    return s;
+}
+
 Vector3d closestPoint(const Superball& shape, const Vector3d& xBody) {
-    if (!(shape.gauge(xBody) > 1.0)) return xBody;
     const double r = shape.semiAxis();
-    if (shape.isSphere()) return xBody * (r / xBody.norm());
+    if (shape.isSphere() || shape.isOctahedron()) {
+        if (!(shape.gauge(xBody) > 1.0)) return xBody;
+        if (shape.isSphere()) return xBody * (r / xBody.norm());
+    }
     const Vector3d xi = xBody.cwiseAbs() / r;
+    const double s = gaugePower(shape, xBody); // g(x)^{2p}: inside iff <= 1
+    if (!shape.isOctahedron() && !(s > 1.0)) return xBody;
     const Vector3d u =
-        shape.isOctahedron() ? projectOntoOctahedron(xi) : projectOntoSuperball(xi, shape.p());
+        shape.isOctahedron() ? projectOntoOctahedron(xi) : projectOntoSuperball(xi, shape.p(), s);
     Vector3d y;
     for (int i = 0; i < 3; ++i)
         y[i] = std::copysign(u[i] * r, xBody[i]);

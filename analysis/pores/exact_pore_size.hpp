@@ -13,6 +13,10 @@
 
 namespace sbpack {
 
+/// g(x)^{2p} = sum |x_i / R|^{2p} (g the gauge, Superball::gauge): x is inside iff it is < 1;
+/// products and roots instead of powers at p = 1 and 1.5, the pore sizes' inner loop.
+double gaugePower(const Superball& shape, const Vector3d& xBody);
+
 /// The point of the superball (body frame, centred at the origin) nearest to xBody; xBody itself
 /// when it is inside. Euclidean projection onto { sum |y_i / R|^{2p} <= 1 }: by symmetry in the
 /// octant of |x|, from the KKT conditions u_i + kappa u_i^{2p-1} = |x_i| / R (u = |y| / R), a
@@ -46,17 +50,25 @@ class ExactPoreSizes {
     /// Distance from x = r + d to particle `particle` centred at r (d in the lab frame; the
     /// caller picks the image), with its certificate.
     SurfaceDistance particleDistance(int particle, const Vector3d& d) const;
+    /// A lower bound on particleDistance(particle, d) from one support function:
+    /// n.d - h(n) with n = d / |d| (docs/design.md §5), cheaper than the exact distance.
+    double distanceLowerBound(int particle, const Vector3d& d) const {
+        const double centre = d.norm();
+        if (shape_.isSphere() || centre == 0.0) return centre - shape_.semiAxis();
+        return centre - shape_.support(rotations_[particle].transpose() * d / centre);
+    }
     /// A particle whose minimum image contains x (Superball::contains), or -1 if none does.
     int particleContaining(const Vector3d& x) const;
-    /// Whether r + d is inside particle `particle` centred at r (Superball::contains; for spheres
-    /// |d|^2 < R^2, which may differ from it within rounding of the surface).
+    /// Whether r + d is inside particle `particle` centred at r (gaugePower < 1, which may differ
+    /// from Superball::contains within rounding of the surface).
     bool inside(int particle, const Vector3d& d) const {
         if (shape_.isSphere()) return d.squaredNorm() < shape_.semiAxis() * shape_.semiAxis();
-        return shape_.contains(rotations_[particle].transpose() * d);
+        return gaugePower(shape_, rotations_[particle].transpose() * d) < 1.0;
     }
 
     double boxLength() const { return boxLength_; }
     double circumradius() const { return circumradius_; }
+    bool isSphere() const { return shape_.isSphere(); }
     int size() const { return static_cast<int>(positions_.size()); }
     /// Centre of particle j, wrapped into [0, L)^3.
     const Vector3d& position(int j) const { return positions_[j]; }

@@ -11,7 +11,8 @@
 
 namespace sbpack {
 
-VoxelRefiner::VoxelRefiner(const ExactPoreSizes& pores, double maxPoreSize) : pores_(pores) {
+VoxelRefiner::VoxelRefiner(const ExactPoreSizes& pores, double maxPoreSize)
+    : pores_(pores), spheres_(pores.isSphere()) {
     const double boxLength = pores.boxLength();
     const double range = (2.0 * pores.circumradius() + 2.0 * maxPoreSize) * (1.0 + 1e-12);
     if (!(range <= 0.5 * boxLength)) return; // a small box: the general search
@@ -49,6 +50,7 @@ SurfaceDistance VoxelRefiner::poreSize(const Vector3d& x, int feature) const {
         const Vector3d d = df - neighbour.offset; // x minus the neighbour's centre
         const double reach = best.upper + rc;
         if (d.squaredNorm() >= reach * reach) continue; // |d| - r_c >= best: cannot be nearer
+        if (!spheres_ && pores_.distanceLowerBound(neighbour.particle, d) >= best.upper) continue;
         const SurfaceDistance next = pores_.particleDistance(neighbour.particle, d);
         best = {std::min(best.lower, next.lower), std::min(best.upper, next.upper)};
     }

@@ -53,6 +53,7 @@ class VoxelRefiner {
         Vector3d offset; ///< r_P - r_f, minimum image
     };
     const ExactPoreSizes& pores_;
+    bool spheres_;           ///< exact distances are as cheap as bounds
     double range_ = 0.0;     ///< 0: no lists
     std::vector<int> start_; ///< particle f: neighbours_[start_[f] .. start_[f + 1]), by distance
     std::vector<Neighbour> neighbours_;
