@@ -4,6 +4,7 @@
 #include "cli/option_values.hpp"
 #include "info/library_versions.hpp"
 #include "parallel/parallel.hpp"
+#include "pores/distance_transform.hpp"
 #include "version.hpp"
 #include "voxels/voxelization.hpp"
 
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <ostream>
 #include <stdexcept>
 #include <thread>
@@ -185,6 +187,23 @@ void CommandLine::addGridOptions() {
             "in the wisdom file, so only the first run per size pays")
         ->type_name("P");
     app_.add_option_function<std::string>(
+            "--fft-planning-budget",
+            [&s](const std::string& v) {
+                if (v == "none") {
+                    s.fft.planningBudget = std::numeric_limits<double>::infinity();
+                    return;
+                }
+                s.fft.planningBudget = parseNumber("--fft-planning-budget", v);
+                if (!(s.fft.planningBudget >= 0.0) || !std::isfinite(s.fft.planningBudget))
+                    throw std::invalid_argument(
+                        "option --fft-planning-budget: must be >= 0 and finite, or none");
+            },
+            fmt::format("seconds measure/patient planning may take when the wisdom has no plan\n"
+                        "(default {}): planning predicted to take longer uses estimate; none:\n"
+                        "no limit (a measured 300^3 plan takes ~20 s once, then is wisdom)",
+                        kDefaultFftPlanningBudget))
+        ->type_name("SECONDS|none");
+    app_.add_option_function<std::string>(
             "--fft-wisdom",
             [&s](const std::string& v) {
                 s.fft.wisdomFile = v == "none" ? std::filesystem::path() : std::filesystem::path(v);
@@ -298,6 +317,11 @@ void CommandLine::addSubcommands() {
 void CommandLine::finishAnalysis() {
     settings_.inputs.assign(inputs_.begin(), inputs_.end());
     if (!settings_.vdbDirectory.empty()) settings_.analyses.insert(Analysis::Voxels);
+    if (settings_.poreMethod == PoreMethod::Refined &&
+        settings_.poreVoxels > maxFeatureTransformVoxels)
+        throw std::invalid_argument(
+            fmt::format("option --pore-voxels: {} is above {}, the largest grid of --pores refined",
+                        settings_.poreVoxels, maxFeatureTransformVoxels));
     static_cast<void>(ContactNetwork(settings_.contacts)); // throws on a bad tolerance or threshold
 }
 

@@ -417,13 +417,13 @@ std::int64_t checkMask(std::span<const std::uint8_t> solidMask, int voxels, doub
 
 PoreSizeMap transformMask(std::span<const std::uint8_t> solidMask, int voxels, double voxelSize,
                           bool serial, bool withFeatures) {
-    const std::int64_t solid = checkMask(solidMask, voxels, voxelSize);
-    const std::int64_t plane = static_cast<std::int64_t>(voxels) * voxels;
-    const std::int64_t total = plane * voxels;
     if (withFeatures && voxels > maxFeatureTransformVoxels)
         throw std::invalid_argument("feature transform: M = " + std::to_string(voxels) +
                                     " is above " + std::to_string(maxFeatureTransformVoxels) +
                                     " (voxel indices are 32-bit)");
+    const std::int64_t solid = checkMask(solidMask, voxels, voxelSize);
+    const std::int64_t plane = static_cast<std::int64_t>(voxels) * voxels;
+    const std::int64_t total = plane * voxels;
     refuseUnlessAvailable(
         static_cast<std::uint64_t>(total) * sizeof(std::uint32_t) * (withFeatures ? 2 : 1), voxels,
         withFeatures ? "4-byte squared distance and 4-byte feature per voxel"

@@ -287,9 +287,11 @@ namespace {
 
 /// One chunk of the exact sampler: its pore sizes, their largest certificate gap, the largest.
 struct SampleChunk {
+    explicit SampleChunk(double separation) : top(16, 0.0), spread(16, separation) {}
     std::vector<double> sizes;
     double errorBound = 0.0;
-    LargestPoints top{16};
+    LargestPoints top;    ///< the largest points
+    LargestPoints spread; ///< the largest of distinct pores
 };
 
 /// The distinct sizes of the chunks, ascending, with their counts, and the sums of the sample.
@@ -318,7 +320,9 @@ PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& pac
     const double length = pores.boxLength();
     const std::int64_t k = parameters_.randomPoints;
     const std::int64_t chunks = (k + kRandomPointChunk - 1) / kRandomPointChunk;
-    std::vector<SampleChunk> local(chunks);
+    // Starts of the largest pore at least 4 point spacings apart (distinct pores).
+    const double spacing = length / std::cbrt(static_cast<double>(k));
+    std::vector<SampleChunk> local(chunks, SampleChunk(4.0 * spacing));
     parallelFor(
         0, chunks, 1,
         [&](std::int64_t begin, std::int64_t end) {
@@ -341,6 +345,7 @@ PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& pac
                     chunk.sizes.push_back(delta.upper);
                     chunk.errorBound = std::max(chunk.errorBound, delta.upper - delta.lower);
                     chunk.top.offer(delta.upper, x);
+                    chunk.spread.offer(delta.upper, x);
                 }
             }
         },
@@ -356,18 +361,19 @@ PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& pac
     r.parameters.seed = parameters_.seed;
     r.parameters.serial = parameters_.serial;
     setStandardErrors(r, sums);
-    LargestPoints top(16);
+    LargestPoints top(16, 0.0), spread(16, 4.0 * spacing);
     r.errorBound = 0.0;
     for (const SampleChunk& chunk : local) {
         top.offer(chunk.top);
+        spread.offer(chunk.spread);
         r.errorBound = std::max(r.errorBound, chunk.errorBound);
     }
     std::vector<Vector3d> starts;
-    for (const auto& [size, point] : top.points())
-        starts.push_back(point);
+    for (const LargestPoints* points : {&top, &spread})
+        for (const auto& [size, point] : points->points())
+            starts.push_back(point);
     r.maxSampled = r.max;
-    // First simplex: the spacing of K points in the box, a scale the sample cannot resolve.
-    const double spacing = length / std::cbrt(static_cast<double>(k));
+    // First simplex: half the spacing of K points in the box, a scale the sample cannot resolve.
     r.max = std::max(r.max, largestPore(pores, starts, 0.5 * spacing).size);
     r.saturated = r.max < 0.5 * r.meanWidth; // paper Sec. V A
     r.runtimeSeconds =

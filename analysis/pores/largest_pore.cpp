@@ -9,6 +9,14 @@ namespace sbpack {
 
 void LargestPoints::offer(double size, const Vector3d& point) {
     if (static_cast<int>(points_.size()) == capacity_ && !(size > points_.back().first)) return;
+    const double near = separation_ * separation_;
+    const auto close = std::find_if(points_.begin(), points_.end(), [&](const auto& p) {
+        return (p.second - point).squaredNorm() < near;
+    });
+    if (close != points_.end()) {
+        if (!(size > close->first)) return; // a larger point of the same pore is kept
+        points_.erase(close);
+    }
     const auto at = std::find_if(points_.begin(), points_.end(),
                                  [size](const auto& p) { return size > p.first; });
     points_.insert(at, {size, point});
@@ -23,6 +31,7 @@ void LargestPoints::offer(const LargestPoints& other) {
 namespace {
 
 constexpr int kMaxIterations = 400;
+constexpr int kRestarts = 10;
 
 /// One Nelder-Mead run maximising f from `start`.
 template <class Function>
@@ -84,10 +93,19 @@ LargestPore largestPore(const ExactPoreSizes& pores, std::span<const Vector3d> s
         throw std::invalid_argument("largest pore: the step is not finite and positive");
     LargestPore best;
     int evaluations = 0;
+    const auto size = [&pores](const Vector3d& x) { return pores.poreSize(x); };
     for (const Vector3d& start : starts) {
-        const LargestPore local =
-            nelderMead([&pores](const Vector3d& x) { return pores.poreSize(x); }, start, step);
+        // Nelder-Mead can stall on a ridge of a non-smooth function: restart it from where it
+        // stopped, with a fresh simplex, while that still gains.
+        LargestPore local = nelderMead(size, start, step);
         evaluations += local.evaluations;
+        for (int restart = 0; restart < kRestarts; ++restart) {
+            const LargestPore again = nelderMead(size, local.position, step);
+            evaluations += again.evaluations;
+            const bool gained = again.size > local.size * (1.0 + 1e-13);
+            if (again.size > local.size) local = again;
+            if (!gained) break;
+        }
         if (local.size > best.size) best = local;
     }
     best.evaluations = evaluations;

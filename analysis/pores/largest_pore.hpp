@@ -10,16 +10,18 @@
 
 namespace sbpack {
 
-/// Keeps the `capacity` largest (pore size, point) pairs offered, largest first.
+/// Keeps the `capacity` largest (pore size, point) pairs offered, largest first, at most one within
+/// `separation` of another (the larger), so that the starts of largestPore lie in distinct pores.
 class LargestPoints {
   public:
-    explicit LargestPoints(int capacity) : capacity_(capacity) {}
+    LargestPoints(int capacity, double separation) : capacity_(capacity), separation_(separation) {}
     void offer(double size, const Vector3d& point);
     void offer(const LargestPoints& other);
     std::span<const std::pair<double, Vector3d>> points() const { return points_; }
 
   private:
     int capacity_;
+    double separation_;
     std::vector<std::pair<double, Vector3d>> points_;
 };
 
@@ -32,7 +34,8 @@ struct LargestPore {
 /// Maximises ExactPoreSizes::poreSize from each start by Nelder-Mead (reflection 1, expansion 2,
 /// contraction 1/2, shrink 1/2; first simplex the start and its offsets by `step` along each
 /// axis), until the simplex is smaller than 1e-9 step and its values agree to 1e-14 of the pore
-/// size, or 400 iterations. The pore size is continuous and 1-Lipschitz but not smooth at its
+/// size, or 400 iterations, restarted from where it stopped (up to 10 times) while that gains.
+/// The pore size is continuous and 1-Lipschitz but not smooth at its
 /// maxima (points equidistant to several surfaces), where Nelder-Mead needs no derivative.
 /// Returns the largest value found, never below the starts' own. Throws std::invalid_argument
 /// for no start or a step that is not finite and positive.

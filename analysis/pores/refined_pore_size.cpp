@@ -74,17 +74,21 @@ namespace {
 
 /// F(delta) is binned at a / kBinsPerVoxel.
 constexpr int kBinsPerVoxel = 256;
-/// Start points of the largest pore's maximisation.
+/// Start points of the largest pore's maximisation: the largest, and the largest at least
+/// kStartSeparation voxels apart.
 constexpr int kLargestStarts = 16;
+constexpr double kStartSeparation = 4.0;
 
 /// What one chunk of voxels accumulates.
 struct Tally {
-    explicit Tally(std::size_t bins) : histogram(bins, 0) {}
+    Tally(std::size_t bins, double separation)
+        : histogram(bins, 0), top(kLargestStarts, 0.0), spread(kLargestStarts, separation) {}
     std::vector<std::int64_t> histogram;
     PoreSizeSums sums;
     double largest = 0.0;
     double errorBound = 0.0;
-    LargestPoints top{kLargestStarts};
+    LargestPoints top;    ///< the largest points
+    LargestPoints spread; ///< the largest of distinct pores
 
     void add(const Tally& other) {
         for (std::size_t b = 0; b < histogram.size(); ++b)
@@ -93,6 +97,7 @@ struct Tally {
         largest = std::max(largest, other.largest);
         errorBound = std::max(errorBound, other.errorBound);
         top.offer(other.top);
+        spread.offer(other.spread);
     }
 };
 
@@ -121,6 +126,7 @@ class VoxelPass {
         tally.largest = std::max(tally.largest, d.upper);
         tally.errorBound = std::max(tally.errorBound, d.upper - d.lower);
         tally.top.offer(d.upper, x);
+        tally.spread.offer(d.upper, x);
     }
 
     /// Refines every void voxel of the planes [first, last) into the tally.
@@ -188,7 +194,7 @@ PoreSizeDistributionResult RefinedPoreSizeDistribution::compute(const PoreSizeMa
     const std::int64_t chunks =
         sampled ? (parameters_.randomPoints + kRandomPointChunk - 1) / kRandomPointChunk
                 : (m + planesPerChunk - 1) / planesPerChunk;
-    std::vector<Tally> tallies(chunks, Tally(bins));
+    std::vector<Tally> tallies(chunks, Tally(bins, kStartSeparation * a));
     parallelFor(
         0, chunks, 1,
         [&](std::int64_t begin, std::int64_t end) {
@@ -216,7 +222,7 @@ PoreSizeDistributionResult RefinedPoreSizeDistribution::compute(const PoreSizeMa
             }
         },
         parameters_.serial);
-    Tally all(bins);
+    Tally all(bins, kStartSeparation * a);
     for (const Tally& t : tallies)
         all.add(t);
     PoreSizeDistributionResult r =
@@ -233,8 +239,9 @@ PoreSizeDistributionResult RefinedPoreSizeDistribution::compute(const PoreSizeMa
     else
         r.maxUpperBound = all.largest + 0.5 * std::sqrt(3.0) * a;
     std::vector<Vector3d> starts;
-    for (const auto& [size, point] : all.top.points())
-        starts.push_back(point);
+    for (const LargestPoints* points : {&all.top, &all.spread})
+        for (const auto& [size, point] : points->points())
+            starts.push_back(point);
     r.max = std::max(r.maxSampled, largestPore(pores, starts, 0.5 * a).size);
     r.saturated = r.max < 0.5 * r.meanWidth; // paper Sec. V A
     r.runtimeSeconds = clock.seconds();

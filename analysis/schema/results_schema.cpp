@@ -61,7 +61,13 @@ constexpr Field kSpectralDensity[] = {
     {"qmax", A, F, "1", "shells up to Q w <= qmax (--qmax) and |n| < M / 2"},
     {"max_shell", A, I, "1", "number of shells"},
     {"fft_planning", A, S, "", "FFTW planning effort (--fft-plan)"},
-    {"fft_plan_s", A, F, "s", "FFTW planning time"},
+    {"fft_plan_s", A, F, "s", "FFTW planning time (also on the \"FFT plan\" progress line)"},
+    {"fft_plan_source", A, S, "",
+     "where the plan came from: \"estimate\", \"wisdom\", \"estimate (measuring predicted "
+     "over the budget)\", \"measured\" or \"measured within the budget\""},
+    {"fft_planning_budget_s", A, F, "s",
+     "--fft-planning-budget: without wisdom, measuring predicted to take longer falls back on "
+     "estimate (inf: no limit)"},
     {"fft_s", A, F, "s", "filling the grid and the FFT"},
     {"shell_average_s", A, F, "s", "shell averaging"},
     {"exact_s", A, F, "s", "spheres only: the exact path", No, true},
