@@ -166,10 +166,18 @@ void CommandLine::addGridOptions() {
             [&s](const std::string& v) {
                 s.porePoints = parseInteger("--pore-points", v, 0, std::int64_t(1) << 40);
             },
-            "K random points: voxel and refined, F(delta) from K random void voxels (seed 1)\n"
-            "instead of every void voxel (default 0: every one); exact, K points of the void\n"
-            "(default 0: 10^6, as the paper); random samples record their standard errors")
+            "K random points: voxel and refined, K random void voxels instead of every\n"
+            "one (default 0: every one); exact, K points of the void (default 0: 10^6, as\n"
+            "the paper); random samples record the standard errors of the moments")
         ->type_name("K");
+    app_.add_option_function<std::string>(
+            "--pore-seed",
+            [&s](const std::string& v) {
+                s.poreSeed = static_cast<std::uint64_t>(
+                    parseInteger("--pore-seed", v, 0, std::numeric_limits<std::int64_t>::max()));
+            },
+            "seed of the random points of --pore-points (default 1)")
+        ->type_name("S");
     app_.add_option_function<std::string>(
             "--qmax",
             [&s](const std::string& v) {

@@ -27,6 +27,7 @@ struct RunSettings {
     /// voxel when K > 0; exact, K random points of the void (0: kDefaultExactPorePoints)
     std::int64_t porePoints = 0;
     static constexpr std::int64_t kDefaultExactPorePoints = 1'000'000; ///< the paper's 10^6
+    std::uint64_t poreSeed = 1; ///< seed of the random points (--pore-seed)
     double maxQw = 30.0; ///< S(Q) and chi(Q) up to Q w <= maxQw
     /// hyper: chi_V exactly (no voxels) at Q w <= chiExactQw; 0: voxel data alone
     double chiExactQw = 3.0;

@@ -312,22 +312,19 @@ void distinctSizes(const std::vector<SampleChunk>& chunks, std::vector<double>& 
     }
 }
 
-} // namespace
-
-PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& packing) const {
-    const auto started = std::chrono::steady_clock::now();
-    const ExactPoreSizes pores(packing);
+/// The exact pore sizes of K uniformly random points of the void (points inside a particle are
+/// drawn again), in fixed chunks (the result does not depend on the threads).
+std::vector<SampleChunk> sampleVoid(const ExactPoreSizes& pores,
+                                    const ExactPoreSizeParameters& parameters, double separation) {
     const double length = pores.boxLength();
-    const std::int64_t k = parameters_.randomPoints;
+    const std::int64_t k = parameters.randomPoints;
     const std::int64_t chunks = (k + kRandomPointChunk - 1) / kRandomPointChunk;
-    // Starts of the largest pore at least 4 point spacings apart (distinct pores).
-    const double spacing = length / std::cbrt(static_cast<double>(k));
-    std::vector<SampleChunk> local(chunks, SampleChunk(4.0 * spacing));
+    std::vector<SampleChunk> local(chunks, SampleChunk(separation));
     parallelFor(
         0, chunks, 1,
         [&](std::int64_t begin, std::int64_t end) {
             for (std::int64_t c = begin; c < end; ++c) {
-                std::mt19937_64 generator = chunkGenerator(parameters_.seed, c);
+                std::mt19937_64 generator = chunkGenerator(parameters.seed, c);
                 const std::int64_t points = std::min(kRandomPointChunk, k - c * kRandomPointChunk);
                 SampleChunk& chunk = local[c];
                 chunk.sizes.reserve(points);
@@ -349,7 +346,20 @@ PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& pac
                 }
             }
         },
-        parameters_.serial);
+        parameters.serial);
+    return local;
+}
+
+} // namespace
+
+PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& packing) const {
+    const auto started = std::chrono::steady_clock::now();
+    const ExactPoreSizes pores(packing);
+    const double length = pores.boxLength();
+    const std::int64_t k = parameters_.randomPoints;
+    // Starts of the largest pore at least 4 point spacings apart (distinct pores).
+    const double spacing = length / std::cbrt(static_cast<double>(k));
+    const std::vector<SampleChunk> local = sampleVoid(pores, parameters_, 4.0 * spacing);
     std::vector<double> sizes;
     std::vector<std::int64_t> counts;
     PoreSizeSums sums;
@@ -368,13 +378,9 @@ PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& pac
         spread.offer(chunk.spread);
         r.errorBound = std::max(r.errorBound, chunk.errorBound);
     }
-    std::vector<Vector3d> starts;
-    for (const LargestPoints* points : {&top, &spread})
-        for (const auto& [size, point] : points->points())
-            starts.push_back(point);
     r.maxSampled = r.max;
     // First simplex: half the spacing of K points in the box, a scale the sample cannot resolve.
-    r.max = std::max(r.max, largestPore(pores, starts, 0.5 * spacing).size);
+    r.max = std::max(r.max, largestPore(pores, top, spread, 0.5 * spacing).size);
     r.saturated = r.max < 0.5 * r.meanWidth; // paper Sec. V A
     r.runtimeSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

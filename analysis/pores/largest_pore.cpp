@@ -113,4 +113,13 @@ LargestPore largestPore(const ExactPoreSizes& pores, std::span<const Vector3d> s
     return best;
 }
 
+LargestPore largestPore(const ExactPoreSizes& pores, const LargestPoints& top,
+                        const LargestPoints& spread, double step) {
+    std::vector<Vector3d> starts;
+    for (const LargestPoints* points : {&top, &spread})
+        for (const auto& [size, point] : points->points())
+            starts.push_back(point);
+    return largestPore(pores, starts, step);
+}
+
 } // namespace sbpack

@@ -40,5 +40,8 @@ struct LargestPore {
 /// Returns the largest value found, never below the starts' own. Throws std::invalid_argument
 /// for no start or a step that is not finite and positive.
 LargestPore largestPore(const ExactPoreSizes& pores, std::span<const Vector3d> starts, double step);
+/// The same from the points of two collections (the largest, and the largest of distinct pores).
+LargestPore largestPore(const ExactPoreSizes& pores, const LargestPoints& top,
+                        const LargestPoints& spread, double step);
 
 } // namespace sbpack

@@ -171,30 +171,23 @@ RefinedPoreSizeDistribution::RefinedPoreSizeDistribution(PoreSizeParameters para
     static_cast<void>(PoreSizeDistribution(parameters)); // the same checks
 }
 
-PoreSizeDistributionResult RefinedPoreSizeDistribution::compute(const PoreSizeMap& map,
-                                                                const Packing& packing,
-                                                                const Progress& progress) const {
-    const Stopwatch clock;
-    if (!map.hasFeatures())
-        throw std::invalid_argument("refined pore sizes: the map has no feature transform "
-                                    "(periodicFeatureTransform)");
-    if (std::abs(map.boxLength() - packing.boxLength) > 1e-9 * packing.boxLength)
-        throw std::invalid_argument("refined pore sizes: the map is not of this packing's box");
-    const ExactPoreSizes pores(packing);
-    const double a = map.voxelSize();
-    // Voxel distances bound the pore sizes: a feature voxel's centre is inside a particle.
-    const double maxPore = a * std::sqrt(static_cast<double>(map.maxSquaredDistance()));
-    const VoxelRefiner refiner(pores, maxPore);
-    const auto bins = static_cast<std::size_t>(std::ceil(maxPore / a * kBinsPerVoxel)) + 2;
+namespace {
+
+/// Refines every void voxel, or K random void voxels, into one tally per chunk (fixed chunks:
+/// the result does not depend on the threads); the tallies summed in order.
+Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const VoxelRefiner& refiner,
+                  const PoreSizeParameters& parameters, std::size_t bins,
+                  const Progress& progress) {
     const int m = map.voxels();
-    const std::int64_t plane = static_cast<std::int64_t>(m) * m, total = plane * m;
+    const double separation = kStartSeparation * map.voxelSize();
+    const std::int64_t total = static_cast<std::int64_t>(m) * m * m;
     const std::uint32_t* squared = map.squaredDistances().data();
-    const bool sampled = parameters_.randomPoints > 0;
+    const bool sampled = parameters.randomPoints > 0;
     const std::int64_t planesPerChunk = std::max<std::int64_t>(1, m / 64);
     const std::int64_t chunks =
-        sampled ? (parameters_.randomPoints + kRandomPointChunk - 1) / kRandomPointChunk
+        sampled ? (parameters.randomPoints + kRandomPointChunk - 1) / kRandomPointChunk
                 : (m + planesPerChunk - 1) / planesPerChunk;
-    std::vector<Tally> tallies(chunks, Tally(bins, kStartSeparation * a));
+    std::vector<Tally> tallies(chunks, Tally(bins, separation));
     parallelFor(
         0, chunks, 1,
         [&](std::int64_t begin, std::int64_t end) {
@@ -208,9 +201,9 @@ PoreSizeDistributionResult RefinedPoreSizeDistribution::compute(const PoreSizeMa
                     continue;
                 }
                 // Uniform random voxels, kept where void (as PoreSizeDistribution).
-                std::mt19937_64 generator = chunkGenerator(parameters_.seed, c);
+                std::mt19937_64 generator = chunkGenerator(parameters.seed, c);
                 const std::int64_t points =
-                    std::min(kRandomPointChunk, parameters_.randomPoints - c * kRandomPointChunk);
+                    std::min(kRandomPointChunk, parameters.randomPoints - c * kRandomPointChunk);
                 for (std::int64_t n = 0; n < points;) {
                     const auto v = std::min<std::int64_t>(
                         total - 1, static_cast<std::int64_t>(uniform01(generator) *
@@ -221,16 +214,38 @@ PoreSizeDistributionResult RefinedPoreSizeDistribution::compute(const PoreSizeMa
                 }
             }
         },
-        parameters_.serial);
-    Tally all(bins, kStartSeparation * a);
+        parameters.serial);
+    Tally all(bins, separation);
     for (const Tally& t : tallies)
         all.add(t);
+    return all;
+}
+
+} // namespace
+
+PoreSizeDistributionResult RefinedPoreSizeDistribution::compute(const PoreSizeMap& map,
+                                                                const Packing& packing,
+                                                                const Progress& progress) const {
+    const Stopwatch clock;
+    if (!map.hasFeatures())
+        throw std::invalid_argument("refined pore sizes: the map has no feature transform "
+                                    "(periodicFeatureTransform)");
+    if (std::abs(map.boxLength() - packing.boxLength) > 1e-9 * packing.boxLength)
+        throw std::invalid_argument("refined pore sizes: the map is not of this packing's box");
+    const ExactPoreSizes pores(packing);
+    const double a = map.voxelSize();
+    // Voxel distances bound the pore sizes: a feature voxel's centre is inside a particle.
+    const double maxPore = a * std::sqrt(static_cast<double>(map.maxSquaredDistance()));
+    const auto bins = static_cast<std::size_t>(std::ceil(maxPore / a * kBinsPerVoxel)) + 2;
+    const Tally all =
+        tallyVoxels(map, pores, VoxelRefiner(pores, maxPore), parameters_, bins, progress);
     PoreSizeDistributionResult r =
         binnedPoreSizeStatistics(all.histogram, a / kBinsPerVoxel, all.sums, all.largest,
                                  packing.shape().meanWidth(), parameters_.densityBins);
+    const bool sampled = parameters_.randomPoints > 0;
     r.method = sampled ? "random voxels refined" : "refined";
     r.parameters = parameters_;
-    r.voxels = m;
+    r.voxels = map.voxels();
     r.voxelSize = a;
     r.errorBound = all.errorBound;
     r.maxSampled = all.largest;
@@ -238,11 +253,7 @@ PoreSizeDistributionResult RefinedPoreSizeDistribution::compute(const PoreSizeMa
         setStandardErrors(r, all.sums);
     else
         r.maxUpperBound = all.largest + 0.5 * std::sqrt(3.0) * a;
-    std::vector<Vector3d> starts;
-    for (const LargestPoints* points : {&all.top, &all.spread})
-        for (const auto& [size, point] : points->points())
-            starts.push_back(point);
-    r.max = std::max(r.maxSampled, largestPore(pores, starts, 0.5 * a).size);
+    r.max = std::max(r.maxSampled, largestPore(pores, all.top, all.spread, 0.5 * a).size);
     r.saturated = r.max < 0.5 * r.meanWidth; // paper Sec. V A
     r.runtimeSeconds = clock.seconds();
     return r;

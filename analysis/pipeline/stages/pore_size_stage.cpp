@@ -69,12 +69,14 @@ PoreSizeDistributionResult measurePores(const FileContext& context,
         ExactPoreSizeParameters parameters;
         parameters.randomPoints =
             s.porePoints > 0 ? s.porePoints : RunSettings::kDefaultExactPorePoints;
+        parameters.seed = s.poreSeed;
         return ExactPoreSizeDistribution(parameters).compute(context.packing());
     }
     const bool refined = s.poreMethod == PoreMethod::Refined;
     map.emplace(poreSizeMap(context, s.poreVoxels, refined));
     PoreSizeParameters parameters;
     parameters.randomPoints = s.porePoints;
+    parameters.seed = s.poreSeed;
     if (refined)
         return RefinedPoreSizeDistribution(parameters)
             .compute(*map, context.packing(), context.progress());
