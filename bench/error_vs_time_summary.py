@@ -83,7 +83,7 @@ for stem in stems:
         a = g.attrs
         voxel_path = v.attrs["runtime_s"] + a["fft_plan_s"] + a["fft_s"] + a["shell_average_s"]
         rows.append(("chi_V", stem, f"voxel M = {m}",
-                     f"max over shells |chi - chi_exact| / peak = {a['exact_error']:.4f} "
+                     f"max over shells \\|chi - chi_exact\\| / peak = {a['exact_error']:.4f} "
                      f"(voxel path {voxel_path:.2f} s, exact path {a['exact_s']:.2f} s)",
                      times[name]))
 

@@ -28,7 +28,7 @@ struct RunSettings {
     std::int64_t porePoints = 0;
     static constexpr std::int64_t kDefaultExactPorePoints = 1'000'000; ///< the paper's 10^6
     std::uint64_t poreSeed = 1; ///< seed of the random points (--pore-seed)
-    double maxQw = 30.0; ///< S(Q) and chi(Q) up to Q w <= maxQw
+    double maxQw = 30.0;        ///< S(Q) and chi(Q) up to Q w <= maxQw
     /// hyper: chi_V exactly (no voxels) at Q w <= chiExactQw; 0: voxel data alone
     double chiExactQw = 3.0;
     /// hyper: the fit a0 + a1 Q^alpha over Q w <= fitQw; times and an alpha window (t D / w^2)
