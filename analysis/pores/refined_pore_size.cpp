@@ -149,9 +149,9 @@ class VoxelPass {
     /// The centre of voxel v.
     Vector3d centre(std::int64_t v) const {
         const std::int64_t m = m_;
-        return Vector3d((static_cast<double>(v / (m * m)) + 0.5) * a_,
-                        (static_cast<double>((v / m) % m) + 0.5) * a_,
-                        (static_cast<double>(v % m) + 0.5) * a_);
+        const std::int64_t i = v / (m * m), j = (v / m) % m, k = v % m; // voxel indices
+        return Vector3d((static_cast<double>(i) + 0.5) * a_, (static_cast<double>(j) + 0.5) * a_,
+                        (static_cast<double>(k) + 0.5) * a_);
     }
 
   private:
