@@ -4,6 +4,7 @@
 #include "cli/option_values.hpp"
 #include "info/library_versions.hpp"
 #include "parallel/parallel.hpp"
+#include "pores/distance_transform.hpp"
 #include "version.hpp"
 #include "voxels/voxelization.hpp"
 
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <ostream>
 #include <stdexcept>
 #include <thread>
@@ -184,13 +186,28 @@ void CommandLine::addGridOptions() {
             "the exact periodic distance transform needs 5 bytes per voxel")
         ->type_name("M");
     app_.add_option_function<std::string>(
+            "--pores", [&s](const std::string& v) { s.poreMethod = poreMethodFromName(v); },
+            "pore sizes: voxel (default; distance between voxel centres, as the paper),\n"
+            "refined (each void voxel centre's distance to the nearest particle surface,\n"
+            "certified; 4 more bytes per voxel) or exact (K random points, no voxels)")
+        ->type_name("voxel|refined|exact");
+    app_.add_option_function<std::string>(
             "--pore-points",
             [&s](const std::string& v) {
                 s.porePoints = parseInteger("--pore-points", v, 0, std::int64_t(1) << 40);
             },
-            "F(delta) from K random void points (seed 1), as the paper's 10^6, instead of\n"
-            "every void voxel (default 0: every void voxel)")
+            "K random points: voxel and refined, K random void voxels instead of every\n"
+            "one (default 0: every one); exact, K points of the void (default 0: 10^6, as\n"
+            "the paper); random samples record the standard errors of the moments")
         ->type_name("K");
+    app_.add_option_function<std::string>(
+            "--pore-seed",
+            [&s](const std::string& v) {
+                s.poreSeed = static_cast<std::uint64_t>(
+                    parseInteger("--pore-seed", v, 0, std::numeric_limits<std::int64_t>::max()));
+            },
+            "seed of the random points of --pore-points (default 1)")
+        ->type_name("S");
     app_.add_option_function<std::string>(
             "--qmax",
             [&s](const std::string& v) {
@@ -207,6 +224,23 @@ void CommandLine::addGridOptions() {
             "FFTW planning: estimate, measure (default) or patient; measured plans are kept\n"
             "in the wisdom file, so only the first run per size pays")
         ->type_name("P");
+    app_.add_option_function<std::string>(
+            "--fft-planning-budget",
+            [&s](const std::string& v) {
+                if (v == "none") {
+                    s.fft.planningBudget = std::numeric_limits<double>::infinity();
+                    return;
+                }
+                s.fft.planningBudget = parseNumber("--fft-planning-budget", v);
+                if (!(s.fft.planningBudget >= 0.0) || !std::isfinite(s.fft.planningBudget))
+                    throw std::invalid_argument(
+                        "option --fft-planning-budget: must be >= 0 and finite, or none");
+            },
+            fmt::format("seconds measure/patient planning may take when the wisdom has no plan\n"
+                        "(default {}): planning predicted to take longer uses estimate; none:\n"
+                        "no limit (a measured 300^3 plan takes ~20 s once, then is wisdom)",
+                        kDefaultFftPlanningBudget))
+        ->type_name("SECONDS|none");
     app_.add_option_function<std::string>(
             "--fft-wisdom",
             [&s](const std::string& v) {
@@ -321,6 +355,11 @@ void CommandLine::addSubcommands() {
 void CommandLine::finishAnalysis() {
     settings_.inputs.assign(inputs_.begin(), inputs_.end());
     if (!settings_.vdbDirectory.empty()) settings_.analyses.insert(Analysis::Voxels);
+    if (settings_.poreMethod == PoreMethod::Refined &&
+        settings_.poreVoxels > maxFeatureTransformVoxels)
+        throw std::invalid_argument(
+            fmt::format("option --pore-voxels: {} is above {}, the largest grid of --pores refined",
+                        settings_.poreVoxels, maxFeatureTransformVoxels));
     static_cast<void>(ContactNetwork(settings_.contacts)); // throws on a bad tolerance or threshold
 }
 

@@ -159,6 +159,8 @@ SpectralDensityResult MpiGrids::spectralDensity(const Packing& packing, const Sl
     const std::unique_ptr<fftw_plan_s, DestroyPlan> transform(
         plan(m, data.get(), parameters.fft, progress));
     result.planSeconds = clock.seconds();
+    result.planSource = parameters.fft.planning == FftPlanning::Estimate ? FftPlanSource::Estimate
+                                                                         : FftPlanSource::Measured;
     clock = Stopwatch();
     const std::int64_t rowStride = 2 * (m / 2 + 1);
     collectively(comm_, [&] {

@@ -50,8 +50,8 @@ constexpr std::array<AnalysisInfo, 7> kRegistry{{
     {Analysis::PoreSizes,
      "pores",
      "pore_size",
-     "pore sizes on the --pore-voxels grid by exact periodic distance transform: F(delta), "
-     "<delta>, <delta^2> (Eqs. 13-15)",
+     "pore sizes F(delta), <delta>, <delta^2> (Eqs. 13-15) by --pores: on the --pore-voxels "
+     "grid by exact periodic distance transform (voxel), refined to the surfaces, or exact",
      VoxelGrid::Pore,
      {},
      "-pore-size.vdb",

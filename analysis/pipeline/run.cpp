@@ -40,7 +40,9 @@ std::vector<const AnalysisInfo*> exporters(const RunSettings& settings, std::str
     for (const AnalysisInfo& info : analysisRegistry()) {
         if (info.vdbSuffix.empty()) continue;
         names += (names.empty() ? "" : " or ") + std::string(info.name);
-        if (settings.runs(info.analysis)) run.push_back(&info);
+        const bool noMap = info.analysis == Analysis::PoreSizes &&
+                           settings.poreMethod == PoreMethod::Exact; // no voxels, no map
+        if (settings.runs(info.analysis) && !noMap) run.push_back(&info);
     }
     return run;
 }

@@ -4,6 +4,7 @@
 #include "contacts/contact_network.hpp"
 #include "hyperuniformity/hyperuniformity.hpp"
 #include "pipeline/analysis_registry.hpp"
+#include "pores/pore_size_distribution.hpp"
 #include "spectral/fftw_wisdom.hpp"
 
 #include <filesystem>
@@ -24,9 +25,14 @@ struct RunSettings {
     int threads = 1;
     int voxels = 300;     ///< M of the spectral grid
     int poreVoxels = 500; ///< M of the pore grid
-    /// K: F(delta) from K random void points (seeded) instead of every void voxel when K > 0
+    /// How the pores analysis measures pore sizes (--pores)
+    PoreMethod poreMethod = PoreMethod::Voxel;
+    /// K (--pore-points): voxel and refined, K random void voxels (seeded) instead of every void
+    /// voxel when K > 0; exact, K random points of the void (0: kDefaultExactPorePoints)
     std::int64_t porePoints = 0;
-    double maxQw = 30.0; ///< S(Q) and chi(Q) up to Q w <= maxQw
+    static constexpr std::int64_t kDefaultExactPorePoints = 1'000'000; ///< the paper's 10^6
+    std::uint64_t poreSeed = 1; ///< seed of the random points (--pore-seed)
+    double maxQw = 30.0;        ///< S(Q) and chi(Q) up to Q w <= maxQw
     /// hyper: chi_V exactly (no voxels) at Q w <= chiExactQw; 0: voxel data alone
     double chiExactQw = 3.0;
     /// hyper: the fit a0 + a1 Q^alpha over Q w <= fitQw; times and an alpha window (t D / w^2)
@@ -47,8 +53,11 @@ struct RunSettings {
     /// The grids the requested analyses work on.
     std::set<VoxelGrid> grids() const {
         std::set<VoxelGrid> used;
-        for (Analysis a : analyses)
-            if (analysisInfo(a).grid != VoxelGrid::None) used.insert(analysisInfo(a).grid);
+        for (Analysis a : analyses) {
+            const bool voxelFree = a == Analysis::PoreSizes && poreMethod == PoreMethod::Exact;
+            if (analysisInfo(a).grid != VoxelGrid::None && !voxelFree)
+                used.insert(analysisInfo(a).grid);
+        }
         return used;
     }
 };

@@ -72,6 +72,8 @@ void checkDistribution(const RunSettings& settings, const Communicator& comm) {
         why = "--vdb (a slab is not a whole grid)";
     else if (settings.porePoints > 0)
         why = "--pore-points (random points of the whole grid)";
+    else if (settings.runs(Analysis::PoreSizes) && settings.poreMethod != PoreMethod::Voxel)
+        why = "--pores refined or exact (the distributed grid's pore sizes are --pores voxel)";
     if (why != nullptr)
         throw std::invalid_argument(std::string("option --distribute grids: does not take ") + why);
     if (comm.grids() == nullptr && !settings.plan)

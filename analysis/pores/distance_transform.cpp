@@ -45,14 +45,17 @@ void refuseUnlessAvailable(std::uint64_t bytes, int voxels, const std::string& w
 /// Scratch of one periodic line: the line with its periodic images on either side, and the
 /// sites of the lower envelope with their breakpoints.
 struct detail::LineScratch {
-    explicit LineScratch(int voxels)
-        : voxels(voxels), extended(2 * static_cast<std::size_t>(voxels) + 1), site(2 * voxels + 1),
-          value(2 * voxels + 1), startNumerator(2 * voxels + 1), startDenominator(2 * voxels + 1) {}
+    LineScratch(int voxels, bool withFeatures)
+        : voxels(voxels), extended(2 * static_cast<std::size_t>(voxels) + 1),
+          features(withFeatures ? voxels : 0), site(2 * voxels + 1), value(2 * voxels + 1),
+          startNumerator(2 * voxels + 1), startDenominator(2 * voxels + 1) {}
     /// f(q) for 0 <= q < M, with room for images at -M/2 <= q < M + M/2.
     std::uint32_t* line() { return extended.data() + voxels / 2; }
 
     int voxels;
     std::vector<std::uint32_t> extended;
+    /// Feature transform only: the nearest solid voxel of each voxel of the line before the pass.
+    std::vector<std::uint32_t> features;
     std::vector<std::int64_t> site;  ///< position q' of each envelope parabola (images included)
     std::vector<std::int64_t> value; ///< f(q' mod M) of that parabola
     /// The parabola is the lowest for p > startNumerator / startDenominator (exact rational).
@@ -64,15 +67,26 @@ namespace {
 
 using detail::LineScratch;
 
-/// Copies a line (stride apart) into s.line(); returns the largest finite value, or kInfinite
-/// if some value is infinite.
-std::uint32_t loadLine(LineScratch& s, const std::uint32_t* source, std::int64_t stride) {
+/// Where a line pass writes: the squared distances and, for the feature transform, the nearest
+/// solid voxels (nullptr without), `stride` apart.
+struct LineOutput {
+    std::uint32_t* squared;
+    std::uint32_t* features;
+    std::int64_t stride;
+};
+
+/// Copies a line (out.stride apart) into s.line(), and its features into s.features; returns the
+/// largest finite value, or kInfinite if some value is infinite.
+std::uint32_t loadLine(LineScratch& s, const LineOutput& out) {
     std::uint32_t* f = s.line();
     std::uint32_t largest = 0;
     for (int q = 0; q < s.voxels; ++q) {
-        f[q] = source[q * stride];
+        f[q] = out.squared[q * out.stride];
         largest = std::max(largest, f[q]);
     }
+    if (out.features != nullptr)
+        for (int q = 0; q < s.voxels; ++q)
+            s.features[q] = out.features[q * out.stride];
     return largest;
 }
 
@@ -80,21 +94,74 @@ std::uint32_t loadLine(LineScratch& s, const std::uint32_t* source, std::int64_t
 /// voxel, small in a dense packing); others, and lines with infinite values, the envelope.
 constexpr std::uint32_t kLocalScanReach = 32;
 
+/// Index q mod M of a site or image, -M <= q < 2M.
+inline std::int64_t wrapSite(std::int64_t q, int voxels) {
+    return q < 0 ? q + voxels : (q >= voxels ? q - voxels : q);
+}
+
 /// The line's periodic min-plus transform (below) by scanning outwards from each p:
 /// out(p) = min over |r| <= M / 2 with r^2 < out(p) of f(p + r) + r^2, stopping as soon as r^2
-/// reaches the best value so far (no farther site can be lower). Exact; f must be finite.
-void localScan(LineScratch& s, std::uint32_t largest, std::uint32_t* out, std::int64_t stride) {
+/// reaches the best value so far (no farther site can be lower). Exact; f must be finite. With
+/// features, the winning site's feature (the lower r, then the lower side, on ties).
+void localScan(LineScratch& s, std::uint32_t largest, const LineOutput& out) {
     const int voxels = s.voxels;
     const std::int64_t reach = std::min<std::int64_t>(
         voxels / 2, static_cast<std::int64_t>(std::sqrt(static_cast<double>(largest))));
     std::uint32_t* e = s.line(); // images: e[q] = f(q mod M) for -reach <= q < M + reach
     std::copy(e + voxels - reach, e + voxels, e - reach);
     std::copy(e, e + reach, e + voxels);
+    const std::int64_t stride = out.stride;
+    if (out.features == nullptr) {
+        for (std::int64_t p = 0; p < voxels; ++p) {
+            std::uint32_t best = e[p];
+            for (std::int64_t r = 1; r <= reach && static_cast<std::uint32_t>(r * r) < best; ++r)
+                best = std::min(best,
+                                std::min(e[p - r], e[p + r]) + static_cast<std::uint32_t>(r * r));
+            out.squared[p * stride] = best;
+        }
+        return;
+    }
     for (std::int64_t p = 0; p < voxels; ++p) {
         std::uint32_t best = e[p];
-        for (std::int64_t r = 1; r <= reach && static_cast<std::uint32_t>(r * r) < best; ++r)
-            best = std::min(best, std::min(e[p - r], e[p + r]) + static_cast<std::uint32_t>(r * r));
-        out[p * stride] = best;
+        std::int64_t at = p;
+        for (std::int64_t r = 1; r <= reach && static_cast<std::uint32_t>(r * r) < best; ++r) {
+            const auto square = static_cast<std::uint32_t>(r * r);
+            if (e[p - r] + square < best) best = e[p - r] + square, at = p - r;
+            if (e[p + r] + square < best) best = e[p + r] + square, at = p + r;
+        }
+        out.squared[p * stride] = best;
+        out.features[p * stride] = s.features[wrapSite(at, voxels)];
+    }
+}
+
+/// Writes the lower envelope of lowerEnvelope's parabolas 0..top: parabola j is the lowest on the
+/// integers [first_j, first_{j+1}), first_j = floor(start) + 1; the floor of the double quotient
+/// is exact (its rounding error < 2^-20 is below the distance 1 / denominator >= 2^-17 of a
+/// non-integer quotient from any integer). Zeros inside a skipped run stay zero (and their own
+/// feature).
+void writeEnvelope(const LineScratch& s, int top, const LineOutput& out) {
+    const int voxels = s.voxels;
+    const std::uint32_t* f = s.extended.data() + voxels / 2;
+    const std::int64_t stride = out.stride;
+    std::int64_t p = 0;
+    for (int j = 0; j <= top && p < voxels; ++j) {
+        std::int64_t end = voxels;
+        if (j < top)
+            end = std::min<std::int64_t>(
+                voxels, static_cast<std::int64_t>(
+                            std::floor(static_cast<double>(s.startNumerator[j + 1]) /
+                                       static_cast<double>(s.startDenominator[j + 1]))) +
+                            1);
+        const std::int64_t q = s.site[j], h = s.value[j];
+        const std::int64_t begin = p;
+        for (; p < end; ++p)
+            out.squared[p * stride] =
+                f[p] == 0 ? 0u : static_cast<std::uint32_t>((p - q) * (p - q) + h);
+        if (out.features != nullptr) {
+            const std::uint32_t feature = s.features[wrapSite(q, voxels)];
+            for (std::int64_t r = begin; r < end; ++r)
+                if (f[r] != 0) out.features[r * stride] = feature;
+        }
     }
 }
 
@@ -106,7 +173,7 @@ void localScan(LineScratch& s, std::uint32_t largest, std::uint32_t* out, std::i
 /// denominator < 2^17 for M <= maxPoreSizeVoxels), so the envelope is exact. Sites inside a run
 /// of zeros (solid voxels) are skipped: outside the run an end of it is nearer, and inside it the
 /// answer is 0.
-void lowerEnvelope(LineScratch& s, std::uint32_t largest, std::uint32_t* out, std::int64_t stride) {
+void lowerEnvelope(LineScratch& s, std::uint32_t largest, const LineOutput& out) {
     const int voxels = s.voxels;
     const std::uint32_t* f = s.line();
     std::int64_t pad = voxels / 2;
@@ -118,9 +185,7 @@ void lowerEnvelope(LineScratch& s, std::uint32_t largest, std::uint32_t* out, st
     std::int64_t* value = s.value.data();
     std::int64_t* startNumerator = s.startNumerator.data();
     std::int64_t* startDenominator = s.startDenominator.data();
-    auto wrap = [voxels](std::int64_t q) { // for -M <= q < 2M
-        return q < 0 ? q + voxels : (q >= voxels ? q - voxels : q);
-    };
+    auto wrap = [voxels](std::int64_t q) { return wrapSite(q, voxels); };
     int top = -1; // index of the last parabola of the envelope
     for (std::int64_t q = -pad; q < voxels + pad; ++q) {
         const std::uint32_t fq = f[wrap(q)];
@@ -144,37 +209,64 @@ void lowerEnvelope(LineScratch& s, std::uint32_t largest, std::uint32_t* out, st
         startNumerator[top] = numerator;
         startDenominator[top] = denominator;
     }
-    if (top < 0) { // no site (or only zeros, all skipped): infinite or solid
+    if (top < 0) { // no site (or only zeros, all skipped): infinite or solid; features stay
         for (int p = 0; p < voxels; ++p)
-            out[p * stride] = f[p] == 0 ? 0u : kInfinite;
+            out.squared[p * out.stride] = f[p] == 0 ? 0u : kInfinite;
         return;
     }
-    // Parabola j is the lowest on the integers [first_j, first_{j+1}), first_j = floor(start) + 1;
-    // the floor of the double quotient is exact (its rounding error < 2^-20 is below the
-    // distance 1 / denominator >= 2^-17 of a non-integer quotient from any integer).
-    std::int64_t p = 0;
-    for (int j = 0; j <= top && p < voxels; ++j) {
-        std::int64_t end = voxels;
-        if (j < top)
-            end =
-                std::min<std::int64_t>(voxels, static_cast<std::int64_t>(std::floor(
-                                                   static_cast<double>(startNumerator[j + 1]) /
-                                                   static_cast<double>(startDenominator[j + 1]))) +
-                                                   1);
-        const std::int64_t q = site[j], h = value[j];
-        for (; p < end; ++p) // zeros inside a skipped run stay zero
-            out[p * stride] = f[p] == 0 ? 0u : static_cast<std::uint32_t>((p - q) * (p - q) + h);
-    }
+    writeEnvelope(s, top, out);
 }
-
 /// out(p * stride) = min_q [ f(q) + (min-image |p - q|)^2 ] of the periodic line in s.line(),
 /// whose largest value (kInfinite if any is infinite) loadLine returned.
-void periodicLineTransform(LineScratch& s, std::uint32_t largest, std::uint32_t* out,
-                           std::int64_t stride) {
+void periodicLineTransform(LineScratch& s, std::uint32_t largest, const LineOutput& out) {
     if (largest <= kLocalScanReach * kLocalScanReach)
-        localScan(s, largest, out, stride);
+        localScan(s, largest, out);
     else
-        lowerEnvelope(s, largest, out, stride);
+        lowerEnvelope(s, largest, out);
+}
+
+/// The columns [columnBegin, columnEnd) of the first pass, with the x index of each column's
+/// nearest solid voxel when the features are wanted.
+struct ColumnBlock {
+    std::int64_t begin, width;
+    /// Distance seeds across the periodic boundary: from i = -1 to the last solid (as its image at
+    /// last - M) and from i = M to the first solid (image at first + M); kInfinite without solid.
+    std::vector<std::uint32_t> before, after;
+    std::vector<std::uint32_t> lastSolid, firstSolid; ///< features only: those solids' i
+};
+
+ColumnBlock columnSeeds(std::span<const std::uint8_t> mask, int voxels, std::int64_t columnBegin,
+                        std::int64_t columnEnd, bool withFeatures) {
+    const std::int64_t plane = static_cast<std::int64_t>(voxels) * voxels;
+    const std::int64_t width = columnEnd - columnBegin;
+    ColumnBlock b{columnBegin,
+                  width,
+                  std::vector<std::uint32_t>(width, kInfinite),
+                  std::vector<std::uint32_t>(width, kInfinite),
+                  {},
+                  {}};
+    if (withFeatures) b.lastSolid.assign(width, 0), b.firstSolid.assign(width, 0);
+    std::int64_t missing = width;
+    for (int i = voxels - 1; i >= 0 && missing > 0; --i) {
+        const std::uint8_t* row = mask.data() + i * plane + columnBegin;
+        for (std::int64_t c = 0; c < width; ++c)
+            if (row[c] != 0 && b.before[c] == kInfinite) {
+                b.before[c] = static_cast<std::uint32_t>(voxels - 1 - i);
+                if (withFeatures) b.lastSolid[c] = static_cast<std::uint32_t>(i);
+                --missing;
+            }
+    }
+    missing = width;
+    for (int i = 0; i < voxels && missing > 0; ++i) {
+        const std::uint8_t* row = mask.data() + i * plane + columnBegin;
+        for (std::int64_t c = 0; c < width; ++c)
+            if (row[c] != 0 && b.after[c] == kInfinite) {
+                b.after[c] = static_cast<std::uint32_t>(i);
+                if (withFeatures) b.firstSolid[c] = static_cast<std::uint32_t>(i);
+                --missing;
+            }
+    }
+    return b;
 }
 
 /// First pass, along x (i): the 1-D periodic distance g to the nearest solid voxel of each column
@@ -183,30 +275,10 @@ void periodicLineTransform(LineScratch& s, std::uint32_t largest, std::uint32_t*
 void columnDistances(std::span<const std::uint8_t> mask, std::uint32_t* out, int voxels,
                      std::int64_t columnBegin, std::int64_t columnEnd) {
     const std::int64_t plane = static_cast<std::int64_t>(voxels) * voxels;
-    const std::int64_t width = columnEnd - columnBegin;
-    // Distance seeds across the periodic boundary: from i = -1 to the last solid (as its image
-    // at last - M) and from i = M to the first solid (image at first + M).
-    std::vector<std::uint32_t> before(width, kInfinite), after(width, kInfinite);
-    std::int64_t missing = width;
-    for (int i = voxels - 1; i >= 0 && missing > 0; --i) {
-        const std::uint8_t* row = mask.data() + i * plane + columnBegin;
-        for (std::int64_t c = 0; c < width; ++c)
-            if (row[c] != 0 && before[c] == kInfinite) {
-                before[c] = static_cast<std::uint32_t>(voxels - 1 - i);
-                --missing;
-            }
-    }
-    missing = width;
-    for (int i = 0; i < voxels && missing > 0; ++i) {
-        const std::uint8_t* row = mask.data() + i * plane + columnBegin;
-        for (std::int64_t c = 0; c < width; ++c)
-            if (row[c] != 0 && after[c] == kInfinite) {
-                after[c] = static_cast<std::uint32_t>(i);
-                --missing;
-            }
-    }
+    ColumnBlock b = columnSeeds(mask, voxels, columnBegin, columnEnd, false);
+    const std::int64_t width = b.width;
     // Forward: g(i) = 0 on solid, g(i - 1) + 1 otherwise (infinite stays infinite).
-    std::vector<std::uint32_t>& previous = before; // g(i - 1), updated in place
+    std::vector<std::uint32_t>& previous = b.before; // g(i - 1), updated in place
     for (int i = 0; i < voxels; ++i) {
         const std::uint8_t* row = mask.data() + i * plane + columnBegin;
         std::uint32_t* g = out + i * plane + columnBegin;
@@ -217,7 +289,7 @@ void columnDistances(std::span<const std::uint8_t> mask, std::uint32_t* out, int
         }
     }
     // Backward: g(i) = min(g(i), g(i + 1) + 1); store g^2 for the next passes.
-    std::vector<std::uint32_t>& following = after; // g(i + 1), updated in place
+    std::vector<std::uint32_t>& following = b.after; // g(i + 1), updated in place
     for (int i = voxels - 1; i >= 0; --i) {
         std::uint32_t* g = out + i * plane + columnBegin;
         for (std::int64_t c = 0; c < width; ++c) {
@@ -229,19 +301,64 @@ void columnDistances(std::span<const std::uint8_t> mask, std::uint32_t* out, int
     }
 }
 
+/// The first pass as columnDistances, with the features: features[(i * M + j) * M + k] = the
+/// index (i' * M + j) * M + k of the column's nearest solid voxel (either on ties, the image
+/// across the boundary counted), garbage in a column without solid (its distances are
+/// infinite, so the later passes never take it).
+void columnDistancesAndFeatures(std::span<const std::uint8_t> mask, std::uint32_t* out,
+                                std::uint32_t* features, int voxels, std::int64_t columnBegin,
+                                std::int64_t columnEnd) {
+    const std::int64_t plane = static_cast<std::int64_t>(voxels) * voxels;
+    ColumnBlock b = columnSeeds(mask, voxels, columnBegin, columnEnd, true);
+    const std::int64_t width = b.width;
+    std::vector<std::uint32_t>& previous = b.before; // g(i - 1)
+    std::vector<std::uint32_t>& previousSite = b.lastSolid;
+    for (int i = 0; i < voxels; ++i) {
+        const std::uint8_t* row = mask.data() + i * plane + columnBegin;
+        std::uint32_t* g = out + i * plane + columnBegin;
+        std::uint32_t* site = features + i * plane + columnBegin; // i' for now
+        for (std::int64_t c = 0; c < width; ++c) {
+            const bool solid = row[c] != 0;
+            g[c] = solid ? 0u : previous[c] + (previous[c] != kInfinite ? 1u : 0u);
+            site[c] = solid ? static_cast<std::uint32_t>(i) : previousSite[c];
+            previous[c] = g[c];
+            previousSite[c] = site[c];
+        }
+    }
+    std::vector<std::uint32_t>& following = b.after; // g(i + 1)
+    std::vector<std::uint32_t>& followingSite = b.firstSolid;
+    for (int i = voxels - 1; i >= 0; --i) {
+        std::uint32_t* g = out + i * plane + columnBegin;
+        std::uint32_t* site = features + i * plane + columnBegin;
+        for (std::int64_t c = 0; c < width; ++c) {
+            const std::uint32_t next = following[c] + (following[c] != kInfinite ? 1u : 0u);
+            if (next < g[c]) g[c] = next, site[c] = followingSite[c];
+            following[c] = g[c];
+            followingSite[c] = site[c];
+            g[c] = g[c] == kInfinite ? kInfinite : g[c] * g[c];
+            site[c] = static_cast<std::uint32_t>(site[c] * plane + columnBegin + c);
+        }
+    }
+}
+
 /// Second and third passes within one plane i: along y (j, stride M), then along z (k,
-/// contiguous). Returns the plane's largest squared distance.
-std::uint32_t planeDistances(std::uint32_t* planeData, LineScratch& scratch) {
+/// contiguous); with the features when `planeFeatures` is not null. Returns the plane's largest
+/// squared distance.
+std::uint32_t planeDistances(std::uint32_t* planeData, std::uint32_t* planeFeatures,
+                             LineScratch& scratch) {
     const int voxels = scratch.voxels;
+    const bool withFeatures = planeFeatures != nullptr;
     for (int k = 0; k < voxels; ++k) {
-        const std::uint32_t largest = loadLine(scratch, planeData + k, voxels);
-        periodicLineTransform(scratch, largest, planeData + k, voxels);
+        const LineOutput out{planeData + k, withFeatures ? planeFeatures + k : nullptr, voxels};
+        periodicLineTransform(scratch, loadLine(scratch, out), out);
     }
     std::uint32_t planeLargest = 0;
     for (int j = 0; j < voxels; ++j) {
-        std::uint32_t* line = planeData + static_cast<std::int64_t>(j) * voxels;
-        periodicLineTransform(scratch, loadLine(scratch, line, 1), line, 1);
-        planeLargest = std::max(planeLargest, *std::max_element(line, line + voxels));
+        const std::int64_t offset = static_cast<std::int64_t>(j) * voxels;
+        const LineOutput out{planeData + offset, withFeatures ? planeFeatures + offset : nullptr,
+                             1};
+        periodicLineTransform(scratch, loadLine(scratch, out), out);
+        planeLargest = std::max(planeLargest, *std::max_element(out.squared, out.squared + voxels));
     }
     return planeLargest;
 }
@@ -249,11 +366,12 @@ std::uint32_t planeDistances(std::uint32_t* planeData, LineScratch& scratch) {
 } // namespace
 
 PeriodicLineTransform::PeriodicLineTransform(int voxels)
-    : scratch_(std::make_unique<LineScratch>(voxels)) {}
+    : scratch_(std::make_unique<LineScratch>(voxels, false)) {}
 PeriodicLineTransform::~PeriodicLineTransform() = default;
 
 std::uint32_t PeriodicLineTransform::operator()(std::uint32_t* line, std::int64_t stride) {
-    periodicLineTransform(*scratch_, loadLine(*scratch_, line, stride), line, stride);
+    const LineOutput out{line, nullptr, stride};
+    periodicLineTransform(*scratch_, loadLine(*scratch_, out), out);
     std::uint32_t largest = 0;
     for (int p = 0; p < scratch_->voxels; ++p)
         largest = std::max(largest, line[p * stride]);
@@ -282,11 +400,18 @@ std::span<const std::uint32_t> PoreSizeMap::squaredDistances() const {
     return {squaredDistances_.get(), m * m * m};
 }
 
-PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t> solidMask, int voxels,
-                                      double voxelSize, bool serial) {
+std::span<const std::uint32_t> PoreSizeMap::features() const {
+    const std::size_t m = static_cast<std::size_t>(voxels_);
+    return features_ ? std::span<const std::uint32_t>(features_.get(), m * m * m)
+                     : std::span<const std::uint32_t>();
+}
+
+namespace {
+
+/// Throws for a mask or voxel size periodicDistanceTransform refuses; returns the solid count.
+std::int64_t checkMask(std::span<const std::uint8_t> solidMask, int voxels, double voxelSize) {
     checkVoxels(voxels);
-    const std::int64_t plane = static_cast<std::int64_t>(voxels) * voxels;
-    const std::int64_t total = plane * voxels;
+    const std::int64_t total = static_cast<std::int64_t>(voxels) * voxels * voxels;
     if (static_cast<std::int64_t>(solidMask.size()) != total)
         throw std::invalid_argument("distance transform: the solid mask has " +
                                     std::to_string(solidMask.size()) +
@@ -304,28 +429,65 @@ PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t> solidMask, i
         throw std::domain_error("pore sizes: no void voxel at M = " + std::to_string(voxels) +
                                 " (the particles cover every voxel centre); the pore-size "
                                 "distribution is undefined: use a larger M or check the packing");
-    refuseUnlessAvailable(static_cast<std::uint64_t>(total) * sizeof(std::uint32_t), voxels,
-                          "4-byte squared distance per voxel");
+    return solid;
+}
 
+} // namespace
+
+PoreSizeMap transformMask(std::span<const std::uint8_t> solidMask, int voxels, double voxelSize,
+                          bool serial, bool withFeatures) {
+    if (withFeatures && voxels > maxFeatureTransformVoxels)
+        throw std::invalid_argument("feature transform: M = " + std::to_string(voxels) +
+                                    " is above " + std::to_string(maxFeatureTransformVoxels) +
+                                    " (voxel indices are 32-bit)");
+    const std::int64_t solid = checkMask(solidMask, voxels, voxelSize);
+    const std::int64_t plane = static_cast<std::int64_t>(voxels) * voxels;
+    const std::int64_t total = plane * voxels;
+    refuseUnlessAvailable(
+        static_cast<std::uint64_t>(total) * sizeof(std::uint32_t) * (withFeatures ? 2 : 1), voxels,
+        withFeatures ? "4-byte squared distance and 4-byte feature per voxel"
+                     : "4-byte squared distance per voxel");
     PoreSizeMap map(voxels, voxelSize);
     std::uint32_t* squared = map.squaredDistances_.get();
+    std::uint32_t* features = nullptr;
+    if (withFeatures) {
+        map.features_.reset(new std::uint32_t[total]);
+        features = map.features_.get();
+    }
     const std::int64_t columnGrain = std::max<std::int64_t>(1, std::min<std::int64_t>(plane, 4096));
     parallelFor(
         0, plane, columnGrain,
-        [&](std::int64_t b, std::int64_t e) { columnDistances(solidMask, squared, voxels, b, e); },
+        [&](std::int64_t b, std::int64_t e) {
+            if (features != nullptr)
+                columnDistancesAndFeatures(solidMask, squared, features, voxels, b, e);
+            else
+                columnDistances(solidMask, squared, voxels, b, e);
+        },
         serial);
     std::vector<std::uint32_t> planeLargest(voxels);
     parallelFor(
         0, voxels, 1,
         [&](std::int64_t b, std::int64_t e) {
-            LineScratch scratch(voxels);
+            LineScratch scratch(voxels, features != nullptr);
             for (std::int64_t i = b; i < e; ++i)
-                planeLargest[i] = planeDistances(squared + i * plane, scratch);
+                planeLargest[i] =
+                    planeDistances(squared + i * plane,
+                                   features != nullptr ? features + i * plane : nullptr, scratch);
         },
         serial);
     map.voidCount_ = total - solid;
     map.maxSquaredDistance_ = *std::max_element(planeLargest.begin(), planeLargest.end());
     return map;
+}
+
+PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t> solidMask, int voxels,
+                                      double voxelSize, bool serial) {
+    return transformMask(solidMask, voxels, voxelSize, serial, false);
+}
+
+PoreSizeMap periodicFeatureTransform(std::span<const std::uint8_t> solidMask, int voxels,
+                                     double voxelSize, bool serial) {
+    return transformMask(solidMask, voxels, voxelSize, serial, true);
 }
 
 } // namespace sbpack

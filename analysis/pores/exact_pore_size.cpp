@@ -1,6 +1,7 @@
 #include "pores/exact_pore_size.hpp"
 
 #include "parallel/parallel.hpp"
+#include "pores/largest_pore.hpp"
 #include "pores/random_points.hpp"
 
 #include <algorithm>
@@ -32,7 +33,14 @@ Vector3d projectOntoOctahedron(const Vector3d& xi) {
 
 /// Root u in (0, min(xi, 1)] of u + kappa u^m = xi, for xi > 0 and 1 + kappa >= xi (so that
 /// the root is <= 1 and u^m cannot overflow): increasing in u, bracketed Newton from the right.
+/// Closed forms for m = 2 (p = 1.5), a quadratic in u, and m = 1/2 (p = 0.75), a quadratic in
+/// sqrt(u), each in its cancellation-free form.
 double axisRoot(double xi, double kappa, double m) {
+    if (m == 2.0) return 2.0 * xi / (1.0 + std::sqrt(1.0 + 4.0 * kappa * xi));
+    if (m == 0.5) {
+        const double t = 2.0 * xi / (kappa + std::sqrt(kappa * kappa + 4.0 * xi));
+        return t * t;
+    }
     double lo = 0.0, hi = std::min(xi, 1.0), u = hi;
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
         const double power = std::pow(u, m - 1.0); // u^{m-1}, u > 0
@@ -47,10 +55,45 @@ double axisRoot(double xi, double kappa, double m) {
     return u;
 }
 
-/// Projection of xi (>= 0, outside) onto { u >= 0, sum u_i^{2p} <= 1 }, 0.5 < p: KKT
-/// u_i + kappa u_i^{2p-1} = xi_i with sum u_i^{2p} = 1; the sum falls monotonically with kappa,
-/// whose root lies in [max(0, max xi - 1), 3 max xi] (the largest u_i is >= 3^{-1/(2p)}).
-Vector3d projectOntoSuperball(const Vector3d& xi, double p) {
+/// u^{m-1} for u > 0, by a root at m = 2 and m = 1/2 (as axisRoot).
+double powerMinusOne(double u, double m) {
+    if (m == 2.0) return u;
+    if (m == 0.5) return 1.0 / std::sqrt(u);
+    return std::pow(u, m - 1.0);
+}
+
+/// y^e for y >= 0: products and roots at e = 2, 3 and 3/2 (p = 1, 1.5, 0.75), else std::pow.
+double powerOf(double y, double e) {
+    if (e == 2.0) return y * y;
+    if (e == 3.0) return y * y * y;
+    if (e == 1.5) return y * std::sqrt(y);
+    return std::pow(y, e);
+}
+
+/// Newton's start for kappa from the radial point u_r = xi / g(xi) on the surface, with
+/// s = sum xi_i^e = g^e: the least-squares kappa of u + kappa u^m = xi, i.e. the step from u_r
+/// along the surface normal there, which is exact at the axes, on the diagonals and as the
+/// point approaches the surface.
+double kappaStart(const Vector3d& xi, double e, double s) {
+    const double m = e - 1.0;
+    const double inverseGauge = e == 3.0 ? 1.0 / std::cbrt(s) : std::pow(s, -1.0 / e);
+    double along = 0.0, norm = 0.0;
+    for (int i = 0; i < 3; ++i) {
+        if (!(xi[i] > 0.0)) continue;
+        const double u = xi[i] * inverseGauge;
+        const double normal = powerMinusOne(u, m) * u; // u^m
+        along += (xi[i] - u) * normal;
+        norm += normal * normal;
+    }
+    return along / norm;
+}
+
+/// Projection of xi (>= 0, outside: s = sum xi_i^{2p} > 1) onto { u >= 0, sum u_i^{2p} <= 1 },
+/// 0.5 < p: KKT u_i + kappa u_i^{2p-1} = xi_i with sum u_i^{2p} = 1; the sum falls monotonically
+/// with kappa, whose root lies in [max(0, max xi - 1), 3 max xi] (the largest u_i is
+/// >= 3^{-1/(2p)}). Safeguarded Newton in kappa until the sum is 1 to rounding (then u is the
+/// projection onto that surface) or kappa stops moving.
+Vector3d projectOntoSuperball(const Vector3d& xi, double p, double s) {
     const double e = 2.0 * p, m = e - 1.0;
     const double largest = xi.maxCoeff();
     double lo = std::max(0.0, largest - 1.0), hi = 3.0 * largest;
@@ -62,22 +105,18 @@ Vector3d projectOntoSuperball(const Vector3d& xi, double p) {
         for (int i = 0; i < 3; ++i) {
             u[i] = xi[i] > 0.0 ? axisRoot(xi[i], kappa, m) : 0.0;
             if (u[i] == 0.0) continue;
-            const double power = std::pow(u[i], m - 1.0);
+            const double power = powerMinusOne(u[i], m);
             const double um = power * u[i];
             c += um * u[i];
             derivative -= e * um * um / (1.0 + kappa * m * power);
         }
         return c;
     };
-    // Start from the radial scaling u = xi / g(xi), exact for the sphere.
-    const double gauge = std::pow(xi.array().pow(e).sum(), 1.0 / e);
-    const int axis = static_cast<int>(std::max_element(xi.data(), xi.data() + 3) - xi.data());
-    const double uAxis = xi[axis] / gauge;
-    double kappa = std::clamp((xi[axis] - uAxis) / std::pow(uAxis, m), lo, hi);
+    double kappa = std::clamp(kappaStart(xi, e, s), lo, hi);
     for (int iteration = 0; iteration < kMaxIterations; ++iteration) {
         double derivative = 0.0;
         const double c = evaluate(kappa, derivative);
-        if (c == 0.0) break;
+        if (std::abs(c) <= 4e-16) break; // on the surface to rounding
         (c > 0.0 ? lo : hi) = kappa;
         double next = derivative < 0.0 ? kappa - c / derivative : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
@@ -93,13 +132,24 @@ Vector3d projectOntoSuperball(const Vector3d& xi, double p) {
 
 } // namespace
 
+double gaugePower(const Superball& shape, const Vector3d& xBody) {
+    double s = 0.0;
+    for (int i = 0; i < 3; ++i)
+        s += powerOf(std::abs(xBody[i]) / shape.semiAxis(), 2.0 * shape.p());
+    return s;
+}
+
 Vector3d closestPoint(const Superball& shape, const Vector3d& xBody) {
-    if (!(shape.gauge(xBody) > 1.0)) return xBody;
     const double r = shape.semiAxis();
-    if (shape.isSphere()) return xBody * (r / xBody.norm());
+    if (shape.isSphere() || shape.isOctahedron()) {
+        if (!(shape.gauge(xBody) > 1.0)) return xBody;
+        if (shape.isSphere()) return xBody * (r / xBody.norm());
+    }
     const Vector3d xi = xBody.cwiseAbs() / r;
+    const double s = gaugePower(shape, xBody); // g(x)^{2p}: inside iff <= 1
+    if (!shape.isOctahedron() && !(s > 1.0)) return xBody;
     const Vector3d u =
-        shape.isOctahedron() ? projectOntoOctahedron(xi) : projectOntoSuperball(xi, shape.p());
+        shape.isOctahedron() ? projectOntoOctahedron(xi) : projectOntoSuperball(xi, shape.p(), s);
     Vector3d y;
     for (int i = 0; i < 3; ++i)
         y[i] = std::copysign(u[i] * r, xBody[i]);
@@ -142,23 +192,54 @@ ExactPoreSizes::ExactPoreSizes(const Packing& packing)
         cellParticles_[fill[cellOf[j]]++] = static_cast<int>(j);
 }
 
-double ExactPoreSizes::distanceToParticle(int particle, const Vector3d& d) const {
-    if (shape_.isSphere()) return std::max(0.0, d.norm() - shape_.semiAxis());
+SurfaceDistance ExactPoreSizes::particleDistance(int particle, const Vector3d& d) const {
+    if (shape_.isSphere()) {
+        const double distance = std::max(0.0, d.norm() - shape_.semiAxis());
+        return {distance, distance};
+    }
     const Vector3d xBody = rotations_[particle].transpose() * d;
-    return (xBody - closestPoint(shape_, xBody)).norm();
+    const Vector3d y = closestPoint(shape_, xBody);
+    const Vector3d gap = xBody - y;
+    const double upper = gap.norm();
+    if (upper == 0.0) return {};
+    // The certificate of closestPoint: n.x - h(n) <= dist(x, body) <= |x - y|.
+    const Vector3d n = gap / upper;
+    return {std::clamp(n.dot(xBody) - shape_.support(n), 0.0, upper), upper};
 }
 
-double ExactPoreSizes::poreSize(const Vector3d& x) const {
+std::array<int, 3> ExactPoreSizes::homeCell(const Vector3d& xWrapped) const {
+    std::array<int, 3> home{};
+    for (int k = 0; k < 3; ++k)
+        home[k] = std::min(cellsPerSide_ - 1, static_cast<int>(xWrapped[k] / cellSize_));
+    return home;
+}
+
+int ExactPoreSizes::particleContaining(const Vector3d& x) const {
+    const Vector3d xw = wrapIntoBox(x, boxLength_);
+    const std::array<int, 3> home = homeCell(xw);
+    const int reach = std::min(1, cellsPerSide_ / 2); // cells >= circumradius
+    const double rc2 = circumradius_ * circumradius_;
+    int found = -1;
+    for (int ox = -reach; ox <= reach && found < 0; ++ox)
+        for (int oy = -reach; oy <= reach && found < 0; ++oy)
+            for (int oz = -reach; oz <= reach && found < 0; ++oz)
+                forEachInCell({home[0] + ox, home[1] + oy, home[2] + oz},
+                              [&](int j, const Vector3d&) {
+                                  if (found >= 0) return;
+                                  const Vector3d d = minimumImage(xw - positions_[j], boxLength_);
+                                  if (d.squaredNorm() <= rc2 && inside(j, d)) found = j;
+                              });
+    return found;
+}
+
+SurfaceDistance ExactPoreSizes::poreSizeBounds(const Vector3d& x) const {
     struct Candidate {
         double lower; ///< |d| - circumradius <= distance to this particle image
         int particle;
         Vector3d d; ///< x minus the image's centre
     };
-    const int n = cellsPerSide_;
     const Vector3d xw = wrapIntoBox(x, boxLength_);
-    std::array<int, 3> home{};
-    for (int k = 0; k < 3; ++k)
-        home[k] = std::min(n - 1, static_cast<int>(xw[k] / cellSize_));
+    const std::array<int, 3> home = homeCell(xw);
     std::vector<Candidate> candidates;
     double bestUpper = std::numeric_limits<double>::infinity(); // min of |d| - inradius
     for (int s = 0;; ++s) {
@@ -167,35 +248,27 @@ double ExactPoreSizes::poreSize(const Vector3d& x) const {
             for (int oy = -s; oy <= s; ++oy)
                 for (int oz = -s; oz <= s; ++oz) {
                     if (std::max({std::abs(ox), std::abs(oy), std::abs(oz)}) != s) continue;
-                    const std::array<int, 3> unwrapped = {home[0] + ox, home[1] + oy, home[2] + oz};
-                    std::array<int, 3> cell{};
-                    Vector3d shift;
-                    for (int k = 0; k < 3; ++k) {
-                        const int image =
-                            static_cast<int>(std::floor(static_cast<double>(unwrapped[k]) / n));
-                        cell[k] = unwrapped[k] - image * n;
-                        shift[k] = image * boxLength_;
-                    }
-                    const int c = (cell[0] * n + cell[1]) * n + cell[2];
-                    for (int a = cellStart_[c]; a < cellStart_[c + 1]; ++a) {
-                        const int j = cellParticles_[a];
-                        const Vector3d d = xw - (positions_[j] + shift);
-                        const double centre = d.norm();
-                        if (centre - circumradius_ >= bestUpper) continue;
-                        candidates.push_back({centre - circumradius_, j, d});
-                        bestUpper = std::min(bestUpper, centre - inradius_);
-                    }
+                    forEachInCell({home[0] + ox, home[1] + oy, home[2] + oz},
+                                  [&](int j, const Vector3d& shift) {
+                                      const Vector3d d = xw - (positions_[j] + shift);
+                                      const double centre = d.norm();
+                                      if (centre - circumradius_ >= bestUpper) return;
+                                      candidates.push_back({centre - circumradius_, j, d});
+                                      bestUpper = std::min(bestUpper, centre - inradius_);
+                                  });
                 }
         // Every image not yet visited has its centre at least s cells away.
         if (s * cellSize_ - circumradius_ >= bestUpper) break;
     }
     std::sort(candidates.begin(), candidates.end(),
               [](const Candidate& a, const Candidate& b) { return a.lower < b.lower; });
-    double best = std::numeric_limits<double>::infinity();
+    SurfaceDistance best{std::numeric_limits<double>::infinity(),
+                         std::numeric_limits<double>::infinity()};
     for (const Candidate& candidate : candidates) {
-        if (candidate.lower >= best) break;
-        best = std::min(best, distanceToParticle(candidate.particle, candidate.d));
-        if (best == 0.0) break;
+        if (candidate.lower >= best.upper) break;
+        const SurfaceDistance next = particleDistance(candidate.particle, candidate.d);
+        best = {std::min(best.lower, next.lower), std::min(best.upper, next.upper)};
+        if (best.upper == 0.0) return {};
     }
     return best;
 }
@@ -210,44 +283,26 @@ ExactPoreSizeDistribution::ExactPoreSizeDistribution(ExactPoreSizeParameters par
                                     std::to_string(parameters_.densityBins) + " (need >= 1)");
 }
 
-PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& packing) const {
-    const auto started = std::chrono::steady_clock::now();
-    const ExactPoreSizes pores(packing);
-    const double length = pores.boxLength();
-    const std::int64_t k = parameters_.randomPoints;
-    const std::int64_t chunks = (k + kRandomPointChunk - 1) / kRandomPointChunk;
-    std::vector<std::vector<double>> local(chunks);
-    parallelFor(
-        0, chunks, 1,
-        [&](std::int64_t begin, std::int64_t end) {
-            for (std::int64_t c = begin; c < end; ++c) {
-                std::mt19937_64 generator = chunkGenerator(parameters_.seed, c);
-                const std::int64_t points = std::min(kRandomPointChunk, k - c * kRandomPointChunk);
-                std::vector<double>& sizes = local[c];
-                sizes.reserve(points);
-                std::int64_t draws = 0;
-                while (static_cast<std::int64_t>(sizes.size()) < points) {
-                    if (++draws > 1000 * points)
-                        throw std::domain_error("exact pore sizes: no void found in " +
-                                                std::to_string(draws - 1) +
-                                                " random points (the particles fill the box)");
-                    Vector3d x;
-                    for (int a = 0; a < 3; ++a)
-                        x[a] = length * uniform01(generator);
-                    const double delta = pores.poreSize(x);
-                    if (delta > 0.0) sizes.push_back(delta); // 0: inside a particle, draw again
-                }
-            }
-        },
-        parameters_.serial);
-    std::vector<double> all;
-    all.reserve(k);
-    for (const auto& sizes : local)
-        all.insert(all.end(), sizes.begin(), sizes.end());
-    std::sort(all.begin(), all.end());
+namespace {
+
+/// One chunk of the exact sampler: its pore sizes, their largest certificate gap, the largest.
+struct SampleChunk {
+    explicit SampleChunk(double separation) : top(16, 0.0), spread(16, separation) {}
     std::vector<double> sizes;
-    std::vector<std::int64_t> counts;
+    double errorBound = 0.0;
+    LargestPoints top;    ///< the largest points
+    LargestPoints spread; ///< the largest of distinct pores
+};
+
+/// The distinct sizes of the chunks, ascending, with their counts, and the sums of the sample.
+void distinctSizes(const std::vector<SampleChunk>& chunks, std::vector<double>& sizes,
+                   std::vector<std::int64_t>& counts, PoreSizeSums& sums) {
+    std::vector<double> all;
+    for (const SampleChunk& chunk : chunks)
+        all.insert(all.end(), chunk.sizes.begin(), chunk.sizes.end());
+    std::sort(all.begin(), all.end());
     for (const double delta : all) {
+        sums.add(delta);
         if (!sizes.empty() && sizes.back() == delta) {
             ++counts.back();
         } else {
@@ -255,12 +310,78 @@ PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& pac
             counts.push_back(1);
         }
     }
+}
+
+/// The exact pore sizes of K uniformly random points of the void (points inside a particle are
+/// drawn again), in fixed chunks (the result does not depend on the threads).
+std::vector<SampleChunk> sampleVoid(const ExactPoreSizes& pores,
+                                    const ExactPoreSizeParameters& parameters, double separation) {
+    const double length = pores.boxLength();
+    const std::int64_t k = parameters.randomPoints;
+    const std::int64_t chunks = (k + kRandomPointChunk - 1) / kRandomPointChunk;
+    std::vector<SampleChunk> local(chunks, SampleChunk(separation));
+    parallelFor(
+        0, chunks, 1,
+        [&](std::int64_t begin, std::int64_t end) {
+            for (std::int64_t c = begin; c < end; ++c) {
+                std::mt19937_64 generator = chunkGenerator(parameters.seed, c);
+                const std::int64_t points = std::min(kRandomPointChunk, k - c * kRandomPointChunk);
+                SampleChunk& chunk = local[c];
+                chunk.sizes.reserve(points);
+                std::int64_t draws = 0;
+                while (static_cast<std::int64_t>(chunk.sizes.size()) < points) {
+                    if (++draws > 1000 * points)
+                        throw std::domain_error("exact pore sizes: no void found in " +
+                                                std::to_string(draws - 1) +
+                                                " random points (the particles fill the box)");
+                    Vector3d x;
+                    for (int a = 0; a < 3; ++a)
+                        x[a] = length * uniform01(generator);
+                    const SurfaceDistance delta = pores.poreSizeBounds(x);
+                    if (!(delta.upper > 0.0)) continue; // inside a particle: draw again
+                    chunk.sizes.push_back(delta.upper);
+                    chunk.errorBound = std::max(chunk.errorBound, delta.upper - delta.lower);
+                    chunk.top.offer(delta.upper, x);
+                    chunk.spread.offer(delta.upper, x);
+                }
+            }
+        },
+        parameters.serial);
+    return local;
+}
+
+} // namespace
+
+PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& packing) const {
+    const auto started = std::chrono::steady_clock::now();
+    const ExactPoreSizes pores(packing);
+    const double length = pores.boxLength();
+    const std::int64_t k = parameters_.randomPoints;
+    // Starts of the largest pore at least 4 point spacings apart (distinct pores).
+    const double spacing = length / std::cbrt(static_cast<double>(k));
+    const std::vector<SampleChunk> local = sampleVoid(pores, parameters_, 4.0 * spacing);
+    std::vector<double> sizes;
+    std::vector<std::int64_t> counts;
+    PoreSizeSums sums;
+    distinctSizes(local, sizes, counts, sums);
     PoreSizeDistributionResult r =
         poreSizeStatistics(sizes, counts, packing.shape().meanWidth(), parameters_.densityBins);
     r.method = "exact";
     r.parameters.randomPoints = k;
     r.parameters.seed = parameters_.seed;
     r.parameters.serial = parameters_.serial;
+    setStandardErrors(r, sums);
+    LargestPoints top(16, 0.0), spread(16, 4.0 * spacing);
+    r.errorBound = 0.0;
+    for (const SampleChunk& chunk : local) {
+        top.offer(chunk.top);
+        spread.offer(chunk.spread);
+        r.errorBound = std::max(r.errorBound, chunk.errorBound);
+    }
+    r.maxSampled = r.max;
+    // First simplex: half the spacing of K points in the box, a scale the sample cannot resolve.
+    r.max = std::max(r.max, largestPore(pores, top, spread, 0.5 * spacing).size);
+    r.saturated = r.max < 0.5 * r.meanWidth; // paper Sec. V A
     r.runtimeSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return r;

@@ -6,10 +6,16 @@
 #include "packing/packing.hpp"
 #include "pores/pore_size_distribution.hpp"
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 namespace sbpack {
+
+/// g(x)^{2p} = sum |x_i / R|^{2p} (g the gauge, Superball::gauge): x is inside iff it is < 1;
+/// products and roots instead of powers at p = 1 and 1.5, the pore sizes' inner loop.
+double gaugePower(const Superball& shape, const Vector3d& xBody);
 
 /// The point of the superball (body frame, centred at the origin) nearest to xBody; xBody itself
 /// when it is inside. Euclidean projection onto { sum |y_i / R|^{2p} <= 1 }: by symmetry in the
@@ -19,6 +25,14 @@ namespace sbpack {
 /// projection, for the octahedron p = 0.5. The distance |x - y| is certified by the support
 /// function: with n = (x - y) / |x - y|, n.x - h(n) <= dist(x, body) <= |x - y|.
 Vector3d closestPoint(const Superball& shape, const Vector3d& xBody);
+
+/// Certified bounds on a distance to a particle surface: the true distance lies in [lower, upper];
+/// upper is the distance to a point of the surface (a distance that is realised), lower the
+/// support function's bound n.x - h(n) (closestPoint). Both 0 inside a particle.
+struct SurfaceDistance {
+    double lower = 0.0;
+    double upper = 0.0;
+};
 
 /// Exact pore sizes of a packing: distance from a point to the nearest particle surface, over
 /// all periodic images. Candidates come from a cell grid searched in shells of growing distance,
@@ -30,12 +44,41 @@ class ExactPoreSizes {
     explicit ExactPoreSizes(const Packing& packing);
 
     /// Distance from x (lab frame, any image) to the nearest particle; 0 if x is in a particle.
-    double poreSize(const Vector3d& x) const;
+    double poreSize(const Vector3d& x) const { return poreSizeBounds(x).upper; }
+    /// The same with its certificate: the minimum over the particles of particleDistance.
+    SurfaceDistance poreSizeBounds(const Vector3d& x) const;
+    /// Distance from x = r + d to particle `particle` centred at r (d in the lab frame; the
+    /// caller picks the image), with its certificate.
+    SurfaceDistance particleDistance(int particle, const Vector3d& d) const;
+    /// A lower bound on particleDistance(particle, d) from one support function:
+    /// n.d - h(n) with n = d / |d| (docs/design.md §5), cheaper than the exact distance.
+    double distanceLowerBound(int particle, const Vector3d& d) const {
+        const double centre = d.norm();
+        if (shape_.isSphere() || centre == 0.0) return centre - shape_.semiAxis();
+        return centre - shape_.support(rotations_[particle].transpose() * d / centre);
+    }
+    /// A particle whose minimum image contains x (Superball::contains), or -1 if none does.
+    int particleContaining(const Vector3d& x) const;
+    /// Whether r + d is inside particle `particle` centred at r (gaugePower < 1, which may differ
+    /// from Superball::contains within rounding of the surface).
+    bool inside(int particle, const Vector3d& d) const {
+        if (shape_.isSphere()) return d.squaredNorm() < shape_.semiAxis() * shape_.semiAxis();
+        return gaugePower(shape_, rotations_[particle].transpose() * d) < 1.0;
+    }
 
     double boxLength() const { return boxLength_; }
+    double circumradius() const { return circumradius_; }
+    bool isSphere() const { return shape_.isSphere(); }
+    int size() const { return static_cast<int>(positions_.size()); }
+    /// Centre of particle j, wrapped into [0, L)^3.
+    const Vector3d& position(int j) const { return positions_[j]; }
 
   private:
-    double distanceToParticle(int particle, const Vector3d& d) const;
+    /// Calls visit(particle, shift) for each particle of cell `unwrapped` (cell indices taken
+    /// modulo the cells per side, shift the image's lab offset).
+    template <class Visit>
+    void forEachInCell(const std::array<int, 3>& unwrapped, Visit&& visit) const;
+    std::array<int, 3> homeCell(const Vector3d& xWrapped) const;
 
     Superball shape_;
     double boxLength_;
@@ -72,5 +115,24 @@ class ExactPoreSizeDistribution {
   private:
     ExactPoreSizeParameters parameters_;
 };
+
+} // namespace sbpack
+
+namespace sbpack {
+
+template <class Visit>
+void ExactPoreSizes::forEachInCell(const std::array<int, 3>& unwrapped, Visit&& visit) const {
+    const int n = cellsPerSide_;
+    std::array<int, 3> cell{};
+    Vector3d shift;
+    for (int k = 0; k < 3; ++k) {
+        const int image = static_cast<int>(std::floor(static_cast<double>(unwrapped[k]) / n));
+        cell[k] = unwrapped[k] - image * n;
+        shift[k] = image * boxLength_;
+    }
+    const int c = (cell[0] * n + cell[1]) * n + cell[2];
+    for (int a = cellStart_[c]; a < cellStart_[c + 1]; ++a)
+        visit(cellParticles_[a], shift);
+}
 
 } // namespace sbpack

@@ -31,7 +31,119 @@ double stepValue(const PoreSizeDistributionResult& r, double x) {
     return r.F[static_cast<std::size_t>(above - r.delta.begin()) - 1];
 }
 
+void checkDensityBins(int densityBins) {
+    if (densityBins < 1)
+        throw std::invalid_argument("pore sizes: densityBins = " + std::to_string(densityBins) +
+                                    " (need >= 1)");
+}
+
 } // namespace
+
+PoreMethod poreMethodFromName(std::string_view name) {
+    if (name == "voxel") return PoreMethod::Voxel;
+    if (name == "refined") return PoreMethod::Refined;
+    if (name == "exact") return PoreMethod::Exact;
+    throw std::invalid_argument("option --pores: '" + std::string(name) +
+                                "' is not one of voxel, refined, exact");
+}
+
+std::string_view poreMethodName(PoreMethod method) {
+    switch (method) {
+    case PoreMethod::Voxel:
+        return "voxel";
+    case PoreMethod::Refined:
+        return "refined";
+    case PoreMethod::Exact:
+        return "exact";
+    }
+    return "?";
+}
+
+void PoreSizeSums::add(double delta, std::int64_t times) {
+    const double n = static_cast<double>(times), square = delta * delta;
+    count += times;
+    sum += n * delta;
+    sumSquares += n * square;
+    sumCubes += n * square * delta;
+    sumFourth += n * square * square;
+}
+
+void PoreSizeSums::add(const PoreSizeSums& other) {
+    count += other.count;
+    sum += other.sum;
+    sumSquares += other.sumSquares;
+    sumCubes += other.sumCubes;
+    sumFourth += other.sumFourth;
+}
+
+void setStandardErrors(PoreSizeDistributionResult& r, const PoreSizeSums& sums) {
+    if (sums.count < 2) {
+        r.meanStandardError = r.secondMomentStandardError = PoreSizeDistributionResult::kUnset;
+        return;
+    }
+    const double n = static_cast<double>(sums.count);
+    // Sample variances (n - 1) of delta and of delta^2; the standard error is sqrt(var / n).
+    const double varianceDelta =
+        std::max(0.0, (sums.sumSquares - sums.sum * sums.sum / n) / (n - 1));
+    const double varianceSquare =
+        std::max(0.0, (sums.sumFourth - sums.sumSquares * sums.sumSquares / n) / (n - 1));
+    r.meanStandardError = std::sqrt(varianceDelta / n);
+    r.secondMomentStandardError = std::sqrt(varianceSquare / n);
+}
+
+PoreSizeDistributionResult binnedPoreSizeStatistics(std::span<const std::int64_t> counts, double h,
+                                                    const PoreSizeSums& sums, double largest,
+                                                    double meanWidth, int densityBins) {
+    checkMeanWidth(meanWidth);
+    checkDensityBins(densityBins);
+    if (sums.count < 1 || !(h > 0.0) || !(largest > 0.0) || !std::isfinite(largest))
+        throw std::invalid_argument("pore sizes: a binned sample needs points, a positive bin "
+                                    "width and a positive, finite largest size");
+    std::size_t last = counts.size();
+    while (last > 0 && counts[last - 1] == 0)
+        --last;
+    if (last == 0 || static_cast<double>(last - 1) * h > largest ||
+        largest > last * h * (1 + 1e-12))
+        throw std::invalid_argument("pore sizes: the largest size is not in the last bin");
+    PoreSizeDistributionResult r;
+    r.meanWidth = meanWidth;
+    r.samples = sums.count;
+    r.parameters.densityBins = densityBins;
+    r.binWidth = h;
+    const auto total = static_cast<double>(sums.count);
+    std::int64_t remaining = sums.count;
+    r.delta = {0.0};
+    r.F = {1.0}; // every pore size is positive
+    for (std::size_t j = 0; j < last; ++j) {
+        if (j > 0) {
+            r.delta.push_back(static_cast<double>(j) * h);
+            r.F.push_back(static_cast<double>(remaining) / total); // Eq. 13 at the bin edge
+        }
+        remaining -= counts[j];
+    }
+    if (largest > r.delta.back()) {
+        r.delta.push_back(largest);
+        r.F.push_back(0.0);
+    } else {
+        r.F.back() = 0.0;
+    }
+    r.mean = sums.sum / total;                // Eq. 14
+    r.secondMoment = sums.sumSquares / total; // Eq. 15
+    r.max = largest;
+    r.saturated = r.max < 0.5 * meanWidth; // paper Sec. V A
+    const double width = r.max / densityBins;
+    std::vector<std::int64_t> histogram(densityBins, 0);
+    for (std::size_t j = 0; j < last; ++j)
+        histogram[std::min(densityBins - 1, static_cast<int>((static_cast<double>(j) + 0.5) * h /
+                                                             width))] += counts[j];
+    r.densityDelta.resize(densityBins);
+    r.density.resize(densityBins);
+    for (int b = 0; b < densityBins; ++b) {
+        r.densityDelta[b] = (b + 0.5) * width;
+        r.density[b] = static_cast<double>(histogram[b]) / (total * width);
+    }
+    return r;
+}
 
 std::vector<double> PoreSizeDistributionResult::deltaOverWidth() const {
     return scaled(delta, 1.0 / meanWidth);
@@ -53,9 +165,7 @@ PoreSizeDistributionResult poreSizeStatistics(std::span<const double> sizes,
         throw std::invalid_argument("pore sizes: " + std::to_string(sizes.size()) + " sizes and " +
                                     std::to_string(counts.size()) +
                                     " counts (need the same, at least one)");
-    if (densityBins < 1)
-        throw std::invalid_argument("pore sizes: densityBins = " + std::to_string(densityBins) +
-                                    " (need >= 1)");
+    checkDensityBins(densityBins);
     std::int64_t total = 0;
     for (std::size_t j = 0; j < sizes.size(); ++j) {
         if (!(std::isfinite(sizes[j]) && sizes[j] > 0.0) || (j > 0 && !(sizes[j] > sizes[j - 1])))
@@ -186,14 +296,18 @@ PoreSizeDistribution::fromHistogram(std::span<const std::int64_t> histogram, int
     checkMeanWidth(meanWidth);
     std::vector<double> sizes;
     std::vector<std::int64_t> counts;
+    PoreSizeSums sums;
     for (std::size_t n = 1; n < histogram.size(); ++n) // n = 0: solid voxels
         if (histogram[n] > 0) {
             sizes.push_back(voxelSize * std::sqrt(static_cast<double>(n)));
             counts.push_back(histogram[n]);
+            sums.add(sizes.back(), histogram[n]);
         }
     PoreSizeDistributionResult r =
         poreSizeStatistics(sizes, counts, meanWidth, parameters_.densityBins);
-    r.method = parameters_.randomPoints > 0 ? "random voxels" : "voxels";
+    const bool sampled = parameters_.randomPoints > 0;
+    if (sampled) setStandardErrors(r, sums);
+    r.method = sampled ? "random voxels" : "voxels";
     r.parameters = parameters_;
     r.voxels = voxels;
     r.voxelSize = voxelSize;

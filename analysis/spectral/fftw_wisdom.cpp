@@ -4,6 +4,8 @@
 
 #include <fftw3.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <mutex>
 #include <set>
@@ -33,6 +35,31 @@ std::string_view fftPlanningName(FftPlanning planning) {
         return "patient";
     }
     return "?";
+}
+
+std::string_view fftPlanSourceName(FftPlanSource source) {
+    switch (source) {
+    case FftPlanSource::Estimate:
+        return "estimate";
+    case FftPlanSource::Wisdom:
+        return "wisdom";
+    case FftPlanSource::OverBudget:
+        return "estimate (measuring predicted over the budget)";
+    case FftPlanSource::Measured:
+        return "measured";
+    case FftPlanSource::MeasuredBudget:
+        return "measured within the budget";
+    }
+    return "?";
+}
+
+double predictedPlanningSeconds(int voxels, FftPlanning planning) {
+    if (planning == FftPlanning::Estimate) return 0.0;
+    // 20 s at n = 300^3 (bench/RESULTS.md, "FFT planning"): c = 20 / (n log2 n).
+    constexpr double kSecondsPerPoint = 20.0 / (27e6 * 24.69);
+    const double n = std::pow(static_cast<double>(voxels), 3);
+    const double measure = kSecondsPerPoint * n * std::log2(std::max(n, 2.0));
+    return planning == FftPlanning::Patient ? 10.0 * measure : measure;
 }
 
 fs::path defaultWisdomFile() {

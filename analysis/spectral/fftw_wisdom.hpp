@@ -6,6 +6,7 @@
 #include "progress/progress.hpp"
 
 #include <filesystem>
+#include <limits>
 #include <string_view>
 
 namespace sbpack {
@@ -17,11 +18,34 @@ enum class FftPlanning { Estimate, Measure, Patient };
 FftPlanning fftPlanningFromName(std::string_view name);
 std::string_view fftPlanningName(FftPlanning planning);
 
+/// The default of --fft-planning-budget, seconds (README, "No hidden first-run costs").
+inline constexpr double kDefaultFftPlanningBudget = 2.0;
+
 struct FftSettings {
     FftPlanning planning = FftPlanning::Measure;
     /// Wisdom file read before planning and rewritten after; empty: none.
     std::filesystem::path wisdomFile;
+    /// Seconds that measure or patient planning may take when the wisdom has no plan: planning
+    /// predicted to take longer (predictedPlanningSeconds) falls back on estimate, and measuring
+    /// is cut off near the budget (fftw_set_timelimit, approximate). Infinite: no limit.
+    double planningBudget = kDefaultFftPlanningBudget;
 };
+
+/// Where a plan came from.
+enum class FftPlanSource {
+    Estimate,       ///< --fft-plan estimate: no measuring, no wisdom
+    Wisdom,         ///< the wisdom held a plan
+    OverBudget,     ///< no wisdom, and measuring was predicted over the budget: estimate
+    Measured,       ///< measured without a budget (no wisdom yet); kept as wisdom
+    MeasuredBudget, ///< measured, cut off near the budget (no wisdom yet); kept as wisdom
+};
+std::string_view fftPlanSourceName(FftPlanSource source);
+
+/// Predicted wall time of measure (or patient) planning of an M^3 real-to-complex transform
+/// without wisdom: c n log2 n with n = M^3, c calibrated on the reference machine
+/// (bench/RESULTS.md, "FFT planning": 20 s for a measured 300^3 plan on 2 threads), patient 10
+/// times measure; 0 for estimate.
+double predictedPlanningSeconds(int voxels, FftPlanning planning);
 
 /// $XDG_CACHE_HOME/sbpack/fftw-wisdom, else $HOME/.cache/sbpack/fftw-wisdom; empty if neither
 /// variable is set.

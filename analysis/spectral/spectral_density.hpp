@@ -52,6 +52,8 @@ struct SpectralDensityResult {
     /// Where the time went: FFTW planning, filling the grid with the indicator, the transform,
     /// the shell average, and the exact sphere path (0 unless p = 1); runtimeSeconds is all.
     double planSeconds = 0.0;
+    /// Where the FFT plan came from (the MPI transform: estimate or measured, no budget).
+    FftPlanSource planSource = FftPlanSource::Estimate;
     double fillSeconds = 0.0;
     double transformSeconds = 0.0;
     double shellSeconds = 0.0;

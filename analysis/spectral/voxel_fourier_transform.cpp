@@ -3,6 +3,7 @@
 #include <fftw3.h>
 #include <sys/mman.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <new>
@@ -29,6 +30,40 @@ unsigned plannerFlags(FftPlanning planning) {
 struct PlanDeleter {
     void operator()(fftw_plan_s* plan) const { fftw_destroy_plan(plan); }
 };
+using Plan = std::unique_ptr<fftw_plan_s, PlanDeleter>;
+
+/// The plan of an in-place M^3 r2c transform of `data`: from the wisdom if it holds one; else,
+/// when measuring is predicted to exceed the budget (predictedPlanningSeconds), an estimate
+/// plan; else measured, with FFTW's time limit at the budget as a backstop (FFTW then keeps the
+/// best plan found so far). FFTW_MEASURE overwrites the array.
+Plan planTransform(int m, double* data, const FftSettings& fft, FftPlanSource& source) {
+    auto plan = [&](unsigned flags) {
+        return Plan(
+            fftw_plan_dft_r2c_3d(m, m, m, data, reinterpret_cast<fftw_complex*>(data), flags));
+    };
+    const unsigned flags = plannerFlags(fft.planning);
+    if (fft.planning == FftPlanning::Estimate) {
+        source = FftPlanSource::Estimate;
+        return plan(flags);
+    }
+    if (Plan p = plan(flags | FFTW_WISDOM_ONLY)) {
+        source = FftPlanSource::Wisdom;
+        return p;
+    }
+    if (!std::isfinite(fft.planningBudget)) {
+        source = FftPlanSource::Measured;
+        return plan(flags);
+    }
+    if (predictedPlanningSeconds(m, fft.planning) > fft.planningBudget) {
+        source = FftPlanSource::OverBudget;
+        return plan(FFTW_ESTIMATE);
+    }
+    source = FftPlanSource::MeasuredBudget;
+    fftw_set_timelimit(std::max(fft.planningBudget, 0.0));
+    Plan p = plan(flags);
+    fftw_set_timelimit(FFTW_NO_TIMELIMIT);
+    return p;
+}
 
 } // namespace
 
@@ -59,12 +94,11 @@ VoxelFourierTransform::VoxelFourierTransform(const Voxelization& voxels, const F
     // Plan first: FFTW_MEASURE overwrites the array while it measures.
     Stopwatch clock;
     importWisdom(fft.wisdomFile, progress);
-    const std::unique_ptr<fftw_plan_s, PlanDeleter> plan(
-        fftw_plan_dft_r2c_3d(voxels_, voxels_, voxels_, data, reinterpret_cast<fftw_complex*>(data),
-                             plannerFlags(fft.planning)));
+    const Plan plan = planTransform(voxels_, data, fft, planSource_);
     if (!plan)
         throw std::runtime_error("FFTW: cannot plan a " + std::to_string(m) + "^3 transform");
-    if (fft.planning != FftPlanning::Estimate) exportWisdom(fft.wisdomFile, progress);
+    if (planSource_ == FftPlanSource::Measured || planSource_ == FftPlanSource::MeasuredBudget)
+        exportWisdom(fft.wisdomFile, progress);
     planSeconds_ = clock.seconds();
 
     clock = Stopwatch();

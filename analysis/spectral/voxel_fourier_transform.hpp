@@ -14,8 +14,9 @@ namespace sbpack {
 
 class VoxelFourierTransform {
   public:
-    /// Plans (with the wisdom of fft.wisdomFile), fills the indicator and transforms. FFTW
-    /// uses the threads of the current ThreadBudget. Throws std::bad_alloc if the grid cannot be
+    /// Plans (with the wisdom of fft.wisdomFile; without a plan there, measuring within
+    /// fft.planningBudget), fills the indicator and transforms. FFTW uses the threads of the
+    /// current ThreadBudget. Throws std::bad_alloc if the grid cannot be
     /// allocated and std::runtime_error if FFTW cannot plan.
     VoxelFourierTransform(const Voxelization& voxels, const FftSettings& fft,
                           const Progress& progress);
@@ -40,6 +41,7 @@ class VoxelFourierTransform {
     static double memoryBytes(int voxels);
 
     double planSeconds() const { return planSeconds_; }
+    FftPlanSource planSource() const { return planSource_; }
     double fillSeconds() const { return fillSeconds_; }
     double transformSeconds() const { return transformSeconds_; }
 
@@ -51,6 +53,7 @@ class VoxelFourierTransform {
     int halfLength_; ///< M / 2 + 1 complex numbers per row
     std::unique_ptr<double, Free> data_;
     double planSeconds_ = 0.0, fillSeconds_ = 0.0, transformSeconds_ = 0.0;
+    FftPlanSource planSource_ = FftPlanSource::Estimate;
 };
 
 } // namespace sbpack

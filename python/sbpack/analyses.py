@@ -59,7 +59,8 @@ class _Analysis:
 
 
 _COMMON = ("threads",)
-_FFT = ("voxels", "qmax", "fft_plan", "fft_wisdom")
+_FFT = ("voxels", "qmax", "fft_plan", "fft_planning_budget", "fft_wisdom")
+_PORES = ("pore_voxels", "pores", "pore_points", "pore_seed")
 
 
 class Contacts(_Analysis):
@@ -81,15 +82,16 @@ class SpectralDensity(_Analysis):
 
 
 class PoreSizes(_Analysis):
-    """F(delta), P(delta), <delta>, <delta^2> on the pore grid (--compute pores)."""
+    """F(delta), P(delta), <delta>, <delta^2> by pores="voxel", "refined" or "exact"
+    (--compute pores --pores ...)."""
     _compute, _group = "pores", "pore_size"
-    _options = _COMMON + ("pore_voxels", "pore_points")
+    _options = _COMMON + _PORES
 
 
 class Transport(_Analysis):
     """k, tau, T1 from the pore sizes (--compute transport; the pore sizes come with it)."""
     _compute, _group = "transport", "transport"
-    _options = _COMMON + ("pore_voxels", "pore_points")
+    _options = _COMMON + _PORES
 
 
 class Hyperuniformity(_Analysis):

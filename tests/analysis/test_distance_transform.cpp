@@ -13,6 +13,7 @@
 #include <limits>
 #include <random>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace sbpack {
@@ -104,6 +105,56 @@ TEST(DistanceTransform, LargerSparseGridsTakeBothLineAlgorithmsExactly) {
         ASSERT_GT(std::count(mask.begin(), mask.end(), 1), 150);
         ASSERT_EQ(asVector(periodicDistanceTransform(mask, m, 1.0)), bruteForce(mask, m))
             << "M = " << m;
+    }
+}
+
+/// Every feature is a solid voxel at exactly the voxel's transformed (minimum-image) distance, a
+/// solid voxel's feature is itself, and the distances are those of the plain transform.
+void expectFeaturesConsistent(const std::vector<std::uint8_t>& mask, int m) {
+    const PoreSizeMap plain = periodicDistanceTransform(mask, m, 1.0);
+    const PoreSizeMap map = periodicFeatureTransform(mask, m, 1.0);
+    ASSERT_TRUE(map.hasFeatures());
+    EXPECT_FALSE(plain.hasFeatures());
+    EXPECT_TRUE(plain.features().empty());
+    ASSERT_EQ(asVector(map), asVector(plain)) << "M = " << m;
+    for (int i = 0; i < m; ++i)
+        for (int j = 0; j < m; ++j)
+            for (int k = 0; k < m; ++k) {
+                const std::int64_t v = indexOf(m, i, j, k);
+                const std::int64_t f = map.features()[v];
+                ASSERT_NE(mask[f], 0) << "M = " << m << ": feature of " << v << " is void";
+                const int fi = static_cast<int>(f / (std::int64_t{m} * m));
+                const int fj = static_cast<int>((f / m) % m), fk = static_cast<int>(f % m);
+                ASSERT_EQ(wrappedSquare(i - fi, m) + wrappedSquare(j - fj, m) +
+                              wrappedSquare(k - fk, m),
+                          map.squaredDistances()[v])
+                    << "M = " << m << " at " << i << ' ' << j << ' ' << k;
+                if (mask[v] != 0) ASSERT_EQ(f, v);
+            }
+}
+
+TEST(FeatureTransform, NearestSolidVoxelOnRandomGridsBothLineAlgorithms) {
+    std::mt19937_64 generator(77);
+    for (const int m : {2, 7, 16, 17})
+        for (const double fraction : {0.02, 0.3, 0.9}) {
+            std::vector<std::uint8_t> mask = randomMask(m, fraction, generator);
+            mask.front() = 1; // at least one solid and one void voxel
+            mask.back() = 0;
+            expectFeaturesConsistent(mask, m);
+        }
+    // Sparse grids: envelope lines (values above 32^2) and columns without solid.
+    for (const int m : {80, 81})
+        expectFeaturesConsistent(randomMask(m, 0.0004, generator), m);
+}
+
+TEST(FeatureTransform, RefusesGridsWhoseIndicesOverflow) {
+    const std::vector<std::uint8_t> mask(8, 1);
+    try {
+        periodicFeatureTransform(mask, maxFeatureTransformVoxels + 1, 1.0);
+        FAIL() << "no exception";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("feature transform: M = 1626"), std::string::npos)
+            << e.what();
     }
 }
 

@@ -89,7 +89,21 @@ TEST(CommandLine, ParsesTheAnalysisOptions) {
     EXPECT_EQ(s.fft.planning, FftPlanning::Estimate);
     EXPECT_TRUE(s.fft.wisdomFile.empty());
     EXPECT_TRUE(s.quiet);
+    const RunSettings pores =
+        parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--pores", "exact", "--pore-points", "1000",
+                               "--fft-planning-budget", "0.5"});
+    EXPECT_EQ(pores.poreMethod, PoreMethod::Exact);
+    EXPECT_EQ(pores.porePoints, 1000);
+    EXPECT_DOUBLE_EQ(pores.fft.planningBudget, 0.5);
+    EXPECT_EQ(pores.grids(), std::set<VoxelGrid>{VoxelGrid::Spectral}); // exact needs no grid
+    EXPECT_EQ(parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--pores", "refined"}).poreMethod,
+              PoreMethod::Refined);
+    EXPECT_TRUE(
+        std::isinf(parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--fft-planning-budget", "none"})
+                       .fft.planningBudget));
     const RunSettings defaults = parseAnalyzeArguments({"a.h5", "--out", "r.h5"});
+    EXPECT_EQ(defaults.poreMethod, PoreMethod::Voxel);
+    EXPECT_DOUBLE_EQ(defaults.fft.planningBudget, kDefaultFftPlanningBudget);
     EXPECT_EQ(defaults.voxels, 300);
     EXPECT_DOUBLE_EQ(defaults.maxQw, 30.0);
     EXPECT_EQ(defaults.analyses, resolveAnalyses("all"));
@@ -101,6 +115,9 @@ TEST(CommandLine, ParsesTheAnalysisOptions) {
           {"a.h5", "--qmax", "-3"},
           {"a.h5", "--compute", "pores?"},
           {"a.h5", "--fft-plan", "quick"},
+          {"a.h5", "--pores", "fast"},
+          {"a.h5", "--pore-points", "-1"},
+          {"a.h5", "--fft-planning-budget", "-1"},
           {"a.h5", "--bogus"},
           {"a.h5", "--out"},
           {"a.h5", "--tolerance", "-1"}})

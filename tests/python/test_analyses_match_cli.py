@@ -17,6 +17,7 @@ ANALYSES = [
     (sbpack.StructureFactor, "sq", {"qmax": 20}),
     (sbpack.SpectralDensity, "chi", {}),
     (sbpack.PoreSizes, "pores", {}),
+    (sbpack.PoreSizes, "pores", {"pores": "refined"}),
     (sbpack.Transport, "transport", {}),
     (sbpack.Hyperuniformity, "hyper", {}),
 ]

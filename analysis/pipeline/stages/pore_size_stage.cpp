@@ -1,26 +1,47 @@
-// pores: F(delta) on the pore grid (--pore-voxels) by the exact periodic distance transform;
-// the result is kept for transport, the pore-size map optionally exported.
+// pores: F(delta) by the method of --pores: on the pore grid (--pore-voxels) by the exact periodic
+// distance transform (voxel), refined to each void voxel centre's distance to the nearest surface
+// (refined), or from random points without voxels (exact); the result is kept for transport, the
+// pore-size map optionally exported.
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
 #include "pores/distance_transform.hpp"
+#include "pores/exact_pore_size.hpp"
 #include "pores/pore_size_distribution.hpp"
+#include "pores/refined_pore_size.hpp"
 #include "voxels/voxelization.hpp"
 
 #include <fmt/format.h>
 
+#include <cmath>
+#include <optional>
 #include <vector>
 
 namespace sbpack::stages {
 
-StageMemory poreSizesMemory(const Packing&, const RunSettings& settings) {
-    return {static_cast<double>(poreSizeMemoryBytes(settings.poreVoxels)),
-            fmt::format("pore-size map {}^3", settings.poreVoxels)};
+StageMemory poreSizesMemory(const Packing& packing, const RunSettings& settings) {
+    const int m = settings.poreVoxels;
+    switch (settings.poreMethod) {
+    case PoreMethod::Exact: {
+        const std::int64_t k =
+            settings.porePoints > 0 ? settings.porePoints : RunSettings::kDefaultExactPorePoints;
+        return {static_cast<double>(k) * 2.0 * sizeof(double) +
+                    static_cast<double>(packing.size()) * 100.0,
+                fmt::format("exact pore sizes of {} points", k)};
+    }
+    case PoreMethod::Refined:
+        return {static_cast<double>(poreSizeMemoryBytes(m)) + 4.0 * m * m * static_cast<double>(m),
+                fmt::format("pore-size map and feature transform {}^3", m)};
+    case PoreMethod::Voxel:
+        break;
+    }
+    return {static_cast<double>(poreSizeMemoryBytes(m)), fmt::format("pore-size map {}^3", m)};
 }
 
 namespace {
 
-/// The pore-size map of the packing on an M^3 grid (the solid mask is released on return).
-PoreSizeMap poreSizeMap(const FileContext& context, int m) {
+/// The pore-size map of the packing on an M^3 grid, with the feature transform when asked (the
+/// solid mask is released on return).
+PoreSizeMap poreSizeMap(const FileContext& context, int m, bool features) {
     checkPoreSizeMemory(m);
     std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m);
     double voxelSize = 0.0;
@@ -33,10 +54,50 @@ PoreSizeMap poreSizeMap(const FileContext& context, int m) {
             fmt::format("{}^3, phi_voxel = {}", m, describe(voxels.phiVoxel())));
     }
     const Stopwatch clock;
-    PoreSizeMap map = periodicDistanceTransform(mask, m, voxelSize);
-    context.progress().stageDone("distance transform", clock.seconds(),
-                                 fmt::format("{} void voxels", map.voidCount()));
+    PoreSizeMap map = features ? periodicFeatureTransform(mask, m, voxelSize)
+                               : periodicDistanceTransform(mask, m, voxelSize);
+    context.progress().stageDone(features ? "distance and feature transform" : "distance transform",
+                                 clock.seconds(), fmt::format("{} void voxels", map.voidCount()));
     return map;
+}
+
+/// The pore sizes by the run's method; `map` is filled unless the method is exact.
+PoreSizeDistributionResult measurePores(const FileContext& context,
+                                        std::optional<PoreSizeMap>& map) {
+    const RunSettings& s = context.settings();
+    if (s.poreMethod == PoreMethod::Exact) {
+        ExactPoreSizeParameters parameters;
+        parameters.randomPoints =
+            s.porePoints > 0 ? s.porePoints : RunSettings::kDefaultExactPorePoints;
+        parameters.seed = s.poreSeed;
+        return ExactPoreSizeDistribution(parameters).compute(context.packing());
+    }
+    const bool refined = s.poreMethod == PoreMethod::Refined;
+    map.emplace(poreSizeMap(context, s.poreVoxels, refined));
+    PoreSizeParameters parameters;
+    parameters.randomPoints = s.porePoints;
+    parameters.seed = s.poreSeed;
+    if (refined)
+        return RefinedPoreSizeDistribution(parameters)
+            .compute(*map, context.packing(), context.progress());
+    return PoreSizeDistribution(parameters).compute(*map, context.meanWidth());
+}
+
+/// The progress line's detail: the moment, the largest pore, and what bounds the error.
+std::string poreDetail(const PoreSizeDistributionResult& pores) {
+    std::string detail = fmt::format("<delta>/w = {}", describe(pores.meanOverWidth()));
+    if (std::isfinite(pores.meanStandardError))
+        detail += fmt::format(" +- {}", describe(pores.meanStandardError / pores.meanWidth));
+    detail += fmt::format(", max/w = {}{}", describe(pores.maxOverWidth()),
+                          pores.saturated ? " (saturated)" : " (NOT below w/2)");
+    if (std::isfinite(pores.errorBound))
+        detail += fmt::format(", certified to {:.1e} w", pores.errorBound / pores.meanWidth);
+    return detail;
+}
+
+/// Sets a field that only some methods fill (NaN: not written).
+void setIfFinite(schema::Record& record, std::string_view name, double value) {
+    if (std::isfinite(value)) record.set(name, value);
 }
 
 void setPoreSizes(schema::Record& record, const PoreSizeDistributionResult& s) {
@@ -59,6 +120,12 @@ void setPoreSizes(schema::Record& record, const PoreSizeDistributionResult& s) {
         .set("P", s.density)
         .set("P_delta_w", s.densityDeltaOverWidth())
         .set("P_w", s.densityTimesWidth());
+    setIfFinite(record, "max_sampled", s.maxSampled);
+    setIfFinite(record, "max_upper_bound", s.maxUpperBound);
+    setIfFinite(record, "error_bound", s.errorBound);
+    setIfFinite(record, "mean_stderr", s.meanStandardError);
+    setIfFinite(record, "second_moment_stderr", s.secondMomentStandardError);
+    setIfFinite(record, "bin_width", s.binWidth);
 }
 
 /// --distribute grids: F(delta) of the slabs' distance transform (pipeline/distributed_grids.hpp).
@@ -81,19 +148,14 @@ bool runDistributedPoreSizes(FileContext& context, schema::Record& record) {
 
 bool runPoreSizes(FileContext& context, schema::Record& record) {
     if (context.grids() != nullptr) return runDistributedPoreSizes(context, record);
-    const PoreSizeMap map = poreSizeMap(context, context.settings().poreVoxels);
-    PoreSizeParameters parameters;
-    parameters.randomPoints = context.settings().porePoints;
-    PoreSizeDistributionResult pores =
-        PoreSizeDistribution(parameters).compute(map, context.meanWidth());
+    std::optional<PoreSizeMap> map;
+    PoreSizeDistributionResult pores = measurePores(context, map);
     context.progress().stageDone(
-        "pore sizes", pores.runtimeSeconds,
-        fmt::format("<delta>/w = {}, max/w = {}{}", describe(pores.meanOverWidth()),
-                    describe(pores.maxOverWidth()),
-                    pores.saturated ? " (saturated)" : " (NOT below w/2)"));
-    if (const VdbExport* vdb = context.vdbExport(Analysis::PoreSizes)) {
+        fmt::format("pore sizes ({})", poreMethodName(context.settings().poreMethod)),
+        pores.runtimeSeconds, poreDetail(pores));
+    if (const VdbExport* vdb = context.vdbExport(Analysis::PoreSizes); vdb != nullptr && map) {
         const Stopwatch clock;
-        vdb->output->write(map.vdbImage());
+        vdb->output->write(map->vdbImage());
         context.progress().stageDone("pore vdb export", clock.seconds(), vdb->destination.string());
     }
     setPoreSizes(record, pores);

@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
+#include <string>
 
 namespace sbpack::stages {
 
@@ -34,17 +36,28 @@ void report(const Progress& progress, const SpectralDensityResult& chi) {
     progress.stageDone("spectral density", chi.runtimeSeconds, detail);
 }
 
-} // namespace
-
-namespace {
+/// " (measuring predicted P s, budget B s)" when measured planning is limited
+/// (--fft-planning-budget) and the wisdom had no plan.
+std::string budgetNote(const FftSettings& fft, int voxels, FftPlanSource source) {
+    if (source != FftPlanSource::OverBudget && source != FftPlanSource::MeasuredBudget) return "";
+    return fmt::format(" (measuring predicted {} s, budget {} s)",
+                       describe(predictedPlanningSeconds(voxels, fft.planning), 2),
+                       describe(fft.planningBudget, 3));
+}
 
 /// chi of the kept whole voxelization; the voxel spectrum kept for hyper.
 SpectralDensityResult wholeGrid(FileContext& context, const SpectralDensityParameters& parameters) {
     const Voxelization& voxels = context.kept<Voxelization>(Analysis::Voxels);
     const VoxelFourierTransform transform(voxels, parameters.fft, context.progress());
+    context.progress().stageDone(
+        "FFT plan", transform.planSeconds(),
+        fmt::format("{}^3, {}: {}{}", transform.voxels(), fftPlanningName(parameters.fft.planning),
+                    fftPlanSourceName(transform.planSource()),
+                    budgetNote(parameters.fft, transform.voxels(), transform.planSource())));
     SpectralDensityResult s =
         SpectralDensity(parameters)
             .compute(context.packing(), voxels, transform, context.progress());
+    s.planSource = transform.planSource();
     if (context.settings().runs(Analysis::Hyperuniformity))
         context.keep(Analysis::SpectralDensity,
                      KeptSpectrum{voxelSpectrum(transform, voxels, context.meanWidth(), {}),
@@ -74,6 +87,8 @@ bool runSpectralDensity(FileContext& context, schema::Record& record) {
         .set("max_shell", s.maxShell)
         .set("fft_planning", fftPlanningName(s.parameters.fft.planning))
         .set("fft_plan_s", s.planSeconds)
+        .set("fft_plan_source", std::string(fftPlanSourceName(s.planSource)))
+        .set("fft_planning_budget_s", s.parameters.fft.planningBudget)
         .set("fft_s", s.fillSeconds + s.transformSeconds)
         .set("shell_average_s", s.shellSeconds)
         .set("runtime_s", s.runtimeSeconds);

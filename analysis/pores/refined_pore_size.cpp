@@ -1,0 +1,262 @@
+#include "pores/refined_pore_size.hpp"
+
+#include "contacts/cell_list.hpp"
+#include "parallel/parallel.hpp"
+#include "pores/largest_pore.hpp"
+#include "pores/random_points.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sbpack {
+
+VoxelRefiner::VoxelRefiner(const ExactPoreSizes& pores, double maxPoreSize)
+    : pores_(pores), spheres_(pores.isSphere()) {
+    const double boxLength = pores.boxLength();
+    const double range = (2.0 * pores.circumradius() + 2.0 * maxPoreSize) * (1.0 + 1e-12);
+    if (!(range <= 0.5 * boxLength)) return; // a small box: the general search
+    range_ = range;
+    const int n = pores.size();
+    std::vector<Vector3d> positions(n);
+    for (int j = 0; j < n; ++j)
+        positions[j] = pores.position(j);
+    std::vector<std::vector<Neighbour>> lists(n);
+    forEachNeighbourPair(positions, boxLength, range, [&](int i, int j, const Vector3d& d) {
+        lists[i].push_back({d.norm(), j, d}); // d = r_j - r_i
+        lists[j].push_back({d.norm(), i, -d});
+    });
+    start_.assign(n + 1, 0);
+    for (int j = 0; j < n; ++j) {
+        std::sort(lists[j].begin(), lists[j].end(),
+                  [](const Neighbour& a, const Neighbour& b) { return a.distance < b.distance; });
+        start_[j + 1] = start_[j] + static_cast<int>(lists[j].size());
+    }
+    neighbours_.reserve(start_.back());
+    for (const auto& list : lists)
+        neighbours_.insert(neighbours_.end(), list.begin(), list.end());
+}
+
+SurfaceDistance VoxelRefiner::poreSize(const Vector3d& x, int feature) const {
+    if (feature < 0 || range_ == 0.0) return pores_.poreSizeBounds(x);
+    const double rc = pores_.circumradius();
+    const Vector3d df = image(x - pores_.position(feature));
+    SurfaceDistance best = pores_.particleDistance(feature, df);
+    const double centre = df.norm();
+    if (best.upper + rc + centre > range_) return pores_.poreSizeBounds(x); // beyond the lists
+    for (int a = start_[feature]; a < start_[feature + 1]; ++a) {
+        const Neighbour& neighbour = neighbours_[a];
+        if (neighbour.distance >= best.upper + rc + centre) break;
+        const Vector3d d = df - neighbour.offset; // x minus the neighbour's centre
+        const double reach = best.upper + rc;
+        if (d.squaredNorm() >= reach * reach) continue; // |d| - r_c >= best: cannot be nearer
+        if (!spheres_ && pores_.distanceLowerBound(neighbour.particle, d) >= best.upper) continue;
+        const SurfaceDistance next = pores_.particleDistance(neighbour.particle, d);
+        best = {std::min(best.lower, next.lower), std::min(best.upper, next.upper)};
+    }
+    return best;
+}
+
+int VoxelRefiner::particleContaining(const Vector3d& s, int hint) const {
+    if (hint >= 0 && range_ > 0.0) {
+        const Vector3d d = image(s - pores_.position(hint));
+        if (pores_.inside(hint, d)) return hint;
+        // A particle containing s has its centre within r_c of s, so within |d| + r_c of hint's.
+        const double reach = d.norm() + pores_.circumradius();
+        for (int a = start_[hint]; a < start_[hint + 1] && neighbours_[a].distance < reach; ++a)
+            if (pores_.inside(neighbours_[a].particle, d - neighbours_[a].offset))
+                return neighbours_[a].particle;
+    }
+    return pores_.particleContaining(s);
+}
+
+namespace {
+
+/// F(delta) is binned at a / kBinsPerVoxel.
+constexpr int kBinsPerVoxel = 256;
+/// Start points of the largest pore's maximisation: the largest, and the largest at least
+/// kStartSeparation voxels apart.
+constexpr int kLargestStarts = 16;
+constexpr double kStartSeparation = 4.0;
+
+/// What one chunk of voxels accumulates.
+struct Tally {
+    Tally(std::size_t bins, double separation)
+        : histogram(bins, 0), top(kLargestStarts, 0.0), spread(kLargestStarts, separation) {}
+    std::vector<std::int64_t> histogram;
+    PoreSizeSums sums;
+    double largest = 0.0;
+    double errorBound = 0.0;
+    LargestPoints top;    ///< the largest points
+    LargestPoints spread; ///< the largest of distinct pores
+
+    void add(const Tally& other) {
+        for (std::size_t b = 0; b < histogram.size(); ++b)
+            histogram[b] += other.histogram[b];
+        sums.add(other.sums);
+        largest = std::max(largest, other.largest);
+        errorBound = std::max(errorBound, other.errorBound);
+        top.offer(other.top);
+        spread.offer(other.spread);
+    }
+};
+
+/// The refinement of one pass over voxels: the particle of each feature voxel (remembered for
+/// the next voxel, which often shares it), its refined pore size, the tally.
+class VoxelPass {
+  public:
+    VoxelPass(const PoreSizeMap& map, const ExactPoreSizes& pores, const VoxelRefiner& refiner)
+        : map_(map), pores_(pores), refiner_(refiner), m_(map.voxels()), a_(map.voxelSize()),
+          h_(a_ / kBinsPerVoxel) {}
+
+    double binWidth() const { return h_; }
+
+    /// Refines void voxel v = (i * M + j) * M + k into the tally.
+    void refine(std::int64_t v, const Vector3d& x, Tally& tally) {
+        const std::uint32_t feature = map_.features()[v];
+        if (feature != lastFeature_) {
+            lastFeature_ = feature;
+            lastParticle_ = refiner_.particleContaining(centre(feature), lastParticle_);
+        }
+        const SurfaceDistance d = refiner_.poreSize(x, lastParticle_);
+        const auto bin = std::min<std::size_t>(tally.histogram.size() - 1,
+                                               static_cast<std::size_t>(d.upper / h_));
+        ++tally.histogram[bin];
+        tally.sums.add(d.upper);
+        tally.largest = std::max(tally.largest, d.upper);
+        tally.errorBound = std::max(tally.errorBound, d.upper - d.lower);
+        tally.top.offer(d.upper, x);
+        tally.spread.offer(d.upper, x);
+    }
+
+    /// Refines every void voxel of the planes [first, last) into the tally.
+    void refinePlanes(std::int64_t first, std::int64_t last, Tally& tally) {
+        const std::int64_t m = m_;
+        const std::uint32_t* squared = map_.squaredDistances().data();
+        for (std::int64_t i = first; i < last; ++i)
+            for (std::int64_t j = 0; j < m; ++j) {
+                const std::int64_t row = (i * m + j) * m;
+                Vector3d x((static_cast<double>(i) + 0.5) * a_, (static_cast<double>(j) + 0.5) * a_,
+                           0.0);
+                for (std::int64_t k = 0; k < m; ++k)
+                    if (squared[row + k] != 0) {
+                        x.z() = (static_cast<double>(k) + 0.5) * a_;
+                        refine(row + k, x, tally);
+                    }
+            }
+    }
+
+    /// The centre of voxel v.
+    Vector3d centre(std::int64_t v) const {
+        const std::int64_t m = m_;
+        const std::int64_t i = v / (m * m), j = (v / m) % m, k = v % m; // voxel indices
+        return Vector3d((static_cast<double>(i) + 0.5) * a_, (static_cast<double>(j) + 0.5) * a_,
+                        (static_cast<double>(k) + 0.5) * a_);
+    }
+
+  private:
+    const PoreSizeMap& map_;
+    const ExactPoreSizes& pores_;
+    const VoxelRefiner& refiner_;
+    int m_;
+    double a_, h_;
+    std::uint32_t lastFeature_ = 0xffffffffu;
+    int lastParticle_ = -1;
+};
+
+} // namespace
+
+RefinedPoreSizeDistribution::RefinedPoreSizeDistribution(PoreSizeParameters parameters)
+    : parameters_(parameters) {
+    static_cast<void>(PoreSizeDistribution(parameters)); // the same checks
+}
+
+namespace {
+
+/// Refines every void voxel, or K random void voxels, into one tally per chunk (fixed chunks:
+/// the result does not depend on the threads); the tallies summed in order.
+Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const VoxelRefiner& refiner,
+                  const PoreSizeParameters& parameters, std::size_t bins,
+                  const Progress& progress) {
+    const int m = map.voxels();
+    const double separation = kStartSeparation * map.voxelSize();
+    const std::int64_t total = static_cast<std::int64_t>(m) * m * m;
+    const std::uint32_t* squared = map.squaredDistances().data();
+    const bool sampled = parameters.randomPoints > 0;
+    const std::int64_t planesPerChunk = std::max<std::int64_t>(1, m / 64);
+    const std::int64_t chunks =
+        sampled ? (parameters.randomPoints + kRandomPointChunk - 1) / kRandomPointChunk
+                : (m + planesPerChunk - 1) / planesPerChunk;
+    std::vector<Tally> tallies(chunks, Tally(bins, separation));
+    parallelFor(
+        0, chunks, 1,
+        [&](std::int64_t begin, std::int64_t end) {
+            VoxelPass pass(map, pores, refiner);
+            for (std::int64_t c = begin; c < end; ++c) {
+                progress.checkInterrupt();
+                if (!sampled) {
+                    pass.refinePlanes(c * planesPerChunk,
+                                      std::min<std::int64_t>(m, (c + 1) * planesPerChunk),
+                                      tallies[c]);
+                    continue;
+                }
+                // Uniform random voxels, kept where void (as PoreSizeDistribution).
+                std::mt19937_64 generator = chunkGenerator(parameters.seed, c);
+                const std::int64_t points =
+                    std::min(kRandomPointChunk, parameters.randomPoints - c * kRandomPointChunk);
+                for (std::int64_t n = 0; n < points;) {
+                    const auto v = std::min<std::int64_t>(
+                        total - 1, static_cast<std::int64_t>(uniform01(generator) *
+                                                             static_cast<double>(total)));
+                    if (squared[v] == 0) continue;
+                    pass.refine(v, pass.centre(v), tallies[c]);
+                    ++n;
+                }
+            }
+        },
+        parameters.serial);
+    Tally all(bins, separation);
+    for (const Tally& t : tallies)
+        all.add(t);
+    return all;
+}
+
+} // namespace
+
+PoreSizeDistributionResult RefinedPoreSizeDistribution::compute(const PoreSizeMap& map,
+                                                                const Packing& packing,
+                                                                const Progress& progress) const {
+    const Stopwatch clock;
+    if (!map.hasFeatures())
+        throw std::invalid_argument("refined pore sizes: the map has no feature transform "
+                                    "(periodicFeatureTransform)");
+    if (std::abs(map.boxLength() - packing.boxLength) > 1e-9 * packing.boxLength)
+        throw std::invalid_argument("refined pore sizes: the map is not of this packing's box");
+    const ExactPoreSizes pores(packing);
+    const double a = map.voxelSize();
+    // Voxel distances bound the pore sizes: a feature voxel's centre is inside a particle.
+    const double maxPore = a * std::sqrt(static_cast<double>(map.maxSquaredDistance()));
+    const auto bins = static_cast<std::size_t>(std::ceil(maxPore / a * kBinsPerVoxel)) + 2;
+    const Tally all =
+        tallyVoxels(map, pores, VoxelRefiner(pores, maxPore), parameters_, bins, progress);
+    PoreSizeDistributionResult r =
+        binnedPoreSizeStatistics(all.histogram, a / kBinsPerVoxel, all.sums, all.largest,
+                                 packing.shape().meanWidth(), parameters_.densityBins);
+    const bool sampled = parameters_.randomPoints > 0;
+    r.method = sampled ? "random voxels refined" : "refined";
+    r.parameters = parameters_;
+    r.voxels = map.voxels();
+    r.voxelSize = a;
+    r.errorBound = all.errorBound;
+    r.maxSampled = all.largest;
+    if (sampled)
+        setStandardErrors(r, all.sums);
+    else
+        r.maxUpperBound = all.largest + 0.5 * std::sqrt(3.0) * a;
+    r.max = std::max(r.maxSampled, largestPore(pores, all.top, all.spread, 0.5 * a).size);
+    r.saturated = r.max < 0.5 * r.meanWidth; // paper Sec. V A
+    r.runtimeSeconds = clock.seconds();
+    return r;
+}
+
+} // namespace sbpack
