@@ -129,7 +129,9 @@ void expectFeaturesConsistent(const std::vector<std::uint8_t>& mask, int m) {
                               wrappedSquare(k - fk, m),
                           map.squaredDistances()[v])
                     << "M = " << m << " at " << i << ' ' << j << ' ' << k;
-                if (mask[v] != 0) ASSERT_EQ(f, v);
+                if (mask[v] != 0) {
+                    ASSERT_EQ(f, v);
+                }
             }
 }
 
