@@ -1,10 +1,10 @@
 #include "hyperuniformity/spreadability_exponent.hpp"
 
 #include "parallel/parallel.hpp"
+#include "random/random.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -25,8 +25,8 @@ class PoissonOne {
             p /= k + 1;
         }
     }
-    int operator()(std::mt19937_64& random) const {
-        const double u = std::uniform_real_distribution<double>(0.0, 1.0)(random);
+    int operator()(Random& random) const {
+        const double u = random.uniform();
         int k = 0;
         while (k + 1 < kSize && u >= cumulative_[k])
             ++k;
@@ -40,7 +40,7 @@ class PoissonOne {
 
 /// One replica of `s` (its sums only): each individually listed wave vector counted a
 /// Poisson(1) number of times.
-DiscreteSpectrum resampled(const DiscreteSpectrum& s, std::mt19937_64& random) {
+DiscreteSpectrum resampled(const DiscreteSpectrum& s, Random& random) {
     static const PoissonOne poisson;
     DiscreteSpectrum r;
     r.boxLength = s.boxLength;
@@ -61,7 +61,7 @@ DiscreteSpectrum resampled(const DiscreteSpectrum& s, std::mt19937_64& random) {
 /// alpha of replica r (its own stream: the same for any number of threads).
 double replicaExponent(std::span<const DiscreteSpectrum> members, const ExponentWindow& window,
                        std::uint64_t seed, int r) {
-    std::mt19937_64 random(seed * 1000003u + static_cast<std::uint64_t>(r));
+    Random random = Random::stream(seed, r);
     std::vector<DiscreteSpectrum> replica;
     replica.reserve(members.size());
     for (const DiscreteSpectrum& s : members)

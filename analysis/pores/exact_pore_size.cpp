@@ -3,6 +3,7 @@
 #include "parallel/parallel.hpp"
 #include "pores/largest_pore.hpp"
 #include "pores/random_points.hpp"
+#include "random/random.hpp"
 
 #include <algorithm>
 #include <array>
@@ -324,7 +325,7 @@ std::vector<SampleChunk> sampleVoid(const ExactPoreSizes& pores,
         0, chunks, 1,
         [&](std::int64_t begin, std::int64_t end) {
             for (std::int64_t c = begin; c < end; ++c) {
-                std::mt19937_64 generator = chunkGenerator(parameters.seed, c);
+                Random generator = Random::stream(parameters.seed, c);
                 const std::int64_t points = std::min(kRandomPointChunk, k - c * kRandomPointChunk);
                 SampleChunk& chunk = local[c];
                 chunk.sizes.reserve(points);
@@ -336,7 +337,7 @@ std::vector<SampleChunk> sampleVoid(const ExactPoreSizes& pores,
                                                 " random points (the particles fill the box)");
                     Vector3d x;
                     for (int a = 0; a < 3; ++a)
-                        x[a] = length * uniform01(generator);
+                        x[a] = length * generator.uniform();
                     const SurfaceDistance delta = pores.poreSizeBounds(x);
                     if (!(delta.upper > 0.0)) continue; // inside a particle: draw again
                     chunk.sizes.push_back(delta.upper);

@@ -2,6 +2,7 @@
 
 #include "parallel/parallel.hpp"
 #include "pores/random_points.hpp"
+#include "random/random.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -258,12 +259,12 @@ PoreSizeDistributionResult PoreSizeDistribution::compute(const PoreSizeMap& map,
                 if (sampled) {
                     // Uniform random points of the box, kept where their voxel is void: each
                     // void voxel equally likely (the paper's sampling, Sec. III B).
-                    std::mt19937_64 generator = chunkGenerator(parameters_.seed, c);
+                    Random generator = Random::stream(parameters_.seed, c);
                     const std::int64_t points = std::min(
                         kRandomPointChunk, parameters_.randomPoints - c * kRandomPointChunk);
                     for (std::int64_t n = 0; n < points;) {
                         const auto index = std::min<std::int64_t>(
-                            total - 1, static_cast<std::int64_t>(uniform01(generator) *
+                            total - 1, static_cast<std::int64_t>(generator.uniform() *
                                                                  static_cast<double>(total)));
                         if (squared[index] == 0) continue; // solid voxel: draw again
                         ++histogram[squared[index]];

@@ -4,6 +4,7 @@
 #include "parallel/parallel.hpp"
 #include "pores/largest_pore.hpp"
 #include "pores/random_points.hpp"
+#include "random/random.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -201,12 +202,12 @@ Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const Vox
                     continue;
                 }
                 // Uniform random voxels, kept where void (as PoreSizeDistribution).
-                std::mt19937_64 generator = chunkGenerator(parameters.seed, c);
+                Random generator = Random::stream(parameters.seed, c);
                 const std::int64_t points =
                     std::min(kRandomPointChunk, parameters.randomPoints - c * kRandomPointChunk);
                 for (std::int64_t n = 0; n < points;) {
                     const auto v = std::min<std::int64_t>(
-                        total - 1, static_cast<std::int64_t>(uniform01(generator) *
+                        total - 1, static_cast<std::int64_t>(generator.uniform() *
                                                              static_cast<double>(total)));
                     if (squared[v] == 0) continue;
                     pass.refine(v, pass.centre(v), tallies[c]);
