@@ -104,8 +104,8 @@ JamCheck checkJam(const Packing& packing, double reducedPressure,
     if (!(reducedPressure > 0.0))
         throw std::invalid_argument("jam check: reduced pressure must be positive");
     JamCheck check;
-    check.tolerance =
-        std::max(parameters.minTolerance, parameters.gapsPerPressure / reducedPressure);
+    check.tolerance = std::clamp(parameters.gapsPerPressure / reducedPressure,
+                                 parameters.minTolerance, parameters.maxTolerance);
     check.contacts =
         ContactNetwork({check.tolerance, parameters.rattlerThreshold}).compute(packing);
     check.jammed = check.contacts.rattlerFraction <= parameters.maxRattlerFraction;

@@ -14,9 +14,12 @@
 namespace sbpack {
 
 struct JamCheckParameters {
-    /// The contact tolerance at reduced pressure P is max(minTolerance, gapsPerPressure / P).
+    /// The contact tolerance at reduced pressure P is max(minTolerance, gapsPerPressure / P) ...
     double minTolerance = 1e-10;
     double gapsPerPressure = 100.0;
+    /// ... and at most maxTolerance: a gap of 1 % of D is no contact at any pressure (below
+    /// P = 1e4 the check cannot call anything jammed that is not in contact to within that).
+    double maxTolerance = 1e-2;
     /// Jammed only if at most this fraction of the particles are rattlers.
     double maxRattlerFraction = 0.1;
     int rattlerThreshold = 4;

@@ -23,9 +23,9 @@ usage: sbgen --out FILE.h5 [options]
 
 constexpr const char* kFooter =
     R"(No jam is declared from the pressure alone: at --pressure-final the contact network must hold
-(at most 10 % rattlers at gaps below max(1e-10, 100 / P) D), and a pressure carried by a chain
-of particles that wraps around the periodic box (columns of near-cubes in small boxes) ends the
-run early. Such an output is still written, with provenance jammed = 0 and the reason.
+(at most 10 % rattlers at gaps below 100 / P D, clamped to [1e-10, 1e-2] D), and a pressure
+carried by a chain of particles that wraps around the periodic box (columns of near-cubes in
+small boxes) ends the run early. Such an output is still written, with provenance jammed = 0 and the reason.
 
 Exit status: 0 jammed; 1 bad input or error; 3 written but not jammed; 128 + signal when
 SIGINT or SIGTERM wrote a checkpoint (to --checkpoint, else OUT with .checkpoint.h5). A signal

@@ -48,6 +48,18 @@ TEST(JamCheck, TheToleranceFollowsThePressure) {
     EXPECT_THROW(checkJam(lattice, 0.0), std::invalid_argument);
 }
 
+// At low pressure 100 / P would reach past half the box (sbgen --pressure-final 10 failed in its
+// final check: the cell list refused the range); the tolerance stops at 1e-2 D.
+TEST(JamCheck, AtLowPressureTheToleranceStopsAtOnePercentOfD) {
+    const Packing lattice = readTextPacking(kData + "/fcc-spheres.txt");
+    for (const double pressure : {10.0, 1.0, 1e-3}) {
+        const JamCheck check = checkJam(lattice, pressure);
+        EXPECT_EQ(check.tolerance, 1e-2);
+        EXPECT_TRUE(check.jammed) << check.verdict; // fcc touches: every sphere has 12 contacts
+    }
+    EXPECT_DOUBLE_EQ(checkJam(lattice, 1e5).tolerance, 1e-3);
+}
+
 TEST(JamCheck, AColumnWrappingAroundTheBoxIsNoJam) {
     const Packing packing = column(4);
     const JamCheck check = checkJam(packing, 1e12);
