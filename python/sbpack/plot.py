@@ -72,10 +72,13 @@ def spectral_density(runs, axes):
     ylabel = r"$\tilde\chi_V(Q)/\bar w^3$ (dimensionless)"
     main.set(xlabel=r"$Q\bar w$ (dimensionless)", ylabel=ylabel,
              title="Spectral density (voxels, shell averages)")
-    small.xaxis.set_major_locator(ticker.FixedLocator([0.1, 0.2, 0.5, 1, 2, 5, 10]))
-    for axis in (small.xaxis, small.yaxis):
-        axis.set_major_formatter(ticker.FormatStrFormatter("%g"))
-        axis.set_minor_formatter(ticker.NullFormatter())
+    small.xaxis.set_major_locator(ticker.FixedLocator([0.1, 0.2, 0.3, 0.5, 1, 1.5, 2, 3, 4, 5, 10]))
+    small.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
+    small.xaxis.set_minor_formatter(ticker.NullFormatter())
+    # chi at small Q often spans less than a decade: then the 2..9 subdivisions are labelled too
+    # (else the axis has no number at all), in the decades' own notation.
+    for formatter in (small.yaxis.set_major_formatter, small.yaxis.set_minor_formatter):
+        formatter(ticker.LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(1.5, 0.5)))
     small.set(xlabel=r"$Q\bar w$ (dimensionless)", ylabel=ylabel,
               title=r"Small $Q$ and the fit ($Q\bar w \leq$ fit-qmax dotted)" if fitted
               else r"Small $Q$ (no hyper results: no fit)")
