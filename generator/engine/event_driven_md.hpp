@@ -48,7 +48,8 @@ struct EngineParameters {
     /// Lists are built for diameters up to D (1 + growthMargin); the engine synchronises and
     /// rebuilds them when the growing diameter gets there.
     double growthMargin = 0.02;
-    /// Neighbour-list skin in units of D: a particle is relisted after moving skin D / 2.
+    /// Neighbour-list skin in units of D: a particle is relisted after moving skin D / 2 (the
+    /// protocol sets it from the packing fraction: neighbourSkin).
     double skin = 0.1;
 };
 
@@ -111,6 +112,12 @@ template <class Shape> class EventDrivenMd {
     }
     void setGrowthRate(double gamma) {
         clock_.setRate(gamma);
+        dirty_ = true;
+    }
+    /// The neighbour-list skin (units of D) of the next rebuild (neighbourSkin).
+    void setSkin(double skin) {
+        if (skin == parameters_.skin) return;
+        parameters_.skin = skin;
         dirty_ = true;
     }
 

@@ -3,8 +3,16 @@
 #include "packing/packing.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace sbpack {
+
+double neighbourSkin(double packingFraction) {
+    const double phi = std::clamp(packingFraction, 1e-3, 0.9);
+    const double contact = (1.0 - 0.5 * phi) / std::pow(1.0 - phi, 3);
+    const double freePath = 1.0 / (6.0 * std::sqrt(2.0) * phi * contact);
+    return std::clamp(5.0 * freePath, 0.1, 0.5);
+}
 
 NeighbourLists::NeighbourLists(double boxLength, double reach, std::vector<Eigen::Vector3d> anchors)
     : box_(boxLength), reach_(reach), grid_(boxLength, reach, static_cast<int>(anchors.size())),

@@ -129,6 +129,7 @@ void ProtocolParameters::validate() const {
 JammingProtocol::JammingProtocol(const ProtocolParameters& parameters)
     : parameters_((parameters.validate(), parameters)), engine_(freshEngine<Engine>(parameters)) {
     status_.packingFraction = packingFraction();
+    adaptSkin();
 }
 
 JammingProtocol::JammingProtocol(const Packing& packing, const std::string& source)
@@ -176,6 +177,13 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
         if (packing.p != 1.0) state[i].angularVelocity = packing.angularVelocities[i];
     }
     engine_ = makeEngine<Engine>(packing.p, packing.boxLength, std::move(state), clock);
+    adaptSkin(); // as the run that wrote the checkpoint did at the end of its window
+}
+
+void JammingProtocol::adaptSkin() {
+    // From the engine's own diameter, so that a resumed run picks the same skin bit for bit.
+    const double skin = neighbourSkin(packingFraction());
+    std::visit([&](auto& engine) { engine.setSkin(skin); }, engine_);
 }
 
 void JammingProtocol::setPressureFinal(double pressure) {
@@ -250,6 +258,7 @@ void JammingProtocol::finishWindow(double virial, double duration) {
         std::min(previous, status_.reducedPressure) >= parameters_.pressureFinal)
         status_.phase = Phase::Done;
     status_.packingFraction = packingFraction();
+    adaptSkin();
 }
 
 void JammingProtocol::watchJam(std::uint64_t participants) {

@@ -120,6 +120,9 @@ class JammingProtocol {
     void finishWindow(double virial, double duration);
     /// After a window in which `participants` particles collided: the jam check at the final
     /// pressure, or when a subset has carried the pressure for a while.
+    /// The neighbour-list skin for the current packing fraction (neighbourSkin), for the next
+    /// window's rebuild.
+    void adaptSkin();
     void watchJam(std::uint64_t participants);
     /// phi = N v1 / L^3 at the current diameter.
     double packingFraction() const;

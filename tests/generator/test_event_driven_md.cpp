@@ -3,10 +3,12 @@
 #include "engine/event_driven_md.hpp"
 #include "geometry/superball.hpp"
 #include "initial/random_start.hpp"
+#include "neighbours/neighbour_lists.hpp"
 #include "shapes/sphere.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace sbpack {
@@ -41,6 +43,22 @@ double smallestGap(const Engine& engine) {
                            minimumImage(s[j].position - s[i].position, engine.boxLength()).norm() -
                                engine.diameter());
     return gap / engine.diameter();
+}
+
+// The skin is five Carnahan-Starling mean free paths, D / (6 sqrt(2) phi g), g = (1 - phi/2) /
+// (1 - phi)^3, within [0.1, 0.5] D: wide in the dilute start, the old fixed 0.1 near jamming.
+TEST(NeighbourSkin, FiveMeanFreePathsWithinItsBounds) {
+    for (const double phi : {0.25, 0.3, 0.4, 0.5}) {
+        const double g = (1.0 - 0.5 * phi) / std::pow(1.0 - phi, 3);
+        const double expected = std::clamp(5.0 / (6.0 * std::sqrt(2.0) * phi * g), 0.1, 0.5);
+        EXPECT_NEAR(neighbourSkin(phi), expected, 1e-15) << "phi " << phi;
+    }
+    EXPECT_EQ(neighbourSkin(0.05), 0.5);
+    EXPECT_EQ(neighbourSkin(0.2), 0.5);
+    EXPECT_EQ(neighbourSkin(0.6), 0.1);
+    EXPECT_EQ(neighbourSkin(0.74), 0.1);
+    for (double phi = 0.01; phi < 0.9; phi += 0.01)
+        EXPECT_GE(neighbourSkin(phi), neighbourSkin(phi + 0.01)) << "not monotone at " << phi;
 }
 
 TEST(EventDrivenMd, TwoGrowingSpheresCollideAtTheExactTimeAndSwapNormalVelocity) {
