@@ -77,6 +77,7 @@ class CommandLine {
     void addAnalysisOptions();
     void addDistributionOptions();
     void addGridOptions();
+    void addFftOptions();
     void addOutputOptions();
     void addHyperuniformityOptions();
     void addSubcommands();
@@ -219,6 +220,11 @@ void CommandLine::addGridOptions() {
             "the grid's Nyquist limit |n| < M/2")
         ->type_name("X");
     addHyperuniformityOptions();
+    addFftOptions();
+}
+
+void CommandLine::addFftOptions() {
+    RunSettings& s = settings_;
     app_.add_option_function<std::string>(
             "--fft-plan", [&s](const std::string& v) { s.fft.planning = fftPlanningFromName(v); },
             "FFTW planning: estimate, measure (default) or patient; measured plans are kept\n"
