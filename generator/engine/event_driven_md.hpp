@@ -6,27 +6,27 @@
 // leaves its neighbour-list sphere; a collision is stale when the partner's event counter has moved
 // on since the prediction.
 //
-// Rotating shapes (Shape::kRotates) also carry an orientation and a constant angular velocity
-// between collisions; each pair keeps the predictor's memory (its last contact normal as the warm
-// start, and a lower bound on that normal's plane gap, usable while neither particle's motion has
-// changed since), and each prediction is asked only up to the earliest event of the two
-// particles (a later contact would be stale by then, and the particle predicted last before it
-// finds it). A prediction that hits its work limit schedules a recheck of the particle instead
-// of a collision.
+// The shape (shapes/shape.hpp, one concept: spheres simply do not rotate) advances orientations,
+// orders and answers the predictions, finds the contact and applies the impulse. Each pair keeps
+// what the shape's predictor remembers of it (engine/pair_memories.hpp: for superballs the last
+// contact normal as the warm start, and a lower bound on that normal's plane gap, usable while
+// neither particle's motion has changed since), and each prediction is asked only up to the
+// earliest event of the two particles (a later contact would be stale by then, and the particle
+// predicted last before it finds it). A prediction that hits its work limit schedules a recheck
+// of the particle instead of a collision.
 //
 // Particles are advanced lazily (each has its own time stamp). run() ends synchronised: every
 // particle is advanced to the final time, wrapped into [0, L), and that time becomes the new time
 // origin, folded into the growth clock. The synchronised state plus the clock is the whole state:
 // rebuilding the events from it is deterministic, which makes checkpoints exact.
 
-#include "engine/collision_resolver.hpp"
 #include "engine/growth_clock.hpp"
-#include "engine/pair_table.hpp"
+#include "engine/pair_memories.hpp"
 #include "events/event_queue.hpp"
 #include "neighbours/neighbour_lists.hpp"
 #include "packing/packing.hpp"
 #include "shapes/pair_motion.hpp"
-#include "shapes/sphere.hpp"
+#include "shapes/shape.hpp"
 
 #include <algorithm>
 #include <csignal>
@@ -36,13 +36,6 @@
 #include <vector>
 
 namespace sbpack {
-
-struct ParticleState {
-    Vector3d position;
-    Vector3d velocity;
-    Quaterniond orientation = Quaterniond::Identity(); ///< body to lab
-    Vector3d angularVelocity = Vector3d::Zero();       ///< lab frame
-};
 
 struct EngineParameters {
     /// Lists are built for diameters up to D (1 + growthMargin); the engine synchronises and
@@ -67,7 +60,7 @@ struct RunReport {
     bool interrupted = false;
 };
 
-template <class Shape> class EventDrivenMd {
+template <EngineShape Shape> class EventDrivenMd {
   public:
     EventDrivenMd(Shape shape, double boxLength, std::vector<ParticleState> particles,
                   GrowthClock clock, EngineParameters parameters = {})
@@ -81,6 +74,8 @@ template <class Shape> class EventDrivenMd {
     /// The synchronised particles (valid between runs).
     const std::vector<ParticleState>& particles() const { return state_; }
     const Shape& shape() const { return shape_; }
+    /// The predictor's counters since the last call.
+    PredictorStats takePredictorStats() { return shape_.takeStats(); }
 
     /// Translational kT = m <v^2> / 3 with m = 1.
     double kineticTemperature() const {
@@ -91,14 +86,10 @@ template <class Shape> class EventDrivenMd {
     }
     /// Rotational kT = I <omega^2> / 3 (0 for shapes that do not rotate).
     double rotationalTemperature() const {
-        if constexpr (!Shape::kRotates) {
-            return 0.0;
-        } else {
-            double sum = 0.0;
-            for (const ParticleState& s : state_)
-                sum += s.angularVelocity.squaredNorm();
-            return shape_.inertiaPerMass(diameter()) * sum / (3.0 * size());
-        }
+        double sum = 0.0;
+        for (const ParticleState& s : state_)
+            sum += s.angularVelocity.squaredNorm();
+        return shape_.inertiaPerMass(diameter()) * sum / (3.0 * size());
     }
     void scaleVelocities(double factor) {
         for (ParticleState& s : state_)
@@ -175,8 +166,7 @@ template <class Shape> class EventDrivenMd {
     void advance(int i, double t) {
         ParticleState& s = state_[i];
         s.position += s.velocity * (t - time_[i]);
-        if constexpr (Shape::kRotates)
-            s.orientation = advancedOrientation(s.orientation, s.angularVelocity, t - time_[i]);
+        s.orientation = shape_.turned(s.orientation, s.angularVelocity, t - time_[i]);
         time_[i] = t;
     }
 
@@ -189,51 +179,13 @@ template <class Shape> class EventDrivenMd {
         m.relativeVelocity = state_[j].velocity - state_[i].velocity;
         m.diameter = clock_.diameter(t);
         m.growthRate = clock_.rate;
-        if constexpr (Shape::kRotates) {
-            m.orientationI =
-                advancedOrientation(state_[i].orientation, state_[i].angularVelocity, t - time_[i]);
-            m.orientationJ =
-                advancedOrientation(state_[j].orientation, state_[j].angularVelocity, t - time_[j]);
-            m.angularVelocityI = state_[i].angularVelocity;
-            m.angularVelocityJ = state_[j].angularVelocity;
-        }
+        shape_.orient(m, state_[i], t - time_[i], state_[j], t - time_[j]);
         return m;
     }
 
     std::uint64_t pairKey(int i, int j) const {
         return static_cast<std::uint64_t>(std::min(i, j)) * state_.size() +
                static_cast<std::uint64_t>(std::max(i, j));
-    }
-
-    /// What the engine keeps of a pair between predictions (rotating shapes only): the
-    /// predictor's memory as seen from the lower index, when it was left and both particles'
-    /// event counters then.
-    struct PairRecord {
-        PairMemory memory;
-        double time = 0.0;
-        std::uint64_t counterLow = 0, counterHigh = 0;
-    };
-    /// Valid until the next pairRecord() (the table may grow and move its records).
-    PairRecord& pairRecord(int i, int j) { return pairs_[pairKey(i, j)]; }
-
-    /// The pair's memory in `record` for a prediction of i against j at time t, as seen from i:
-    /// its gap bound moved on to t while both particles still fly as they did when it was left
-    /// (their counters unchanged, or advanced by one collision at t itself), else dropped.
-    PairMemory recalled(const PairRecord& record, int i, int j, double t) const {
-        auto unchanged = [&](int k, std::uint64_t counter) {
-            return counter_[k] == counter || (counter_[k] == counter + 1 && changedAt_[k] == t);
-        };
-        const auto [low, high] = std::minmax(i, j);
-        PairMemory memory = unchanged(low, record.counterLow) && unchanged(high, record.counterHigh)
-                                ? record.memory.after(t - record.time)
-                                : record.memory.normalOnly();
-        if (i > j) memory.normal = -memory.normal;
-        return memory;
-    }
-    PairRecord remembered(int i, int j, double t, PairMemory memory) const {
-        if (i > j) memory.normal = -memory.normal;
-        const auto [low, high] = std::minmax(i, j);
-        return {memory, t, counter_[low], counter_[high]};
     }
 
     void schedule(int i) { queue_.set(i, std::min(collision_[i].time, exit_[i])); }
@@ -244,46 +196,24 @@ template <class Shape> class EventDrivenMd {
         const double limit =
             std::min(std::min(collision_[i].time, exit_[i]), std::min(queue_.time(j), horizon_));
         const bool resolved = t == resolvedAt_ && pairKey(i, j) == resolvedPair_;
-        Prediction next;
-        if constexpr (Shape::kRotates) {
-            PairRecord& record = pairRecord(i, j);
-            PairMemory memory = recalled(record, i, j, t);
-            next = shape_.collisionTime(m, limit - t, memory, resolved);
-            record = remembered(i, j, t, memory);
-        } else {
-            next = {shape_.collisionTime(m)}; // exact: touching and separating gives +inf
-        }
+        const Prediction next =
+            memories_.predictWith(i, j, t, {counter_, changedAt_}, [&](auto& memory) {
+                return shape_.collisionTime(m, limit - t, memory, resolved);
+            });
         const double when = t + next.time;
         if (when < collision_[i].time)
             collision_[i] = next.contact ? PredictedCollision{when, j, counter_[j]}
                                          : PredictedCollision{when, -1, 0};
     }
 
-    /// i's earliest collision with any listed neighbour, predicted at time t. Rotating shapes
-    /// take the neighbours in the order in which their inscribed spheres would touch (by then
-    /// the bodies certainly have): the earliest contact tends to come first, and the horizon it
-    /// sets lets the cheap tiers reject the rest (exact evaluations per collision 15.7 -> 14.0
-    /// at p = 1.5).
+    /// i's earliest collision with any listed neighbour, predicted at time t, the neighbours
+    /// asked in the shape's order.
     void predict(int i, double t) {
         collision_[i] = {};
         const std::vector<int>& list = lists_.of(i);
-        if constexpr (Shape::kRotates) {
-            motions_.clear();
-            order_.clear();
-            for (int k = 0; k < static_cast<int>(list.size()); ++k) {
-                motions_.push_back(motion(i, list[k], t));
-                PairMotion inscribed = motions_.back();
-                inscribed.diameter *= shape_.inscribedRatio();
-                inscribed.growthRate *= shape_.inscribedRatio();
-                order_.emplace_back(SphereShape{}.collisionTime(inscribed), k);
-            }
-            std::sort(order_.begin(), order_.end());
-            for (const auto& [touch, k] : order_)
-                consider(i, list[k], t, motions_[k]);
-        } else {
-            for (const int j : list)
-                consider(i, j, t, motion(i, j, t));
-        }
+        shape_.inPredictionOrder(
+            static_cast<int>(list.size()), [&](int k) { return motion(i, list[k], t); },
+            [&](int k, const PairMotion& m) { consider(i, list[k], t, m); });
         schedule(i);
     }
 
@@ -318,23 +248,10 @@ template <class Shape> class EventDrivenMd {
         advance(i, t);
         advance(j, t);
         const PairMotion m = motion(i, j, t);
-        if constexpr (Shape::kRotates) {
-            const double sign = i < j ? 1.0 : -1.0;
-            PairRecord& record = pairRecord(i, j);
-            Vector3d normal = sign * record.memory.normal;
-            const PairContact contact = shape_.contact(m, normal);
-            record.memory = {sign * normal}; // a new normal: its gap bound is unknown
-            const double impulse =
-                resolveCollision(m, contact, shape_.inertiaPerMass(m.diameter),
-                                 {state_[i].velocity, state_[i].angularVelocity},
-                                 {state_[j].velocity, state_[j].angularVelocity});
-            report.virial += impulse * contact.normal.dot(m.displacement);
-        } else {
-            const PairContact contact = shape_.contact(m);
-            const double impulse =
-                resolveCollision(m, contact, state_[i].velocity, state_[j].velocity);
-            report.virial += impulse * contact.normal.dot(m.displacement);
-        }
+        const PairContact contact =
+            memories_.collideWith(i, j, [&](auto& memory) { return shape_.contact(m, memory); });
+        const double impulse = shape_.resolve(m, contact, state_[i], state_[j]);
+        report.virial += impulse * contact.normal.dot(m.displacement);
         ++report.collisions;
         for (const int k : {i, j})
             if (collidedInRun_[k] != run_) {
@@ -376,7 +293,7 @@ template <class Shape> class EventDrivenMd {
             anchors[i] = state_[i].position;
         lists_ = NeighbourLists(box_, shape_.circumscribedRatio() * maximum + 2.0 * exitRadius_,
                                 std::move(anchors));
-        pairs_.clear(); // a rebuild is a deterministic function of the synchronised state
+        memories_.reset(size()); // a rebuild is a deterministic function of the synchronised state
         resolvedAt_ = -kNever;
         time_.assign(size(), 0.0);
         counter_.assign(size(), 0);
@@ -403,11 +320,9 @@ template <class Shape> class EventDrivenMd {
     std::vector<PredictedCollision> collision_;
     std::vector<double> exit_;      ///< time each particle leaves its neighbour-list sphere
     std::vector<double> changedAt_; ///< time of each particle's last collision
-    PairTable<PairRecord> pairs_;
+    PairMemories<typename Shape::Memory> memories_;
     std::uint64_t run_ = 0;                     ///< serial number of the current run()
     std::vector<std::uint64_t> collidedInRun_;  ///< the last run() each particle collided in
-    std::vector<PairMotion> motions_;           ///< predict()'s scratch: each neighbour's motion
-    std::vector<std::pair<double, int>> order_; ///< and when its inscribed spheres touch
     double horizon_ = kNever;
     double exitRadius_ = 0.0;
     /// The last collision's pair and time: its predictions at that time start separated.

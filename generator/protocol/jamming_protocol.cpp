@@ -161,7 +161,7 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
     status_.relists = counterValue(packing, "relists", source);
     status_.staleEvents = counterValue(packing, "stale_events", source);
     status_.rechecks = optionalCounter(packing, "rechecks", source);
-    for (const auto& [name, counter] : SuperballPredictorStats::kCounters)
+    for (const auto& [name, counter] : PredictorStats::kCounters)
         status_.predictor.*counter = static_cast<long>(optionalCounter(packing, name, source));
     status_.windows = counterValue(packing, "windows", source);
     status_.subsetWindows =
@@ -210,10 +210,8 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
         status_.relists += report.relists;
         status_.staleEvents += report.staleEvents;
         status_.rechecks += report.rechecks;
-        if (auto* superballs = std::get_if<EventDrivenMd<SuperballShape>>(&engine_)) {
-            status_.predictor += superballs->shape().stats;
-            superballs->shape().stats = {};
-        }
+        std::visit([&](auto& engine) { status_.predictor += engine.takePredictorStats(); },
+                   engine_);
         status_.wallSeconds += std::chrono::duration<double>(Clock::now() - start).count();
         status_.cpuSeconds += static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
         if (report.interrupted) return false;
@@ -325,7 +323,7 @@ Packing JammingProtocol::checkpoint() const {
     log["events"] = static_cast<std::int64_t>(status_.collisions + status_.relists +
                                               status_.staleEvents + status_.rechecks);
     if (parameters_.p != 1.0)
-        for (const auto& [name, counter] : SuperballPredictorStats::kCounters)
+        for (const auto& [name, counter] : PredictorStats::kCounters)
             log[name] = static_cast<std::int64_t>(status_.predictor.*counter);
     log["windows"] = static_cast<std::int64_t>(status_.windows);
     log["wall_time_s"] = status_.wallSeconds;

@@ -80,7 +80,7 @@ struct ProtocolStatus {
     std::uint64_t staleEvents = 0;
     std::uint64_t rechecks = 0; ///< superball predictions that stopped at a safe time
     std::uint64_t windows = 0;
-    SuperballPredictorStats predictor; ///< the superball predictor's work, summed over the run
+    PredictorStats predictor; ///< the superball predictor's work, summed over the run
     /// Windows in a row, past the switch pressure, in which fewer than half the particles
     /// collided: the pressure may come from a subset (then the jam is checked).
     std::int64_t subsetWindows = 0;

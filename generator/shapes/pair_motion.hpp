@@ -12,6 +12,15 @@ namespace sbpack {
 using Eigen::Quaterniond;
 using Eigen::Vector3d;
 
+/// One body's state: the engine's particle, and what a shape advances (spheres keep their
+/// orientation and have no angular velocity).
+struct ParticleState {
+    Vector3d position;
+    Vector3d velocity;
+    Quaterniond orientation = Quaterniond::Identity(); ///< body to lab
+    Vector3d angularVelocity = Vector3d::Zero();       ///< lab frame
+};
+
 /// Two identical bodies i and j at the current time.
 struct PairMotion {
     Vector3d displacement = Vector3d::Zero();     ///< r_j - r_i (minimum image)
@@ -59,6 +68,10 @@ struct PairMemory {
     /// The normal alone (a particle's motion has changed: the gap bound no longer holds).
     PairMemory normalOnly() const { return {normal}; }
 };
+
+/// What a shape whose exact predictor needs nothing from a pair's last prediction keeps of it
+/// (the sphere): nothing (engine/pair_memories.hpp stores no record for it).
+struct NoPairMemory {};
 
 /// Where two touching bodies meet.
 struct PairContact {

@@ -1,9 +1,11 @@
 #pragma once
-// The sphere as a shape of the event-driven engine: an exact quadratic predictor and the contact
-// of two spheres. Every shape answers the same two questions for a pair in the pair's local frame
-// (docs/design.md §2-3): when do the two growing, moving bodies first touch, and where.
+// The sphere as a shape of the event-driven engine (shapes/shape.hpp): an exact quadratic
+// predictor and the contact of two spheres, in the pair's local frame (docs/design.md §2-3).
+// Spheres do not rotate and their predictor remembers nothing of a pair.
 
+#include "shapes/collision_resolver.hpp"
 #include "shapes/pair_motion.hpp"
+#include "shapes/predictor_stats.hpp"
 
 #include <cmath>
 #include <limits>
@@ -11,9 +13,27 @@
 namespace sbpack {
 
 struct SphereShape {
-    static constexpr bool kRotates = false;
+    using Memory = NoPairMemory;
+
     /// Circumradius over semi-axis: sizes the neighbour lists.
     double circumscribedRatio() const { return 1.0; }
+    double inscribedRatio() const { return 1.0; }
+    /// I / m = 2 R^2 / 5 of a solid sphere of diameter D (unused: spheres do not spin).
+    double inertiaPerMass(double diameter) const { return 0.1 * diameter * diameter; }
+
+    /// Spheres keep their orientation.
+    Quaterniond turned(const Quaterniond& q, const Vector3d& /*omega*/, double /*tau*/) const {
+        return q;
+    }
+    void orient(PairMotion& /*m*/, const ParticleState& /*i*/, double /*tauI*/,
+                const ParticleState& /*j*/, double /*tauJ*/) const {}
+
+    /// The neighbours in list order (each prediction is exact and cheap).
+    template <class MotionOf, class Consider>
+    void inPredictionOrder(int count, MotionOf&& motionOf, Consider&& consider) const {
+        for (int k = 0; k < count; ++k)
+            consider(k, motionOf(k));
+    }
 
     /// Earliest tau >= 0 with |d + w tau| = D + gamma tau for d = r_j - r_i, w = v_j - v_i:
     /// a tau^2 + 2 b tau + c = 0 with a = w.w - gamma^2, b = d.w - D gamma, c = d.d - D^2,
@@ -29,6 +49,11 @@ struct SphereShape {
         if (a >= 0.0 && (b >= 0.0 || discriminant < 0.0)) return never;
         return c / (-b + std::sqrt(discriminant));
     }
+    /// The engine's form: exact, so beyond the horizon too (touching and separating: +inf).
+    Prediction collisionTime(const PairMotion& m, double /*horizon*/, Memory& /*memory*/,
+                             bool /*resolved*/) {
+        return {collisionTime(m)};
+    }
 
     /// Contact of touching spheres: normal from i to j along the centre line, contact point at
     /// the midpoint (arms from each centre).
@@ -37,6 +62,15 @@ struct SphereShape {
         const Vector3d n = m.displacement / distance;
         return {n, 0.5 * distance * n, -0.5 * distance * n, distance};
     }
+    PairContact contact(const PairMotion& m, Memory& /*memory*/) { return contact(m); }
+
+    /// The impulse along the centre line (no torque).
+    double resolve(const PairMotion& m, const PairContact& c, ParticleState& i,
+                   ParticleState& j) const {
+        return resolveCollision(m, c, i.velocity, j.velocity);
+    }
+
+    PredictorStats takeStats() { return {}; }
 };
 
 } // namespace sbpack

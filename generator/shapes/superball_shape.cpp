@@ -180,7 +180,7 @@ bool insideBoth(const SuperballPair& pair, const Vector3d& x) {
 /// Newton again from the face normal of either body with the largest plane gap (better than
 /// the unconverged `warm`'s); kept when it converges or ends higher.
 void restartFromFaces(const SuperballPair& pair, WarmNewton& warm,
-                      const SuperballPredictorLimits& limits, SuperballPredictorStats& stats,
+                      const SuperballPredictorLimits& limits, PredictorStats& stats,
                       const PairRates* rates) {
     Vector3d best = Vector3d::Zero();
     double bestGap = warm.result.signedDistance;
@@ -213,7 +213,7 @@ void restartFromFaces(const SuperballPair& pair, WarmNewton& warm,
 /// one) and costs a fraction of the robust solver's scale factor and search over 0.6 rad.
 std::optional<SignedDistanceResult> localMaximum(const SuperballPair& pair, const Vector3d& n,
                                                  const SuperballPredictorLimits& limits,
-                                                 SuperballPredictorStats& stats) {
+                                                 PredictorStats& stats) {
     ++stats.localSearches;
     const LocalMaximum local =
         tangentMaximum(pair, n, limits.localSearchRadius, limits.localSearchResolution,
@@ -234,7 +234,7 @@ std::optional<SignedDistanceResult> localMaximum(const SuperballPair& pair, cons
 /// With `rates`, Newton's converged answers also carry the normal's rate (else it is zero).
 WarmNewton exactSignedDistance(const SuperballPair& pair, Vector3d& normal, double boundSuffices,
                                const SuperballPredictorLimits& limits,
-                               SuperballPredictorStats& stats, const PairRates* rates = nullptr) {
+                               PredictorStats& stats, const PairRates* rates = nullptr) {
     WarmNewton warm =
         newtonSignedDistance(pair, normal.isZero(0.0) ? pair.displacement.normalized() : normal,
                              limits.newtonSteps, rates);
@@ -272,7 +272,7 @@ WarmNewton exactSignedDistance(const SuperballPair& pair, Vector3d& normal, doub
 class PairTrajectory {
   public:
     PairTrajectory(const PairMotion& m, double p, Vector3d& normal,
-                   const SuperballPredictorLimits& limits, SuperballPredictorStats& stats)
+                   const SuperballPredictorLimits& limits, PredictorStats& stats)
         : m_(m), p_(p), normal_(normal), limits_(limits), stats_(stats) {}
 
     Sample at(double tau) {
@@ -313,7 +313,7 @@ class PairTrajectory {
     double p_;
     Vector3d& normal_;
     const SuperballPredictorLimits& limits_;
-    SuperballPredictorStats& stats_;
+    PredictorStats& stats_;
     double lastTau_ = 0.0;
     Vector3d normalRate_ = Vector3d::Zero(); ///< of normal_ at lastTau_ (zero: unknown)
 };
@@ -361,7 +361,7 @@ class PairPrediction {
   public:
     PairPrediction(const PairMotion& m, double p, double c, double lever, SphereWindow window,
                    Vector3d& normal, const SuperballPredictorLimits& limits,
-                   SuperballPredictorStats& stats)
+                   PredictorStats& stats)
         : m_(m), p_(p), c_(c), growth_(std::max(m.growthRate, 0.0)), end_(window.end),
           leverBound_(lever * 0.5 * (m.diameter + growth_ * window.end)),
           radiusBound_(c * 0.5 * (m.diameter + growth_ * window.end)), limits_(limits),
@@ -438,7 +438,7 @@ class PairPrediction {
     double end_; ///< no contact is looked for beyond (shortened to an uncertified root)
     double leverBound_, radiusBound_;
     const SuperballPredictorLimits& limits_;
-    SuperballPredictorStats& stats_;
+    PredictorStats& stats_;
     PairTrajectory trajectory_;
     double touching_, near_;
     int steps_ = 0;
@@ -615,7 +615,7 @@ double SuperballShape::inertiaPerMass(double diameter) const {
 // normal (after a rebuild) tries the centre line's. Either bound, with this motion's rate, is
 // left for the next prediction. Tier 3: conservative advancement on exact s (PairPrediction).
 Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, PairMemory& memory,
-                                         bool resolved) const {
+                                         bool resolved) {
     ++stats.calls;
     Vector3d& normal = memory.normal;
     const double remembered = memory.gap;
@@ -648,10 +648,12 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Pa
     return prediction.advance(window->enter, normal, cached, resolved, memory);
 }
 
-PairContact SuperballShape::contact(const PairMotion& m, Vector3d& normal) const {
+PairContact SuperballShape::contact(const PairMotion& m, PairMemory& memory) {
+    Vector3d& normal = memory.normal;
     const SuperballPair pair{Superball(p_, 0.5 * m.diameter), m.orientationI.toRotationMatrix(),
                              m.orientationJ.toRotationMatrix(), m.displacement};
     const SignedDistanceResult r = exactSignedDistance(pair, normal, kNever, limits, stats).result;
+    memory = {normal}; // a new normal: its gap bound is unknown
     const Vector3d armI = 0.5 * (r.contactA + r.contactB);
     return {r.normal, armI, armI - m.displacement, m.displacement.norm()};
 }

@@ -156,7 +156,7 @@ struct EnginePrediction {
     bool finished = false;            ///< within the bounded number of rounds
 };
 
-EnginePrediction predictLikeTheEngine(const SuperballShape& shape, const PairMotion& m,
+EnginePrediction predictLikeTheEngine(SuperballShape& shape, const PairMotion& m,
                                       double horizon, PairMemory& memory, int pieces = 1) {
     EnginePrediction result;
     double now = 0.0;
@@ -256,7 +256,7 @@ std::string number(double x) {
     return text;
 }
 
-void printStats(double p, const SuperballPredictorStats& s) {
+void printStats(double p, const PredictorStats& s) {
     std::printf("p %5.2f predictor: %ld calls, %ld sphere + %ld bound + %ld plane rejections, "
                 "%ld evaluations (%ld robust), %ld plane steps (%ld chord), %ld Newton brackets "
                 "(%ld uncertified), "
@@ -431,7 +431,7 @@ INSTANTIATE_TEST_SUITE_P(Exponents10, SuperballPredictorByP,
 // restart, the lower bound far from contact and the robust solver between them recover.
 TEST(SuperballPredictor, AStaleNormalFromTheWrongSideGivesTheSameContact) {
     for (const double p : {0.55, 1.5, 3.0, 10.0}) {
-        const SuperballShape shape{p};
+        SuperballShape shape{p};
         Random random(13 + static_cast<std::uint64_t>(10 * p));
         int hits = 0;
         for (int trial = 0; trial < 60; ++trial) {
@@ -495,7 +495,7 @@ TEST(SuperballPredictor, AJustResolvedPairIsNotAContactAtThatInstant) {
 // Spheres are the p = 1 superballs: SuperballShape's general path (advancement on s, Newton,
 // refinement) must give the exact quadratic's time; spins are invisible to spheres.
 TEST(SuperballPredictor, SphereCaseAgreesWithTheExactQuadratic) {
-    const SuperballShape ball{1.0};
+    SuperballShape ball{1.0};
     const SphereShape sphere;
     const double horizon = 3.0;
     Random random(11);
@@ -553,7 +553,7 @@ TEST(SuperballEngine, FreeCollisionConservesMomentumAngularMomentumAndEnergy) {
     for (const double p : {0.55, 0.85, 1.5, 3.0})
         for (const std::uint64_t seed : {1, 2, 3, 4}) {
             Random random(seed + static_cast<std::uint64_t>(100 * p));
-            const SuperballShape shape{p};
+            SuperballShape shape{p};
             const double inertia = shape.inertiaPerMass(1.0);
             // Centres 2.5 D apart on x, closing at ~1 with an impact parameter < 0.2 D.
             std::vector<ParticleState> state(2);
@@ -590,7 +590,7 @@ TEST(SuperballEngine, NoOverlapAfterDenseGrowingRuns) {
     for (const double p : {1.5, 0.85}) {
         const int n = 64;
         Random random(7 + static_cast<std::uint64_t>(100 * p));
-        const SuperballShape shape{p};
+        SuperballShape shape{p};
         const double box = boxLengthFor(n, Superball(p, 0.5).volume(), 0.3);
         const RandomPlacement placement = randomPlacement(n, p, box, random);
         const auto velocities = maxwellVelocities(n, random);

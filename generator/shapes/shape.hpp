@@ -1,0 +1,39 @@
+#pragma once
+// The one interface of the event-driven engine's shapes (docs/design.md §3, "One shape
+// concept"): value types with the same operations, so the engine has no shape branches. A sphere
+// is a shape whose bodies keep their orientation and whose exact predictor remembers nothing.
+//
+//   geometry:    circumscribedRatio(), inscribedRatio() (over the semi-axis: neighbour lists and
+//                the order of predictions), inertiaPerMass(D) (isotropic, docs/design.md §1)
+//   motion:      turned(q, omega, tau), the orientation after free flight; orient(m, ...), the
+//                pair's orientations and spins in its PairMotion
+//   prediction:  Memory, what the predictor keeps of a pair between predictions;
+//                inPredictionOrder(count, motionOf, consider), the order neighbours are asked in;
+//                collisionTime(m, horizon, memory, resolved)
+//   collision:   contact(m, memory), resolve(m, contact, i, j) (the elastic impulse, returned)
+//   statistics:  takeStats(), the predictor's counters since the last call
+
+#include "shapes/pair_motion.hpp"
+#include "shapes/predictor_stats.hpp"
+
+#include <concepts>
+
+namespace sbpack {
+
+template <class S>
+concept EngineShape = requires(S shape, const S& constShape, const PairMotion& m, PairMotion& out,
+                               typename S::Memory& memory, const PairContact& contact,
+                               ParticleState& body, const Quaterniond& q, const Vector3d& omega,
+                               double x) {
+    { constShape.circumscribedRatio() } -> std::convertible_to<double>;
+    { constShape.inscribedRatio() } -> std::convertible_to<double>;
+    { constShape.inertiaPerMass(x) } -> std::convertible_to<double>;
+    { constShape.turned(q, omega, x) } -> std::convertible_to<Quaterniond>;
+    constShape.orient(out, body, x, body, x);
+    { shape.collisionTime(m, x, memory, true) } -> std::same_as<Prediction>;
+    { shape.contact(m, memory) } -> std::same_as<PairContact>;
+    { constShape.resolve(m, contact, body, body) } -> std::convertible_to<double>;
+    { shape.takeStats() } -> std::same_as<PredictorStats>;
+};
+
+} // namespace sbpack
