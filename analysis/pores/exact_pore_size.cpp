@@ -157,40 +157,33 @@ Vector3d closestPoint(const Superball& shape, const Vector3d& xBody) {
     return y;
 }
 
-ExactPoreSizes::ExactPoreSizes(const Packing& packing)
-    : shape_(packing.shape()), boxLength_(packing.boxLength), circumradius_(shape_.circumradius()),
-      inradius_(shape_.inradius()) {
+namespace {
+
+/// The packing's positions after the checks of ExactPoreSizes' constructor.
+const std::vector<Vector3d>& checkedPositions(const Packing& packing) {
     if (packing.positions.empty())
         throw std::invalid_argument("exact pore sizes: the packing has no particles");
     if (packing.orientations.size() != packing.positions.size())
         throw std::invalid_argument(
             "exact pore sizes: " + std::to_string(packing.positions.size()) + " positions but " +
             std::to_string(packing.orientations.size()) + " orientations");
-    if (!(std::isfinite(boxLength_) && boxLength_ > 0.0))
+    if (!(std::isfinite(packing.boxLength) && packing.boxLength > 0.0))
         throw std::invalid_argument("exact pore sizes: box length is not finite and positive");
-    cellsPerSide_ = std::max(1, static_cast<int>(std::floor(boxLength_ / circumradius_)));
-    cellSize_ = boxLength_ / cellsPerSide_;
-    const int n = cellsPerSide_;
-    const std::size_t count = packing.positions.size();
-    positions_.reserve(count);
-    rotations_.reserve(count);
-    std::vector<int> cellOf(count);
-    cellStart_.assign(static_cast<std::size_t>(n) * n * n + 1, 0);
-    for (std::size_t j = 0; j < count; ++j) {
+    return packing.positions;
+}
+
+} // namespace
+
+ExactPoreSizes::ExactPoreSizes(const Packing& packing)
+    : shape_(packing.shape()), boxLength_(packing.boxLength), circumradius_(shape_.circumradius()),
+      inradius_(shape_.inradius()),
+      cells_(checkedPositions(packing), packing.boxLength, shape_.circumradius()) {
+    positions_.reserve(packing.size());
+    rotations_.reserve(packing.size());
+    for (std::size_t j = 0; j < packing.size(); ++j) {
         positions_.push_back(wrapIntoBox(packing.positions[j], boxLength_));
         rotations_.push_back(packing.orientations[j].normalized().toRotationMatrix());
-        std::array<int, 3> c{};
-        for (int k = 0; k < 3; ++k)
-            c[k] = std::min(n - 1, static_cast<int>(positions_[j][k] / cellSize_));
-        cellOf[j] = (c[0] * n + c[1]) * n + c[2];
-        ++cellStart_[cellOf[j] + 1];
     }
-    for (std::size_t c = 1; c < cellStart_.size(); ++c)
-        cellStart_[c] += cellStart_[c - 1];
-    cellParticles_.resize(count);
-    std::vector<int> fill(cellStart_.begin(), cellStart_.end() - 1);
-    for (std::size_t j = 0; j < count; ++j)
-        cellParticles_[fill[cellOf[j]]++] = static_cast<int>(j);
 }
 
 SurfaceDistance ExactPoreSizes::particleDistance(int particle, const Vector3d& d) const {
@@ -209,16 +202,13 @@ SurfaceDistance ExactPoreSizes::particleDistance(int particle, const Vector3d& d
 }
 
 std::array<int, 3> ExactPoreSizes::homeCell(const Vector3d& xWrapped) const {
-    std::array<int, 3> home{};
-    for (int k = 0; k < 3; ++k)
-        home[k] = std::min(cellsPerSide_ - 1, static_cast<int>(xWrapped[k] / cellSize_));
-    return home;
+    return cells_.cells().coordinates(cells_.cells().cellContaining(xWrapped));
 }
 
 int ExactPoreSizes::particleContaining(const Vector3d& x) const {
     const Vector3d xw = wrapIntoBox(x, boxLength_);
     const std::array<int, 3> home = homeCell(xw);
-    const int reach = std::min(1, cellsPerSide_ / 2); // cells >= circumradius
+    const int reach = std::min(1, cells_.cellsPerSide() / 2); // cells >= circumradius
     const double rc2 = circumradius_ * circumradius_;
     int found = -1;
     for (int ox = -reach; ox <= reach && found < 0; ++ox)
@@ -259,7 +249,7 @@ SurfaceDistance ExactPoreSizes::poreSizeBounds(const Vector3d& x) const {
                                   });
                 }
         // Every image not yet visited has its centre at least s cells away.
-        if (s * cellSize_ - circumradius_ >= bestUpper) break;
+        if (s * cells_.cells().width() - circumradius_ >= bestUpper) break;
     }
     std::sort(candidates.begin(), candidates.end(),
               [](const Candidate& a, const Candidate& b) { return a.lower < b.lower; });

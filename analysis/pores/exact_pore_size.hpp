@@ -3,6 +3,7 @@
 // particle surface, computed exactly from the superball geometry of common/. The reference
 // against which the voxel path (distance transform) is checked.
 
+#include "contacts/cell_list.hpp"
 #include "packing/packing.hpp"
 #include "pores/pore_size_distribution.hpp"
 
@@ -86,10 +87,7 @@ class ExactPoreSizes {
     double inradius_;
     std::vector<Vector3d> positions_;
     std::vector<Matrix3d> rotations_; ///< body to lab
-    int cellsPerSide_;
-    double cellSize_;
-    std::vector<int> cellStart_; ///< cell c holds cellParticles_[cellStart_[c] .. cellStart_[c+1])
-    std::vector<int> cellParticles_;
+    CellList cells_; ///< cells of edge >= the circumradius (common/contacts/cell_list)
 };
 
 struct ExactPoreSizeParameters {
@@ -122,7 +120,7 @@ namespace sbpack {
 
 template <class Visit>
 void ExactPoreSizes::forEachInCell(const std::array<int, 3>& unwrapped, Visit&& visit) const {
-    const int n = cellsPerSide_;
+    const int n = cells_.cellsPerSide();
     std::array<int, 3> cell{};
     Vector3d shift;
     for (int k = 0; k < 3; ++k) {
@@ -130,9 +128,8 @@ void ExactPoreSizes::forEachInCell(const std::array<int, 3>& unwrapped, Visit&& 
         cell[k] = unwrapped[k] - image * n;
         shift[k] = image * boxLength_;
     }
-    const int c = (cell[0] * n + cell[1]) * n + cell[2];
-    for (int a = cellStart_[c]; a < cellStart_[c + 1]; ++a)
-        visit(cellParticles_[a], shift);
+    cells_.forEachInCell(cells_.cells().index(cell[0], cell[1], cell[2]),
+                         [&](int particle) { visit(particle, shift); });
 }
 
 } // namespace sbpack

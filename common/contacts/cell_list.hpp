@@ -24,6 +24,14 @@ class CellList {
     CellList(const std::vector<Vector3d>& positions, double boxLength, double range);
 
     int cellsPerSide() const { return cells_.perSide(); }
+    /// The cells' rule (their number and width, which cell holds a point).
+    const PeriodicCells& cells() const { return cells_; }
+
+    /// Calls visit(i) for each particle i binned in `cell` (its position wrapped into [0, L)).
+    template <class Visit> void forEachInCell(int cell, Visit&& visit) const {
+        for (int a = cellStart_[cell]; a < cellStart_[cell + 1]; ++a)
+            visit(particlesInCellOrder_[a]);
+    }
 
     /// Calls callback(i, j, d) once for each pair i < j with |d| < range, where
     /// d = minimumImage(r_j - r_i, L).
