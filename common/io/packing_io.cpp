@@ -41,8 +41,10 @@ std::vector<Vector3d> unflatten(const std::vector<double>& values) {
     return rows;
 }
 
-void writeProvenance(hid_t root, const std::map<std::string, ProvenanceValue>& provenance) {
-    const Hdf5Handle group = createGroup(root, "provenance");
+/// A group of scalar attributes (`provenance`, `resume_state`).
+void writeAttributeGroup(hid_t root, const std::string& groupName,
+                         const std::map<std::string, ProvenanceValue>& provenance) {
+    const Hdf5Handle group = createGroup(root, groupName);
     for (const auto& [name, value] : provenance) {
         std::visit(
             [&, &name = name](const auto& v) {
@@ -58,9 +60,10 @@ void writeProvenance(hid_t root, const std::map<std::string, ProvenanceValue>& p
     }
 }
 
-std::map<std::string, ProvenanceValue> readProvenance(hid_t root, const std::string& file) {
+std::map<std::string, ProvenanceValue> readAttributeGroup(hid_t root, const std::string& groupName,
+                                                          const std::string& file) {
     std::map<std::string, ProvenanceValue> provenance;
-    const Hdf5Handle group = openGroup(root, "provenance");
+    const Hdf5Handle group = openGroup(root, groupName);
     for (const std::string& name : attributeNames(group.get())) {
         switch (attributeKind(group.get(), name)) {
         case AttributeKind::Integer:
@@ -73,11 +76,24 @@ std::map<std::string, ProvenanceValue> readProvenance(hid_t root, const std::str
             provenance[name] = readStringAttribute(group.get(), name);
             break;
         case AttributeKind::Other:
-            throw PackingFileError("'" + file + "': provenance attribute '" + name +
+            throw PackingFileError("'" + file + "': " + groupName + " attribute '" + name +
                                    "' has an unsupported type (need integer, float or string)");
         }
     }
     return provenance;
+}
+
+/// Files written before `resume_state` kept it in the provenance as `state_*`: moved there.
+void moveEarlierResumeState(Packing& packing) {
+    const std::string prefix = "state_";
+    for (auto entry = packing.provenance.begin(); entry != packing.provenance.end();) {
+        if (entry->first.starts_with(prefix)) {
+            packing.resumeState[entry->first.substr(prefix.size())] = entry->second;
+            entry = packing.provenance.erase(entry);
+        } else {
+            ++entry;
+        }
+    }
 }
 
 /// The packing file's bytes (built in memory; docs/design.md §4).
@@ -110,7 +126,9 @@ std::string fileContents(const Packing& packing, const std::string& name) {
         writeMatrixDataset(root, "velocities", flatten(packing.velocities), 3);
     if (!packing.angularVelocities.empty())
         writeMatrixDataset(root, "angular_velocities", flatten(packing.angularVelocities), 3);
-    if (!packing.provenance.empty()) writeProvenance(root, packing.provenance);
+    if (!packing.provenance.empty()) writeAttributeGroup(root, "provenance", packing.provenance);
+    if (!packing.resumeState.empty())
+        writeAttributeGroup(root, "resume_state", packing.resumeState);
     return fileImage(file, name);
 }
 
@@ -151,7 +169,12 @@ Packing readContents(hid_t root, const std::string& file) {
     if (hasLink(root, "angular_velocities"))
         packing.angularVelocities =
             unflatten(readMatrixDataset(root, "angular_velocities", rows, 3));
-    if (hasLink(root, "provenance")) packing.provenance = readProvenance(root, file);
+    if (hasLink(root, "provenance"))
+        packing.provenance = readAttributeGroup(root, "provenance", file);
+    if (hasLink(root, "resume_state"))
+        packing.resumeState = readAttributeGroup(root, "resume_state", file);
+    else
+        moveEarlierResumeState(packing);
 
     validatePacking(packing, file);
     const double expectedPhi = packing.packingFraction();

@@ -34,6 +34,9 @@ struct Packing {
     std::optional<std::uint64_t> seed;
     std::string generatorVersion;
     std::map<std::string, ProvenanceValue> provenance;
+    /// What a generator needs to resume beyond the particles (group `resume_state`, sbgen's
+    /// format, phase and growth clock: docs/design.md §4); not part of the provenance.
+    std::map<std::string, ProvenanceValue> resumeState;
 
     std::size_t size() const { return positions.size(); }
     Superball shape() const { return Superball(p, semiAxis); }

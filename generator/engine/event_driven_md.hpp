@@ -321,8 +321,8 @@ template <EngineShape Shape> class EventDrivenMd {
     std::vector<double> exit_;      ///< time each particle leaves its neighbour-list sphere
     std::vector<double> changedAt_; ///< time of each particle's last collision
     PairMemories<typename Shape::Memory> memories_;
-    std::uint64_t run_ = 0;                     ///< serial number of the current run()
-    std::vector<std::uint64_t> collidedInRun_;  ///< the last run() each particle collided in
+    std::uint64_t run_ = 0;                    ///< serial number of the current run()
+    std::vector<std::uint64_t> collidedInRun_; ///< the last run() each particle collided in
     double horizon_ = kNever;
     double exitRadius_ = 0.0;
     /// The last collision's pair and time: its predictions at that time start separated.

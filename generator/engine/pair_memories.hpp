@@ -32,7 +32,8 @@ template <class Memory> class PairMemories {
     /// i: its gap bound moved on to t while both particles still fly as they did when it was left
     /// (their counters unchanged, or advanced by one collision at t itself), else the normal
     /// alone; what use leaves in it is kept, stamped with t and the counters now.
-    template <class Use> auto predictWith(int i, int j, double t, ParticleClocks clocks, Use&& use) {
+    template <class Use>
+    auto predictWith(int i, int j, double t, ParticleClocks clocks, Use&& use) {
         Record& record = records_[key(i, j)];
         const auto unchanged = [&](int k, std::uint64_t counter) {
             return clocks.counter[k] == counter ||

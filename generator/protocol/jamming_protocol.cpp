@@ -33,10 +33,17 @@ bool positiveFinite(double x) {
     return std::isfinite(x) && x > 0.0;
 }
 
+/// Whether bodies of exponent p rotate: all but spheres, which run on the exact sphere shape (the
+/// one place the protocol tells the shapes apart; the engine does not).
+bool rotating(double p) {
+    return p != 1.0;
+}
+
 /// The engine for exponent p: the exact sphere engine at p = 1, the superball one otherwise.
 template <class Engine>
 Engine makeEngine(double p, double box, std::vector<ParticleState> state, GrowthClock clock) {
-    if (p == 1.0) return EventDrivenMd<SphereShape>(SphereShape{}, box, std::move(state), clock);
+    if (!rotating(p))
+        return EventDrivenMd<SphereShape>(SphereShape{}, box, std::move(state), clock);
     return EventDrivenMd<SuperballShape>(SuperballShape(p), box, std::move(state), clock);
 }
 
@@ -49,7 +56,7 @@ template <class Engine> Engine freshEngine(const ProtocolParameters& parameters)
     std::vector<ParticleState> state(n);
     for (int i = 0; i < n; ++i)
         state[i] = {placement.positions[i], velocities[i], placement.orientations[i]};
-    if (parameters.p != 1.0) {
+    if (rotating(parameters.p)) {
         const std::vector<Vector3d> spins =
             maxwellAngularVelocities(n, SuperballShape(parameters.p).inertiaPerMass(1.0), random);
         for (int i = 0; i < n; ++i)
@@ -59,13 +66,24 @@ template <class Engine> Engine freshEngine(const ProtocolParameters& parameters)
                               GrowthClock{1.0, 0.0, parameters.gammaFast});
 }
 
+/// Entry `key` of the file's provenance (or of `entries`, e.g. its resume state), refused when
+/// missing or of another type.
 template <class T>
-T stateValue(const Packing& packing, const std::string& key, const std::string& source) {
-    const auto found = packing.provenance.find(key);
-    if (found == packing.provenance.end() || !std::holds_alternative<T>(found->second))
-        throw std::invalid_argument("'" + source + "': not an sbgen checkpoint (provenance '" +
+T stateValue(const Packing& packing, const std::string& key, const std::string& source,
+             const std::map<std::string, ProvenanceValue>* entries = nullptr) {
+    const auto& from = entries != nullptr ? *entries : packing.provenance;
+    const char* group = entries != nullptr ? "resume_state" : "provenance";
+    const auto found = from.find(key);
+    if (found == from.end() || !std::holds_alternative<T>(found->second))
+        throw std::invalid_argument("'" + source + "': not an sbgen checkpoint (" + group + " '" +
                                     key + "' missing or of the wrong type)");
     return std::get<T>(found->second);
+}
+
+/// Entry `key` of the file's resume state.
+template <class T>
+T resumeValue(const Packing& packing, const std::string& key, const std::string& source) {
+    return stateValue<T>(packing, key, source, &packing.resumeState);
 }
 
 std::uint64_t counterValue(const Packing& packing, const std::string& key,
@@ -83,16 +101,16 @@ std::uint64_t optionalCounter(const Packing& packing, const std::string& key,
 /// or rate, or a diameter that disagrees with the packing's semi_axis (a resume must continue
 /// the packing in the file, not silently another size).
 GrowthClock growthClockOf(const Packing& packing, const std::string& source) {
-    const GrowthClock clock{stateValue<double>(packing, "state_base_diameter", source),
-                            stateValue<double>(packing, "state_growth_elapsed", source),
-                            stateValue<double>(packing, "state_growth_rate", source)};
+    const GrowthClock clock{resumeValue<double>(packing, "base_diameter", source),
+                            resumeValue<double>(packing, "growth_elapsed", source),
+                            resumeValue<double>(packing, "growth_rate", source)};
     const auto refuse = [&](const std::string& problem) {
         throw std::invalid_argument("'" + source + "': checkpoint state " + problem);
     };
-    if (!positiveFinite(clock.baseDiameter)) refuse("state_base_diameter must be positive");
-    if (!positiveFinite(clock.rate)) refuse("state_growth_rate must be positive");
+    if (!positiveFinite(clock.baseDiameter)) refuse("base_diameter must be positive");
+    if (!positiveFinite(clock.rate)) refuse("growth_rate must be positive");
     if (!(std::isfinite(clock.elapsed) && clock.elapsed >= 0.0))
-        refuse("state_growth_elapsed must be finite and non-negative");
+        refuse("growth_elapsed must be finite and non-negative");
     const double diameter = 2.0 * packing.semiAxis;
     if (std::abs(clock.diameter() - diameter) > 1e-12 * diameter)
         refuse("gives the diameter " + std::to_string(clock.diameter()) +
@@ -103,7 +121,7 @@ GrowthClock growthClockOf(const Packing& packing, const std::string& source) {
 } // namespace
 
 double ProtocolParameters::slowGrowthRate() const {
-    return gammaSlow.value_or(p == 1.0 ? 1e-4 : 1e-2);
+    return gammaSlow.value_or(rotating(p) ? 1e-2 : 1e-4);
 }
 
 void ProtocolParameters::validate() const {
@@ -134,11 +152,11 @@ JammingProtocol::JammingProtocol(const ProtocolParameters& parameters)
 
 JammingProtocol::JammingProtocol(const Packing& packing, const std::string& source)
     : engine_(EventDrivenMd<SphereShape>(SphereShape{}, packing.boxLength, {}, {})) {
-    if (stateValue<std::string>(packing, "state_format", source) != kStateFormat)
+    if (resumeValue<std::string>(packing, "format", source) != kStateFormat)
         throw std::invalid_argument("'" + source + "': checkpoint state format is not " +
                                     std::string(kStateFormat));
     if (packing.velocities.size() != packing.size() ||
-        (packing.p != 1.0 && packing.angularVelocities.size() != packing.size()))
+        (rotating(packing.p) && packing.angularVelocities.size() != packing.size()))
         throw std::invalid_argument("'" + source + "': checkpoint without velocities");
     parameters_.particles = static_cast<int>(packing.size());
     parameters_.p = packing.p;
@@ -155,7 +173,7 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
         throw std::invalid_argument("'" + source + "': checkpoint parameter " + e.what());
     }
     refuseOverlaps(packing, source);
-    status_.phase = static_cast<Phase>(stateValue<std::int64_t>(packing, "state_phase", source));
+    status_.phase = static_cast<Phase>(resumeValue<std::int64_t>(packing, "phase", source));
     status_.reducedPressure = stateValue<double>(packing, "final_reduced_pressure", source);
     status_.collisions = counterValue(packing, "collisions", source);
     status_.relists = counterValue(packing, "relists", source);
@@ -164,8 +182,9 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
     for (const auto& [name, counter] : PredictorStats::kCounters)
         status_.predictor.*counter = static_cast<long>(optionalCounter(packing, name, source));
     status_.windows = counterValue(packing, "windows", source);
-    status_.subsetWindows =
-        static_cast<std::int64_t>(optionalCounter(packing, "state_subset_windows", source));
+    status_.subsetWindows = packing.resumeState.count("subset_windows") == 0
+                                ? 0
+                                : resumeValue<std::int64_t>(packing, "subset_windows", source);
     status_.wallSeconds = stateValue<double>(packing, "wall_time_s", source);
     if (packing.provenance.count("cpu_time_s") != 0)
         status_.cpuSeconds = stateValue<double>(packing, "cpu_time_s", source);
@@ -174,7 +193,7 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
     std::vector<ParticleState> state(packing.size());
     for (std::size_t i = 0; i < packing.size(); ++i) {
         state[i] = {packing.positions[i], packing.velocities[i], packing.orientations[i]};
-        if (packing.p != 1.0) state[i].angularVelocity = packing.angularVelocities[i];
+        if (rotating(packing.p)) state[i].angularVelocity = packing.angularVelocities[i];
     }
     engine_ = makeEngine<Engine>(packing.p, packing.boxLength, std::move(state), clock);
     adaptSkin(); // as the run that wrote the checkpoint did at the end of its window
@@ -299,7 +318,7 @@ Packing JammingProtocol::checkpoint() const {
                 packing.positions.push_back(s.position);
                 packing.orientations.push_back(s.orientation);
                 packing.velocities.push_back(s.velocity);
-                if (parameters_.p != 1.0) packing.angularVelocities.push_back(s.angularVelocity);
+                if (rotating(parameters_.p)) packing.angularVelocities.push_back(s.angularVelocity);
             }
         },
         engine_);
@@ -322,18 +341,19 @@ Packing JammingProtocol::checkpoint() const {
     log["rechecks"] = static_cast<std::int64_t>(status_.rechecks);
     log["events"] = static_cast<std::int64_t>(status_.collisions + status_.relists +
                                               status_.staleEvents + status_.rechecks);
-    if (parameters_.p != 1.0)
+    if (rotating(parameters_.p))
         for (const auto& [name, counter] : PredictorStats::kCounters)
             log[name] = static_cast<std::int64_t>(status_.predictor.*counter);
     log["windows"] = static_cast<std::int64_t>(status_.windows);
     log["wall_time_s"] = status_.wallSeconds;
     log["cpu_time_s"] = status_.cpuSeconds;
-    log["state_format"] = std::string(kStateFormat);
-    log["state_phase"] = static_cast<std::int64_t>(status_.phase);
-    log["state_subset_windows"] = status_.subsetWindows;
-    log["state_base_diameter"] = clock.baseDiameter;
-    log["state_growth_elapsed"] = clock.elapsed;
-    log["state_growth_rate"] = clock.rate;
+    auto& state = packing.resumeState;
+    state["format"] = std::string(kStateFormat);
+    state["phase"] = static_cast<std::int64_t>(status_.phase);
+    state["subset_windows"] = status_.subsetWindows;
+    state["base_diameter"] = clock.baseDiameter;
+    state["growth_elapsed"] = clock.elapsed;
+    state["growth_rate"] = clock.rate;
     return packing;
 }
 

@@ -233,8 +233,8 @@ std::optional<SignedDistanceResult> localMaximum(const SuperballPair& pair, cons
 /// do, one above `boundSuffices` (unconverged Newton's last plane gap) is returned as it is.
 /// With `rates`, Newton's converged answers also carry the normal's rate (else it is zero).
 WarmNewton exactSignedDistance(const SuperballPair& pair, Vector3d& normal, double boundSuffices,
-                               const SuperballPredictorLimits& limits,
-                               PredictorStats& stats, const PairRates* rates = nullptr) {
+                               const SuperballPredictorLimits& limits, PredictorStats& stats,
+                               const PairRates* rates = nullptr) {
     WarmNewton warm =
         newtonSignedDistance(pair, normal.isZero(0.0) ? pair.displacement.normalized() : normal,
                              limits.newtonSteps, rates);
@@ -360,8 +360,7 @@ std::optional<SphereWindow> circumscribedWindow(const PairMotion& m, double c, d
 class PairPrediction {
   public:
     PairPrediction(const PairMotion& m, double p, double c, double lever, SphereWindow window,
-                   Vector3d& normal, const SuperballPredictorLimits& limits,
-                   PredictorStats& stats)
+                   Vector3d& normal, const SuperballPredictorLimits& limits, PredictorStats& stats)
         : m_(m), p_(p), c_(c), growth_(std::max(m.growthRate, 0.0)), end_(window.end),
           leverBound_(lever * 0.5 * (m.diameter + growth_ * window.end)),
           radiusBound_(c * 0.5 * (m.diameter + growth_ * window.end)), limits_(limits),

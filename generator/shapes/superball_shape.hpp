@@ -131,7 +131,7 @@ class SuperballShape {
     double c_;
     double cIn_;
     double lever_; ///< sqrt(c^2 - c_in^2): bound on a support point's offset from its normal
-    double inertiaPerMassUnit_; ///< I / m at semi-axis 1
+    double inertiaPerMassUnit_;                 ///< I / m at semi-axis 1
     std::vector<PairMotion> motions_;           ///< inPredictionOrder's scratch: the motions
     std::vector<std::pair<double, int>> order_; ///< and when the inscribed spheres touch
 };

@@ -50,6 +50,8 @@ Packing makePacking(std::size_t n = 6) {
     packing.provenance["n_collisions"] = std::int64_t{-123456789012345};
     packing.provenance["command"] = std::string("sbgen --p 1.7 --n 6");
     packing.provenance["log"] = std::string(200000, 'x'); // beyond the 64 KiB compact limit
+    packing.resumeState["format"] = std::string("sbgen.state/1");
+    packing.resumeState["growth_rate"] = 1e-2;
     return packing;
 }
 
@@ -130,6 +132,21 @@ TEST_F(PackingIo, RoundTripIsBitExact) {
     EXPECT_EQ(read.seed, original.seed);
     EXPECT_EQ(read.generatorVersion, original.generatorVersion);
     EXPECT_EQ(read.provenance, original.provenance);
+    EXPECT_EQ(read.resumeState, original.resumeState);
+}
+
+TEST_F(PackingIo, AnEarlierFilesResumeStateInTheProvenanceIsMovedToItsGroup) {
+    Packing original = makePacking();
+    original.resumeState.clear();
+    original.provenance["state_phase"] = std::int64_t{2};
+    original.provenance["state_growth_rate"] = 1e-4;
+    const fs::path path = file("earlier.h5");
+    writePacking(original, path);
+    const Packing read = readPacking(path);
+    EXPECT_EQ(read.resumeState.at("phase"), ProvenanceValue(std::int64_t{2}));
+    EXPECT_EQ(read.resumeState.at("growth_rate"), ProvenanceValue(1e-4));
+    EXPECT_EQ(read.provenance.count("state_phase"), 0U);
+    EXPECT_EQ(read.provenance.at("gamma"), ProvenanceValue(0.001));
 }
 
 TEST_F(PackingIo, OptionalFieldsStayAbsent) {
@@ -140,6 +157,7 @@ TEST_F(PackingIo, OptionalFieldsStayAbsent) {
     original.seed.reset();
     original.generatorVersion.clear();
     original.provenance.clear();
+    original.resumeState.clear();
     const fs::path path = file("minimal.h5");
     writePacking(original, path);
     const Packing read = readPacking(path);
@@ -148,7 +166,9 @@ TEST_F(PackingIo, OptionalFieldsStayAbsent) {
     EXPECT_FALSE(read.reducedPressure);
     EXPECT_FALSE(read.seed);
     EXPECT_TRUE(read.provenance.empty());
+    EXPECT_TRUE(read.resumeState.empty());
     EXPECT_FALSE(hasLink(openFileReadOnly(path).get(), "velocities"));
+    EXPECT_FALSE(hasLink(openFileReadOnly(path).get(), "resume_state"));
 }
 
 TEST_F(PackingIo, WritesTheSchemaAttributes) {

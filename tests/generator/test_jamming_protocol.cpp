@@ -219,7 +219,7 @@ TEST(JammingProtocol, DefaultsSwitchAtTheirPressureAndUseTheSlowRateOfTheirShape
     const Packing out = protocol.checkpoint();
     EXPECT_EQ(std::get<double>(out.provenance.at("gamma_fast")), 0.01);
     EXPECT_EQ(std::get<double>(out.provenance.at("gamma_slow")), 1e-2);
-    EXPECT_EQ(std::get<double>(out.provenance.at("state_growth_rate")), 1e-2); // the rate in use
+    EXPECT_EQ(std::get<double>(out.resumeState.at("growth_rate")), 1e-2); // the rate in use
 }
 
 // A checkpoint whose engine state was tampered with is refused, naming it (issue 20, defect 7).
@@ -237,10 +237,10 @@ TEST(JammingProtocol, RefusesATamperedGrowthClock) {
             EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
         }
     };
-    refused([](Packing& p) { p.provenance["state_growth_rate"] = -0.01; },
-            "'bad.h5': checkpoint state state_growth_rate must be positive");
-    refused([](Packing& p) { p.provenance["state_base_diameter"] = 0.0; },
-            "state_base_diameter must be positive");
+    refused([](Packing& p) { p.resumeState["growth_rate"] = -0.01; },
+            "'bad.h5': checkpoint state growth_rate must be positive");
+    refused([](Packing& p) { p.resumeState["base_diameter"] = 0.0; },
+            "base_diameter must be positive");
     refused([](Packing& p) { p.semiAxis *= 0.99; }, "not 2 semi_axis");
     EXPECT_NO_THROW(JammingProtocol(good, "good.h5"));
 }

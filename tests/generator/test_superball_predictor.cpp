@@ -156,8 +156,8 @@ struct EnginePrediction {
     bool finished = false;            ///< within the bounded number of rounds
 };
 
-EnginePrediction predictLikeTheEngine(SuperballShape& shape, const PairMotion& m,
-                                      double horizon, PairMemory& memory, int pieces = 1) {
+EnginePrediction predictLikeTheEngine(SuperballShape& shape, const PairMotion& m, double horizon,
+                                      PairMemory& memory, int pieces = 1) {
     EnginePrediction result;
     double now = 0.0;
     for (int round = 0; round < 10000; ++round) {
