@@ -91,7 +91,9 @@ void GeneratorCommandLine::addProtocolOptions() {
         "initial packing fraction in (0, 0.5) (default 0.2, as the paper)");
     protocol(
         "--gamma-fast", [&p](auto n, auto v) { p.gammaFast = parseNumber(n, v); },
-        "growth rate until --pressure-switch (default 0.01)");
+        "growth rate until --pressure-switch (default: the paper's protocol at --p,\n"
+        "0.0112 for spheres, 0.016-0.033 for superballs: the rate that gives the\n"
+        "paper's phi, bench/RESULTS.md, \"Fidelity\", E8)");
     protocol(
         "--gamma-slow", [&p](auto n, auto v) { p.gammaSlow = parseNumber(n, v); },
         "growth rate from there to --pressure-final (default 1e-4 for spheres, 1e-2\n"

@@ -3,6 +3,7 @@
 #include "contacts/contact_network.hpp"
 #include "geometry/superball.hpp"
 #include "initial/random_start.hpp"
+#include "protocol/paper_rates.hpp"
 #include "version.hpp"
 
 #include <algorithm>
@@ -63,7 +64,7 @@ template <class Engine> Engine freshEngine(const ProtocolParameters& parameters)
             state[i].angularVelocity = spins[i];
     }
     return makeEngine<Engine>(parameters.p, box, std::move(state),
-                              GrowthClock{1.0, 0.0, parameters.gammaFast});
+                              GrowthClock{1.0, 0.0, parameters.fastGrowthRate()});
 }
 
 /// Entry `key` of the file's provenance (or of `entries`, e.g. its resume state), refused when
@@ -120,6 +121,10 @@ GrowthClock growthClockOf(const Packing& packing, const std::string& source) {
 
 } // namespace
 
+double ProtocolParameters::fastGrowthRate() const {
+    return gammaFast.value_or(paperFastRate(p));
+}
+
 double ProtocolParameters::slowGrowthRate() const {
     return gammaSlow.value_or(rotating(p) ? 1e-2 : 1e-4);
 }
@@ -132,7 +137,7 @@ void ProtocolParameters::validate() const {
             "must be in (0.5, 1000] (the octahedron p = 0.5 stalls the event-driven predictor)");
     require(std::isfinite(phiInit) && phiInit > 0.0 && phiInit < 0.5, "phi_init",
             "must be in (0, 0.5)");
-    require(positiveFinite(gammaFast), "gamma_fast", "must be positive and finite");
+    require(!gammaFast || positiveFinite(*gammaFast), "gamma_fast", "must be positive and finite");
     require(!gammaSlow || positiveFinite(*gammaSlow), "gamma_slow", "must be positive and finite");
     require(positiveFinite(pressureSwitch), "pressure_switch", "must be positive and finite");
     require(positiveFinite(pressureFinal), "pressure_final", "must be positive and finite");
@@ -329,7 +334,7 @@ Packing JammingProtocol::checkpoint() const {
     log["generator"] = std::string("sbgen (DTS event-driven MD)");
     log["seed"] = static_cast<std::int64_t>(parameters_.seed);
     log["phi_init"] = parameters_.phiInit;
-    log["gamma_fast"] = parameters_.gammaFast;
+    log["gamma_fast"] = parameters_.fastGrowthRate();
     log["gamma_slow"] = parameters_.slowGrowthRate();
     log["pressure_switch"] = parameters_.pressureSwitch;
     log["pressure_final"] = parameters_.pressureFinal;

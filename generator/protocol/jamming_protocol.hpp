@@ -35,7 +35,8 @@ struct ProtocolParameters {
     double p = 1.0;
     std::uint64_t seed = 1;
     double phiInit = 0.2;
-    double gammaFast = 0.01;
+    /// Unset: fastGrowthRate()'s default for p.
+    std::optional<double> gammaFast;
     /// Unset: slowGrowthRate()'s default for p.
     std::optional<double> gammaSlow;
     double pressureSwitch = 1e6;
@@ -43,6 +44,11 @@ struct ProtocolParameters {
     double collisionsPerWindow = 10.0; ///< per particle, between thermostat rescalings
     /// The contact-network criterion of the jam, checked before a jam is declared.
     JamCheckParameters jamCheck{};
+
+    /// The fast rate used: gammaFast if set, else the paper's protocol at p (paperFastRate:
+    /// the rate in the paper's range (0.005, 0.05) that reproduces its phi, bench/RESULTS.md,
+    /// "Fidelity", E8).
+    double fastGrowthRate() const;
 
     /// The slow rate used: gammaSlow if set, else 1e-4 for spheres (Z = 5.978 +- 0.005 at
     /// N = 1000, where 1e-3 leaves 5.94) and 1e-2 for superballs, whose Z keeps rising as the

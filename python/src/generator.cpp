@@ -102,7 +102,7 @@ void registerGenerator(py::module_& m) {
             parameters.p = p;
             parameters.seed = seed;
             parameters.phiInit = phiInit.value_or(parameters.phiInit);
-            parameters.gammaFast = gammaFast.value_or(parameters.gammaFast);
+            if (gammaFast) parameters.gammaFast = gammaFast;
             if (gammaSlow) parameters.gammaSlow = gammaSlow;
             parameters.pressureSwitch = pressureSwitch.value_or(parameters.pressureSwitch);
             parameters.pressureFinal = pressureFinal.value_or(parameters.pressureFinal);

@@ -1,6 +1,7 @@
 // The protocol: bad parameters, determinism, and exact checkpoint/resume through the HDF5 file.
 #include "io/packing_io.hpp"
 #include "protocol/jamming_protocol.hpp"
+#include "protocol/paper_rates.hpp"
 
 #include <gtest/gtest.h>
 
@@ -206,6 +207,9 @@ TEST(JammingProtocol, DefaultsSwitchAtTheirPressureAndUseTheSlowRateOfTheirShape
     std::vector<std::pair<Phase, double>> windows; // phase after each window, and its pressure
     ASSERT_TRUE(protocol.run(nullptr, nullptr, [&](const ProtocolStatus& s) {
         windows.emplace_back(s.phase, s.reducedPressure);
+        // The rate the engine grows at from here: the paper's fast rate, then the slow one.
+        const double rate = std::get<double>(protocol.checkpoint().resumeState.at("growth_rate"));
+        EXPECT_EQ(rate, s.phase == Phase::Fast ? paperFastRate(1.5) : 1e-2) << windows.size();
     }));
     std::size_t first = 0;
     while (first < windows.size() && windows[first].first == Phase::Fast)
@@ -217,9 +221,35 @@ TEST(JammingProtocol, DefaultsSwitchAtTheirPressureAndUseTheSlowRateOfTheirShape
     for (std::size_t k = 0; k + 1 < first; ++k) // not earlier
         EXPECT_FALSE(windows[k].second >= 1e6 && windows[k + 1].second >= 1e6) << k;
     const Packing out = protocol.checkpoint();
-    EXPECT_EQ(std::get<double>(out.provenance.at("gamma_fast")), 0.01);
+    EXPECT_EQ(std::get<double>(out.provenance.at("gamma_fast")), paperFastRate(1.5));
     EXPECT_EQ(std::get<double>(out.provenance.at("gamma_slow")), 1e-2);
     EXPECT_EQ(std::get<double>(out.resumeState.at("growth_rate")), 1e-2); // the rate in use
+}
+
+// The default fast rate (issue 18) is the measured table's: the rate in the paper's range
+// (0.005, 0.05) that gives its phi, at each of its p values from 0.85 to 1.5, linear in between,
+// the end values outside; an explicit rate wins.
+TEST(JammingProtocol, TheDefaultFastRateIsTheMeasuredPaperRateOfItsP) {
+    const std::vector<MeasuredRate>& table = paperFastRates();
+    ASSERT_GE(table.size(), 2U);
+    EXPECT_EQ(table.front().p, 0.85);
+    EXPECT_EQ(table.back().p, 1.5);
+    for (std::size_t k = 0; k < table.size(); ++k) {
+        EXPECT_EQ(paperFastRate(table[k].p), table[k].gamma) << table[k].p;
+        EXPECT_GT(table[k].gamma, 0.005) << table[k].p;
+        EXPECT_LT(table[k].gamma, 0.05) << table[k].p;
+        if (k + 1 == table.size()) continue;
+        EXPECT_LT(table[k].p, table[k + 1].p);
+        EXPECT_NEAR(paperFastRate(0.5 * (table[k].p + table[k + 1].p)),
+                    0.5 * (table[k].gamma + table[k + 1].gamma), 1e-15);
+    }
+    EXPECT_EQ(paperFastRate(0.6), table.front().gamma);
+    EXPECT_EQ(paperFastRate(10.0), table.back().gamma);
+
+    ProtocolParameters spheres;
+    EXPECT_EQ(spheres.fastGrowthRate(), paperFastRate(1.0));
+    spheres.gammaFast = 0.05;
+    EXPECT_EQ(spheres.fastGrowthRate(), 0.05);
 }
 
 // A checkpoint whose engine state was tampered with is refused, naming it (issue 20, defect 7).
