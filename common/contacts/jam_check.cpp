@@ -55,7 +55,8 @@ std::string verdictOf(const JamCheck& check, const Packing& packing, double maxR
                format(" (box %.2f D) and carries the pressure; ",
                       packing.boxLength / packing.shape().diameter()) +
                network +
-               ". Near-cubes stack into such columns in boxes a few D long: use more particles";
+               ". Particles (near-cubes above all) stack into such columns in boxes a few D long: "
+               "use more particles";
     }
     return "not jammed: " + network + format(" (above %.2f)", maxRattlers);
 }

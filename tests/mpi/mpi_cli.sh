@@ -14,7 +14,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_
 run() { "$mpirun" -np "$np" --oversubscribe "$sbanalyze" "$@"; }
 
 for seed in 2 3; do
-    "$sbgen" --n 64 --seed "$seed" --gamma-slow 1e-2 --pressure-final 1e8 --quiet --out "gen-$seed.h5"
+    "$sbgen" --n 64 --seed "$seed" --gamma-fast 0.01 --gamma-slow 1e-2 --pressure-final 1e8 --quiet --out "gen-$seed.h5"
 done
 inputs=("$data"/*.h5 gen-2.h5 gen-3.h5)
 options=(--compute contacts,sq,chi,pores,transport --voxels 72 --pore-voxels 72 --qmax 10
