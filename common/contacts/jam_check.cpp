@@ -105,13 +105,23 @@ JamCheck checkJam(const Packing& packing, double reducedPressure,
     if (!(reducedPressure > 0.0))
         throw std::invalid_argument("jam check: reduced pressure must be positive");
     JamCheck check;
-    check.tolerance = std::clamp(parameters.gapsPerPressure / reducedPressure,
-                                 parameters.minTolerance, parameters.maxTolerance);
+    const double gaps = parameters.gapsPerPressure / reducedPressure; // load-bearing gaps, in D
+    check.tolerance = std::clamp(gaps, parameters.minTolerance, parameters.maxTolerance);
     check.contacts =
         ContactNetwork({check.tolerance, parameters.rattlerThreshold}).compute(packing);
     check.jammed = check.contacts.rattlerFraction <= parameters.maxRattlerFraction;
-    if (!check.jammed) check.chain = findSpanningChain(packing, check.contacts.contacts);
-    check.verdict = verdictOf(check, packing, parameters.maxRattlerFraction);
+    // Below P = gapsPerPressure / maxTolerance the gaps exceed any contact gap: no network yet,
+    // so a refusal says so rather than blaming a chain of near contacts.
+    const bool compressing = gaps > parameters.maxTolerance;
+    if (!check.jammed && !compressing)
+        check.chain = findSpanningChain(packing, check.contacts.contacts);
+    check.verdict =
+        !check.jammed && compressing
+            ? format("not jammed: still compressing (at reduced pressure %.3g the "
+                     "load-bearing gaps, about %.0f / P D, exceed the largest contact "
+                     "gap %.0e D)",
+                     reducedPressure, parameters.gapsPerPressure, parameters.maxTolerance)
+            : verdictOf(check, packing, parameters.maxRattlerFraction);
     return check;
 }
 

@@ -60,6 +60,18 @@ TEST(JamCheck, AtLowPressureTheToleranceStopsAtOnePercentOfD) {
     EXPECT_DOUBLE_EQ(checkJam(lattice, 1e5).tolerance, 1e-3);
 }
 
+// Far below a jam (P = 10: gaps of about 10 D), a refusal names the pressure, not a chain of the
+// near contacts that the largest contact gap, 1e-2 D, still catches.
+TEST(JamCheck, FarBelowAJamARefusalSaysTheRunIsStillCompressing) {
+    const JamCheck check = checkJam(column(4), 10.0);
+    EXPECT_FALSE(check.jammed);
+    EXPECT_FALSE(check.chain.has_value());
+    EXPECT_NE(check.verdict.find("not jammed: still compressing (at reduced pressure 10 "),
+              std::string::npos)
+        << check.verdict;
+    EXPECT_TRUE(checkJam(column(4), 1e4).chain.has_value()); // from 1e4 on, the chain is named
+}
+
 TEST(JamCheck, AColumnWrappingAroundTheBoxIsNoJam) {
     const Packing packing = column(4);
     const JamCheck check = checkJam(packing, 1e12);
