@@ -9,6 +9,12 @@ namespace sbpack {
 
 namespace {
 
+/// Below P = gapsPerPressure / maxTolerance the load-bearing gaps exceed any contact gap: no
+/// network has formed yet, so a refusal says so rather than blaming a chain of near contacts.
+bool isCompressing(double reducedPressure, const JamCheckParameters& parameters) {
+    return parameters.gapsPerPressure / reducedPressure > parameters.maxTolerance;
+}
+
 std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
     char line[160];
     std::snprintf(line, sizeof line, pattern, a, b, c);
@@ -43,11 +49,16 @@ std::vector<int> closedCycle(int a, int b, const std::vector<int>& parent) {
     return up;
 }
 
-std::string verdictOf(const JamCheck& check, const Packing& packing, double maxRattlers) {
+std::string verdictOf(const JamCheck& check, const Packing& packing, double reducedPressure,
+                      const JamCheckParameters& parameters) {
     const double rattlers = check.contacts.rattlerFraction;
     const std::string network =
         format("rattler fraction %.3f at contact gap < %.0e D", rattlers, check.tolerance);
     if (check.jammed) return "jammed: " + network;
+    if (isCompressing(reducedPressure, parameters))
+        return format("not jammed: still compressing (at reduced pressure %.3g the load-bearing "
+                      "gaps, about %.0f / P D, exceed the largest contact gap %.0e D)",
+                      reducedPressure, parameters.gapsPerPressure, parameters.maxTolerance);
     if (check.chain) {
         const SpanningChain& c = *check.chain;
         return "not jammed: a chain of " + std::to_string(c.cycle.size()) +
@@ -58,7 +69,7 @@ std::string verdictOf(const JamCheck& check, const Packing& packing, double maxR
                ". Particles (near-cubes above all) stack into such columns in boxes a few D long: "
                "use more particles";
     }
-    return "not jammed: " + network + format(" (above %.2f)", maxRattlers);
+    return "not jammed: " + network + format(" (above %.2f)", parameters.maxRattlerFraction);
 }
 
 } // namespace
@@ -105,23 +116,14 @@ JamCheck checkJam(const Packing& packing, double reducedPressure,
     if (!(reducedPressure > 0.0))
         throw std::invalid_argument("jam check: reduced pressure must be positive");
     JamCheck check;
-    const double gaps = parameters.gapsPerPressure / reducedPressure; // load-bearing gaps, in D
-    check.tolerance = std::clamp(gaps, parameters.minTolerance, parameters.maxTolerance);
+    check.tolerance = std::clamp(parameters.gapsPerPressure / reducedPressure,
+                                 parameters.minTolerance, parameters.maxTolerance);
     check.contacts =
         ContactNetwork({check.tolerance, parameters.rattlerThreshold}).compute(packing);
     check.jammed = check.contacts.rattlerFraction <= parameters.maxRattlerFraction;
-    // Below P = gapsPerPressure / maxTolerance the gaps exceed any contact gap: no network yet,
-    // so a refusal says so rather than blaming a chain of near contacts.
-    const bool compressing = gaps > parameters.maxTolerance;
-    if (!check.jammed && !compressing)
+    if (!check.jammed && !isCompressing(reducedPressure, parameters))
         check.chain = findSpanningChain(packing, check.contacts.contacts);
-    check.verdict =
-        !check.jammed && compressing
-            ? format("not jammed: still compressing (at reduced pressure %.3g the "
-                     "load-bearing gaps, about %.0f / P D, exceed the largest contact "
-                     "gap %.0e D)",
-                     reducedPressure, parameters.gapsPerPressure, parameters.maxTolerance)
-            : verdictOf(check, packing, parameters.maxRattlerFraction);
+    check.verdict = verdictOf(check, packing, reducedPressure, parameters);
     return check;
 }
 

@@ -183,10 +183,7 @@ template <EngineShape Shape> class EventDrivenMd {
         return m;
     }
 
-    std::uint64_t pairKey(int i, int j) const {
-        return static_cast<std::uint64_t>(std::min(i, j)) * state_.size() +
-               static_cast<std::uint64_t>(std::max(i, j));
-    }
+    std::uint64_t pairKey(int i, int j) const { return sbpack::pairKey(i, j, state_.size()); }
 
     void schedule(int i) { queue_.set(i, std::min(collision_[i].time, exit_[i])); }
 

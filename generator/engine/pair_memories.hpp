@@ -68,10 +68,7 @@ template <class Memory> class PairMemories {
         double time = 0.0;
         std::uint64_t counterLow = 0, counterHigh = 0;
     };
-    std::uint64_t key(int i, int j) const {
-        return static_cast<std::uint64_t>(std::min(i, j)) * particles_ +
-               static_cast<std::uint64_t>(std::max(i, j));
-    }
+    std::uint64_t key(int i, int j) const { return pairKey(i, j, particles_); }
 
     std::uint64_t particles_ = 0;
     PairTable<Record> records_;

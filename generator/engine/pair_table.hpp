@@ -12,6 +12,12 @@
 
 namespace sbpack {
 
+/// The key of the unordered pair {i, j} of N particles: min(i, j) N + max(i, j).
+inline std::uint64_t pairKey(int i, int j, std::uint64_t particles) {
+    return static_cast<std::uint64_t>(std::min(i, j)) * particles +
+           static_cast<std::uint64_t>(std::max(i, j));
+}
+
 template <class Value> class PairTable {
   public:
     /// The value of `key` (any but kEmpty), inserted as Value{} when absent. The reference

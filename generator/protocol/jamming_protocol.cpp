@@ -67,24 +67,26 @@ template <class Engine> Engine freshEngine(const ProtocolParameters& parameters)
                               GrowthClock{1.0, 0.0, parameters.fastGrowthRate()});
 }
 
-/// Entry `key` of the file's provenance (or of `entries`, e.g. its resume state), refused when
-/// missing or of another type.
+/// Entry `key` of a file's group (`provenance` or `resume_state`), refused when missing or of
+/// another type.
 template <class T>
-T stateValue(const Packing& packing, const std::string& key, const std::string& source,
-             const std::map<std::string, ProvenanceValue>* entries = nullptr) {
-    const auto& from = entries != nullptr ? *entries : packing.provenance;
-    const char* group = entries != nullptr ? "resume_state" : "provenance";
-    const auto found = from.find(key);
-    if (found == from.end() || !std::holds_alternative<T>(found->second))
+T entryOf(const std::map<std::string, ProvenanceValue>& entries, const char* group,
+          const std::string& key, const std::string& source) {
+    const auto found = entries.find(key);
+    if (found == entries.end() || !std::holds_alternative<T>(found->second))
         throw std::invalid_argument("'" + source + "': not an sbgen checkpoint (" + group + " '" +
                                     key + "' missing or of the wrong type)");
     return std::get<T>(found->second);
 }
 
-/// Entry `key` of the file's resume state.
+template <class T>
+T stateValue(const Packing& packing, const std::string& key, const std::string& source) {
+    return entryOf<T>(packing.provenance, "provenance", key, source);
+}
+
 template <class T>
 T resumeValue(const Packing& packing, const std::string& key, const std::string& source) {
-    return stateValue<T>(packing, key, source, &packing.resumeState);
+    return entryOf<T>(packing.resumeState, "resume_state", key, source);
 }
 
 std::uint64_t counterValue(const Packing& packing, const std::string& key,

@@ -3,8 +3,8 @@
 // concept"): value types with the same operations, so the engine has no shape branches. A sphere
 // is a shape whose bodies keep their orientation and whose exact predictor remembers nothing.
 //
-//   geometry:    circumscribedRatio(), inscribedRatio() (over the semi-axis: neighbour lists and
-//                the order of predictions), inertiaPerMass(D) (isotropic, docs/design.md §1)
+//   geometry:    circumscribedRatio() (over the semi-axis: the neighbour lists), inertiaPerMass(D)
+//                (isotropic, docs/design.md §1)
 //   motion:      turned(q, omega, tau), the orientation after free flight; orient(m, ...), the
 //                pair's orientations and spins in its PairMotion
 //   prediction:  Memory, what the predictor keeps of a pair between predictions;
@@ -26,7 +26,6 @@ concept EngineShape = requires(S shape, const S& constShape, const PairMotion& m
                                ParticleState& body, const Quaterniond& q, const Vector3d& omega,
                                double x) {
     { constShape.circumscribedRatio() } -> std::convertible_to<double>;
-    { constShape.inscribedRatio() } -> std::convertible_to<double>;
     { constShape.inertiaPerMass(x) } -> std::convertible_to<double>;
     { constShape.turned(q, omega, x) } -> std::convertible_to<Quaterniond>;
     constShape.orient(out, body, x, body, x);

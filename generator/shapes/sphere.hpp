@@ -17,7 +17,6 @@ struct SphereShape {
 
     /// Circumradius over semi-axis: sizes the neighbour lists.
     double circumscribedRatio() const { return 1.0; }
-    double inscribedRatio() const { return 1.0; }
     /// I / m = 2 R^2 / 5 of a solid sphere of diameter D (unused: spheres do not spin).
     double inertiaPerMass(double diameter) const { return 0.1 * diameter * diameter; }
 
