@@ -4,6 +4,7 @@
 #include "io/read_guard.hpp"
 #include "protocol/final_packing.hpp"
 #include "protocol/jamming_protocol.hpp"
+#include "protocol/protocol_advice.hpp"
 #include "version.hpp"
 
 #include <chrono>
@@ -54,9 +55,6 @@ std::filesystem::path interruptCheckpointPath(const sbpack::GeneratorOptions& o)
     return path.replace_extension(".checkpoint.h5");
 }
 
-/// Above this exponent a run is warned to be slow (measured, bench/RESULTS.md).
-constexpr double kSlowExponent = 10.0;
-
 int generate(const sbpack::GeneratorOptions& o) {
     using Clock = std::chrono::steady_clock;
     // Installed first: a signal during the set-up stops the run at its first event, with a
@@ -73,11 +71,8 @@ int generate(const sbpack::GeneratorOptions& o) {
             throw std::invalid_argument("option --pressure-final: " + e.problem());
         }
     }
-    if (protocol.parameters().p > kSlowExponent)
-        std::cerr << "sbgen: warning: p = " << protocol.parameters().p
-                  << ": near-cubes this flat run at a few hundred collisions per CPU second "
-                     "(p = 100 and 1000: about 300 at N = 50), so a jam takes days; p <= 10 "
-                     "is practical (bench/RESULTS.md, \"Extreme p\")\n";
+    for (const std::string& warning : sbpack::protocolWarnings(protocol.parameters()))
+        std::cerr << "sbgen: warning: " << warning << '\n';
 
     const auto start = Clock::now();
     auto lastProgress = start, lastCheckpoint = start;

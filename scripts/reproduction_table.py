@@ -1,12 +1,20 @@
-"""The reproduction table (scripts/reproduce-paper.sh): for each ensemble of a sbanalyze results
-file, ours (mean +- sd, count) beside the paper's phi, Z and phi_R (data/mst-reference-values.csv),
-with the issue's acceptance tests: |phi - phi_paper| <= 2 sqrt(sd_paper^2 + sd^2 / n),
-|Z - Z_paper| <= 0.05, phi_R inside the paper's +- 2 sd band. Also alpha when the results have
-it. Markdown on stdout.
+"""The reproduction tables (scripts/reproduce-paper.sh), markdown on stdout.
+
+Table 1, for each ensemble of a sbanalyze results file: ours (mean +- sd, count) beside the
+paper's phi, Z and phi_R (data/mst-reference-values.csv), with issue 18's acceptance tests
+(|phi - phi_paper| <= 2 sqrt(sd_paper^2 + sd^2 / n), |Z - Z_paper| <= 0.05, phi_R inside the
+paper's +- 2 sd band) and the cost of the packings (sbgen's CPU seconds, from each input's
+provenance when the input is still there).
+
+Table 2, when the results have them: the mean width w / D (D = 2R, paper Eq. w), the pore-size
+moments and transport bounds in units of w (paper Eqs. 17-20), and the hyperuniformity fit
+(alpha from the spreadability, a0, a1 and H from chi_V = a0 + a1 Q^alpha; the paper's a0 in
+1e-4 w^3, a1 in 1e-3, H in 1e-3, as printed in its Table tab:fit).
 
 usage: reproduction_table.py RESULTS.h5 REFERENCE.csv"""
 import csv
 import math
+import os
 import sys
 
 import h5py
@@ -27,41 +35,96 @@ def mark(ok):
     return "n/a" if ok is None else ("yes" if ok else "**no**")
 
 
-def ensemble_row(group, paper):
+def attr(group, name, key):
+    """(mean, sd) of attribute key of subgroup name, nan where absent."""
+    if name not in group:
+        return math.nan, math.nan
+    a = group[name].attrs
+    return float(a.get(key, math.nan)), float(a.get(key + "_std", math.nan))
+
+
+def cpu_seconds(results, group):
+    """sbgen's CPU seconds of the ensemble's packings that can still be read: (mean, max)."""
+    times = []
+    for member in group["members"][:]:
+        path = results["files"][str(member)].attrs["input"]
+        path = path.decode() if isinstance(path, bytes) else path
+        if os.path.exists(path):
+            with h5py.File(path) as f:
+                if "provenance" in f and "cpu_time_s" in f["provenance"].attrs:
+                    times.append(float(f["provenance"].attrs["cpu_time_s"]))
+    return (sum(times) / len(times), max(times)) if times else (math.nan, math.nan)
+
+
+def structure_row(results, group, paper):
     n = int(group.attrs["n_files"])
     p = float(group.attrs["p"])
     phi, phi_sd = float(group.attrs["phi"]), float(group.attrs["phi_std"])
-    contacts = group["contacts"].attrs if "contacts" in group else {}
-    z = float(contacts.get("z_mean", math.nan))
-    z_sd = float(contacts.get("z_mean_std", math.nan))
-    r = 100 * float(contacts.get("rattler_fraction", math.nan))
-    r_sd = 100 * float(contacts.get("rattler_fraction_std", math.nan))
+    z, z_sd = attr(group, "contacts", "z_mean")
+    r, r_sd = (100 * v for v in attr(group, "contacts", "rattler_fraction"))
     ref = paper.get(round(p, 4))
     pphi, pphi_sd = number(ref, "phi"), number(ref, "phi_sd")
     pz, pr, pr_sd = number(ref, "Z"), number(ref, "phi_R_percent"), number(ref, "phi_R_sd_percent")
     ok_phi = None if math.isnan(pphi) else abs(phi - pphi) <= 2 * math.sqrt(pphi_sd**2 + phi_sd**2 / n)
     ok_z = None if math.isnan(pz) or math.isnan(z) else abs(z - pz) <= 0.05
     ok_r = None if math.isnan(pr) or math.isnan(r) else abs(r - pr) <= 2 * pr_sd
-    hyper = group["hyperuniformity"].attrs if "hyperuniformity" in group else {}
-    alpha = float(hyper.get("alpha", math.nan))
+    cpu_mean, cpu_max = cpu_seconds(results, group)
     return (f"| {p:g} | {int(group.attrs['n_particles'])} | {n} | {phi:.5f} +- {phi_sd:.5f} | "
             f"{pphi:.5f} +- {pphi_sd:.5f} | {mark(ok_phi)} | {z:.3f} +- {z_sd:.3f} | {pz:.3f} | "
             f"{mark(ok_z)} | {r:.2f} +- {r_sd:.2f} | {pr:.2f} +- {pr_sd:.2f} | {mark(ok_r)} | "
-            f"{alpha:.2f} | {number(ref, 'alpha'):.2f} |")
+            f"{cpu_mean:.0f} / {cpu_max:.0f} |")
 
 
-def main(results, reference):
+def semi_axis(results, group):
+    member = group["members"][0]
+    return float(results["files"][str(member)].attrs["semi_axis"])
+
+
+def pm(pair, scale=1.0, digits=3):
+    mean, sd = pair
+    return "-" if math.isnan(mean) else f"{mean * scale:.{digits}f} +- {sd * scale:.{digits}f}"
+
+
+def transport_row(results, group, paper):
+    p = float(group.attrs["p"])
+    ref = paper.get(round(p, 4))
+    width = float(group.attrs["mean_width"]) / (2 * semi_axis(results, group))
+    return (f"| {p:g} | {width:.4f} | {pm(attr(group, 'pore_size', 'mean_w'), 1e2)} | "
+            f"{pm(attr(group, 'transport', 'permeability_w2'), 1e4)} | "
+            f"{pm(attr(group, 'transport', 'mean_survival_time_scaled'), 1e3)} | "
+            f"{pm(attr(group, 'transport', 'principal_relaxation_time_scaled'), 1e3)} | "
+            f"{pm(attr(group, 'spreadability', 'alpha'), 1, 2)} | {number(ref, 'alpha'):.2f} | "
+            f"{pm(attr(group, 'hyperuniformity', 'a0'), 1e4, 1)} | {number(ref, 'a0_e-4'):.2f} | "
+            f"{pm(attr(group, 'hyperuniformity', 'a1'), 1e3, 1)} | {number(ref, 'a1_e-3'):.2f} | "
+            f"{pm(attr(group, 'hyperuniformity', 'H'), 1e3, 0)} | {number(ref, 'H_e-3'):.2f} |")
+
+
+def main(results_path, reference):
     paper = paper_rows(reference)
-    print("| p | N | n | phi (ours) | phi (paper) | phi ok | Z (ours) | Z (paper) | Z ok | "
-          "phi_R % (ours) | phi_R % (paper) | phi_R ok | alpha (ours) | alpha (paper) |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
-    with h5py.File(results) as f:
-        groups = sorted(f["ensembles"].values(), key=lambda g: float(g.attrs["p"]))
+    with h5py.File(results_path) as results:
+        groups = sorted(results["ensembles"].values(), key=lambda g: float(g.attrs["p"]))
+        print("| p | N | n | phi (ours) | phi (paper) | phi ok | Z (ours) | Z (paper) | Z ok | "
+              "phi_R % (ours) | phi_R % (paper) | phi_R ok | sbgen CPU s (mean / max) |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
         for group in groups:
-            print(ensemble_row(group, paper))
-    print("\nphi ok: |phi - phi_paper| <= 2 sqrt(sd_paper^2 + sd^2 / n); Z ok: |Z - Z_paper| <= "
-          "0.05; phi_R ok: inside the paper's +- 2 sd. Paper: data/mst-reference-values.csv "
-          "(N = 5000 for p != 1, N = 1000 for spheres, final pressure 1e14).")
+            print(structure_row(results, group, paper))
+        print("\nphi ok: |phi - phi_paper| <= 2 sqrt(sd_paper^2 + sd^2 / n); Z ok: |Z - Z_paper| <= "
+              "0.05; phi_R ok: inside the paper's +- 2 sd. Paper: data/mst-reference-values.csv "
+              "(N = 5000 for p != 1, N = 1000 for spheres, final pressure 1e14).")
+        if not any(name in g for g in groups for name in ("pore_size", "hyperuniformity")):
+            return
+        print("\n| p | w / D | <delta> / w (1e-2) | k / w^2 (1e-4) | "
+              "tau D / w^2 (1e-3) | T1 D / w^2 (1e-3) | alpha (ours) | alpha (paper) | "
+              "a0 (1e-4 w^3, ours) | a0 (paper) | a1 (1e-3, ours) | a1 (paper) | H (1e-3, ours) | "
+              "H (paper) |")
+        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+        for group in groups:
+            print(transport_row(results, group, paper))
+        print("\nMean +- sd over the ensemble's packings. Pore sizes and transport: the voxel "
+              "method unless sbanalyze was given --pores refined|exact; k, tau and T1 are the "
+              "paper's bounds (Eqs. 17-20, diffusion-controlled: T1 D / w^2 = <delta^2> / w^2). alpha from the spreadability "
+              "fit; a0, a1, H from the chi_V fit (docs/hyperuniformity.md). The paper prints no "
+              "table of w, pore sizes or transport (its figures only).")
 
 
 if __name__ == "__main__":

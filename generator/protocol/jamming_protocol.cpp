@@ -34,12 +34,6 @@ bool positiveFinite(double x) {
     return std::isfinite(x) && x > 0.0;
 }
 
-/// Whether bodies of exponent p rotate: all but spheres, which run on the exact sphere shape (the
-/// one place the protocol tells the shapes apart; the engine does not).
-bool rotating(double p) {
-    return p != 1.0;
-}
-
 /// The engine for exponent p: the exact sphere engine at p = 1, the superball one otherwise.
 template <class Engine>
 Engine makeEngine(double p, double box, std::vector<ParticleState> state, GrowthClock clock) {
@@ -123,12 +117,16 @@ GrowthClock growthClockOf(const Packing& packing, const std::string& source) {
 
 } // namespace
 
+bool rotating(double p) {
+    return p != 1.0;
+}
+
 double ProtocolParameters::fastGrowthRate() const {
     return gammaFast.value_or(paperFastRate(p));
 }
 
 double ProtocolParameters::slowGrowthRate() const {
-    return gammaSlow.value_or(rotating(p) ? 1e-2 : 1e-4);
+    return gammaSlow.value_or(rotating(p) ? paperSlowRate(p) : 1e-4);
 }
 
 void ProtocolParameters::validate() const {

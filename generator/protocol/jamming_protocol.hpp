@@ -30,6 +30,10 @@
 
 namespace sbpack {
 
+/// Whether bodies of exponent p rotate: all but spheres, which run on the exact sphere shape (the
+/// one place the protocol tells the shapes apart; the engine does not).
+bool rotating(double p);
+
 struct ProtocolParameters {
     int particles = 1000;
     double p = 1.0;
@@ -51,9 +55,9 @@ struct ProtocolParameters {
     double fastGrowthRate() const;
 
     /// The slow rate used: gammaSlow if set, else 1e-4 for spheres (Z = 5.978 +- 0.005 at
-    /// N = 1000, where 1e-3 leaves 5.94) and 1e-2 for superballs, whose Z keeps rising as the
-    /// slow phase slows (p = 1.5: 7.95 at 1e-2, 8.13 at 1e-3; paper 7.925) while each collision
-    /// costs ten times a sphere's (bench/RESULTS.md, "Fidelity").
+    /// N = 1000, where 1e-3 leaves 5.94) and for superballs the paper's protocol at p
+    /// (paperSlowRate: the rate that reproduces its Z, whose superball Z keeps rising as the slow
+    /// phase slows; bench/RESULTS.md, "Fidelity", E11).
     double slowGrowthRate() const;
 
     /// Throws ProtocolParameterError naming the first bad parameter (by its provenance name,

@@ -1,0 +1,134 @@
+#include "protocol/protocol_advice.hpp"
+
+#include "geometry/superball.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iterator>
+
+namespace sbpack {
+namespace {
+
+struct MeasuredCollisionRate {
+    double p;
+    double perCpuSecond;
+};
+
+/// Collisions per CPU second of the rotating engine, measured on this machine class with the
+/// other core busy (bench/RESULTS.md: "Extreme p" at N = 50 for p <= 0.55 and p >= 100, the
+/// "Fidelity" E9 defaults at N = 1000 for 0.85-1.5, "Near-cubes after the jam check" and the
+/// local search at N = 200 for 2-10).
+const std::vector<MeasuredCollisionRate>& rotatingRates() {
+    static const std::vector<MeasuredCollisionRate> rates = {
+        {0.501, 3.8e3}, {0.51, 1.8e4}, {0.55, 3.9e4}, {0.85, 7.8e4}, {1.1, 8.4e4}, {1.5, 7.4e4},
+        {2.0, 5.3e4},   {3.0, 3.6e4},  {5.0, 1.1e4},  {10.0, 3.1e3}, {100.0, 280}, {1000.0, 310},
+    };
+    return rates;
+}
+
+/// The exact sphere engine (bench/RESULTS.md, "MRJ spheres, N = 1000").
+constexpr double kSphereRate = 6.5e5;
+
+/// Collisions per particle up to the switch pressure at the paper's fast rates (0.01-0.03:
+/// 2.5-4e3 to P = 1e7, bench/RESULTS.md, "Fidelity", E8).
+constexpr double kFastPhaseCollisions = 3.0e3;
+
+/// Collisions per particle per decade of pressure, times gamma_slow, in the slow phase
+/// (bench/RESULTS.md, "Fidelity", E11: the same runs at gamma_slow 1e-2 and 5e-3; spheres
+/// from "MRJ spheres, N = 1000": 290 M collisions at 1e-4 against 40 M at 1e-3 to 1e12).
+constexpr double kSlowCollisionsTimesRateSpheres = 4.8;
+constexpr double kSlowCollisionsTimesRateSuperballs = 17.0;
+
+/// Above this expected CPU time a run is called very slow.
+constexpr double kSlowRunSeconds = 3600.0;
+
+/// The paper's range of fast rates (Sec. III A).
+constexpr double kPaperFastMin = 0.005, kPaperFastMax = 0.05;
+
+/// Near-cubes form a column spanning a box this few diameters across (N = 200 at p >= 3).
+constexpr double kNearCubeExponent = 3.0;
+constexpr double kColumnBoxDiameters = 8.0;
+
+/// The box edge in diameters at jamming, with phi about 0.85 (near-cubes, bench/RESULTS.md).
+double jammedBoxDiameters(const ProtocolParameters& parameters) {
+    const double unitVolume = Superball(parameters.p, 0.5).volume(); // D = 1
+    return std::cbrt(parameters.particles * unitVolume / 0.85);
+}
+
+std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
+    char line[256];
+    std::snprintf(line, sizeof line, pattern, a, b, c);
+    return line;
+}
+
+std::string costText(const ExpectedCost& cost) {
+    const double hours = cost.cpuSeconds / 3600.0;
+    return hours >= 1.0 ? format("about %.3g CPU hours (%.2g collisions)", hours, cost.collisions)
+                        : format("about %.2g CPU minutes (%.2g collisions)", cost.cpuSeconds / 60.0,
+                                 cost.collisions);
+}
+
+} // namespace
+
+double collisionRate(double p) {
+    if (!rotating(p)) return kSphereRate;
+    const auto& table = rotatingRates();
+    if (p <= table.front().p) return table.front().perCpuSecond;
+    if (p >= table.back().p) return table.back().perCpuSecond;
+    const auto right =
+        std::upper_bound(table.begin(), table.end(), p,
+                         [](double x, const MeasuredCollisionRate& r) { return x < r.p; });
+    const auto& left = *std::prev(right);
+    const double t = (p - left.p) / (right->p - left.p);
+    return std::exp(std::log(left.perCpuSecond) +
+                    t * (std::log(right->perCpuSecond) - std::log(left.perCpuSecond)));
+}
+
+ExpectedCost expectedCost(const ProtocolParameters& parameters) {
+    const double decades = std::max(
+        0.0, std::log10(parameters.pressureFinal / std::max(1.0, parameters.pressureSwitch)));
+    const double perDecade = rotating(parameters.p) ? kSlowCollisionsTimesRateSuperballs
+                                                    : kSlowCollisionsTimesRateSpheres;
+    const double perParticle =
+        kFastPhaseCollisions + perDecade * decades / parameters.slowGrowthRate();
+    const double collisions = perParticle * parameters.particles;
+    return {collisions, collisions / collisionRate(parameters.p)};
+}
+
+std::vector<std::string> protocolWarnings(const ProtocolParameters& parameters) {
+    std::vector<std::string> warnings;
+    const ExpectedCost cost = expectedCost(parameters);
+    if (cost.cpuSeconds > kSlowRunSeconds)
+        warnings.push_back("a very slow run: expected " + costText(cost) +
+                           " from the measured collision counts and rates (docs/design.md §3)");
+    const double fast = parameters.fastGrowthRate();
+    if (fast > kPaperFastMax)
+        warnings.push_back(
+            format("gamma-fast %g is above the paper's range (0.005, 0.05): the fast "
+                   "phase ends far from jamming and the slow phase densifies the "
+                   "packing, to larger phi and Z than MRJ (paper Sec. III A)",
+                   fast));
+    if (fast < kPaperFastMin)
+        warnings.push_back(format("gamma-fast %g is below the paper's range (0.005, 0.05): the "
+                                  "compression follows the equilibrium branch and may crystallise "
+                                  "(paper Sec. III A)",
+                                  fast));
+    if (parameters.p > 10.0)
+        warnings.push_back(
+            format("p = %g: near-cubes this flat run at a few hundred collisions per "
+                   "CPU second (p = 100 and 1000: about 300 at N = 50), so a jam "
+                   "takes days; p <= 10 is practical (bench/RESULTS.md, \"Extreme "
+                   "p\")",
+                   parameters.p));
+    const double box = jammedBoxDiameters(parameters);
+    if (parameters.p >= kNearCubeExponent && box < kColumnBoxDiameters)
+        warnings.push_back(format("p = %g, N = %g: the box will be about %.1f diameters across, so "
+                                  "a column of near-cubes can span it and carry the pressure "
+                                  "alone; such runs end refused as not jammed (at N = 200 most "
+                                  "did); N >= 1000 avoids it",
+                                  parameters.p, parameters.particles, box));
+    return warnings;
+}
+
+} // namespace sbpack

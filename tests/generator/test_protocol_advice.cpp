@@ -1,0 +1,92 @@
+// The expected cost and the warnings sbgen prints once before a run (generator/protocol/
+// protocol_advice): the model against the runs it was fitted to, and a warning exactly where a
+// protocol is very slow, outside the paper's fast-rate range or unlikely to jam.
+#include "protocol/protocol_advice.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+namespace sbpack {
+namespace {
+
+ProtocolParameters defaults(double p, int particles) {
+    ProtocolParameters parameters;
+    parameters.p = p;
+    parameters.particles = particles;
+    return parameters;
+}
+
+bool mentions(const std::vector<std::string>& warnings, const std::string& text) {
+    return std::any_of(warnings.begin(), warnings.end(),
+                       [&](const std::string& w) { return w.find(text) != std::string::npos; });
+}
+
+TEST(ProtocolAdvice, TheDefaultsAtThePapersExponentsNeedNoWarning) {
+    for (double p : {0.85, 0.9, 0.95, 0.975, 1.0, 1.025, 1.05, 1.1, 1.2, 1.3, 1.4, 1.5, 2.0})
+        EXPECT_TRUE(protocolWarnings(defaults(p, 1000)).empty()) << "p = " << p;
+}
+
+TEST(ProtocolAdvice, TheExpectedCollisionsMatchTheMeasuredRunsWithinAFactorOfTwo) {
+    // bench/RESULTS.md: spheres, N = 1000, defaults (gamma_slow 1e-4) to 1e12: about 290 M
+    // collisions; with gamma_slow 1e-3: 40 M. p = 1.5, N = 1000, defaults: 9.4-12.2 M (E9).
+    const double spheres = expectedCost(defaults(1.0, 1000)).collisions;
+    EXPECT_GT(spheres, 290e6 / 2);
+    EXPECT_LT(spheres, 290e6 * 2);
+    ProtocolParameters faster = defaults(1.0, 1000);
+    faster.gammaSlow = 1e-3;
+    EXPECT_GT(expectedCost(faster).collisions, 40e6 / 2);
+    EXPECT_LT(expectedCost(faster).collisions, 40e6 * 2);
+    const double superballs = expectedCost(defaults(1.5, 1000)).collisions;
+    EXPECT_GT(superballs, 9.4e6 / 2);
+    EXPECT_LT(superballs, 12.2e6 * 2);
+}
+
+TEST(ProtocolAdvice, TheCostGrowsWithNAndTheSlowPhaseAsOneOverItsRate) {
+    const ExpectedCost base = expectedCost(defaults(1.2, 1000));
+    EXPECT_NEAR(expectedCost(defaults(1.2, 5000)).collisions, 5.0 * base.collisions,
+                1e-9 * base.collisions);
+    ProtocolParameters slower = defaults(1.2, 1000);
+    slower.gammaSlow = slower.slowGrowthRate() / 10.0;
+    ProtocolParameters noSlowPhase = defaults(1.2, 1000);
+    noSlowPhase.pressureFinal = noSlowPhase.pressureSwitch;
+    const double fastPart = expectedCost(noSlowPhase).collisions;
+    EXPECT_NEAR(expectedCost(slower).collisions - fastPart, 10.0 * (base.collisions - fastPart),
+                1e-9 * base.collisions);
+    // Flatter shapes collide more slowly: the rate falls from p = 1.5 to the near-cubes.
+    EXPECT_GT(collisionRate(1.5), collisionRate(3.0));
+    EXPECT_GT(collisionRate(3.0), collisionRate(10.0));
+    EXPECT_GT(collisionRate(1.0), 5.0 * collisionRate(1.1)); // the exact sphere engine
+}
+
+TEST(ProtocolAdvice, AVerySlowRunIsToldItsExpectedCost) {
+    ProtocolParameters slow = defaults(1.5, 5000);
+    slow.gammaSlow = 1e-4;
+    const auto warnings = protocolWarnings(slow);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("CPU hours"), std::string::npos) << warnings[0];
+}
+
+TEST(ProtocolAdvice, FastRatesOutsideThePapersRangeAreNamed) {
+    ProtocolParameters fast = defaults(1.5, 1000);
+    fast.gammaFast = 0.1;
+    EXPECT_TRUE(mentions(protocolWarnings(fast), "above the paper's range"));
+    fast.gammaFast = 0.002;
+    EXPECT_TRUE(mentions(protocolWarnings(fast), "below the paper's range"));
+    fast.gammaFast = 0.05;
+    EXPECT_TRUE(protocolWarnings(fast).empty());
+}
+
+TEST(ProtocolAdvice, NearCubesInASmallBoxAreWarnedOfAColumnSpanningIt) {
+    // N = 200 at p >= 3 formed spanning columns (bench/RESULTS.md, "Near-cubes after the jam
+    // check"); N = 1000 and p = 2 at N = 200 jammed.
+    EXPECT_TRUE(mentions(protocolWarnings(defaults(10.0, 200)), "column"));
+    EXPECT_TRUE(mentions(protocolWarnings(defaults(3.0, 200)), "column"));
+    EXPECT_FALSE(mentions(protocolWarnings(defaults(2.0, 200)), "column"));
+    EXPECT_FALSE(mentions(protocolWarnings(defaults(3.0, 1000)), "column"));
+    EXPECT_TRUE(mentions(protocolWarnings(defaults(100.0, 1000)), "p <= 10 is practical"));
+}
+
+} // namespace
+} // namespace sbpack
