@@ -61,9 +61,12 @@ class ExactPoreSizes {
     /// A particle whose minimum image contains x (Superball::contains), or -1 if none does.
     int particleContaining(const Vector3d& x) const;
     /// Whether r + d is inside particle `particle` centred at r (gaugePower < 1, which may differ
-    /// from Superball::contains within rounding of the surface).
+    /// from Superball::contains within rounding of the surface); no gauge well inside the
+    /// inscribed sphere.
     bool inside(int particle, const Vector3d& d) const {
-        if (shape_.isSphere()) return d.squaredNorm() < shape_.semiAxis() * shape_.semiAxis();
+        const double squared = d.squaredNorm();
+        if (shape_.isSphere()) return squared < shape_.semiAxis() * shape_.semiAxis();
+        if (squared < (1.0 - 1e-12) * inradius_ * inradius_) return true;
         return gaugePower(shape_, rotations_[particle].transpose() * d) < 1.0;
     }
 

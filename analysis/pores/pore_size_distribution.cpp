@@ -242,6 +242,7 @@ PoreSizeDistributionResult PoreSizeDistribution::compute(const PoreSizeMap& map,
     const std::int64_t total = plane * m;
     const std::uint32_t* squared = map.squaredDistances().data();
     const std::size_t levels = static_cast<std::size_t>(map.maxSquaredDistance()) + 1;
+    const double voidFraction = static_cast<double>(map.voidCount()) / static_cast<double>(total);
 
     // Histogram of the squared distances n (voxel units): the pore size is a sqrt(n). Each chunk
     // counts into its own histogram (split by output block), summed in order afterwards.
@@ -257,19 +258,14 @@ PoreSizeDistributionResult PoreSizeDistribution::compute(const PoreSizeMap& map,
             for (std::int64_t c = begin; c < end; ++c) {
                 std::vector<std::int64_t> histogram(levels, 0);
                 if (sampled) {
-                    // Uniform random points of the box, kept where their voxel is void: each
-                    // void voxel equally likely (the paper's sampling, Sec. III B).
+                    // Uniform random void voxels: each equally likely (the paper's sampling,
+                    // Sec. III B).
                     Random generator = Random::stream(parameters_.seed, c);
                     const std::int64_t points = std::min(
                         kRandomPointChunk, parameters_.randomPoints - c * kRandomPointChunk);
-                    for (std::int64_t n = 0; n < points;) {
-                        const auto index = std::min<std::int64_t>(
-                            total - 1, static_cast<std::int64_t>(generator.uniform() *
-                                                                 static_cast<double>(total)));
-                        if (squared[index] == 0) continue; // solid voxel: draw again
-                        ++histogram[squared[index]];
-                        ++n;
-                    }
+                    for (const std::int64_t v :
+                         randomVoidVoxels(squared, total, voidFraction, points, generator))
+                        ++histogram[squared[v]];
                 } else {
                     const std::int64_t first = c * planesPerChunk * plane;
                     const std::int64_t last =

@@ -63,10 +63,13 @@ int VoxelRefiner::particleContaining(const Vector3d& s, int hint) const {
         const Vector3d d = image(s - pores_.position(hint));
         if (pores_.inside(hint, d)) return hint;
         // A particle containing s has its centre within r_c of s, so within |d| + r_c of hint's.
-        const double reach = d.norm() + pores_.circumradius();
-        for (int a = start_[hint]; a < start_[hint + 1] && neighbours_[a].distance < reach; ++a)
-            if (pores_.inside(neighbours_[a].particle, d - neighbours_[a].offset))
+        const double rc = pores_.circumradius();
+        const double reach = d.norm() + rc;
+        for (int a = start_[hint]; a < start_[hint + 1] && neighbours_[a].distance < reach; ++a) {
+            const Vector3d e = d - neighbours_[a].offset; // s minus the neighbour's centre
+            if (e.squaredNorm() <= rc * rc && pores_.inside(neighbours_[a].particle, e))
                 return neighbours_[a].particle;
+        }
     }
     return pores_.particleContaining(s);
 }
@@ -184,6 +187,7 @@ Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const Vox
     const std::int64_t total = static_cast<std::int64_t>(m) * m * m;
     const std::uint32_t* squared = map.squaredDistances().data();
     const bool sampled = parameters.randomPoints > 0;
+    const double voidFraction = static_cast<double>(map.voidCount()) / static_cast<double>(total);
     const std::int64_t planesPerChunk = std::max<std::int64_t>(1, m / 64);
     const std::int64_t chunks =
         sampled ? (parameters.randomPoints + kRandomPointChunk - 1) / kRandomPointChunk
@@ -201,18 +205,18 @@ Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const Vox
                                       tallies[c]);
                     continue;
                 }
-                // Uniform random voxels, kept where void (as PoreSizeDistribution).
+                // Uniform random void voxels (as PoreSizeDistribution), refined in the order of
+                // their feature voxels: neighbouring features often share a particle.
                 Random generator = Random::stream(parameters.seed, c);
                 const std::int64_t points =
                     std::min(kRandomPointChunk, parameters.randomPoints - c * kRandomPointChunk);
-                for (std::int64_t n = 0; n < points;) {
-                    const auto v = std::min<std::int64_t>(
-                        total - 1, static_cast<std::int64_t>(generator.uniform() *
-                                                             static_cast<double>(total)));
-                    if (squared[v] == 0) continue;
+                std::vector<std::pair<std::uint32_t, std::int64_t>> byFeature;
+                for (const std::int64_t v :
+                     randomVoidVoxels(squared, total, voidFraction, points, generator))
+                    byFeature.emplace_back(map.features()[v], v);
+                std::sort(byFeature.begin(), byFeature.end());
+                for (const auto& [feature, v] : byFeature)
                     pass.refine(v, pass.centre(v), tallies[c]);
-                    ++n;
-                }
             }
         },
         parameters.serial);

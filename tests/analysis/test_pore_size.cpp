@@ -1,6 +1,7 @@
 #include "parallel/parallel.hpp"
 #include "pores/exact_pore_size.hpp"
 #include "pores/pore_size_distribution.hpp"
+#include "pores/random_points.hpp"
 #include "test_packings.hpp"
 
 #include <gtest/gtest.h>
@@ -14,6 +15,39 @@
 
 namespace sbpack {
 namespace {
+
+// The samplers' random void voxels (pores/random_points.hpp) are uniform over the void and
+// never solid: on a grid of 64 voxels whose void is every third voxel, 2.1e5 draws hit each of
+// the 22 void voxels 9545 times on average; a chi-square over them stays within its 21 degrees
+// of freedom's 1e-6 quantile (about 65), and the draws come in ascending order.
+TEST(RandomVoidVoxels, AreUniformOverTheVoidAndNeverSolid) {
+    std::vector<std::uint32_t> squared(64, 0);
+    for (std::size_t v = 0; v < squared.size(); v += 3)
+        squared[v] = 1;
+    const double voids = 22.0, draws = 210000.0;
+    Random generator = Random::stream(7, 0);
+    std::vector<std::int64_t> counts(64, 0);
+    std::vector<std::int64_t> sample;
+    for (int batch = 0; batch < 10; ++batch) { // batches of differing needs
+        sample = randomVoidVoxels(squared.data(), 64, voids / 64.0, 21000, generator);
+        ASSERT_EQ(sample.size(), 21000U);
+        EXPECT_TRUE(std::is_sorted(sample.begin(), sample.end()));
+        for (const std::int64_t v : sample)
+            ++counts[static_cast<std::size_t>(v)];
+    }
+    double chiSquare = 0.0;
+    for (std::size_t v = 0; v < counts.size(); ++v) {
+        if (squared[v] == 0) {
+            EXPECT_EQ(counts[v], 0) << v;
+            continue;
+        }
+        const double expected = draws / voids;
+        chiSquare += (counts[v] - expected) * (counts[v] - expected) / expected;
+    }
+    EXPECT_LT(chiSquare, 65.0);
+    // A wrong guess of the void fraction changes the batches, not the distribution.
+    EXPECT_EQ(randomVoidVoxels(squared.data(), 64, 0.9, 5000, generator).size(), 5000U);
+}
 
 /// Solid mask of spheres (centre-inside rule, minimum image), for tests only.
 std::vector<std::uint8_t> sphereMask(const std::vector<Vector3d>& centres, double radius,
