@@ -17,6 +17,7 @@ constexpr const char* kDescription =
     R"(Generates a maximally random jammed packing with the Donev-Torquato-Stillinger event-driven
 molecular dynamics: N particles start at random (phi-init), fly, collide elastically and grow
 at rate gamma (dD/dt = gamma sqrt(kT/m)) until the reduced pressure P = PV/(NkT) diverges.
+In the DTS sphere code's units (dR/dt at <|v|^2> = 1) that rate is gamma / (2 sqrt 3).
 
 usage: sbgen --out FILE.h5 [options]
        sbgen --resume CHECKPOINT.h5 --out FILE.h5 [--pressure-final P] [--checkpoint FILE.h5])";
@@ -96,8 +97,9 @@ void GeneratorCommandLine::addProtocolOptions() {
         "paper's phi, bench/RESULTS.md, \"Fidelity\", E8)");
     protocol(
         "--gamma-slow", [&p](auto n, auto v) { p.gammaSlow = parseNumber(n, v); },
-        "growth rate from there to --pressure-final (default 1e-4 for spheres, 1e-2\n"
-        "for superballs: bench/RESULTS.md, \"Fidelity\")");
+        "growth rate from there to --pressure-final (default 1e-4 for spheres and, for\n"
+        "superballs, the paper's protocol at --p, 4.4e-3 to 8.6e-3: the rate that gives\n"
+        "the paper's Z, bench/RESULTS.md, \"Fidelity\", E11)");
     protocol(
         "--pressure-switch", [&p](auto n, auto v) { p.pressureSwitch = parseNumber(n, v); },
         "reduced pressure at which growth slows (default 1e6)");
