@@ -98,7 +98,7 @@ void GeneratorCommandLine::addProtocolOptions() {
     protocol(
         "--gamma-slow", [&p](auto n, auto v) { p.gammaSlow = parseNumber(n, v); },
         "growth rate from there to --pressure-final (default 1e-4 for spheres and, for\n"
-        "superballs, the paper's protocol at --p, 4.4e-3 to 8.6e-3: the rate that gives\n"
+        "superballs, the paper's protocol at --p, 4.4e-3 to 1e-2: the rate that gives\n"
         "the paper's Z, bench/RESULTS.md, \"Fidelity\", E11)");
     protocol(
         "--pressure-switch", [&p](auto n, auto v) { p.pressureSwitch = parseNumber(n, v); },
