@@ -104,35 +104,44 @@ def transport_row(results, group, paper):
             f"{pm(attr(group, 'hyperuniformity', 'H'), 1e3, 0)} | {number(ref, 'H_e-3'):.2f} |")
 
 
+STRUCTURE_HEADER = ("p", "N", "n", "phi (ours)", "phi (paper)", "phi ok", "Z (ours)", "Z (paper)",
+                    "Z ok", "phi_R % (ours)", "phi_R % (paper)", "phi_R ok",
+                    "phi_R ok (both errors)", "sbgen CPU s (mean / max)")
+STRUCTURE_NOTE = (
+    "phi ok: |phi - phi_paper| <= 2 sqrt(sd_paper^2 + sd^2 / n); Z ok: |Z - Z_paper| <= 0.05; "
+    "phi_R ok: inside the paper's +- 2 sd; phi_R ok (both errors): |phi_R - phi_R_paper| <= "
+    "2 sqrt(sd_paper^2 + sd^2 / n), as for phi. Paper: data/mst-reference-values.csv (N = 5000 "
+    "for p != 1, N = 1000 for spheres, final pressure 1e14). CPU s: sbgen's, from each "
+    "packing's provenance.")
+TRANSPORT_HEADER = ("p", "w / D", "<delta> / w (1e-2)", "k / w^2 (1e-4)", "tau D / w^2 (1e-3)",
+                    "T1 D / w^2 (1e-3)", "alpha (ours)", "alpha (paper)", "a0 (1e-4 w^3, ours)",
+                    "a0 (paper)", "a1 (1e-3, ours)", "a1 (paper)", "H (1e-3, ours)", "H (paper)")
+TRANSPORT_NOTE = (
+    "Mean +- sd over the ensemble's packings. Pore sizes and transport: the voxel method unless "
+    "sbanalyze was given --pores refined|exact; k, tau and T1 are the paper's bounds (Eqs. "
+    "17-20, diffusion-controlled: T1 D / w^2 = <delta^2> / w^2). alpha from the spreadability "
+    "fit; a0, a1, H from the chi_V fit (docs/hyperuniformity.md). The paper prints no table of "
+    "w, pore sizes or transport (its figures only).")
+
+
+def print_table(header, rows, note):
+    print("| " + " | ".join(header) + " |")
+    print("|" + "---|" * len(header))
+    for row in rows:
+        print(row)
+    print("\n" + note)
+
+
 def main(results_path, reference):
     paper = paper_rows(reference)
     with h5py.File(results_path) as results:
         groups = sorted(results["ensembles"].values(), key=lambda g: float(g.attrs["p"]))
-        print("| p | N | n | phi (ours) | phi (paper) | phi ok | Z (ours) | Z (paper) | Z ok | "
-              "phi_R % (ours) | phi_R % (paper) | phi_R ok | phi_R ok (both errors) | "
-              "sbgen CPU s (mean / max) |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
-        for group in groups:
-            print(structure_row(results, group, paper))
-        print("\nphi ok: |phi - phi_paper| <= 2 sqrt(sd_paper^2 + sd^2 / n); Z ok: |Z - Z_paper| <= "
-              "0.05; phi_R ok: inside the paper's +- 2 sd; phi_R ok (both errors): |phi_R - "
-              "phi_R_paper| <= 2 sqrt(sd_paper^2 + sd^2 / n), as for phi. Paper: "
-              "data/mst-reference-values.csv (N = 5000 for p != 1, N = 1000 for spheres, final "
-              "pressure 1e14). CPU s: sbgen's, from each packing's provenance.")
-        if not any(name in g for g in groups for name in ("pore_size", "hyperuniformity")):
-            return
-        print("\n| p | w / D | <delta> / w (1e-2) | k / w^2 (1e-4) | "
-              "tau D / w^2 (1e-3) | T1 D / w^2 (1e-3) | alpha (ours) | alpha (paper) | "
-              "a0 (1e-4 w^3, ours) | a0 (paper) | a1 (1e-3, ours) | a1 (paper) | H (1e-3, ours) | "
-              "H (paper) |")
-        print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
-        for group in groups:
-            print(transport_row(results, group, paper))
-        print("\nMean +- sd over the ensemble's packings. Pore sizes and transport: the voxel "
-              "method unless sbanalyze was given --pores refined|exact; k, tau and T1 are the "
-              "paper's bounds (Eqs. 17-20, diffusion-controlled: T1 D / w^2 = <delta^2> / w^2). alpha from the spreadability "
-              "fit; a0, a1, H from the chi_V fit (docs/hyperuniformity.md). The paper prints no "
-              "table of w, pore sizes or transport (its figures only).")
+        print_table(STRUCTURE_HEADER, [structure_row(results, g, paper) for g in groups],
+                    STRUCTURE_NOTE)
+        if any(name in g for g in groups for name in ("pore_size", "hyperuniformity")):
+            print()
+            print_table(TRANSPORT_HEADER, [transport_row(results, g, paper) for g in groups],
+                        TRANSPORT_NOTE)
 
 
 if __name__ == "__main__":
