@@ -60,6 +60,10 @@ class PoreSizeMap {
     double boxLength() const { return voxelSize_ * voxels_; }
     std::span<const std::uint32_t> squaredDistances() const;
     std::int64_t voidCount() const { return voidCount_; }
+    /// The void voxels' share of the M^3.
+    double voidFraction() const {
+        return static_cast<double>(voidCount_) / (static_cast<double>(voxels_) * voxels_ * voxels_);
+    }
     /// Largest squared distance (voxel units): the largest pore is a sqrt of it.
     std::uint32_t maxSquaredDistance() const { return maxSquaredDistance_; }
     /// Feature transform (periodicFeatureTransform only, else empty): for every voxel the index

@@ -242,7 +242,6 @@ PoreSizeDistributionResult PoreSizeDistribution::compute(const PoreSizeMap& map,
     const std::int64_t total = plane * m;
     const std::uint32_t* squared = map.squaredDistances().data();
     const std::size_t levels = static_cast<std::size_t>(map.maxSquaredDistance()) + 1;
-    const double voidFraction = static_cast<double>(map.voidCount()) / static_cast<double>(total);
 
     // Histogram of the squared distances n (voxel units): the pore size is a sqrt(n). Each chunk
     // counts into its own histogram (split by output block), summed in order afterwards.
@@ -264,7 +263,7 @@ PoreSizeDistributionResult PoreSizeDistribution::compute(const PoreSizeMap& map,
                     const std::int64_t points = std::min(
                         kRandomPointChunk, parameters_.randomPoints - c * kRandomPointChunk);
                     for (const std::int64_t v :
-                         randomVoidVoxels(squared, total, voidFraction, points, generator))
+                         randomVoidVoxels(squared, total, map.voidFraction(), points, generator))
                         ++histogram[squared[v]];
                 } else {
                     const std::int64_t first = c * planesPerChunk * plane;

@@ -115,9 +115,8 @@ class VoxelPass {
 
     double binWidth() const { return h_; }
 
-    /// Refines void voxel v = (i * M + j) * M + k into the tally.
-    void refine(std::int64_t v, const Vector3d& x, Tally& tally) {
-        const std::uint32_t feature = map_.features()[v];
+    /// Refines the void voxel at x, whose feature voxel is `feature`, into the tally.
+    void refine(std::uint32_t feature, const Vector3d& x, Tally& tally) {
         if (feature != lastFeature_) {
             lastFeature_ = feature;
             lastParticle_ = refiner_.particleContaining(centre(feature), lastParticle_);
@@ -137,6 +136,7 @@ class VoxelPass {
     void refinePlanes(std::int64_t first, std::int64_t last, Tally& tally) {
         const std::int64_t m = m_;
         const std::uint32_t* squared = map_.squaredDistances().data();
+        const std::uint32_t* features = map_.features().data();
         for (std::int64_t i = first; i < last; ++i)
             for (std::int64_t j = 0; j < m; ++j) {
                 const std::int64_t row = (i * m + j) * m;
@@ -145,7 +145,7 @@ class VoxelPass {
                 for (std::int64_t k = 0; k < m; ++k)
                     if (squared[row + k] != 0) {
                         x.z() = (static_cast<double>(k) + 0.5) * a_;
-                        refine(row + k, x, tally);
+                        refine(features[row + k], x, tally);
                     }
             }
     }
@@ -187,7 +187,6 @@ Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const Vox
     const std::int64_t total = static_cast<std::int64_t>(m) * m * m;
     const std::uint32_t* squared = map.squaredDistances().data();
     const bool sampled = parameters.randomPoints > 0;
-    const double voidFraction = static_cast<double>(map.voidCount()) / static_cast<double>(total);
     const std::int64_t planesPerChunk = std::max<std::int64_t>(1, m / 64);
     const std::int64_t chunks =
         sampled ? (parameters.randomPoints + kRandomPointChunk - 1) / kRandomPointChunk
@@ -212,11 +211,11 @@ Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const Vox
                     std::min(kRandomPointChunk, parameters.randomPoints - c * kRandomPointChunk);
                 std::vector<std::pair<std::uint32_t, std::int64_t>> byFeature;
                 for (const std::int64_t v :
-                     randomVoidVoxels(squared, total, voidFraction, points, generator))
+                     randomVoidVoxels(squared, total, map.voidFraction(), points, generator))
                     byFeature.emplace_back(map.features()[v], v);
                 std::sort(byFeature.begin(), byFeature.end());
                 for (const auto& [feature, v] : byFeature)
-                    pass.refine(v, pass.centre(v), tallies[c]);
+                    pass.refine(feature, pass.centre(v), tallies[c]);
             }
         },
         parameters.serial);

@@ -1,26 +1,21 @@
 #include "protocol/protocol_advice.hpp"
 
 #include "geometry/superball.hpp"
+#include "protocol/paper_rates.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <iterator>
 
 namespace sbpack {
 namespace {
-
-struct MeasuredCollisionRate {
-    double p;
-    double perCpuSecond;
-};
 
 /// Collisions per CPU second of the rotating engine, measured on this machine class with the
 /// other core busy (bench/RESULTS.md: "Extreme p" at N = 50 for p <= 0.55 and p >= 100, the
 /// "Fidelity" E9 defaults at N = 1000 for 0.85-1.5, "Near-cubes after the jam check" and the
 /// local search at N = 200 for 2-10).
-const std::vector<MeasuredCollisionRate>& rotatingRates() {
-    static const std::vector<MeasuredCollisionRate> rates = {
+const std::vector<MeasuredAtP>& rotatingRates() {
+    static const std::vector<MeasuredAtP> rates = {
         {0.501, 3.8e3}, {0.51, 1.8e4}, {0.55, 3.9e4}, {0.85, 7.8e4}, {1.1, 8.4e4}, {1.5, 7.4e4},
         {2.0, 5.3e4},   {3.0, 3.6e4},  {5.0, 1.1e4},  {10.0, 3.1e3}, {100.0, 280}, {1000.0, 310},
     };
@@ -72,17 +67,8 @@ std::string costText(const ExpectedCost& cost) {
 } // namespace
 
 double collisionRate(double p) {
-    if (!rotating(p)) return kSphereRate;
-    const auto& table = rotatingRates();
-    if (p <= table.front().p) return table.front().perCpuSecond;
-    if (p >= table.back().p) return table.back().perCpuSecond;
-    const auto right =
-        std::upper_bound(table.begin(), table.end(), p,
-                         [](double x, const MeasuredCollisionRate& r) { return x < r.p; });
-    const auto& left = *std::prev(right);
-    const double t = (p - left.p) / (right->p - left.p);
-    return std::exp(std::log(left.perCpuSecond) +
-                    t * (std::log(right->perCpuSecond) - std::log(left.perCpuSecond)));
+    return rotating(p) ? interpolateInP(rotatingRates(), p, Interpolation::logarithmic)
+                       : kSphereRate;
 }
 
 ExpectedCost expectedCost(const ProtocolParameters& parameters) {

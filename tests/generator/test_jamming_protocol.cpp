@@ -231,29 +231,29 @@ TEST(JammingProtocol, DefaultsSwitchAtTheirPressureAndUseTheSlowRateOfTheirShape
 // 0.85 to 1.5 the fast rate in its range (0.005, 0.05) that gives its phi and the slow rate that
 // gives its Z (of the order of its "gamma ~ 0.001"), linear in between, the end values outside;
 // spheres keep 1e-4; an explicit rate wins.
-void expectAMeasuredTable(const std::vector<MeasuredRate>& table, double (*rate)(double),
+void expectAMeasuredTable(const std::vector<MeasuredAtP>& table, double (*rate)(double),
                           double low, double high) {
     ASSERT_GE(table.size(), 2U);
     EXPECT_EQ(table.front().p, 0.85);
     EXPECT_EQ(table.back().p, 1.5);
     for (std::size_t k = 0; k < table.size(); ++k) {
-        EXPECT_EQ(rate(table[k].p), table[k].gamma) << table[k].p;
-        EXPECT_GT(table[k].gamma, low) << table[k].p;
-        EXPECT_LE(table[k].gamma, high) << table[k].p;
+        EXPECT_EQ(rate(table[k].p), table[k].value) << table[k].p;
+        EXPECT_GT(table[k].value, low) << table[k].p;
+        EXPECT_LE(table[k].value, high) << table[k].p;
         if (k + 1 == table.size()) continue;
         EXPECT_LT(table[k].p, table[k + 1].p);
         EXPECT_NEAR(rate(0.5 * (table[k].p + table[k + 1].p)),
-                    0.5 * (table[k].gamma + table[k + 1].gamma), 1e-15);
+                    0.5 * (table[k].value + table[k + 1].value), 1e-15);
     }
-    EXPECT_EQ(rate(0.6), table.front().gamma);
-    EXPECT_EQ(rate(10.0), table.back().gamma);
+    EXPECT_EQ(rate(0.6), table.front().value);
+    EXPECT_EQ(rate(10.0), table.back().value);
 }
 
 TEST(JammingProtocol, TheDefaultRatesAreTheMeasuredPaperRatesOfTheirP) {
     expectAMeasuredTable(paperFastRates(), paperFastRate, 0.005, 0.05);
     expectAMeasuredTable(paperSlowRates(), paperSlowRate, 1e-3, 1e-2);
-    for (const MeasuredRate& r : paperSlowRates()) // slower than the fast phase at every p
-        EXPECT_LT(r.gamma, paperFastRate(r.p)) << r.p;
+    for (const MeasuredAtP& r : paperSlowRates()) // slower than the fast phase at every p
+        EXPECT_LT(r.value, paperFastRate(r.p)) << r.p;
 
     ProtocolParameters spheres;
     EXPECT_EQ(spheres.fastGrowthRate(), paperFastRate(1.0));
