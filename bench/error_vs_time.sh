@@ -2,8 +2,8 @@
 # Error against run time (issue 21): each analysis's accuracy knob against a converged reference,
 # with the wall time of `sbanalyze --threads 2` for that analysis alone (the process, file read
 # included). Prints a markdown table (bench/error_vs_time_summary.py) and keeps the raw results.
-#   pores, F(delta): voxel and refined at M = 100, 200, 300, 500 and the exact sampler at
-#     K = 1e4, 1e5, 1e6, against the exact sampler at K = 1e7 with another seed (independent);
+#   pores, F(delta): voxel and refined at M = 100, 200, 300, 500, refined from 1e6 random void
+#     voxels at M = 300 and 500, and the exact sampler at K = 1e4, 1e5, 1e6, against the exact sampler at K = 1e7 with another seed (independent);
 #   chi_V (spheres): voxel M = 100, 200, 300, 500 against the exact sphere path of the chi stage
 #     (exact_error: max over shells |chi - chi_exact| / peak);
 #   S(Q): qmax 10, 20, 30, 60 (exact direct sums; error on the shells shared with qmax 60);
@@ -37,6 +37,10 @@ for packing in "${packings[@]}"; do
     for m in 100 200 300 500; do
         run "$stem-pores-voxel-$m" "$packing" --compute pores --pores voxel --pore-voxels "$m"
         run "$stem-pores-refined-$m" "$packing" --compute pores --pores refined --pore-voxels "$m"
+    done
+    for m in 300 500; do
+        run "$stem-pores-refined1e6-$m" "$packing" --compute pores --pores refined \
+            --pore-voxels "$m" --pore-points 1000000
     done
     for k in 10000 100000 1000000; do
         run "$stem-pores-exact-$k" "$packing" --compute pores --pores exact --pore-points "$k"

@@ -48,6 +48,8 @@ for stem in stems:
                  times[stem + "-pores-reference"]))
     settings = [(f"voxel M = {m}", f"{stem}-pores-voxel-{m}") for m in (100, 200, 300, 500)]
     settings += [(f"refined M = {m}", f"{stem}-pores-refined-{m}") for m in (100, 200, 300, 500)]
+    settings += [(f"refined M = {m}, 1e6 random voxels", f"{stem}-pores-refined1e6-{m}")
+                 for m in (300, 500)]
     settings += [(f"exact K = {k:.0e}", f"{stem}-pores-exact-{k}") for k in (10000, 100000, 1000000)]
     for label, name in settings:
         g, _ = group(name, "pore_size")

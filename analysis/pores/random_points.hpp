@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 namespace sbpack {
@@ -15,37 +14,54 @@ namespace sbpack {
 /// Points per chunk of a random sample.
 inline constexpr std::int64_t kRandomPointChunk = 1 << 14;
 
+/// `count` independent uniform draws from [0, range), in ascending order without a sort: the
+/// order statistics of n uniforms are the partial sums of n + 1 exponential spacings divided by
+/// their total (Devroye, Non-Uniform Random Variate Generation, 1986, Sec. V.2).
+inline void ascendingUniformDraws(std::int64_t count, std::int64_t range, Random& generator,
+                                  std::vector<std::int64_t>& out) {
+    std::vector<double> sums(static_cast<std::size_t>(count));
+    double sum = 0.0;
+    for (double& s : sums) {
+        sum -= std::log1p(-generator.uniform()); // Exp(1)
+        s = sum;
+    }
+    sum -= std::log1p(-generator.uniform());
+    const double scale = static_cast<double>(range) / sum;
+    out.resize(sums.size());
+    for (std::size_t i = 0; i < sums.size(); ++i)
+        out[i] = std::min(range - 1, static_cast<std::int64_t>(sums[i] * scale));
+}
+
 /// `points` independent uniformly random void voxels (squared[v] != 0) of the `total` voxels of
 /// a grid whose void fraction is about `voidFraction`, in ascending index order (a voxel may
-/// come twice, as independent draws may). Candidates are drawn in batches and read in index
-/// order (the grid forward, not at random); where a batch holds more void voxels than are still
-/// needed, a uniformly random subset of them is kept. Each kept voxel is thus a uniform draw from
-/// the void, as when drawing again after every solid one (the paper's sampling, Sec. III B).
+/// come twice, as independent draws may). Candidates are drawn in ascending batches
+/// (ascendingUniformDraws), so the grid is read forward, not at random; where a batch holds more
+/// void voxels than are still needed, a uniformly random subset of them is kept, in order, by
+/// selection sampling (Knuth, TAOCP vol. 2, Sec. 3.4.2, Algorithm S). Each kept voxel is thus a
+/// uniform draw from the void, as when drawing again after every solid one (the paper's
+/// sampling, Sec. III B).
 inline std::vector<std::int64_t> randomVoidVoxels(const std::uint32_t* squared, std::int64_t total,
                                                   double voidFraction, std::int64_t points,
                                                   Random& generator) {
     std::vector<std::int64_t> kept, batch;
     kept.reserve(static_cast<std::size_t>(points));
-    const auto draw = [&](std::int64_t range) {
-        return std::min(
-            range - 1, static_cast<std::int64_t>(generator.uniform() * static_cast<double>(range)));
-    };
     while (static_cast<std::int64_t>(kept.size()) < points) {
-        const std::int64_t needed = points - static_cast<std::int64_t>(kept.size());
-        batch.resize(static_cast<std::size_t>(
-            std::ceil(1.1 * static_cast<double>(needed) / std::max(voidFraction, 1e-3)) + 64));
-        for (std::int64_t& v : batch)
-            v = draw(total);
-        std::sort(batch.begin(), batch.end());
+        const auto merged = static_cast<std::ptrdiff_t>(kept.size());
+        std::int64_t needed = points - static_cast<std::int64_t>(kept.size());
+        ascendingUniformDraws(
+            static_cast<std::int64_t>(
+                std::ceil(1.1 * static_cast<double>(needed) / std::max(voidFraction, 1e-3))) +
+                64,
+            total, generator, batch);
         std::erase_if(batch, [&](std::int64_t v) { return squared[v] == 0; });
-        const auto voids = static_cast<std::int64_t>(batch.size());
-        for (std::int64_t i = 0; i < std::min(needed, voids); ++i) // partial Fisher-Yates
-            std::swap(batch[static_cast<std::size_t>(i)],
-                      batch[static_cast<std::size_t>(i + draw(voids - i))]);
-        batch.resize(static_cast<std::size_t>(std::min(needed, voids)));
-        kept.insert(kept.end(), batch.begin(), batch.end());
+        for (std::size_t i = 0; i < batch.size() && needed > 0; ++i)
+            if (static_cast<double>(batch.size() - i) * generator.uniform() <
+                static_cast<double>(needed)) { // keep with probability needed / remaining
+                kept.push_back(batch[i]);
+                --needed;
+            }
+        std::inplace_merge(kept.begin(), kept.begin() + merged, kept.end());
     }
-    std::sort(kept.begin(), kept.end());
     return kept;
 }
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 
 namespace sbpack {
@@ -177,48 +178,100 @@ RefinedPoreSizeDistribution::RefinedPoreSizeDistribution(PoreSizeParameters para
 
 namespace {
 
-/// Refines every void voxel, or K random void voxels, into one tally per chunk (fixed chunks:
-/// the result does not depend on the threads); the tallies summed in order.
+/// Random points drawn and ordered together: a round of this many chunks.
+constexpr std::int64_t kChunksPerRound = 64;
+
+/// Voxel v's block of 8^3 voxels in an M^3 grid, as one index.
+std::int64_t blockOf(std::int64_t v, std::int64_t m) {
+    const std::int64_t blocks = (m + 7) / 8;
+    return ((v / (m * m) / 8) * blocks + (v / m) % m / 8) * blocks + v % m / 8;
+}
+
+/// A random void voxel and its feature voxel.
+struct RandomVoxel {
+    std::int64_t voxel;
+    std::uint32_t feature;
+};
+
+/// The random void voxels of chunks [first, last) (each chunk its own stream of the seed, as
+/// PoreSizeDistribution), ordered by the 8^3 block of their feature voxels, whose voxels mostly
+/// lie in one particle: VoxelRefiner::particleContaining then mostly finds it at its hint. One
+/// sort of 64-bit keys: the block above the voxel's place in the round (< 2^20 of them).
+std::vector<RandomVoxel> randomVoxelsByFeatureBlock(const PoreSizeMap& map,
+                                                    const PoreSizeParameters& parameters,
+                                                    std::int64_t first, std::int64_t last) {
+    const std::int64_t m = map.voxels();
+    std::vector<std::vector<std::int64_t>> drawn(last - first);
+    parallelFor(
+        first, last, 1,
+        [&](std::int64_t begin, std::int64_t end) {
+            for (std::int64_t c = begin; c < end; ++c) {
+                Random generator = Random::stream(parameters.seed, c);
+                drawn[c - first] = randomVoidVoxels(
+                    map.squaredDistances().data(), m * m * m, map.voidFraction(),
+                    std::min(kRandomPointChunk, parameters.randomPoints - c * kRandomPointChunk),
+                    generator);
+            }
+        },
+        parameters.serial);
+    std::vector<RandomVoxel> voxels;
+    for (const auto& chunk : drawn)
+        for (const std::int64_t v : chunk)
+            voxels.push_back({v, map.features()[v]});
+    constexpr int kPlaceBits = 20;
+    static_assert(kChunksPerRound * kRandomPointChunk <= std::int64_t{1} << kPlaceBits);
+    std::vector<std::uint64_t> keys(voxels.size());
+    for (std::size_t i = 0; i < voxels.size(); ++i)
+        keys[i] = static_cast<std::uint64_t>(blockOf(voxels[i].feature, m)) << kPlaceBits | i;
+    std::sort(keys.begin(), keys.end());
+    std::vector<RandomVoxel> ordered(voxels.size());
+    for (std::size_t i = 0; i < keys.size(); ++i)
+        ordered[i] = voxels[keys[i] & ((std::uint64_t{1} << kPlaceBits) - 1)];
+    return ordered;
+}
+
+/// Refines every void voxel, or K random void voxels, into one tally per chunk (fixed chunks,
+/// random voxels drawn and ordered in fixed rounds of chunks: the result does not depend on the
+/// threads); the tallies summed in order.
 Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const VoxelRefiner& refiner,
                   const PoreSizeParameters& parameters, std::size_t bins,
                   const Progress& progress) {
     const int m = map.voxels();
     const double separation = kStartSeparation * map.voxelSize();
-    const std::int64_t total = static_cast<std::int64_t>(m) * m * m;
-    const std::uint32_t* squared = map.squaredDistances().data();
     const bool sampled = parameters.randomPoints > 0;
     const std::int64_t planesPerChunk = std::max<std::int64_t>(1, m / 64);
     const std::int64_t chunks =
         sampled ? (parameters.randomPoints + kRandomPointChunk - 1) / kRandomPointChunk
                 : (m + planesPerChunk - 1) / planesPerChunk;
+    const std::int64_t chunksPerRound = sampled ? kChunksPerRound : chunks;
     std::vector<Tally> tallies(chunks, Tally(bins, separation));
-    parallelFor(
-        0, chunks, 1,
-        [&](std::int64_t begin, std::int64_t end) {
-            VoxelPass pass(map, pores, refiner);
-            for (std::int64_t c = begin; c < end; ++c) {
-                progress.checkInterrupt();
-                if (!sampled) {
-                    pass.refinePlanes(c * planesPerChunk,
-                                      std::min<std::int64_t>(m, (c + 1) * planesPerChunk),
-                                      tallies[c]);
-                    continue;
+    for (std::int64_t round = 0; round < chunks; round += chunksPerRound) {
+        const std::int64_t end = std::min(chunks, round + chunksPerRound);
+        const std::vector<RandomVoxel> points =
+            sampled ? randomVoxelsByFeatureBlock(map, parameters, round, end)
+                    : std::vector<RandomVoxel>();
+        parallelFor(
+            round, end, 1,
+            [&](std::int64_t begin, std::int64_t stop) {
+                VoxelPass pass(map, pores, refiner);
+                for (std::int64_t c = begin; c < stop; ++c) {
+                    progress.checkInterrupt();
+                    if (!sampled) {
+                        pass.refinePlanes(c * planesPerChunk,
+                                          std::min<std::int64_t>(m, (c + 1) * planesPerChunk),
+                                          tallies[c]);
+                        continue;
+                    }
+                    const auto mine = std::span(points).subspan(
+                        (c - round) * kRandomPointChunk,
+                        std::min<std::size_t>(kRandomPointChunk,
+                                              points.size() - (c - round) * kRandomPointChunk));
+                    for (const RandomVoxel& v : mine)
+                        pass.refine(v.feature, pass.centre(v.voxel), tallies[c]);
                 }
-                // Uniform random void voxels (as PoreSizeDistribution), refined in the order of
-                // their feature voxels: neighbouring features often share a particle.
-                Random generator = Random::stream(parameters.seed, c);
-                const std::int64_t points =
-                    std::min(kRandomPointChunk, parameters.randomPoints - c * kRandomPointChunk);
-                std::vector<std::pair<std::uint32_t, std::int64_t>> byFeature;
-                for (const std::int64_t v :
-                     randomVoidVoxels(squared, total, map.voidFraction(), points, generator))
-                    byFeature.emplace_back(map.features()[v], v);
-                std::sort(byFeature.begin(), byFeature.end());
-                for (const auto& [feature, v] : byFeature)
-                    pass.refine(feature, pass.centre(v), tallies[c]);
-            }
-        },
-        parameters.serial);
+            },
+            parameters.serial);
+    }
     Tally all(bins, separation);
     for (const Tally& t : tallies)
         all.add(t);
