@@ -371,7 +371,9 @@ PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& pac
     }
     r.maxSampled = r.max;
     // First simplex: half the spacing of K points in the box, a scale the sample cannot resolve.
-    r.max = std::max(r.max, largestPore(pores, top, spread, 0.5 * spacing).size);
+    r.max = std::max(r.max, largestPore([&pores](const Vector3d& x) { return pores.poreSize(x); },
+                                        pores.boxLength(), top, spread, 0.5 * spacing)
+                                .size);
     r.saturated = r.max < 0.5 * r.meanWidth; // paper Sec. V A
     r.runtimeSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -86,21 +86,20 @@ LargestPore nelderMead(const Function& f, const Vector3d& start, double step) {
 
 } // namespace
 
-LargestPore largestPore(const ExactPoreSizes& pores, std::span<const Vector3d> starts,
-                        double step) {
+LargestPore largestPore(const PoreSizeFunction& poreSize, double boxLength,
+                        std::span<const Vector3d> starts, double step) {
     if (starts.empty()) throw std::invalid_argument("largest pore: no start point");
     if (!(std::isfinite(step) && step > 0.0))
         throw std::invalid_argument("largest pore: the step is not finite and positive");
     LargestPore best;
     int evaluations = 0;
-    const auto size = [&pores](const Vector3d& x) { return pores.poreSize(x); };
     for (const Vector3d& start : starts) {
         // Nelder-Mead can stall on a ridge of a non-smooth function: restart it from where it
         // stopped, with a fresh simplex, while that still gains.
-        LargestPore local = nelderMead(size, start, step);
+        LargestPore local = nelderMead(poreSize, start, step);
         evaluations += local.evaluations;
         for (int restart = 0; restart < kRestarts; ++restart) {
-            const LargestPore again = nelderMead(size, local.position, step);
+            const LargestPore again = nelderMead(poreSize, local.position, step);
             evaluations += again.evaluations;
             const bool gained = again.size > local.size * (1.0 + 1e-13);
             if (again.size > local.size) local = again;
@@ -109,17 +108,17 @@ LargestPore largestPore(const ExactPoreSizes& pores, std::span<const Vector3d> s
         if (local.size > best.size) best = local;
     }
     best.evaluations = evaluations;
-    best.position = wrapIntoBox(best.position, pores.boxLength());
+    best.position = wrapIntoBox(best.position, boxLength);
     return best;
 }
 
-LargestPore largestPore(const ExactPoreSizes& pores, const LargestPoints& top,
-                        const LargestPoints& spread, double step) {
+LargestPore largestPore(const PoreSizeFunction& poreSize, double boxLength,
+                        const LargestPoints& top, const LargestPoints& spread, double step) {
     std::vector<Vector3d> starts;
     for (const LargestPoints* points : {&top, &spread})
         for (const auto& [size, point] : points->points())
             starts.push_back(point);
-    return largestPore(pores, starts, step);
+    return largestPore(poreSize, boxLength, starts, step);
 }
 
 } // namespace sbpack

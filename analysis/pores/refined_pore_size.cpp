@@ -106,6 +106,14 @@ struct Tally {
     }
 };
 
+/// The centre of voxel v = (i * M + j) * M + k of an M^3 grid of voxel size a.
+Vector3d voxelCentre(std::int64_t v, std::int64_t m, double a) {
+    const std::int64_t i = v / (m * m), j = v / m % m, k = v % m;
+    return Vector3d(static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5,
+                    static_cast<double>(k) + 0.5) *
+           a;
+}
+
 /// The refinement of one pass over voxels: the particle of each feature voxel (remembered for
 /// the next voxel, which often shares it), its refined pore size, the tally.
 class VoxelPass {
@@ -152,12 +160,7 @@ class VoxelPass {
     }
 
     /// The centre of voxel v.
-    Vector3d centre(std::int64_t v) const {
-        const std::int64_t m = m_;
-        const std::int64_t i = v / (m * m), j = (v / m) % m, k = v % m; // voxel indices
-        return Vector3d((static_cast<double>(i) + 0.5) * a_, (static_cast<double>(j) + 0.5) * a_,
-                        (static_cast<double>(k) + 0.5) * a_);
-    }
+    Vector3d centre(std::int64_t v) const { return voxelCentre(v, m_, a_); }
 
   private:
     const PoreSizeMap& map_;
@@ -280,6 +283,27 @@ Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const Vox
 
 } // namespace
 
+namespace {
+
+/// The pore size at any point x by the refiner: the particle holding the feature of x's voxel
+/// starts the search (any particle would keep it exact; a near one keeps it short).
+PoreSizeFunction refinedPoreSize(const PoreSizeMap& map, const ExactPoreSizes& pores,
+                                 const VoxelRefiner& refiner) {
+    const int m = map.voxels();
+    const double a = map.voxelSize();
+    return [&map, &pores, &refiner, m, a, hint = -1](const Vector3d& x) mutable {
+        const Vector3d w = wrapIntoBox(x, pores.boxLength());
+        std::int64_t v = 0;
+        for (int k = 0; k < 3; ++k)
+            v = v * m + std::clamp(static_cast<std::int64_t>(w[k] / a), std::int64_t{0},
+                                   std::int64_t{m} - 1);
+        hint = refiner.particleContaining(voxelCentre(map.features()[v], m, a), hint);
+        return refiner.poreSize(w, hint).upper;
+    };
+}
+
+} // namespace
+
 PoreSizeDistributionResult RefinedPoreSizeDistribution::compute(const PoreSizeMap& map,
                                                                 const Packing& packing,
                                                                 const Progress& progress) const {
@@ -294,8 +318,8 @@ PoreSizeDistributionResult RefinedPoreSizeDistribution::compute(const PoreSizeMa
     // Voxel distances bound the pore sizes: a feature voxel's centre is inside a particle.
     const double maxPore = a * std::sqrt(static_cast<double>(map.maxSquaredDistance()));
     const auto bins = static_cast<std::size_t>(std::ceil(maxPore / a * kBinsPerVoxel)) + 2;
-    const Tally all =
-        tallyVoxels(map, pores, VoxelRefiner(pores, maxPore), parameters_, bins, progress);
+    const VoxelRefiner refiner(pores, maxPore);
+    const Tally all = tallyVoxels(map, pores, refiner, parameters_, bins, progress);
     PoreSizeDistributionResult r =
         binnedPoreSizeStatistics(all.histogram, a / kBinsPerVoxel, all.sums, all.largest,
                                  packing.shape().meanWidth(), parameters_.densityBins);
@@ -310,7 +334,9 @@ PoreSizeDistributionResult RefinedPoreSizeDistribution::compute(const PoreSizeMa
         setStandardErrors(r, all.sums);
     else
         r.maxUpperBound = all.largest + 0.5 * std::sqrt(3.0) * a;
-    r.max = std::max(r.maxSampled, largestPore(pores, all.top, all.spread, 0.5 * a).size);
+    r.max = std::max(r.maxSampled, largestPore(refinedPoreSize(map, pores, refiner),
+                                               map.boxLength(), all.top, all.spread, 0.5 * a)
+                                       .size);
     r.saturated = r.max < 0.5 * r.meanWidth; // paper Sec. V A
     r.runtimeSeconds = clock.seconds();
     return r;

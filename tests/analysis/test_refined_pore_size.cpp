@@ -178,12 +178,13 @@ TEST(LargestPore, NelderMeadClimbsToTheFarthestPointFromOneSphere) {
     const double length = 3.0;
     const Packing packing = testing::singleParticle(1.0, 0.5, length, Vector3d(1.0, 1.0, 1.0));
     const ExactPoreSizes pores(packing);
+    const PoreSizeFunction size = [&pores](const Vector3d& x) { return pores.poreSize(x); };
     const std::vector<Vector3d> starts = {Vector3d(2.2, 2.7, 2.3)};
-    const LargestPore best = largestPore(pores, starts, 0.1);
+    const LargestPore best = largestPore(size, length, starts, 0.1);
     EXPECT_NEAR(best.size, std::sqrt(3.0) * length / 2.0 - 0.5, 1e-9);
     EXPECT_NEAR((best.position - Vector3d(2.5, 2.5, 2.5)).norm(), 0.0, 1e-6);
-    EXPECT_THROW(largestPore(pores, {}, 0.1), std::invalid_argument);
-    EXPECT_THROW(largestPore(pores, starts, 0.0), std::invalid_argument);
+    EXPECT_THROW(largestPore(size, length, {}, 0.1), std::invalid_argument);
+    EXPECT_THROW(largestPore(size, length, starts, 0.0), std::invalid_argument);
 }
 
 TEST(ExactPoreSize, SamplerRecordsStandardErrorsAndACertificate) {
