@@ -16,7 +16,8 @@ inline constexpr std::int64_t kRandomPointChunk = 1 << 14;
 
 /// `count` independent uniform draws from [0, range), in ascending order without a sort: the
 /// order statistics of n uniforms are the partial sums of n + 1 exponential spacings divided by
-/// their total (Devroye, Non-Uniform Random Variate Generation, 1986, Sec. V.2).
+/// their total (Devroye, Non-Uniform Random Variate Generation, 1986, Sec. V.2). Like
+/// Random::normal, the draws depend on the C library's log (here log1p) to its last bit.
 inline void ascendingUniformDraws(std::int64_t count, std::int64_t range, Random& generator,
                                   std::vector<std::int64_t>& out) {
     std::vector<double> sums(static_cast<std::size_t>(count));

@@ -286,7 +286,8 @@ Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const Vox
 namespace {
 
 /// The pore size at any point x by the refiner: the particle holding the feature of x's voxel
-/// starts the search (any particle would keep it exact; a near one keeps it short).
+/// starts the search (any particle would keep it exact; a near one keeps it short). Serial: the
+/// function remembers the last particle as its next hint.
 PoreSizeFunction refinedPoreSize(const PoreSizeMap& map, const ExactPoreSizes& pores,
                                  const VoxelRefiner& refiner) {
     const int m = map.voxels();
