@@ -231,8 +231,8 @@ TEST(JammingProtocol, DefaultsSwitchAtTheirPressureAndUseTheSlowRateOfTheirShape
 // 0.85 to 1.5 the fast rate in its range (0.005, 0.05) that gives its phi and the slow rate that
 // gives its Z (of the order of its "gamma ~ 0.001"), linear in between, the end values outside;
 // spheres keep 1e-4; an explicit rate wins.
-void expectAMeasuredTable(const std::vector<MeasuredAtP>& table, double (*rate)(double),
-                          double low, double high) {
+void expectAMeasuredTable(const std::vector<MeasuredAtP>& table, double (*rate)(double), double low,
+                          double high) {
     ASSERT_GE(table.size(), 2U);
     EXPECT_EQ(table.front().p, 0.85);
     EXPECT_EQ(table.back().p, 1.5);
