@@ -5,6 +5,7 @@
 #include "random/random.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -20,17 +21,17 @@ inline constexpr std::int64_t kRandomPointChunk = 1 << 14;
 /// Random::normal, the draws depend on the C library's log (here log1p) to its last bit.
 inline void ascendingUniformDraws(std::int64_t count, std::int64_t range, Random& generator,
                                   std::vector<std::int64_t>& out) {
-    std::vector<double> sums(static_cast<std::size_t>(count));
+    // The partial sums are kept in out's own storage (their bits) until the total is known.
+    out.resize(static_cast<std::size_t>(count));
     double sum = 0.0;
-    for (double& s : sums) {
+    for (std::int64_t& slot : out) {
         sum -= std::log1p(-generator.uniform()); // Exp(1)
-        s = sum;
+        slot = std::bit_cast<std::int64_t>(sum);
     }
     sum -= std::log1p(-generator.uniform());
     const double scale = static_cast<double>(range) / sum;
-    out.resize(sums.size());
-    for (std::size_t i = 0; i < sums.size(); ++i)
-        out[i] = std::min(range - 1, static_cast<std::int64_t>(sums[i] * scale));
+    for (std::int64_t& slot : out)
+        slot = std::min(range - 1, static_cast<std::int64_t>(std::bit_cast<double>(slot) * scale));
 }
 
 /// `points` independent uniformly random void voxels (squared[v] != 0) of the `total` voxels of
