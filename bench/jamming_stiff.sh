@@ -5,7 +5,8 @@
 # sbgen calls jammed with `sbanalyze info` at a gap tolerance of 1e-8 D (mean contacts per
 # particle >= 5, rattler fraction < 10 %, no overlap) and tabulates the predictor's work per
 # collision and the CPU time. Runs go over the cores with xargs -P (JOBS, default nproc); each
-# run is capped at SECONDS_CAP CPU-bound seconds (default 3600), a capped run is reported as such.
+# run is capped at SECONDS_CAP seconds of wall time (default 3600); a capped run is reported with
+# the state of its checkpoint, and running the script again resumes it.
 # usage: bench/jamming_stiff.sh [BUILD_DIR] [WORK_DIR] [SEEDS] [P VALUES] [N VALUES]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -13,12 +14,16 @@ build=${1:-$root/build} work=${2:-/tmp/sbpack-jamming-stiff}
 seeds=${3:-"1 2 3"} exponents=${4:-"2 3 5 10"} sizes=${5:-"200 1000"}
 cap=${SECONDS_CAP:-3600} jobs=${JOBS:-$(nproc)}
 mkdir -p "$work"
-run_one() { # p n seed
+run_one() { # work cap p n seed build
     local out="$1/stiff-p$3-n$4-s$5.h5"
     [ -f "$out" ] && return 0
-    local rc=0
-    /usr/bin/time -f "%U %S" -o "$out.time" timeout -s TERM "$2" "$6/generator/sbgen" --p "$3" \
-        --n "$4" --seed "$5" --gamma-slow 1e-2 --out "$out" --quiet 2> "$out.log" || rc=$?
+    # A capped run's SIGTERM leaves a checkpoint beside OUT: running the script again resumes it
+    # (bit for bit), and its CPU times accumulate in OUT.time.
+    local checkpoint="${out%.h5}.checkpoint.h5" rc=0
+    local start=(--p "$3" --n "$4" --seed "$5" --gamma-slow 1e-2)
+    [ -f "$checkpoint" ] && start=(--resume "$checkpoint")
+    /usr/bin/time -f "%U %S" -a -o "$out.time" timeout -s TERM "$2" "$6/generator/sbgen" \
+        "${start[@]}" --out "$out" --quiet 2>> "$out.log" || rc=$?
     echo "$rc" > "$out.rc"
 }
 export -f run_one

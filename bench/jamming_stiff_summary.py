@@ -25,8 +25,17 @@ def info_at_1e8(path):
 
 def row(path):
     rc = int(open(path + ".rc").read())
-    cpu = sum(float(x) for x in open(path + ".time").read().split()[-2:])
+    cpu = sum(float(user) + float(system) for user, system in
+              re.findall(r"^([0-9.]+) ([0-9.]+)$", open(path + ".time").read(), re.M))
     name = os.path.basename(path)
+    checkpoint = path[:-len(".h5")] + ".checkpoint.h5"
+    if not os.path.exists(path) and os.path.exists(checkpoint):
+        with h5py.File(checkpoint, "r") as f:
+            state = (f"P {float(f.attrs['reduced_pressure']):.2e}, phi "
+                     f"{float(f.attrs['phi']):.4f}, "
+                     f"{int(f['provenance'].attrs['collisions']) / 1e6:.2f} M collisions")
+        return (f"| {name} | - | - | rc {rc}: capped, checkpoint at {state} (run the script "
+                f"again to resume) | - | - | - | - | - | {cpu:.0f} |")
     if not os.path.exists(path):
         return f"| {name} | - | - | rc {rc}: no output (cap or error) | - | - | - | - | - | {cpu:.0f} |"
     with h5py.File(path, "r") as f:
