@@ -198,8 +198,9 @@ void CommandLine::addGridOptions() {
                 s.porePoints = parseInteger("--pore-points", v, 0, std::int64_t(1) << 40);
             },
             "K random points: voxel and refined, K random void voxels instead of every\n"
-            "one (default 0: every one); exact, K points of the void (default 0: 10^6, as\n"
-            "the paper); random samples record the standard errors of the moments")
+            "one (default 0: every one; refused where the void is under 1e-3 of the voxels);\n"
+            "exact, K points of the void (default 0: 10^6, as the paper); random samples\n"
+            "record the standard errors of the moments")
         ->type_name("K");
     app_.add_option_function<std::string>(
             "--pore-seed",

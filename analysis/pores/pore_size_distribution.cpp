@@ -246,6 +246,7 @@ PoreSizeDistributionResult PoreSizeDistribution::compute(const PoreSizeMap& map,
     // Histogram of the squared distances n (voxel units): the pore size is a sqrt(n). Each chunk
     // counts into its own histogram (split by output block), summed in order afterwards.
     const bool sampled = parameters_.randomPoints > 0;
+    if (sampled) checkRandomVoidFraction(map.voidFraction(), m);
     const std::int64_t planesPerChunk = std::max<std::int64_t>(1, m / 64);
     const std::int64_t chunks =
         sampled ? (parameters_.randomPoints + kRandomPointChunk - 1) / kRandomPointChunk

@@ -8,12 +8,29 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace sbpack {
 
 /// Points per chunk of a random sample.
 inline constexpr std::int64_t kRandomPointChunk = 1 << 14;
+
+/// Random void voxels are drawn among all voxels, about 1 / (void fraction) draws each; below
+/// this void fraction (over 1000 draws a voxel, the exact sampler's limit) they are refused.
+inline constexpr double kMinRandomVoidFraction = 1e-3;
+
+/// Throws std::domain_error, naming --pore-points, when the void fraction of an M^3 grid is too
+/// small for random void voxels (kMinRandomVoidFraction): every void voxel is then the sample.
+inline void checkRandomVoidFraction(double voidFraction, int voxels) {
+    if (voidFraction >= kMinRandomVoidFraction) return;
+    throw std::domain_error(
+        "pore sizes: --pore-points: the void is " + std::to_string(voidFraction) + " of the " +
+        std::to_string(voxels) + "^3 voxels, below " + std::to_string(kMinRandomVoidFraction) +
+        ": random void voxels would take over 1000 draws each; take every void voxel "
+        "(--pore-points 0)");
+}
 
 /// `count` independent uniform draws from [0, range), in ascending order without a sort: the
 /// order statistics of n uniforms are the partial sums of n + 1 exponential spacings divided by

@@ -242,6 +242,7 @@ Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const Vox
     const int m = map.voxels();
     const double separation = kStartSeparation * map.voxelSize();
     const bool sampled = parameters.randomPoints > 0;
+    if (sampled) checkRandomVoidFraction(map.voidFraction(), m);
     const std::int64_t planesPerChunk = std::max<std::int64_t>(1, m / 64);
     const std::int64_t chunks =
         sampled ? (parameters.randomPoints + kRandomPointChunk - 1) / kRandomPointChunk

@@ -49,6 +49,18 @@ TEST(RandomVoidVoxels, AreUniformOverTheVoidAndNeverSolid) {
     EXPECT_EQ(randomVoidVoxels(squared.data(), 64, 0.9, 5000, generator).size(), 5000U);
 }
 
+// A grid whose void is too small for random voxels (over 1000 draws a voxel) is refused with an
+// error that names the option, instead of drawing for hours.
+TEST(RandomVoidVoxels, AVanishingVoidIsRefusedWithItsOption) {
+    EXPECT_NO_THROW(checkRandomVoidFraction(1e-3, 100));
+    try {
+        checkRandomVoidFraction(1.0 / (64.0 * 64.0 * 64.0), 64);
+        FAIL() << "no error";
+    } catch (const std::domain_error& e) {
+        EXPECT_NE(std::string(e.what()).find("--pore-points 0"), std::string::npos) << e.what();
+    }
+}
+
 /// Solid mask of spheres (centre-inside rule, minimum image), for tests only.
 std::vector<std::uint8_t> sphereMask(const std::vector<Vector3d>& centres, double radius,
                                      double length, int m) {
