@@ -68,8 +68,8 @@ inline std::vector<std::int64_t> randomVoidVoxels(const std::uint32_t* squared, 
         const auto merged = static_cast<std::ptrdiff_t>(kept.size());
         std::int64_t needed = points - static_cast<std::int64_t>(kept.size());
         ascendingUniformDraws(
-            static_cast<std::int64_t>(
-                std::ceil(1.1 * static_cast<double>(needed) / std::max(voidFraction, 1e-3))) +
+            static_cast<std::int64_t>(std::ceil(1.1 * static_cast<double>(needed) /
+                                                std::max(voidFraction, kMinRandomVoidFraction))) +
                 64,
             total, generator, batch);
         std::erase_if(batch, [&](std::int64_t v) { return squared[v] == 0; });

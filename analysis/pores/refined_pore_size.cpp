@@ -7,6 +7,7 @@
 #include "random/random.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
 #include <stdexcept>
@@ -106,9 +107,14 @@ struct Tally {
     }
 };
 
-/// The centre of voxel v = (i * M + j) * M + k of an M^3 grid of voxel size a.
+/// The indices (i, j, k) of voxel v = (i * M + j) * M + k of an M^3 grid.
+std::array<std::int64_t, 3> voxelIndices(std::int64_t v, std::int64_t m) {
+    return {v / (m * m), v / m % m, v % m};
+}
+
+/// The centre of voxel v of an M^3 grid of voxel size a.
 Vector3d voxelCentre(std::int64_t v, std::int64_t m, double a) {
-    const std::int64_t i = v / (m * m), j = v / m % m, k = v % m;
+    const auto [i, j, k] = voxelIndices(v, m);
     return Vector3d(static_cast<double>(i) + 0.5, static_cast<double>(j) + 0.5,
                     static_cast<double>(k) + 0.5) *
            a;
@@ -187,7 +193,8 @@ constexpr std::int64_t kChunksPerRound = 64;
 /// Voxel v's block of 8^3 voxels in an M^3 grid, as one index.
 std::int64_t blockOf(std::int64_t v, std::int64_t m) {
     const std::int64_t blocks = (m + 7) / 8;
-    return ((v / (m * m) / 8) * blocks + (v / m) % m / 8) * blocks + v % m / 8;
+    const auto [i, j, k] = voxelIndices(v, m);
+    return ((i / 8) * blocks + j / 8) * blocks + k / 8;
 }
 
 /// A random void voxel and its feature voxel.
