@@ -5,8 +5,9 @@
 # sbgen calls jammed with `sbanalyze info` at a gap tolerance of 1e-8 D (mean contacts per
 # particle >= 5, rattler fraction < 10 %, no overlap) and tabulates the predictor's work per
 # collision and the CPU time. Runs go over the cores with xargs -P (JOBS, default nproc); each
-# run is capped at SECONDS_CAP seconds of wall time (default 3600); a capped run is reported with
-# the state of its checkpoint, and running the script again resumes it.
+# run is capped at SECONDS_CAP seconds of wall time (default 3600) and checkpoints every 600 s; a
+# capped or killed run is reported with the state of its checkpoint, and running the script again
+# resumes it.
 # usage: bench/jamming_stiff.sh [BUILD_DIR] [WORK_DIR] [SEEDS] [P VALUES] [N VALUES]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -17,13 +18,17 @@ mkdir -p "$work"
 run_one() { # work cap p n seed build
     local out="$1/stiff-p$3-n$4-s$5.h5"
     [ -f "$out" ] && return 0
-    # A capped run's SIGTERM leaves a checkpoint beside OUT: running the script again resumes it
-    # (bit for bit), and its CPU times accumulate in OUT.time.
+    # Every run writes a checkpoint beside OUT every 600 s, and a capped run's SIGTERM one more:
+    # running the script again resumes the newest (bit for bit from a SIGTERM's), and CPU times
+    # accumulate in OUT.time. sbgen refuses to overwrite its --resume input, so the checkpoint
+    # to resume is moved aside first (and kept there until a newer one is written).
     local checkpoint="${out%.h5}.checkpoint.h5" rc=0
+    local resumed="${out%.h5}.resumed.h5"
     local start=(--p "$3" --n "$4" --seed "$5" --gamma-slow 1e-2)
-    [ -f "$checkpoint" ] && start=(--resume "$checkpoint")
+    [ -f "$checkpoint" ] && mv "$checkpoint" "$resumed"
+    [ -f "$resumed" ] && start=(--resume "$resumed")
     /usr/bin/time -f "%U %S" -a -o "$out.time" timeout -s TERM "$2" "$6/generator/sbgen" \
-        "${start[@]}" --out "$out" --quiet 2>> "$out.log" || rc=$?
+        "${start[@]}" --out "$out" --checkpoint "$checkpoint" --quiet 2>> "$out.log" || rc=$?
     echo "$rc" > "$out.rc"
 }
 export -f run_one

@@ -28,8 +28,11 @@ def row(path):
     cpu = sum(float(user) + float(system) for user, system in
               re.findall(r"^([0-9.]+) ([0-9.]+)$", open(path + ".time").read(), re.M))
     name = os.path.basename(path)
-    checkpoint = path[:-len(".h5")] + ".checkpoint.h5"
-    if not os.path.exists(path) and os.path.exists(checkpoint):
+    # The newest of the run's checkpoint and the one it resumed from (jamming_stiff.sh).
+    saved = [f for f in (path[:-len(".h5")] + suffix for suffix in (".checkpoint.h5", ".resumed.h5"))
+             if os.path.exists(f)]
+    checkpoint = max(saved, key=os.path.getmtime) if saved else None
+    if not os.path.exists(path) and checkpoint:
         with h5py.File(checkpoint, "r") as f:
             state = (f"P {float(f.attrs['reduced_pressure']):.2e}, phi "
                      f"{float(f.attrs['phi']):.4f}, "

@@ -227,6 +227,35 @@ Vector2d centroid(const std::vector<Vector2d>& polygon) {
     return area > 0.0 ? Vector2d(o + weighted / area) : Vector2d(o + mean / polygon.size());
 }
 
+/// Lower bound on a convex F over a convex polygon from supporting planes F >= F_k + g_k . (x -
+/// c_k) (the last kPlanes given): the largest of the planes' minima, each at a vertex.
+class PlaneMinorant {
+  public:
+    void add(double value, const Vector2d& gradient, const Vector2d& at) {
+        planes_[next_ % kPlanes] = {value - gradient.dot(at), gradient};
+        ++next_;
+    }
+    double minimumOver(const std::vector<Vector2d>& polygon) const {
+        double bound = -std::numeric_limits<double>::infinity();
+        for (int k = 0; k < std::min(next_, kPlanes); ++k) {
+            double lowest = std::numeric_limits<double>::infinity();
+            for (const Vector2d& vertex : polygon)
+                lowest = std::min(lowest, planes_[k].offset + planes_[k].gradient.dot(vertex));
+            bound = std::max(bound, lowest);
+        }
+        return bound;
+    }
+
+  private:
+    static constexpr int kPlanes = 8;
+    struct Plane {
+        double offset; ///< F_k - g_k . c_k
+        Vector2d gradient;
+    };
+    std::array<Plane, kPlanes> planes_{};
+    int next_ = 0;
+};
+
 /// Minimum of f over the square |c_i| <= radius by the centre-of-gravity cutting-plane method:
 /// a subgradient g at the centroid c of the polygon known to hold the minimiser keeps only
 /// g . (x - c) <= 0, which loses no minimiser of a quasi-convex f whatever its kinks (the support
@@ -234,10 +263,13 @@ Vector2d centroid(const std::vector<Vector2d>& polygon) {
 /// takes at least 4/9 of the polygon's area (Grunbaum), so ~150 evaluations reach rounding where
 /// nested golden sections took ~6000. For convex f the cut deepens to
 /// g . (x - c) <= f_best - f(c). `valueAndGradient(c, g)` returns f(c) and writes g.
-/// The search stops when the polygon is within `resolution` of its centroid.
-template <class F>
-Vector2d cuttingPlaneMinimum(F&& valueAndGradient, double radius, double resolution, bool convex,
-                             int iterations, double& value) {
+/// The search stops when the polygon is within `resolution` of its centroid, or as soon as
+/// `lowerBound(polygon)`, a lower bound on f over the polygon, reaches the best f: then that is
+/// the minimum to rounding. Across a kink line of f the polygon narrows fast, along it (f smooth
+/// there) it need not narrow to the resolution (docs/design.md §3, "Near-cubes").
+template <class F, class Bound>
+Vector2d cuttingPlaneMinimum(F&& valueAndGradient, Bound&& lowerBound, double radius,
+                             double resolution, bool convex, int iterations, double& value) {
     std::vector<Vector2d> polygon = {Vector2d(-radius, -radius), Vector2d(radius, -radius),
                                      Vector2d(radius, radius), Vector2d(-radius, radius)};
     std::vector<Vector2d> clipped;
@@ -259,6 +291,7 @@ Vector2d cuttingPlaneMinimum(F&& valueAndGradient, double radius, double resolut
         if (gradient.isZero(0.0) || !gradient.allFinite()) break;
         clipPolygon(polygon, gradient, gradient.dot(c) + (convex ? value - fc : 0.0), clipped);
         polygon.swap(clipped);
+        if (polygon.size() >= 3 && lowerBound(polygon) >= value) break;
     }
     return best;
 }
@@ -315,12 +348,16 @@ ScaleFactorResult generalScaleFactor(const MinkowskiSum& k, const Vector3d& warm
         // Newton stalled on a kink: minimise H exactly over the square holding the disc.
         ++result.fallbacks;
         double best = 0.0;
+        PlaneMinorant planes; // H is convex: its subgradient cuts are supporting planes
         const Vector2d cBest = cuttingPlaneMinimum(
             [&](const Vector2d& x, Vector2d& gradient) {
                 const Vector3d v = dHat + basis * x, point = k.supportPoint(v);
                 gradient = basis.transpose() * point;
-                return v.dot(point); // H(v) = v . grad H(v): H is homogeneous of degree one
+                const double h = v.dot(point); // H(v) = v . grad H(v): homogeneous of degree one
+                planes.add(h, gradient, x);
+                return h;
             },
+            [&](const std::vector<Vector2d>& polygon) { return planes.minimumOver(polygon); },
             radius, 1e-16 * radius, true, tolerances.maxCuttingPlaneIterations, best);
         if (best < h) {
             u = dHat + basis * cBest;
@@ -420,16 +457,29 @@ LocalMaximum tangentMaximum(const SuperballPair& pair, const Vector3d& n, double
     const MinkowskiSum k(pair);
     const Vector3d& d = pair.displacement;
     const Eigen::Matrix<double, 3, 2> basis = tangentBasis(n);
+    // -f~(n + P c) is convex in c (f~(u) = u . d - H(u), H convex): its supporting planes, from
+    // the same support points, bound f = f~ / |u| from above (docs/design.md §3, "Near-cubes").
+    PlaneMinorant minusFTilde;
     auto minusFOnSphere = [&](const Vector2d& c, Vector2d& gradient) {
         // f(u / |u|) = f~(u) / |u| at u = n + P c, f~(u) = u . (d - grad H(u)).
         const Vector3d u = n + basis * c, toGap = d - k.supportPoint(u);
         const double r2 = u.squaredNorm(), fu = u.dot(toGap);
+        minusFTilde.add(-fu, -basis.transpose() * toGap, c);
         gradient = -basis.transpose() * (toGap - fu * u / r2) / std::sqrt(r2);
         return -fu / std::sqrt(r2);
     };
+    // -f = -f~ / |u| >= L where -f~ >= L: L itself where L < 0 (|u| >= 1), else L / max |u|.
+    auto minusFBound = [&](const std::vector<Vector2d>& polygon) {
+        const double bound = minusFTilde.minimumOver(polygon);
+        if (bound < 0.0) return bound;
+        double largest = 0.0;
+        for (const Vector2d& vertex : polygon)
+            largest = std::max(largest, vertex.squaredNorm());
+        return bound / std::sqrt(1.0 + largest); // |u|^2 = 1 + |c|^2, convex in c
+    };
     double best = 0.0;
-    const Vector2d c =
-        cuttingPlaneMinimum(minusFOnSphere, radius, resolution, false, iterations, best);
+    const Vector2d c = cuttingPlaneMinimum(minusFOnSphere, minusFBound, radius, resolution, false,
+                                           iterations, best);
     return {(n + basis * c).normalized(), -best, c.lpNorm<Eigen::Infinity>() < 0.5 * radius,
             k.evaluations};
 }

@@ -83,7 +83,9 @@ Eigen::Matrix<double, 3, 2> tangentBasis(const Vector3d& n);
 /// The largest f(n) = n.d - h_A(n) - h_B(n) over the normals (n + P c) / |n + P c|, |c_i| <= radius
 /// (P the tangent basis of the unit n), by the centre-of-gravity cutting-plane search, which
 /// needs no derivative where the support points of near-cubes jump (f is quasi-concave there for
-/// s >= 0). Stops when the search polygon is within `resolution` (radians, about) of its centre.
+/// s >= 0). Stops when the search polygon is within `resolution` (radians, about) of its centre,
+/// or as soon as the supporting planes of the concave f~(u) = u.d - H(u) at its last few points
+/// bound f over the polygon by the best value found (then the maximum, to rounding).
 /// `interior`: the maximum lies well inside the square (within half its radius), so it is a
 /// local maximum of f on the sphere, and the signed distance itself when >= 0.
 struct LocalMaximum {

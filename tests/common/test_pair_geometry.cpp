@@ -228,3 +228,44 @@ TEST(PairGeometryEdgeCases, CoincidentCentresAreOverlapsWithoutNaN) {
         EXPECT_LE(r.signedDistance, -2.0 * shape.inradius() + 1e-12) << p;
     }
 }
+
+/// The local search of near-cubes at the two kinks of docs/design.md §3 ("Near-cubes"), where
+/// s has a closed form by symmetry: crossed edges at distance t along n = (1, 0, 1)/sqrt 2,
+/// s = t - 2 R 2^{1/q - 1/2} (h of an edge's normal); an edge on a face at distance t along
+/// n = e_x, s = t - R - R 2^{1/q - 1/2}, also with an offset along the face at p = 10 (the
+/// optimum is then ~(offset / R)^{2p - 1} rad from e_x). All placed at s = 1e-9 D. Started
+/// 3e-4 rad off, the search must land on s to rounding, in under 100 cuts (the crossed edges at
+/// p = 5 took 165 before the plane bound stopped the search).
+TEST(TangentMaximum, FindsTheKinkOfNearCubesToRoundingAndStopsOnItsPlaneBound) {
+    for (double p : {3.0, 5.0, 10.0}) {
+        const Superball shape(p, 0.5);
+        const double r = shape.semiAxis(), q = 2.0 * p / (2.0 * p - 1.0);
+        const double edge = r * std::pow(2.0, 1.0 / q - 0.5); // h at the normal of an edge
+        const Vector3d diagonal = Vector3d(1, 0, 1).normalized();
+        const Matrix3d identity = Matrix3d::Identity();
+        const Matrix3d crossed = Eigen::AngleAxisd(M_PI / 2, diagonal).toRotationMatrix();
+        const Matrix3d turned = Eigen::AngleAxisd(M_PI / 4, Vector3d::UnitZ()).toRotationMatrix();
+        const double gap = 1e-9 * shape.diameter();
+        // The offset moves s by ~offset (offset / R)^{2p - 1} / 2p: 5e-22 D at p = 10.
+        const double offset = p == 10.0 ? 0.1 * r : 0.0;
+        struct Case {
+            SuperballPair pair;
+            Vector3d normal;
+            double s;
+        };
+        const std::vector<Case> cases = {
+            {{shape, identity, crossed, (2.0 * edge + gap) * diagonal}, diagonal, gap},
+            {{shape, identity, turned, Vector3d(r + edge + gap, offset, 0.0)},
+             Vector3d::UnitX(),
+             gap}};
+        for (const Case& c : cases) {
+            const Vector3d start =
+                Eigen::AngleAxisd(3e-4, c.normal.unitOrthogonal()).toRotationMatrix() * c.normal;
+            const LocalMaximum m = tangentMaximum(c.pair, start, 1e-3, 1e-16, 200);
+            EXPECT_TRUE(m.interior) << p;
+            EXPECT_NEAR(m.value, c.s, 1e-15 * shape.diameter()) << p;
+            EXPECT_LT((m.normal - c.normal).norm(), 1e-7) << p;
+            EXPECT_LT(m.evaluations, 100) << p;
+        }
+    }
+}
