@@ -39,14 +39,15 @@ double cubeRootOf1To3(double x) {
 }
 
 /// The parts of ||u||_e for finite e and u != 0, normalised by m = max |u_i| before any power
-/// (no overflow): y_i = |u_i| / m, a_i = y_i^e, sum = sum a_i (in [1, 3]) and norm = sum^{1/e}
-/// (= ||u||_e / m), from two powers and one for each component below the largest. The
-/// exponents of p = 1.5 (e = 3 for the gauge, e = 3/2 for the support function) and of
-/// p = 0.75 (the same two, swapped) take roots instead: y^{3/2} = y sqrt(y), y^3, and the
-/// norm's root from a cube root, as accurate as exp2/log2 (a few ulp) with neither.
+/// (no overflow): y_i = |u_i| / m, t_i = y_i^{e-1} (the gradient's powers), a_i = t_i y_i = y_i^e,
+/// sum = sum a_i (in [1, 3]) and norm = sum^{1/e} (= ||u||_e / m), from one power for each
+/// component below the largest and one for the norm. The exponents of p = 1.5 (e = 3 for the
+/// gauge, e = 3/2 for the support function) and of p = 0.75 (the same two, swapped) take roots
+/// instead: y^{1/2} = sqrt(y), y^2, and the norm's root from a cube root, as accurate as
+/// exp2/log2 (a few ulp) with neither.
 struct NormParts {
     double m, sum, norm;
-    Vector3d y, a;
+    Vector3d y, t;
 };
 
 NormParts normParts(const Vector3d& u, double e) {
@@ -54,11 +55,12 @@ NormParts normParts(const Vector3d& u, double e) {
     for (int i = 0; i < 3; ++i) {
         const double y = std::abs(u[i]) / n.m;
         n.y[i] = y;
-        n.a[i] = y == 1.0   ? 1.0 // the largest: one power fewer
-                 : e == 1.5 ? y * std::sqrt(y)
-                 : e == 3.0 ? y * y * y
-                            : power(y, e);
-        n.sum += n.a[i];
+        n.t[i] = y == 1.0   ? 1.0 // the largest: one power fewer
+                 : y == 0.0 ? 0.0 // 0^{e-1}, or a subgradient for e = 1 (no 0 * log2 0)
+                 : e == 1.5 ? std::sqrt(y)
+                 : e == 3.0 ? y * y
+                            : power(y, e - 1.0);
+        n.sum += n.t[i] * y;
     }
     if (e == 1.5)
         n.norm = n.sum / cubeRootOf1To3(n.sum); // sum^{2/3}, within ~1.5 ulp (root squared: 2.6)
@@ -76,26 +78,19 @@ double lpNorm(const Vector3d& u, double e) {
     return m * normParts(u, e).norm;
 }
 
-/// ||u||_q and its gradient for finite q and u != 0: the ratios r_i = y_i / norm give the
-/// gradient sgn(u_i) r_i^{q-1} = (a_i / y_i) (norm / sum), where the component is `regular`
-/// (a_i normal, r_i above the Hessian's floor); otherwise r_i^{q-1} by a power.
+/// ||u||_q and its gradient sgn(u_i) r_i^{q-1} = sgn(u_i) t_i (norm / sum) for finite q and
+/// u != 0, r_i = y_i / norm (t_i = y_i^{q-1} taken directly: no division by y_i, and no
+/// underflow where y_i^q is subnormal).
 struct DualNorm {
     NormParts parts;
-    Vector3d ratio, gradient;
-    Eigen::Array<bool, 3, 1> regular;
+    Vector3d gradient;
 };
 
 DualNorm dualNorm(const Vector3d& u, double q) {
-    DualNorm d{normParts(u, q), {}, {}, {}};
-    const NormParts& n = d.parts;
-    for (int i = 0; i < 3; ++i) {
-        d.ratio[i] = n.y[i] / n.norm;
-        d.regular[i] =
-            n.a[i] >= std::numeric_limits<double>::min() && d.ratio[i] >= kHessianRatioFloor;
-        d.gradient[i] = std::copysign(d.regular[i] ? (n.a[i] / n.y[i]) * (n.norm / n.sum)
-                                                   : std::pow(d.ratio[i], q - 1.0),
-                                      u[i]);
-    }
+    DualNorm d{normParts(u, q), {}};
+    const double scale = d.parts.norm / d.parts.sum;
+    for (int i = 0; i < 3; ++i)
+        d.gradient[i] = std::copysign(d.parts.t[i] * scale, u[i]);
     return d;
 }
 
@@ -184,12 +179,17 @@ Vector3d Superball::supportPoint(const Vector3d& nBody) const {
 Superball::SupportJet Superball::supportJet(const Vector3d& nBody) const {
     if (nBody.isZero(0.0) || q_ == kInf)
         return {support(nBody), supportPoint(nBody), supportHessian(nBody)};
-    // d2 ||u||_q = (q-1)/||u||_q [diag(r_i^{q-2}) - g g^T], r_i^{q-2} = |g_i| / r_i.
+    // d2 ||u||_q = (q-1)/||u||_q [diag(r_i^{q-2}) - g g^T], r_i^{q-2} = |g_i| / r_i where the
+    // component is regular (r_i above the Hessian's floor, y_i^q normal); else by a power.
     const DualNorm d = dualNorm(nBody, q_);
     Vector3d diagonal;
-    for (int i = 0; i < 3; ++i)
-        diagonal[i] = d.regular[i] ? std::abs(d.gradient[i]) / d.ratio[i]
-                                   : std::pow(std::max(d.ratio[i], kHessianRatioFloor), q_ - 2.0);
+    for (int i = 0; i < 3; ++i) {
+        const double ratio = d.parts.y[i] / d.parts.norm;
+        const bool regular = d.parts.t[i] * d.parts.y[i] >= std::numeric_limits<double>::min() &&
+                             ratio >= kHessianRatioFloor;
+        diagonal[i] = regular ? std::abs(d.gradient[i]) / ratio
+                              : std::pow(std::max(ratio, kHessianRatioFloor), q_ - 2.0);
+    }
     Matrix3d hessian = diagonal.asDiagonal();
     hessian -= d.gradient * d.gradient.transpose();
     const double fullNorm = d.parts.m * d.parts.norm;
