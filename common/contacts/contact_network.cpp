@@ -103,7 +103,12 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
     result.parameters = parameters_;
     result.counts.assign(size, 0);
     result.worstGap = std::numeric_limits<double>::infinity();
-    std::vector<std::pair<std::pair<int, int>, double>> found; // contacts and their gaps / D
+    struct Found {
+        std::pair<int, int> pair;
+        double gap; ///< / D
+        Vector3d normal;
+    };
+    std::vector<Found> found;
     const CellList cells(packing.positions, packing.boxLength, range);
     cells.forEachNeighbourPair([&](int i, int j, const Vector3d& d) {
         const SignedDistanceResult pair =
@@ -125,15 +130,17 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
         }
         if (s < -contactGap) ++result.overlappingPairs;
         if (s < contactGap) { // paper Sec. III A
-            found.push_back({{i, j}, s / diameter});
+            found.push_back({{i, j}, s / diameter, pair.normal});
             ++result.counts[i];
             ++result.counts[j];
         }
     });
-    std::sort(found.begin(), found.end());
-    for (const auto& [pair, gap] : found) {
-        result.contacts.push_back(pair);
-        result.gaps.push_back(gap);
+    std::sort(found.begin(), found.end(),
+              [](const Found& a, const Found& b) { return a.pair < b.pair; });
+    for (const Found& contact : found) {
+        result.contacts.push_back(contact.pair);
+        result.gaps.push_back(contact.gap);
+        result.normals.push_back(contact.normal);
     }
 
     const int count = static_cast<int>(size);

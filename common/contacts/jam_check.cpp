@@ -49,11 +49,35 @@ std::vector<int> closedCycle(int a, int b, const std::vector<int>& parent) {
     return up;
 }
 
+/// The count rule's rattlers and the remaining particles not locally jammed by the others
+/// that remain: the fraction of all particles. One pass, not iterated: a contact just above the
+/// tolerance can leave a load-bearing particle's contacts in one hemisphere, and in a network
+/// at the isostatic count removing it would cascade through the whole packing (MRJ spheres:
+/// 5 such particles in 5000, then all of them when iterated).
+double untrappedFraction(const ContactResult& contacts) {
+    const int n = static_cast<int>(contacts.rattler.size());
+    std::vector<std::vector<Vector3d>> normals(n);
+    for (std::size_t k = 0; k < contacts.contacts.size(); ++k) {
+        const auto [i, j] = contacts.contacts[k];
+        if (contacts.rattler[i] || contacts.rattler[j]) continue;
+        normals[i].push_back(contacts.normals[k]);
+        normals[j].push_back(-contacts.normals[k]);
+    }
+    int removed = 0;
+    for (int i = 0; i < n; ++i)
+        if (contacts.rattler[i] || !isLocallyTrapped(normals[i])) ++removed;
+    return n > 0 ? static_cast<double>(removed) / n : 0.0;
+}
+
 std::string verdictOf(const JamCheck& check, const Packing& packing, double reducedPressure,
                       const JamCheckParameters& parameters) {
     const double rattlers = check.contacts.rattlerFraction;
-    const std::string network =
+    std::string network =
         format("rattler fraction %.3f at contact gap < %.0e D", rattlers, check.tolerance);
+    if (check.untrappedFraction > rattlers)
+        network += format(", %.3f with the particles not locally jammed (contacts in one "
+                          "hemisphere)",
+                          check.untrappedFraction);
     if (check.jammed) return "jammed: " + network;
     if (isCompressing(reducedPressure, parameters))
         return format("not jammed: still compressing (at reduced pressure %.3g the load-bearing "
@@ -73,6 +97,25 @@ std::string verdictOf(const JamCheck& check, const Packing& packing, double redu
 }
 
 } // namespace
+
+bool isLocallyTrapped(const std::vector<Vector3d>& normals) {
+    // The cone of free translations, when not {0}, has an extreme ray along some n_a x n_b, or
+    // contains a line normal to every n_k: along n_a x n_b again, unless all n_k are parallel.
+    constexpr double slack = 1e-12; // rounding of unit vectors
+    auto isFree = [&](const Vector3d& v) {
+        return std::all_of(normals.begin(), normals.end(),
+                           [&](const Vector3d& n) { return v.dot(n) <= slack; });
+    };
+    bool spanned = false;
+    for (std::size_t a = 0; a < normals.size(); ++a)
+        for (std::size_t b = a + 1; b < normals.size(); ++b) {
+            const Vector3d c = normals[a].cross(normals[b]);
+            if (c.norm() <= slack) continue;
+            spanned = true;
+            if (isFree(c.normalized()) || isFree(-c.normalized())) return false;
+        }
+    return spanned; // all on one line: any direction normal to it is free
+}
 
 std::optional<SpanningChain> findSpanningChain(const Packing& packing,
                                                const std::vector<std::pair<int, int>>& contacts) {
@@ -120,7 +163,8 @@ JamCheck checkJam(const Packing& packing, double reducedPressure,
                                  parameters.minTolerance, parameters.maxTolerance);
     check.contacts =
         ContactNetwork({check.tolerance, parameters.rattlerThreshold}).compute(packing);
-    check.jammed = check.contacts.rattlerFraction <= parameters.maxRattlerFraction;
+    check.untrappedFraction = untrappedFraction(check.contacts);
+    check.jammed = check.untrappedFraction <= parameters.maxRattlerFraction;
     if (!check.jammed && !isCompressing(reducedPressure, parameters))
         check.chain = findSpanningChain(packing, check.contacts.contacts);
     check.verdict = verdictOf(check, packing, reducedPressure, parameters);

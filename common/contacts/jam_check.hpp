@@ -20,7 +20,7 @@ struct JamCheckParameters {
     /// ... and at most maxTolerance: a gap of 1 % of D is no contact at any pressure (below
     /// P = 1e4 the check cannot call anything jammed that is not in contact to within that).
     double maxTolerance = 1e-2;
-    /// Jammed only if at most this fraction of the particles are rattlers.
+    /// Jammed only if at most this fraction of the particles are rattlers or not locally jammed.
     double maxRattlerFraction = 0.1;
     int rattlerThreshold = 4;
 };
@@ -36,10 +36,19 @@ struct JamCheck {
     bool jammed = false;
     double tolerance = 0.0; ///< contact gap tolerance used, in units of D
     ContactResult contacts; ///< at that tolerance
+    /// The fraction of particles that are rattlers or not locally jammed (their contacts with
+    /// the non-rattlers leave a free translation; see isLocallyTrapped).
+    double untrappedFraction = 0.0;
     /// Looked for only when not jammed: contacts that wrap around the box, carrying the pressure.
     std::optional<SpanningChain> chain;
     std::string verdict; ///< one line: why jammed or why not
 };
+
+/// Local jamming (Torquato and Stillinger): a particle whose unit contact normals n_k (toward
+/// its neighbours) admit no translation v != 0 with v . n_k <= 0 for every k, i.e. they do not
+/// all lie in one closed hemisphere. Four contacts in one plane satisfy the count rule of d + 1
+/// but leave the particle free across that plane (docs/design.md §3, "Jam check").
+bool isLocallyTrapped(const std::vector<Vector3d>& normals);
 
 /// The contact-network criterion of a jam at reduced pressure `reducedPressure` (> 0).
 JamCheck checkJam(const Packing& packing, double reducedPressure,

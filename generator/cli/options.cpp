@@ -24,7 +24,8 @@ usage: sbgen --out FILE.h5 [options]
 
 constexpr const char* kFooter =
     R"(No jam is declared from the pressure alone: at --pressure-final the contact network must hold
-(at most 10 % rattlers at gaps below 100 / P D, clamped to [1e-10, 1e-2] D), and a pressure
+(at most 10 % rattlers or particles whose contacts lie in one hemisphere, at gaps below 100 / P D,
+clamped to [1e-10, 1e-2] D), and a pressure
 carried by a chain of particles that wraps around the periodic box (columns of near-cubes in
 small boxes) ends the run early. Such an output is still written, with provenance jammed = 0 and the reason.
 
