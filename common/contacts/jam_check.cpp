@@ -110,9 +110,11 @@ bool isLocallyTrapped(const std::vector<Vector3d>& normals) {
     for (std::size_t a = 0; a < normals.size(); ++a)
         for (std::size_t b = a + 1; b < normals.size(); ++b) {
             const Vector3d c = normals[a].cross(normals[b]);
-            if (c.norm() <= slack) continue;
+            const double length = c.norm();
+            if (length <= slack) continue;
             spanned = true;
-            if (isFree(c.normalized()) || isFree(-c.normalized())) return false;
+            const Vector3d v = c / length;
+            if (isFree(v) || isFree(-v)) return false;
         }
     return spanned; // all on one line: any direction normal to it is free
 }
