@@ -37,6 +37,7 @@ struct Sample {
     double rate = 0.0;
     Vector3d normal = Vector3d::Zero();
     double planeRate = 0.0;
+    bool exact = true; ///< false: gap is a lower bound on s (a plane that separates them)
 };
 
 /// The fraction of a Newton step on the normal to try first. Where the step drives a
@@ -78,6 +79,7 @@ struct WarmNewton {
     SignedDistanceResult result;
     bool converged = false;
     Vector3d normalRate = Vector3d::Zero();
+    bool exact = true; ///< false: the result is unconverged Newton's plane, a lower bound on s
 };
 
 /// dn/dtau of the optimal normal by the implicit function theorem: its tangent gradient
@@ -260,7 +262,8 @@ WarmNewton exactSignedDistance(const SuperballPair& pair, Vector3d& normal, doub
         fast.reset();
     if (!fast) ++stats.robustEvaluations;
     const WarmNewton answer =
-        fast ? WarmNewton{*fast, true, warm.converged ? warm.normalRate : Vector3d::Zero()}
+        fast ? WarmNewton{*fast, true, warm.converged ? warm.normalRate : Vector3d::Zero(),
+                          warm.converged || warm.result.signedDistance <= boundSuffices}
              : WarmNewton{signedDistance(pair, normal), true};
     stats.distanceFallbacks += answer.result.fallbacks;
     normal = answer.result.normal;
@@ -290,10 +293,13 @@ class PairTrajectory {
         // time since, while that turns it by less than limits.maxNormalCarry).
         const Vector3d shift = normalRate_ * (tau - lastTau_);
         if (shift.norm() < limits_.maxNormalCarry) normal_ = (normal_ + shift).normalized();
-        // Far from contact a lower bound on s serves: its plane advances as well, and every
-        // decision there (not touching, which side of a bracket) holds for s too.
-        const WarmNewton evaluation =
-            exactSignedDistance(pair, normal_, limits_.nearGap * diameter, limits_, stats_, &rates);
+        // Wherever it proves the pair apart (above the contact gap) a lower bound on s serves:
+        // its plane advances as well, and every decision there (not touching, which side of a
+        // bracket) holds for s too. Near-cubes gain most: there an unconverged Newton's plane
+        // spares the local search, which cost about half of p = 10's time (bench/RESULTS.md,
+        // "Near-cubes: lower bounds down to the contact gap").
+        const WarmNewton evaluation = exactSignedDistance(
+            pair, normal_, limits_.contactGap * diameter, limits_, stats_, &rates);
         const SignedDistanceResult& r = evaluation.result;
         lastTau_ = tau;
         normalRate_ = evaluation.normalRate;
@@ -304,8 +310,12 @@ class PairTrajectory {
         const Vector3d xI = 0.5 * (r.contactA + r.contactB), xJ = xI - d;
         const Vector3d vI = m_.angularVelocityI.cross(xI) + strain * xI;
         const Vector3d vJ = m_.angularVelocityJ.cross(xJ) + strain * xJ;
-        return {tau, r.signedDistance, r.normal.dot(m_.relativeVelocity + vJ - vI), r.normal,
-                planeGapRate(m_, diameter, r.normal, r.contactA, d - r.contactB)};
+        return {tau,
+                r.signedDistance,
+                r.normal.dot(m_.relativeVelocity + vJ - vI),
+                r.normal,
+                planeGapRate(m_, diameter, r.normal, r.contactA, d - r.contactB),
+                evaluation.exact};
     }
 
   private:
@@ -524,7 +534,9 @@ std::variant<double, Prediction> PairPrediction::alongPlane(const Vector3d& n, d
     return tau;
 }
 
-// Newton steps in time from an exact sample, each iterate exact, until one touches (closing)
+// Newton steps in time from an exact sample (each iterate exact, or above the contact gap a
+// lower bound that proves the pair apart there; rootNear's certificate covers the whole step
+// either way), until one touches (closing)
 // or brackets a root (then refined); none when an iterate turns away, would pass `end`, goes
 // beyond the reach where the root's certificate (M (t1 - t0)^2 / 2 < g(t0), in advance) keeps a
 // margin of four, M (t1 - t0)^2 / 2 <= g(t0) / 4 (the root normal's plane lies below s at
@@ -556,7 +568,7 @@ std::optional<Sample> PairPrediction::newtonInTime(const Sample& from) {
 // without Newton steps up to that root.
 std::optional<Prediction> PairPrediction::rootNear(const Sample& now) {
     const double rate = planeRate(now.normal);
-    if (!(atEnd_.time == kNever && now.gap <= near_ && now.rate < 0.0 && rate < 0.0))
+    if (!(atEnd_.time == kNever && now.exact && now.gap <= near_ && now.rate < 0.0 && rate < 0.0))
         return std::nullopt;
     const double tau = now.tau - now.gap / now.rate;
     const std::optional<Sample> root =
@@ -583,9 +595,12 @@ Prediction PairPrediction::advance(double start, const Vector3d& normal, PlaneGa
     Sample now = trajectory_.at(start);
     if (start == 0.0 && now.gap < -touching_) ++stats_.startOverlaps;
     for (;;) {
-        if (now.gap <= touching_ && now.rate < 0.0 && !(resolved && now.tau == 0.0))
-            return {now.tau};
-        if (const std::optional<Prediction> decided = rootNear(now)) return *decided;
+        // A pair resolved at this very state touches now with no contact, by any path: Newton
+        // steps in time from it would end on the same sample (refine returns a touching end).
+        const bool justResolved = resolved && now.tau == 0.0;
+        if (now.gap <= touching_ && now.rate < 0.0 && !justResolved) return {now.tau};
+        if (!justResolved)
+            if (const std::optional<Prediction> decided = rootNear(now)) return *decided;
         const auto reached = alongPlane(now.normal, now.tau, {now.gap, now.planeRate}, now.gap);
         if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
         const Sample previous = now;

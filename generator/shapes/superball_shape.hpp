@@ -40,7 +40,9 @@ namespace sbpack {
 struct SuperballPredictorLimits {
     /// Touching for the engine: s <= contactGap * D (gaps of 1e-13 D stay resolvable).
     double contactGap = 1e-14;
-    /// Below nearGap * D and closing, advancement also tries a Newton step in time.
+    /// Below nearGap * D and closing, advancement also tries Newton steps in time, from an exact
+    /// sample only (a lower bound's plane has no exact rate; lower bounds are taken wherever
+    /// they prove the pair apart, down to contactGap).
     double nearGap = 1e-3;
     /// Advancement steps before the prediction settles for a safe recheck time.
     int maxAdvancementSteps = 100;

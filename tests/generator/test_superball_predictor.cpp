@@ -454,6 +454,21 @@ TEST(SuperballPredictor, AStaleNormalFromTheWrongSideGivesTheSameContact) {
     }
 }
 
+/// Two bodies of diameter 1 in random orientations touching (s = 0 to rounding) along a random
+/// direction, then `gap` further apart along it (s in (0, gap]: s is 1-Lipschitz in d); returns
+/// the pair's contact normal.
+Vector3d touchingPair(double p, Random& random, double gap, PairMotion& m) {
+    m.diameter = 1.0;
+    m.orientationI = random.rotation();
+    m.orientationJ = random.rotation();
+    const Vector3d u = random.normalVector().normalized();
+    SuperballPair pair{Superball(p, 0.5), m.orientationI.toRotationMatrix(),
+                       m.orientationJ.toRotationMatrix(), u};
+    m.displacement = u / scaleFactor(pair).scaleFactor + gap * u;
+    pair.displacement = m.displacement;
+    return signedDistance(pair).normal;
+}
+
 // Right after a collision the engine re-predicts the pair at the same state; the resolver left it
 // separating at its contact point, so touching now is no contact then (near-cube faces: another
 // evaluation may pick another point of the face and see it closing, and zero impulses repeated at
@@ -463,15 +478,7 @@ TEST(SuperballPredictor, AJustResolvedPairIsNotAContactAtThatInstant) {
         Random random(29 + static_cast<std::uint64_t>(p));
         for (int trial = 0; trial < 50; ++trial) {
             PairMotion m;
-            m.diameter = 1.0;
-            m.orientationI = random.rotation();
-            m.orientationJ = random.rotation();
-            const Vector3d u = random.normalVector().normalized();
-            SuperballPair pair{Superball(p, 0.5), m.orientationI.toRotationMatrix(),
-                               m.orientationJ.toRotationMatrix(), u};
-            m.displacement = u / scaleFactor(pair).scaleFactor; // touching
-            pair.displacement = m.displacement;
-            const Vector3d n = signedDistance(pair).normal;
+            const Vector3d n = touchingPair(p, random, 0.0, m);
             const std::string where = "p " + number(p) + " #" + std::to_string(trial);
             SuperballShape shape{p};
             m.relativeVelocity = -0.5 * n; // closing
@@ -486,6 +493,31 @@ TEST(SuperballPredictor, AJustResolvedPairIsNotAContactAtThatInstant) {
             m.relativeVelocity = 0.5 * n; // separating
             memory = {};
             EXPECT_TRUE(std::isinf(shape.collisionTime(m, 1.0, memory, true).time)) << where;
+        }
+    }
+}
+
+// The same at a gap just above zero (within the contact gap 1e-14 D) with spins that can bend
+// s(tau) down: Newton's step in time from the touching sample then overshoots, and the refined
+// bracket used to end on that sample, a contact at the resolved instant again (a p = 10,
+// N = 1000 run repeated 10^4 zero impulses at one instant and stopped).
+TEST(SuperballPredictor, AJustResolvedPairJustApartIsNotAContactAtThatInstantEither) {
+    for (const double p : {1.5, 3.0, 10.0}) {
+        Random random(31 + static_cast<std::uint64_t>(p));
+        for (int trial = 0; trial < 50; ++trial) {
+            PairMotion m;
+            const Vector3d n = touchingPair(p, random, 5e-15, m);
+            m.relativeVelocity = -0.5 * n;
+            m.angularVelocityI = random.normalVector();
+            m.angularVelocityJ = random.normalVector();
+            SuperballShape shape{p};
+            PairMemory memory;
+            const Prediction later = shape.collisionTime(m, 1.0, memory, true);
+            const std::string where = "p " + number(p) + " #" + std::to_string(trial);
+            EXPECT_FALSE(later.contact && later.time == 0.0) << where;
+            if (later.contact && std::isfinite(later.time)) {
+                EXPECT_GE(relativeGapAt(p, m, later.time), -1e-12) << where;
+            }
         }
     }
 }
