@@ -3,7 +3,8 @@
 # all at once (so the shared machine's load falls on each alike), and each is stopped by SIGTERM
 # at the end of a window. Trajectories part after a few collisions, so this compares the cost
 # in the same state, not the same events. Prints, per binary, the collisions it made and the
-# CPU microseconds per collision and per exact evaluation from the provenance (bench/RESULTS.md,
+# CPU microseconds per collision and per exact evaluation, and the robust pair solver's calls
+# per collision, from the provenance (bench/RESULTS.md,
 # "Near-cubes: lower bounds down to the contact gap").
 # usage: bench/same_state.sh SECONDS CHECKPOINT BINARY...
 set -euo pipefail
@@ -33,11 +34,12 @@ state, stop, out, binary = sys.argv[1:]
 end = stop if os.path.exists(stop) else out  # a run that finished wrote its output instead
 if not os.path.exists(end):
     sys.exit(f"{binary}: neither a checkpoint nor an output (it failed: run it alone to see why)")
-keys = ("collisions", "cpu_time_s", "predictor_evaluations")
+keys = ("collisions", "cpu_time_s", "predictor_evaluations", "predictor_robust_evaluations")
 a, b = ([h5py.File(f, "r")["provenance"].attrs[k] for k in keys] for f in (state, end))
-collisions, cpu, evaluations = (y - x for x, y in zip(a, b))
+collisions, cpu, evaluations, robust = (y - x for x, y in zip(a, b))
 print(f"{binary[-40:]:<40} collisions {collisions:9d}  CPU {cpu:7.1f} s  "
-      f"µs/collision {cpu / collisions * 1e6:7.1f}  µs/evaluation {cpu / evaluations * 1e6:6.2f}"
+      f"µs/collision {cpu / collisions * 1e6:7.1f}  µs/evaluation {cpu / evaluations * 1e6:6.2f}  "
+      f"robust/collision {robust / collisions:.3f}"
       + ("  (finished)" if end == out else ""))
 EOF
 done

@@ -46,9 +46,13 @@ struct SuperballPredictorLimits {
     double nearGap = 1e-3;
     /// Advancement steps before the prediction settles for a safe recheck time.
     int maxAdvancementSteps = 100;
-    /// Warm Newton steps of an exact signed distance before the robust pair solver takes over
-    /// (32: at p = 1.5 one exact evaluation in 170 needs it, against one in 37 with 8).
-    int newtonSteps = 32;
+    /// Warm Newton steps of an exact signed distance before its plane serves as a lower bound or
+    /// the local search and the robust pair solver take over (at p = 1.5 the robust solver
+    /// served one exact evaluation in 170 with 32, one in 37 with 8; since lower bounds serve
+    /// down to the contact gap, 16 costs p = 1.5 nothing and spares near-cubes the steps of a
+    /// Newton that will not converge: 1.2-1.26x per collision at p = 10, 1.05x at p = 5;
+    /// bench/RESULTS.md, "Near-cubes: lower bounds down to the contact gap").
+    int newtonSteps = 16;
     /// Newton steps in time from one exact sample before advancement goes on along planes.
     int newtonStepsInTime = 8;
     /// Evaluations of the bracketed refinement before it settles for the bracket's safe end.
