@@ -245,11 +245,13 @@ WarmNewton exactSignedDistance(const SuperballPair& pair, Vector3d& normal, doub
     // linear): Newton again from the best face normal of either body, where their contacts lie.
     if (!warm.converged && warm.result.signedDistance <= boundSuffices && pair.shape.p() > 1.0)
         restartFromFaces(pair, warm, limits, stats, rates);
+    // Unconverged above the bound: its plane, a lower bound on s, serves as it is.
+    const bool lowerBound = !warm.converged && warm.result.signedDistance > boundSuffices;
     std::optional<SignedDistanceResult> fast;
     if (warm.converged) fast = warm.result;
-    if (!warm.converged && warm.result.signedDistance <= boundSuffices && pair.shape.p() > 1.0)
+    if (!warm.converged && !lowerBound && pair.shape.p() > 1.0)
         fast = localMaximum(pair, warm.result.normal, limits, stats);
-    if (!warm.converged && warm.result.signedDistance > boundSuffices) {
+    if (lowerBound) {
         fast = warm.result;
         ++stats.lowerBounds;
     }
@@ -263,7 +265,7 @@ WarmNewton exactSignedDistance(const SuperballPair& pair, Vector3d& normal, doub
     if (!fast) ++stats.robustEvaluations;
     const WarmNewton answer =
         fast ? WarmNewton{*fast, true, warm.converged ? warm.normalRate : Vector3d::Zero(),
-                          warm.converged || warm.result.signedDistance <= boundSuffices}
+                          !lowerBound}
              : WarmNewton{signedDistance(pair, normal), true};
     stats.distanceFallbacks += answer.result.fallbacks;
     normal = answer.result.normal;
