@@ -56,11 +56,11 @@ struct SignedDistanceResult {
     /// (where f is not concave on the sphere) the local maximum from mu's normal, a lower
     /// bound on s, so it never understates a depth.
     double signedDistance = 0.0;
-    double scaleFactor = 0.0; ///< mu of the same pair
-    Vector3d normal;          ///< unit contact normal, from A towards B
-    Vector3d contactA;        ///< support point of A along normal, relative to r_A
-    Vector3d contactB;        ///< support point of B along -normal, relative to r_A
-    int iterations = 0;       ///< Newton iterations (scale factor and distance together)
+    double scaleFactor = 0.0;             ///< mu of the same pair
+    Vector3d normal = Vector3d::Zero();   ///< unit contact normal, from A towards B
+    Vector3d contactA = Vector3d::Zero(); ///< support point of A along normal, relative to r_A
+    Vector3d contactB = Vector3d::Zero(); ///< support point of B along -normal, relative to r_A
+    int iterations = 0; ///< Newton iterations (scale factor and distance together)
     int evaluations = 0;
     int fallbacks = 0; ///< cutting-plane finishes (scale factor and distance together)
 };

@@ -57,6 +57,9 @@ struct PairMemory {
     double gap = -std::numeric_limits<double>::infinity(); ///< -inf: no bound
     double rate = 0.0;
     double span = 0.0;
+    /// The prediction left found a contact, and `normal` is its normal there (the collision's
+    /// contact starts from it).
+    bool atContact = false;
 
     /// The same memory `elapsed` later along the motion predicted.
     PairMemory after(double elapsed) const {

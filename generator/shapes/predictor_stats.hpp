@@ -27,6 +27,7 @@ struct PredictorStats {
     long rechecks = 0;          ///< step limit reached: a safe recheck time instead of a contact
     long limitHits = 0;         ///< refinement limit reached: the bracket's safe end returned
     long startOverlaps = 0;     ///< s(0) < -contactGap D (the pair just resolved, by rounding)
+    long predictedContacts = 0; ///< collisions whose contact normal was the prediction's
 
     /// Each counter with its provenance name (the names of earlier files kept).
     static constexpr std::pair<const char*, long PredictorStats::*> kCounters[] = {
@@ -48,6 +49,7 @@ struct PredictorStats {
         {"predictor_rechecks", &PredictorStats::rechecks},
         {"predictor_limit_hits", &PredictorStats::limitHits},
         {"predictor_start_overlaps", &PredictorStats::startOverlaps},
+        {"predictor_predicted_contacts", &PredictorStats::predictedContacts},
     };
     PredictorStats& operator+=(const PredictorStats& other) {
         for (const auto& [name, counter] : kCounters)

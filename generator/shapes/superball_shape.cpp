@@ -99,10 +99,13 @@ Vector3d optimalNormalRate(const PairRates& rates, const Vector3d& n,
 /// s at a warm normal by Newton steps on the unit sphere with backtracking, f(n) = n.d - h_i(n) -
 /// h_j(n) being concave about its maximum near contact (docs/design.md §2); the tangent Hessian of
 /// -f is P^T (d2h_i + d2h_j) P + f I. Unconverged when an eighth of a step still does not ascend,
-/// the Hessian is not positive definite or it takes more than `maxSteps` steps (slow near face
-/// normals of p > 1, where the Hessian diverges, and most evaluations of near-cubes).
-WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n, int maxSteps,
-                                const PairRates* rates = nullptr) {
+/// the Hessian is not positive definite or it takes more than limits.newtonSteps steps (slow near
+/// face normals of p > 1, where the Hessian diverges, and most evaluations of near-cubes), or,
+/// where a lower bound above `enough` will do, as soon as its plane is one
+/// (limits.boundAscentRatio).
+WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n,
+                                const SuperballPredictorLimits& limits,
+                                const PairRates* rates = nullptr, double enough = kNever) {
     const Matrix3d& qi = pair.rotationA;
     const Matrix3d& qj = pair.rotationB;
     const Vector3d& d = pair.displacement;
@@ -128,7 +131,7 @@ WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n, int maxSt
         w.result.iterations = iterations;
         return w;
     };
-    for (int iteration = 0; iteration < maxSteps; ++iteration) {
+    for (int iteration = 0; iteration < limits.newtonSteps; ++iteration) {
         const Vector3d xi = qi * now.ji.point, xj = qj * now.jj.point;
         const Eigen::Matrix<double, 3, 2> basis = tangentBasis(now.n);
         const Eigen::Vector2d gradient = basis.transpose() * (d - xi - xj);
@@ -152,6 +155,9 @@ WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n, int maxSt
         };
         if (gradient.norm() <= 1e-9 * size && gradient.dot(step) <= 1e-17 * size)
             return converged();
+        if (iteration > 0 && now.f > enough &&
+            gradient.dot(step) <= limits.boundAscentRatio * (now.f - enough))
+            return answer(iteration + 1, false);
         // Where a body presents a face (p > 1.5: Newton on its support function, ~|x|^q with
         // q < 1.5 across the face normal, overshoots) the gradient stays large at the optimum:
         // the supporting planes' common perpendicular certifies s instead.
@@ -169,7 +175,7 @@ WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n, int maxSt
         }
         if (!ascended) return answer(iteration + 1, false);
     }
-    return answer(maxSteps, false);
+    return answer(limits.newtonSteps, false);
 }
 
 /// Whether the point x (relative to r_A) lies strictly inside both bodies of the pair.
@@ -179,11 +185,23 @@ bool insideBoth(const SuperballPair& pair, const Vector3d& x) {
            pair.shape.gauge(pair.rotationB.transpose() * (x - pair.displacement)) < kInside;
 }
 
+/// The plane of unit n as the pair's answer: its gap n.d - h_i(n) - h_j(n) and the two support
+/// points (relative to r_i).
+SignedDistanceResult atNormal(const SuperballPair& pair, const Vector3d& n) {
+    SignedDistanceResult r;
+    r.normal = n;
+    r.contactA = pair.rotationA * pair.shape.supportPoint(pair.rotationA.transpose() * n);
+    r.contactB = pair.displacement -
+                 pair.rotationB * pair.shape.supportPoint(pair.rotationB.transpose() * n);
+    r.signedDistance = n.dot(r.contactB - r.contactA);
+    return r;
+}
+
 /// Newton again from the face normal of either body with the largest plane gap (better than
 /// the unconverged `warm`'s); kept when it converges or ends higher.
 void restartFromFaces(const SuperballPair& pair, WarmNewton& warm,
                       const SuperballPredictorLimits& limits, PredictorStats& stats,
-                      const PairRates* rates) {
+                      const PairRates* rates, double boundSuffices) {
     Vector3d best = Vector3d::Zero();
     double bestGap = warm.result.signedDistance;
     for (const Matrix3d* rotation : {&pair.rotationA, &pair.rotationB})
@@ -199,7 +217,7 @@ void restartFromFaces(const SuperballPair& pair, WarmNewton& warm,
             }
         }
     if (best.isZero(0.0)) return;
-    WarmNewton restart = newtonSignedDistance(pair, best, limits.newtonSteps, rates);
+    WarmNewton restart = newtonSignedDistance(pair, best, limits, rates, boundSuffices);
     stats.newtonSteps += restart.result.iterations;
     if (restart.converged || restart.result.signedDistance > warm.result.signedDistance)
         warm = restart;
@@ -221,12 +239,8 @@ std::optional<SignedDistanceResult> localMaximum(const SuperballPair& pair, cons
         tangentMaximum(pair, n, limits.localSearchRadius, limits.localSearchResolution,
                        PairTolerances{}.maxCuttingPlaneIterations);
     if (!local.interior) return std::nullopt;
-    SignedDistanceResult r;
+    SignedDistanceResult r = atNormal(pair, local.normal);
     r.signedDistance = local.value;
-    r.normal = local.normal;
-    r.contactA = pair.rotationA * pair.shape.supportPoint(pair.rotationA.transpose() * r.normal);
-    r.contactB = pair.displacement -
-                 pair.rotationB * pair.shape.supportPoint(pair.rotationB.transpose() * r.normal);
     return r;
 }
 
@@ -239,12 +253,12 @@ WarmNewton exactSignedDistance(const SuperballPair& pair, Vector3d& normal, doub
                                const PairRates* rates = nullptr) {
     WarmNewton warm =
         newtonSignedDistance(pair, normal.isZero(0.0) ? pair.displacement.normalized() : normal,
-                             limits.newtonSteps, rates);
+                             limits, rates, boundSuffices);
     stats.newtonSteps += warm.result.iterations;
     // Unconverged below the bound (near-cubes, whose support functions are nearly piecewise
     // linear): Newton again from the best face normal of either body, where their contacts lie.
     if (!warm.converged && warm.result.signedDistance <= boundSuffices && pair.shape.p() > 1.0)
-        restartFromFaces(pair, warm, limits, stats, rates);
+        restartFromFaces(pair, warm, limits, stats, rates, boundSuffices);
     // Unconverged above the bound: its plane, a lower bound on s, serves as it is.
     const bool lowerBound = !warm.converged && warm.result.signedDistance > boundSuffices;
     std::optional<SignedDistanceResult> fast;
@@ -302,13 +316,29 @@ class PairTrajectory {
         // "Near-cubes: lower bounds down to the contact gap").
         const WarmNewton evaluation = exactSignedDistance(
             pair, normal_, limits_.contactGap * diameter, limits_, stats_, &rates);
-        const SignedDistanceResult& r = evaluation.result;
         lastTau_ = tau;
         normalRate_ = evaluation.normalRate;
-        // ds/dtau by the envelope theorem: the closing speed along n of the two support points,
-        // each moving at omega x x + (gamma / D) x about its own centre; taken at their midpoint,
-        // the point where the resolver applies the impulse, so that "closing" means the same to
-        // both (on near-flat faces the support points can lie far apart on the face).
+        return sample(tau, evaluation.result, evaluation.exact);
+    }
+
+    /// The sample at tau = 0 of an exact evaluation made elsewhere at this state (the contact
+    /// the engine has just resolved), warm start of the next.
+    Sample given(const SignedDistanceResult& r) {
+        normal_ = r.normal;
+        lastTau_ = 0.0;
+        normalRate_ = Vector3d::Zero();
+        return sample(0.0, r, true);
+    }
+
+  private:
+    // ds/dtau by the envelope theorem: the closing speed along n of the two support points,
+    // each moving at omega x x + (gamma / D) x about its own centre; taken at their midpoint,
+    // the point where the resolver applies the impulse, so that "closing" means the same to
+    // both (on near-flat faces the support points can lie far apart on the face).
+    Sample sample(double tau, const SignedDistanceResult& r, bool exact) const {
+        const double diameter = m_.diameter + m_.growthRate * tau;
+        const Vector3d d = m_.displacement + m_.relativeVelocity * tau;
+        const double strain = m_.growthRate / diameter;
         const Vector3d xI = 0.5 * (r.contactA + r.contactB), xJ = xI - d;
         const Vector3d vI = m_.angularVelocityI.cross(xI) + strain * xI;
         const Vector3d vJ = m_.angularVelocityJ.cross(xJ) + strain * xJ;
@@ -317,10 +347,9 @@ class PairTrajectory {
                 r.normal.dot(m_.relativeVelocity + vJ - vI),
                 r.normal,
                 planeGapRate(m_, diameter, r.normal, r.contactA, d - r.contactB),
-                evaluation.exact};
+                exact};
     }
 
-  private:
     const PairMotion& m_;
     double p_;
     Vector3d& normal_;
@@ -363,6 +392,14 @@ std::optional<SphereWindow> circumscribedWindow(const PairMotion& m, double c, d
     }
     return SphereWindow{enter, end};
 }
+
+/// A pair's prediction as PairPrediction finds it: a Prediction, with the contact normal at the
+/// root where it found a contact (zero otherwise).
+struct Found {
+    double time;
+    bool contact = true;
+    Vector3d normal = Vector3d::Zero();
+};
 
 /// One prediction of a superball pair inside its circumscribed spheres' window (tiers 2 and 3,
 /// generator/shapes/superball_shape.hpp): the plane bounds of a normal (planeRate,
@@ -421,19 +458,21 @@ class PairPrediction {
 
     /// Tier 3 from `start` (the cached plane's gap `cached` at tau = 0 known): advancement along
     /// the cached plane, then from exact samples along their planes, Newton steps in time near
-    /// contact, and the certificate of the root they reach.
-    Prediction advance(double start, const Vector3d& normal, PlaneGap cached, bool resolved,
-                       PairMemory& memory);
+    /// contact, and the certificate of the root they reach. `resolved`: the pair was resolved at
+    /// this very state, whose contact seen from i is `contact` where known (the sample at
+    /// tau = 0 without an evaluation).
+    Found advance(double start, const Vector3d& normal, PlaneGap cached, bool resolved,
+                  const std::optional<SignedDistanceResult>& contact, PairMemory& memory);
 
   private:
     Sample refine(Sample left, Sample right);
-    std::variant<double, Prediction> alongPlane(const Vector3d& n, double tau, PlaneGap g,
-                                                double reference);
+    std::variant<double, Found> alongPlane(const Vector3d& n, double tau, PlaneGap g,
+                                           double reference);
     std::optional<Sample> newtonInTime(const Sample& from);
     /// Near contact and closing: Newton steps in time and the certificate of the root they
     /// reach. The prediction when that decides it; else none, with `end` shortened to an
     /// uncertified root.
-    std::optional<Prediction> rootNear(const Sample& now);
+    std::optional<Found> rootNear(const Sample& now);
     /// A chord step from (tau, g) along n that certifies, if any (chordStep false otherwise).
     struct Chord {
         bool step = false;
@@ -453,7 +492,7 @@ class PairPrediction {
     PairTrajectory trajectory_;
     double touching_, near_;
     int steps_ = 0;
-    Prediction atEnd_{kNever}; ///< what reaching `end` means: no contact, or a known one there
+    Found atEnd_{kNever}; ///< what reaching `end` means: no contact, or a known one there
 };
 
 // Safeguarded Newton on s over a bracket gap(left) > 0 >= gap(right): the Newton step from
@@ -511,14 +550,14 @@ PairPrediction::Chord PairPrediction::chordStep(const Vector3d& n, double tau, c
 // gap: a chord step where one certifies, else the first-order step gap / |plane rate|; until
 // the gap drops below half of `reference`. Returns the time reached, or the prediction when the
 // plane separates them up to `end` or the step limit is reached (a safe recheck time).
-std::variant<double, Prediction> PairPrediction::alongPlane(const Vector3d& n, double tau,
-                                                            PlaneGap g, double reference) {
+std::variant<double, Found> PairPrediction::alongPlane(const Vector3d& n, double tau, PlaneGap g,
+                                                       double reference) {
     const double rate = planeRate(n), curvature = planeCurvature(n);
     do {
         if (rate >= 0.0) return atEnd_; // this plane separates them up to `end`
         if (++steps_ > limits_.maxAdvancementSteps) {
             ++stats_.rechecks;
-            return Prediction{tau, false};
+            return Found{tau, false};
         }
         const double firstOrder = std::max(g.gap, touching_) / -rate;
         const Chord chord = chordStep(n, tau, g, firstOrder, curvature);
@@ -568,7 +607,7 @@ std::optional<Sample> PairPrediction::newtonInTime(const Sample& from) {
 // g >= chord - M (t - t0)(t1 - t) / 2 > 0 there when g(t0) > M (t1 - t0)^2 / 2. Otherwise
 // (s dips below zero and back within the step: rare, spin-driven) advancement goes on
 // without Newton steps up to that root.
-std::optional<Prediction> PairPrediction::rootNear(const Sample& now) {
+std::optional<Found> PairPrediction::rootNear(const Sample& now) {
     const double rate = planeRate(now.normal);
     if (!(atEnd_.time == kNever && now.exact && now.gap <= near_ && now.rate < 0.0 && rate < 0.0))
         return std::nullopt;
@@ -576,40 +615,42 @@ std::optional<Prediction> PairPrediction::rootNear(const Sample& now) {
     const std::optional<Sample> root =
         tau > now.tau + now.gap / -rate ? newtonInTime(now) : std::nullopt;
     if (!root) return std::nullopt;
-    if (root->gap > touching_) return Prediction{root->tau, false}; // refinement stalled
+    if (root->gap > touching_) return Found{root->tau, false}; // refinement stalled
     const double dt = root->tau - now.tau;
     if (planeGap(root->normal, now.tau).gap > 0.5 * planeCurvature(root->normal) * dt * dt)
-        return Prediction{root->tau};
+        return Found{root->tau, true, root->normal};
     ++stats_.uncertifiedRoots;
     end_ = root->tau;
-    atEnd_ = {root->tau};
+    atEnd_ = {root->tau, true, root->normal};
     return std::nullopt;
 }
 
-Prediction PairPrediction::advance(double start, const Vector3d& normal, PlaneGap cached,
-                                   bool resolved, PairMemory& memory) {
+Found PairPrediction::advance(double start, const Vector3d& normal, PlaneGap cached, bool resolved,
+                              const std::optional<SignedDistanceResult>& contact,
+                              PairMemory& memory) {
     if (cached.gap > touching_) {
         const auto reached = alongPlane(normal, 0.0, cached, cached.gap);
-        if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
+        if (const Found* done = std::get_if<Found>(&reached)) return *done;
         start = std::max(start, std::get<double>(reached));
     }
     memory.gap = -kNever; // the exact evaluations move the normal on
-    Sample now = trajectory_.at(start);
+    Sample now = contact && start == 0.0 ? trajectory_.given(*contact) : trajectory_.at(start);
     if (start == 0.0 && now.gap < -touching_) ++stats_.startOverlaps;
     for (;;) {
         // A pair resolved at this very state touches now with no contact, by any path: Newton
         // steps in time from it would end on the same sample (refine returns a touching end).
         const bool justResolved = resolved && now.tau == 0.0;
-        if (now.gap <= touching_ && now.rate < 0.0 && !justResolved) return {now.tau};
+        if (now.gap <= touching_ && now.rate < 0.0 && !justResolved)
+            return {now.tau, true, now.normal};
         if (!justResolved)
-            if (const std::optional<Prediction> decided = rootNear(now)) return *decided;
+            if (const std::optional<Found> decided = rootNear(now)) return *decided;
         const auto reached = alongPlane(now.normal, now.tau, {now.gap, now.planeRate}, now.gap);
-        if (const Prediction* done = std::get_if<Prediction>(&reached)) return *done;
+        if (const Found* done = std::get_if<Found>(&reached)) return *done;
         const Sample previous = now;
         now = trajectory_.at(std::get<double>(reached));
         if (now.gap <= 0.0 && previous.gap > touching_) {
             const Sample root = refine(previous, now);
-            return {root.tau, root.gap <= touching_};
+            return {root.tau, root.gap <= touching_, root.normal};
         }
     }
 }
@@ -661,15 +702,44 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Pa
         ++stats.planeRejections;
         return none;
     }
-    return prediction.advance(window->enter, normal, cached, resolved, memory);
+    const Found found =
+        prediction.advance(window->enter, normal, cached, resolved,
+                           resolved ? resolvedContactSeenFrom(m) : std::nullopt, memory);
+    if (found.contact && found.time < kNever) memory = {found.normal, -kNever, 0.0, 0.0, true};
+    return {found.time, found.contact};
+}
+
+// The engine re-predicts the pair right after contact() at the same state, from i (the same
+// displacement) and from j (its exact negation: minimumImage is odd).
+std::optional<SignedDistanceResult>
+SuperballShape::resolvedContactSeenFrom(const PairMotion& m) const {
+    const Vector3d& d = resolved_.displacement;
+    if (m.diameter != resolved_.diameter) return std::nullopt;
+    if (m.displacement == d) return resolved_.contact;
+    if (m.displacement != -d) return std::nullopt;
+    SignedDistanceResult r = resolved_.contact; // from j: the normal and both points mirrored
+    r.normal = -r.normal;
+    r.contactA = resolved_.contact.contactB - d;
+    r.contactB = resolved_.contact.contactA - d;
+    return r;
 }
 
 PairContact SuperballShape::contact(const PairMotion& m, PairMemory& memory) {
     Vector3d& normal = memory.normal;
     const SuperballPair pair{Superball(p_, 0.5 * m.diameter), m.orientationI.toRotationMatrix(),
                              m.orientationJ.toRotationMatrix(), m.displacement};
-    const SignedDistanceResult r = exactSignedDistance(pair, normal, kNever, limits, stats).result;
+    // The prediction's normal was the optimal one at the root it found, a state within rounding
+    // of this one: where its plane still touches (within the contact gap, either way), no
+    // evaluation is needed (at p = 10 it was a local search per collision).
+    SignedDistanceResult r;
+    if (memory.atContact) r = atNormal(pair, normal);
+    if (!memory.atContact || !(std::abs(r.signedDistance) <= 2.0 * limits.contactGap * m.diameter))
+        r = exactSignedDistance(pair, normal, kNever, limits, stats).result;
+    else
+        ++stats.predictedContacts;
+    normal = r.normal;
     memory = {normal}; // a new normal: its gap bound is unknown
+    resolved_ = {m.displacement, m.diameter, r};
     const Vector3d armI = 0.5 * (r.contactA + r.contactB);
     return {r.normal, armI, armI - m.displacement, m.displacement.norm()};
 }

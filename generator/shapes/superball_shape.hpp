@@ -25,12 +25,14 @@
 // returns a safe time up to which nothing touches (Prediction::contact = false) instead of
 // guessing.
 
+#include "pair/pair_geometry.hpp"
 #include "shapes/collision_resolver.hpp"
 #include "shapes/pair_motion.hpp"
 #include "shapes/predictor_stats.hpp"
 #include "shapes/sphere.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -53,6 +55,13 @@ struct SuperballPredictorLimits {
     /// Newton that will not converge: 1.2-1.26x per collision at p = 10, 1.05x at p = 5;
     /// bench/RESULTS.md, "Near-cubes: lower bounds down to the contact gap").
     int newtonSteps = 16;
+    /// Where a lower bound on s will do (it must clear the contact gap), warm Newton stops, from
+    /// its second iterate on, once its plane gap clears that need by 1 / this times the ascent
+    /// its next step predicts: the plane serves, and at p = 10 the steps it spares were also the
+    /// exact samples from which Newton steps in time bracketed kinked roots (1.37-1.49x per
+    /// collision at p = 10, 1.05x at p = 5, none at p = 1.5; from the first iterate on p = 1.5
+    /// lost 9 %: bench/RESULTS.md, "Warm Newton stops where its plane will do").
+    double boundAscentRatio = 0.25;
     /// Newton steps in time from one exact sample before advancement goes on along planes.
     int newtonStepsInTime = 8;
     /// Evaluations of the bracketed refinement before it settles for the bracket's safe end.
@@ -106,7 +115,8 @@ class SuperballShape {
     /// Earliest delay in [0, horizon] at which the pair touches, or +inf if none; a safe recheck
     /// delay when the step limit is reached. `memory` (in/out): the pair's cached unit normal
     /// from i to j (zero when unknown), updated when the pair is evaluated exactly, and the bound
-    /// on its plane gap now (its own or the last one's, moved on), left for the next prediction.
+    /// on its plane gap now (its own or the last one's, moved on), left for the next prediction;
+    /// where the answer is a contact, its normal there (atContact) for contact().
     /// `resolved`: the engine has just applied this pair's impulse at this very state, which left
     /// the surfaces separating at the resolver's contact point, so touching now is no contact (on
     /// near-flat faces a re-evaluation can pick another point of the face and see it closing:
@@ -114,9 +124,12 @@ class SuperballShape {
     Prediction collisionTime(const PairMotion& m, double horizon, PairMemory& memory,
                              bool resolved = false);
 
-    /// Contact of touching bodies now: normal from i to j (warm-started from memory.normal and
-    /// left there, its gap bound dropped), arms to the midpoint of the two support points (the
-    /// same point for both, so impulses conserve angular momentum).
+    /// Contact of touching bodies now: normal from i to j, arms to the midpoint of the two support
+    /// points (the same point for both, so impulses conserve angular momentum). The normal is
+    /// memory.normal where the pair's last prediction found this contact there (atContact) and
+    /// its plane still touches, else the exact one warm-started from it; it is left there, its gap
+    /// bound dropped, and kept with the contact for the pair's predictions at this instant
+    /// (collisionTime's `resolved`).
     PairContact contact(const PairMotion& m, PairMemory& memory);
 
     /// The elastic impulse at the contact point, spins included (collision_resolver.hpp).
@@ -133,6 +146,16 @@ class SuperballShape {
     PredictorStats stats{};
 
   private:
+    /// The last contact, seen from i of its pair, and that pair's displacement and diameter.
+    struct ResolvedContact {
+        Vector3d displacement = Vector3d::Zero();
+        double diameter = 0.0;
+        SignedDistanceResult contact;
+    };
+    /// The last contact seen from m's i, if m is its pair at that state (from either side).
+    std::optional<SignedDistanceResult> resolvedContactSeenFrom(const PairMotion& m) const;
+
+    ResolvedContact resolved_;
     double p_;
     double c_;
     double cIn_;

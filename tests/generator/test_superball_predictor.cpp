@@ -522,6 +522,111 @@ TEST(SuperballPredictor, AJustResolvedPairJustApartIsNotAContactAtThatInstantEit
     }
 }
 
+/// The pair seen from j: displacement and velocity negated, the bodies swapped.
+PairMotion seenFromJ(const PairMotion& m) {
+    PairMotion r = m;
+    r.displacement = -m.displacement;
+    r.relativeVelocity = -m.relativeVelocity;
+    std::swap(r.orientationI, r.orientationJ);
+    std::swap(r.angularVelocityI, r.angularVelocityJ);
+    return r;
+}
+
+/// The plane gap of unit n for the pair of m, in units of D.
+double planeGapOf(double p, const PairMotion& m, const Vector3d& n) {
+    const SuperballPair pair = pairAt(p, m, 0.0);
+    const double h = pair.shape.support(pair.rotationA.transpose() * n) +
+                     pair.shape.support(pair.rotationB.transpose() * n);
+    return (n.dot(m.displacement) - h) / m.diameter;
+}
+
+// The engine's contact starts from the normal the pair's prediction found at the root:
+// that normal's plane is the optimal one there, within rounding of the exact contact computed
+// afresh (the independent check: a cold pair solver from the centre line).
+TEST(SuperballPredictor, TheContactAtAPredictedRootTakesThePredictedNormal) {
+    for (const double p : {1.5, 3.0, 10.0}) {
+        Random random(37 + static_cast<std::uint64_t>(p));
+        int hits = 0;
+        for (int trial = 0; trial < 60; ++trial) {
+            const PairMotion m = randomApproach(p, random, trial % 3, trial % 2 ? 0.05 : 0.0);
+            SuperballShape shape{p};
+            PairMemory memory;
+            const Prediction next = shape.collisionTime(m, 3.0, memory);
+            if (!next.contact || std::isinf(next.time)) continue;
+            ++hits;
+            const std::string where = "p " + number(p) + " #" + std::to_string(trial);
+            ASSERT_TRUE(memory.atContact) << where;
+            const Vector3d predicted = memory.normal;
+            const PairMotion atRoot = advancedPair(m, next.time);
+            const double s = relativeGapAt(p, atRoot, 0.0);
+            const PairContact taken = shape.contact(atRoot, memory);
+            EXPECT_EQ(shape.stats.predictedContacts, 1) << where;
+            EXPECT_EQ(taken.normal, predicted) << where;
+            // The predicted plane is optimal to rounding: its gap is s (a plane's gap never
+            // exceeds s), and the contact is within the contact gap.
+            EXPECT_NEAR(planeGapOf(p, atRoot, taken.normal), s, 1e-14) << where;
+            EXPECT_LE(std::abs(s), 2e-14) << where;
+        }
+        EXPECT_GT(hits, 20) << "p " << number(p);
+    }
+}
+
+/// The engine's predictions of a pair it has just resolved: the first with `resolved`, then on
+/// from each safe recheck time (predictLikeTheEngine); the contact, +inf if none to the horizon.
+double resolvedThenLikeTheEngine(SuperballShape& shape, const PairMotion& m, double horizon,
+                                 PairMemory& memory) {
+    const Prediction first = shape.collisionTime(m, horizon, memory, true);
+    if (first.contact || std::isinf(first.time)) return first.time;
+    memory = memory.after(first.time);
+    const EnginePrediction rest =
+        predictLikeTheEngine(shape, advancedPair(m, first.time), horizon - first.time, memory);
+    EXPECT_TRUE(rest.finished);
+    return first.time + rest.time;
+}
+
+// Right after contact() the engine predicts the resolved pair again at that state, from i and
+// from j: the contact stands in for the first evaluation. The predictions must be those of a
+// shape that evaluates it afresh.
+TEST(SuperballPredictor, TheResolvedPairStartsFromItsContactAsFromAnEvaluation) {
+    for (const double p : {1.5, 3.0, 10.0}) {
+        Random random(41 + static_cast<std::uint64_t>(p));
+        long saved = 0;
+        for (int trial = 0; trial < 60; ++trial) {
+            const PairMotion m = randomApproach(p, random, trial % 3, 0.0);
+            SuperballShape shape{p};
+            PairMemory memory;
+            const Prediction next = shape.collisionTime(m, 3.0, memory);
+            if (!next.contact || std::isinf(next.time)) continue;
+            PairMotion after = advancedPair(m, next.time);
+            const PairContact contact = shape.contact(after, memory);
+            ParticleState i{Vector3d::Zero(), Vector3d::Zero(), {}, after.angularVelocityI};
+            ParticleState j{after.displacement, after.relativeVelocity, {}, after.angularVelocityJ};
+            shape.resolve(after, contact, i, j);
+            after.relativeVelocity = j.velocity - i.velocity;
+            after.angularVelocityI = i.angularVelocity;
+            after.angularVelocityJ = j.angularVelocity;
+            for (const PairMotion& side : {after, seenFromJ(after)}) {
+                const std::string where = "p " + number(p) + " #" + std::to_string(trial);
+                SuperballShape fresh{p};
+                PairMemory mine{(side.displacement == after.displacement ? 1.0 : -1.0) *
+                                contact.normal};
+                PairMemory theirs = mine;
+                const long before = shape.stats.evaluations;
+                const double reused = resolvedThenLikeTheEngine(shape, side, 3.0, mine);
+                const double evaluated = resolvedThenLikeTheEngine(fresh, side, 3.0, theirs);
+                saved += fresh.stats.evaluations - (shape.stats.evaluations - before);
+                if (std::isinf(evaluated)) {
+                    EXPECT_TRUE(std::isinf(reused)) << where << ": " << reused;
+                } else {
+                    EXPECT_NEAR(reused, evaluated, 1e-9) << where;
+                    EXPECT_GT(reused, 0.0) << where;
+                }
+            }
+        }
+        EXPECT_GT(saved, 20) << "p " << number(p) << ": evaluations spared";
+    }
+}
+
 // ---- p = 1: the general path against the exact sphere quadratic --------------------------------
 
 // Spheres are the p = 1 superballs: SuperballShape's general path (advancement on s, Newton,
