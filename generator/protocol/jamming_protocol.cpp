@@ -94,6 +94,18 @@ std::uint64_t optionalCounter(const Packing& packing, const std::string& key,
     return packing.provenance.count(key) == 0 ? 0 : counterValue(packing, key, source);
 }
 
+/// A resume-state entry added by a later version: zero in checkpoints written before it.
+template <class T>
+T optionalState(const Packing& packing, const std::string& key, const std::string& source) {
+    return packing.resumeState.count(key) == 0 ? T{} : resumeValue<T>(packing, key, source);
+}
+
+/// A watch that has counted `count` windows checks the jam at base, 2 base, 4 base, ... windows.
+bool dueAt(std::int64_t count, std::int64_t base) {
+    const std::int64_t multiple = count / base;
+    return count % base == 0 && multiple > 0 && (multiple & (multiple - 1)) == 0;
+}
+
 /// The engine's growth clock from a checkpoint, refused if tampered with: a non-positive size
 /// or rate, or a diameter that disagrees with the packing's semi_axis (a resume must continue
 /// the packing in the file, not silently another size).
@@ -187,9 +199,9 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
     for (const auto& [name, counter] : PredictorStats::kCounters)
         status_.predictor.*counter = static_cast<long>(optionalCounter(packing, name, source));
     status_.windows = counterValue(packing, "windows", source);
-    status_.subsetWindows = packing.resumeState.count("subset_windows") == 0
-                                ? 0
-                                : resumeValue<std::int64_t>(packing, "subset_windows", source);
+    status_.subsetWindows = optionalState<std::int64_t>(packing, "subset_windows", source);
+    status_.stalledWindows = optionalState<std::int64_t>(packing, "stalled_windows", source);
+    status_.stallPressure = optionalState<double>(packing, "stall_pressure", source);
     status_.wallSeconds = stateValue<double>(packing, "wall_time_s", source);
     if (packing.provenance.count("cpu_time_s") != 0)
         status_.cpuSeconds = stateValue<double>(packing, "cpu_time_s", source);
@@ -244,8 +256,7 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
                                      std::to_string(report.collisions) +
                                      " collisions (collisions repeating at one instant): the "
                                      "reduced pressure (virial / duration) is undefined");
-        finishWindow(report.virial, report.duration);
-        watchJam(report.participants);
+        watchJam(report.participants, finishWindow(report.virial, report.duration));
         onWindow(status_);
         if (stop != nullptr && *stop != 0 && status_.phase != Phase::Done) return false;
     }
@@ -254,7 +265,7 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
     return true;
 }
 
-void JammingProtocol::finishWindow(double virial, double duration) {
+double JammingProtocol::finishWindow(double virial, double duration) {
     // The window started at kT = 1 (rescaled); average with its end for the virial (docs/design.md
     // §3). The virial theorem's kT is the translational one. A phase ends when two windows in a row
     // reach its pressure: one window's estimate spikes when a cluster of rotating near-cubes
@@ -281,18 +292,24 @@ void JammingProtocol::finishWindow(double virial, double duration) {
         status_.phase = Phase::Done;
     status_.packingFraction = packingFraction();
     adaptSkin();
+    return std::min(previous, status_.reducedPressure);
 }
 
-void JammingProtocol::watchJam(std::uint64_t participants) {
-    // A subset carries the pressure after this many windows in a row, then the jam is checked
-    // at 1, 2, 4, ... times as many (docs/design.md §3).
-    constexpr std::int64_t kSubsetWindows = 3;
+void JammingProtocol::watchJam(std::uint64_t participants, double sustained) {
+    // A subset carries the pressure after this many windows in a row; the slow phase's pressure
+    // has stalled after this many windows without doubling. Either checks the jam then and at 2,
+    // 4, 8, ... times as many windows (docs/design.md §3, "Jam check on the way").
+    constexpr std::int64_t kSubsetWindows = 3, kStalledWindows = 50;
     const bool subset = status_.reducedPressure >= parameters_.pressureSwitch &&
                         2 * participants < static_cast<std::uint64_t>(parameters_.particles);
     status_.subsetWindows = subset ? status_.subsetWindows + 1 : 0;
-    const std::int64_t multiple = status_.subsetWindows / kSubsetWindows;
-    if (status_.phase == Phase::Done || status_.subsetWindows % kSubsetWindows != 0 ||
-        multiple == 0 || (multiple & (multiple - 1)) != 0)
+    if (status_.phase == Phase::Slow) {
+        const bool doubled = sustained >= 2.0 * status_.stallPressure;
+        if (doubled) status_.stallPressure = sustained;
+        status_.stalledWindows = doubled ? 0 : status_.stalledWindows + 1;
+    }
+    if (status_.phase == Phase::Done || !(dueAt(status_.subsetWindows, kSubsetWindows) ||
+                                          dueAt(status_.stalledWindows, kStalledWindows)))
         return;
     JamCheck check = checkJam(checkpoint(), status_.reducedPressure, parameters_.jamCheck);
     if (!check.chain) return;
@@ -356,6 +373,8 @@ Packing JammingProtocol::checkpoint() const {
     state["format"] = std::string(kStateFormat);
     state["phase"] = static_cast<std::int64_t>(status_.phase);
     state["subset_windows"] = status_.subsetWindows;
+    state["stalled_windows"] = status_.stalledWindows;
+    state["stall_pressure"] = status_.stallPressure;
     state["base_diameter"] = clock.baseDiameter;
     state["growth_elapsed"] = clock.elapsed;
     state["growth_rate"] = clock.rate;

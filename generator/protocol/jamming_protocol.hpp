@@ -8,11 +8,13 @@
 // exact sphere engine; any other p on the rotating superball engine, whose thermostat rescales
 // translational and rotational kinetic energy separately to kT = 1 (equipartition).
 //
-// No jam is declared from the pressure alone (docs/design.md §3, "Jam check"): at the final
-// pressure the contact network must hold (few rattlers at gaps of order D / P), and a pressure
-// carried by a subset (fewer than half the particles colliding in several windows in a row past
-// the switch pressure) that turns out to be a chain wrapping around the periodic box ends the
-// run early, not jammed: such a chain is rigid, and the rest cannot grow into a jam.
+// No jam is declared from the pressure alone (docs/design.md §3, "Jam check" and "Jam check on
+// the way"): at the final pressure the contact network must hold (few rattlers at gaps of order
+// D / P). The jam is also checked on the way, when a subset carries the pressure (fewer than half
+// the particles colliding in several windows in a row past the switch pressure) or when the slow
+// phase's pressure stalls (no doubling over many windows while the particles grow); a failed check
+// that finds a chain wrapping around the periodic box ends the run early, not jammed: such a chain
+// is rigid, and the rest cannot grow into a jam.
 
 #include "contacts/jam_check.hpp"
 #include "engine/event_driven_md.hpp"
@@ -94,8 +96,13 @@ struct ProtocolStatus {
     /// Windows in a row, past the switch pressure, in which fewer than half the particles
     /// collided: the pressure may come from a subset (then the jam is checked).
     std::int64_t subsetWindows = 0;
-    /// The jam check, made when the final pressure is reached or when a subset carries the
-    /// pressure through a chain that wraps around the box (then the run ends, not jammed).
+    /// Slow-phase windows since the sustained pressure last doubled (reached twice
+    /// stallPressure): a pressure that stops rising while the particles grow (then the jam is
+    /// checked).
+    std::int64_t stalledWindows = 0;
+    double stallPressure = 0.0;
+    /// The jam check, made when the final pressure is reached, or on the way when it finds a
+    /// chain that wraps around the box (then the run ends, not jammed).
     std::optional<JamCheck> jam;
     double wallSeconds = 0.0; ///< summed over the run and every resumed part
     double cpuSeconds = 0.0;  ///< process CPU time, likewise (throughput on a shared machine)
@@ -127,13 +134,15 @@ class JammingProtocol {
     Packing checkpoint() const;
 
   private:
-    void finishWindow(double virial, double duration);
-    /// After a window in which `participants` particles collided: the jam check at the final
-    /// pressure, or when a subset has carried the pressure for a while.
+    /// The reduced pressure from the window's virial, the thermostat and the phase; returns the
+    /// sustained pressure (the lower of this window's and the last one's).
+    double finishWindow(double virial, double duration);
     /// The neighbour-list skin for the current packing fraction (neighbourSkin), for the next
     /// window's rebuild.
     void adaptSkin();
-    void watchJam(std::uint64_t participants);
+    /// After a window in which `participants` particles collided: the jam check on the way, when
+    /// a subset has carried the pressure or the sustained pressure has stalled for a while.
+    void watchJam(std::uint64_t participants, double sustained);
     /// phi = N v1 / L^3 at the current diameter.
     double packingFraction() const;
 
