@@ -271,6 +271,7 @@ double JammingProtocol::finishWindow(double virial, double duration) {
     // reach its pressure: one window's estimate spikes when a cluster of rotating near-cubes
     // chatters through its collision budget in almost no time.
     const double previous = status_.reducedPressure;
+    double sustained = previous; // the lower of this window's pressure and the last one's
     std::visit(
         [&](auto& engine) {
             const double kTEnd = engine.kineticTemperature();
@@ -279,7 +280,7 @@ double JammingProtocol::finishWindow(double virial, double duration) {
             engine.scaleVelocities(1.0 / std::sqrt(kTEnd));
             const double kTRotation = engine.rotationalTemperature();
             if (kTRotation > 0.0) engine.scaleAngularVelocities(1.0 / std::sqrt(kTRotation));
-            const double sustained = std::min(previous, status_.reducedPressure);
+            sustained = std::min(previous, status_.reducedPressure);
             if (status_.phase == Phase::Fast && sustained >= parameters_.pressureSwitch) {
                 status_.phase = Phase::Slow;
                 engine.setGrowthRate(parameters_.slowGrowthRate());
@@ -287,12 +288,11 @@ double JammingProtocol::finishWindow(double virial, double duration) {
         },
         engine_);
     ++status_.windows;
-    if (status_.phase == Phase::Slow &&
-        std::min(previous, status_.reducedPressure) >= parameters_.pressureFinal)
+    if (status_.phase == Phase::Slow && sustained >= parameters_.pressureFinal)
         status_.phase = Phase::Done;
     status_.packingFraction = packingFraction();
     adaptSkin();
-    return std::min(previous, status_.reducedPressure);
+    return sustained;
 }
 
 void JammingProtocol::watchJam(std::uint64_t participants, double sustained) {
