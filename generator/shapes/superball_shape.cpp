@@ -96,6 +96,43 @@ Vector3d optimalNormalRate(const PairRates& rates, const Vector3d& n,
     return basis * hessian.inverse() * (basis.transpose() * drift);
 }
 
+/// f(n) = n.d - h_i(n) - h_j(n) at a unit normal, with both bodies' support jets.
+struct NormalPoint {
+    Vector3d n;
+    Superball::SupportJet ji, jj;
+    double f;
+};
+NormalPoint normalPoint(const SuperballPair& pair, const Vector3d& n) {
+    NormalPoint point{n, pair.shape.supportJet(pair.rotationA.transpose() * n),
+                      pair.shape.supportJet(pair.rotationB.transpose() * n), 0.0};
+    point.f = n.dot(pair.displacement) - point.ji.value - point.jj.value;
+    return point;
+}
+
+/// Newton's step H^{-1} g on the tangent plane (Cramer's rule); none unless H is positive
+/// definite.
+std::optional<Eigen::Vector2d> tangentStep(const Eigen::Matrix2d& h, const Eigen::Vector2d& g) {
+    const double det = h(0, 0) * h(1, 1) - h(0, 1) * h(1, 0);
+    if (!(h(0, 0) > 0.0 && det > 0.0)) return std::nullopt;
+    return Eigen::Vector2d((h(1, 1) * g[0] - h(0, 1) * g[1]) / det,
+                           (h(0, 0) * g[1] - h(1, 0) * g[0]) / det);
+}
+
+/// Backtracking: the fraction `first` of the tangent step (`basis` times `step`), halved until f
+/// does not decrease (beyond rounding), at most down to an eighth of it; whether `now` ascended.
+bool backtrack(const SuperballPair& pair, NormalPoint& now,
+               const Eigen::Matrix<double, 3, 2>& basis, const Eigen::Vector2d& step,
+               double first) {
+    for (double t = first; t >= 0.125 * first; t *= 0.5) {
+        const NormalPoint next = normalPoint(pair, (now.n + basis * (t * step)).normalized());
+        if (next.f >= now.f - 1e-15 * pair.shape.diameter()) {
+            now = next;
+            return true;
+        }
+    }
+    return false;
+}
+
 /// s at a warm normal by Newton steps on the unit sphere with backtracking, f(n) = n.d - h_i(n) -
 /// h_j(n) being concave about its maximum near contact (docs/design.md §2); the tangent Hessian of
 /// -f is P^T (d2h_i + d2h_j) P + f I. Unconverged when an eighth of a step still does not ascend,
@@ -110,18 +147,7 @@ WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n,
     const Matrix3d& qj = pair.rotationB;
     const Vector3d& d = pair.displacement;
     const double size = pair.shape.diameter();
-    struct Point {
-        Vector3d n;
-        Superball::SupportJet ji, jj;
-        double f;
-    };
-    auto at = [&](const Vector3d& normal) {
-        Point point{normal, pair.shape.supportJet(qi.transpose() * normal),
-                    pair.shape.supportJet(qj.transpose() * normal), 0.0};
-        point.f = normal.dot(d) - point.ji.value - point.jj.value;
-        return point;
-    };
-    Point now = at(n);
+    NormalPoint now = normalPoint(pair, n);
     auto answer = [&](int iterations, bool converged) {
         WarmNewton w{{}, converged};
         w.result.signedDistance = now.f;
@@ -139,11 +165,8 @@ WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n,
         const Matrix3d hj = qj * now.jj.hessian * qj.transpose();
         Eigen::Matrix2d hessian = basis.transpose() * (hi + hj) * basis;
         hessian.diagonal().array() += now.f;
-        const double det = hessian(0, 0) * hessian(1, 1) - hessian(0, 1) * hessian(1, 0);
-        if (!(hessian(0, 0) > 0.0 && det > 0.0)) return answer(iteration, false);
-        const Eigen::Vector2d step(
-            (hessian(1, 1) * gradient[0] - hessian(0, 1) * gradient[1]) / det,
-            (hessian(0, 0) * gradient[1] - hessian(1, 0) * gradient[0]) / det);
+        const std::optional<Eigen::Vector2d> step = tangentStep(hessian, gradient);
+        if (!step) return answer(iteration, false);
         // Converged when the tangent gradient vanishes (a step alone can be tiny under the
         // clamped, huge Hessians of flat faces) and the predicted ascent g . step is at
         // rounding level: f(n) is a lower bound on s, accurate to ~1e-17 D then.
@@ -153,10 +176,9 @@ WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n,
                 w.normalRate = optimalNormalRate(*rates, now.n, basis, hessian, xi, xj, hi, hj);
             return w;
         };
-        if (gradient.norm() <= 1e-9 * size && gradient.dot(step) <= 1e-17 * size)
-            return converged();
-        if (iteration > 0 && now.f > enough &&
-            gradient.dot(step) <= limits.boundAscentRatio * (now.f - enough))
+        const double ascent = gradient.dot(*step);
+        if (gradient.norm() <= 1e-9 * size && ascent <= 1e-17 * size) return converged();
+        if (iteration > 0 && now.f > enough && ascent <= limits.boundAscentRatio * (now.f - enough))
             return answer(iteration + 1, false);
         // Where a body presents a face (p > 1.5: Newton on its support function, ~|x|^q with
         // q < 1.5 across the face normal, overshoots) the gradient stays large at the optimum:
@@ -167,16 +189,9 @@ WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n,
             supportPlaneMismatch(pair, now.n, now.f, xi, d - xj) <=
                 PairTolerances{}.mismatchTolerance * size)
             return converged();
-        // Backtracking: halve the step until f does not decrease (beyond rounding), starting
-        // from the fraction that lands components crossing zero.
-        const double first = crossingFraction(pair, now.n, basis * step);
-        bool ascended = false;
-        for (double t = first; t >= 0.125 * first && !ascended; t *= 0.5) {
-            const Point next = at((now.n + basis * (t * step)).normalized());
-            ascended = next.f >= now.f - 1e-15 * size;
-            if (ascended) now = next;
-        }
-        if (!ascended) return answer(iteration + 1, false);
+        // Backtracking from the fraction that lands components crossing zero.
+        if (!backtrack(pair, now, basis, *step, crossingFraction(pair, now.n, basis * *step)))
+            return answer(iteration + 1, false);
     }
     return answer(limits.newtonSteps, false);
 }
