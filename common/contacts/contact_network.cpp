@@ -59,6 +59,33 @@ std::vector<bool> findRattlers(int count, const std::vector<std::pair<int, int>>
     return rattler;
 }
 
+/// Throws unless s of pair (i, j) at this centre distance lies within the exact bounds of the
+/// inscribed and circumscribed spheres (below 2 inradius the pair certainly touches or overlaps).
+void checkAgainstSpheres(const Superball& shape, double s, double centreDistance, int i, int j) {
+    const double slack = boundSlack * shape.diameter();
+    if (!std::isfinite(s) || s > centreDistance - 2.0 * shape.inradius() + slack ||
+        s < centreDistance - 2.0 * shape.circumradius() - slack)
+        throw std::runtime_error("contact network: signed distance " + std::to_string(s) +
+                                 " of pair " + pairName(i, j) + " at centre distance " +
+                                 std::to_string(centreDistance) +
+                                 " violates the inradius/circumradius bounds");
+}
+
+/// The rattlers (fewer than `threshold` contacts, removed iteratively), their fraction and the
+/// mean contact number Z of the particles that remain.
+void removeRattlers(ContactResult& result, int threshold) {
+    const int count = static_cast<int>(result.counts.size());
+    result.rattler = findRattlers(count, result.contacts, result.counts, threshold);
+    const long rattlers = std::count(result.rattler.begin(), result.rattler.end(), true);
+    long contactsAmongRemaining = 0;
+    for (const auto& [i, j] : result.contacts)
+        if (!result.rattler[i] && !result.rattler[j]) ++contactsAmongRemaining;
+    const long remaining = count - rattlers;
+    result.meanContactNumber =
+        remaining > 0 ? 2.0 * static_cast<double>(contactsAmongRemaining) / remaining : 0.0;
+    result.rattlerFraction = count > 0 ? static_cast<double>(rattlers) / count : 0.0;
+}
+
 } // namespace
 
 std::string describeOverlaps(const ContactResult& contacts, double diameter) {
@@ -90,10 +117,8 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
     const Superball shape = packing.shape();
     const double diameter = shape.diameter();
     const double contactGap = parameters_.tolerance * diameter;
-    const double circumradius = shape.circumradius();
-    const double inradius = shape.inradius();
     // Beyond this centre distance the gap is at least contactGap.
-    const double range = 2.0 * circumradius + contactGap;
+    const double range = 2.0 * shape.circumradius() + contactGap;
 
     std::vector<Matrix3d> rotations(size);
     for (std::size_t i = 0; i < size; ++i)
@@ -114,14 +139,7 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
         const SignedDistanceResult pair =
             signedDistance(SuperballPair{shape, rotations[i], rotations[j], d});
         const double s = pair.signedDistance;
-        const double centreDistance = d.norm();
-        // Exact bounds; below 2 inradius the pair certainly touches or overlaps.
-        if (!std::isfinite(s) || s > centreDistance - 2.0 * inradius + boundSlack * diameter ||
-            s < centreDistance - 2.0 * circumradius - boundSlack * diameter)
-            throw std::runtime_error("contact network: signed distance " + std::to_string(s) +
-                                     " of pair " + pairName(i, j) + " at centre distance " +
-                                     std::to_string(centreDistance) +
-                                     " violates the inradius/circumradius bounds");
+        checkAgainstSpheres(shape, s, d.norm(), i, j);
         result.pairIterations += pair.iterations;
         if (s < result.worstGap) {
             result.worstGap = s;
@@ -142,18 +160,7 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
         result.gaps.push_back(contact.gap);
         result.normals.push_back(contact.normal);
     }
-
-    const int count = static_cast<int>(size);
-    result.rattler =
-        findRattlers(count, result.contacts, result.counts, parameters_.rattlerThreshold);
-    const long rattlers = std::count(result.rattler.begin(), result.rattler.end(), true);
-    long contactsAmongRemaining = 0;
-    for (const auto& [i, j] : result.contacts)
-        if (!result.rattler[i] && !result.rattler[j]) ++contactsAmongRemaining;
-    const long remaining = count - rattlers;
-    result.meanContactNumber =
-        remaining > 0 ? 2.0 * static_cast<double>(contactsAmongRemaining) / remaining : 0.0;
-    result.rattlerFraction = count > 0 ? static_cast<double>(rattlers) / count : 0.0;
+    removeRattlers(result, parameters_.rattlerThreshold);
     return result;
 }
 
