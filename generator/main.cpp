@@ -55,12 +55,9 @@ std::filesystem::path interruptCheckpointPath(const sbpack::GeneratorOptions& o)
     return path.replace_extension(".checkpoint.h5");
 }
 
-int generate(const sbpack::GeneratorOptions& o) {
-    using Clock = std::chrono::steady_clock;
-    // Installed first: a signal during the set-up stops the run at its first event, with a
-    // checkpoint of the starting state.
-    std::signal(SIGINT, requestStop);
-    std::signal(SIGTERM, requestStop);
+/// The protocol of the options, or of the file resumed (with a new --pressure-final); its
+/// warnings printed.
+sbpack::JammingProtocol startProtocol(const sbpack::GeneratorOptions& o) {
     sbpack::JammingProtocol protocol =
         o.resume ? sbpack::JammingProtocol(sbpack::readPacking(*o.resume), o.resume->string())
                  : sbpack::JammingProtocol(o.protocol);
@@ -73,6 +70,16 @@ int generate(const sbpack::GeneratorOptions& o) {
     }
     for (const std::string& warning : sbpack::protocolWarnings(protocol.parameters()))
         std::cerr << "sbgen: warning: " << warning << '\n';
+    return protocol;
+}
+
+int generate(const sbpack::GeneratorOptions& o) {
+    using Clock = std::chrono::steady_clock;
+    // Installed first: a signal during the set-up stops the run at its first event, with a
+    // checkpoint of the starting state.
+    std::signal(SIGINT, requestStop);
+    std::signal(SIGTERM, requestStop);
+    sbpack::JammingProtocol protocol = startProtocol(o);
 
     const auto start = Clock::now();
     auto lastProgress = start, lastCheckpoint = start;

@@ -296,6 +296,41 @@ Vector2d cuttingPlaneMinimum(F&& valueAndGradient, Bound&& lowerBound, double ra
     return best;
 }
 
+/// Certificate of the scale factor mu at u: the bodies scaled by mu meet at mu s_A(u) or at
+/// d - mu s_B(u) (primal points; where one body presents a face its support point is
+/// ill-conditioned, the other's is not).
+bool scaledBodiesMeet(const MinkowskiSum& k, const Vector3d& u, double mu,
+                      const PairTolerances& tolerances) {
+    const Vector3d& d = k.displacement();
+    const double limit = mu * (1.0 + tolerances.certificateTolerance);
+    return k.shape().gauge(k.rb().transpose() * (mu * k.supportPointA(u) - d)) <= limit ||
+           k.shape().gauge(k.ra().transpose() * (d - mu * k.supportPointB(u))) <= limit;
+}
+
+/// Where Newton stalled on a kink: H minimised exactly over the square of half-width `radius`
+/// in the tangent coordinates of d_hat (cutting planes: H is convex, so its subgradient cuts are
+/// supporting planes); (u, h) replaced where that is lower.
+void minimiseOverSquare(const MinkowskiSum& k, const Vector3d& dHat,
+                        const Eigen::Matrix<double, 3, 2>& basis, double radius,
+                        const PairTolerances& tolerances, Vector3d& u, double& h) {
+    double best = 0.0;
+    PlaneMinorant planes;
+    const Vector2d cBest = cuttingPlaneMinimum(
+        [&](const Vector2d& x, Vector2d& gradient) {
+            const Vector3d v = dHat + basis * x, point = k.supportPoint(v);
+            gradient = basis.transpose() * point;
+            const double hv = v.dot(point); // H(v) = v . grad H(v): homogeneous of degree one
+            planes.add(hv, gradient, x);
+            return hv;
+        },
+        [&](const std::vector<Vector2d>& polygon) { return planes.minimumOver(polygon); }, radius,
+        1e-16 * radius, true, tolerances.maxCuttingPlaneIterations, best);
+    if (best < h) {
+        u = dHat + basis * cBest;
+        h = best;
+    }
+}
+
 /// 1/mu = min H(u) / |d| over the plane u . d_hat = 1 (docs/design.md §2): a convex problem in
 /// the two tangent coordinates c, u = d_hat + P c.
 ScaleFactorResult generalScaleFactor(const MinkowskiSum& k, const Vector3d& warmNormal,
@@ -336,33 +371,9 @@ ScaleFactorResult generalScaleFactor(const MinkowskiSum& k, const Vector3d& warm
     }
     Vector3d u = dHat + basis * c;
     double h = k.support(u);
-    // Certificate: the bodies scaled by mu = |d|/H must meet at mu s_A(n) or at d - mu s_B(n)
-    // (primal points; where one body presents a face its support point is ill-conditioned, the
-    // other's is not).
-    const double mu = distance / h;
-    const double limit = mu * (1.0 + tolerances.certificateTolerance);
-    const bool meet =
-        k.shape().gauge(k.rb().transpose() * (mu * k.supportPointA(u) - d)) <= limit ||
-        k.shape().gauge(k.ra().transpose() * (d - mu * k.supportPointB(u))) <= limit;
-    if (!meet) {
-        // Newton stalled on a kink: minimise H exactly over the square holding the disc.
+    if (!scaledBodiesMeet(k, u, distance / h, tolerances)) {
         ++result.fallbacks;
-        double best = 0.0;
-        PlaneMinorant planes; // H is convex: its subgradient cuts are supporting planes
-        const Vector2d cBest = cuttingPlaneMinimum(
-            [&](const Vector2d& x, Vector2d& gradient) {
-                const Vector3d v = dHat + basis * x, point = k.supportPoint(v);
-                gradient = basis.transpose() * point;
-                const double h = v.dot(point); // H(v) = v . grad H(v): homogeneous of degree one
-                planes.add(h, gradient, x);
-                return h;
-            },
-            [&](const std::vector<Vector2d>& polygon) { return planes.minimumOver(polygon); },
-            radius, 1e-16 * radius, true, tolerances.maxCuttingPlaneIterations, best);
-        if (best < h) {
-            u = dHat + basis * cBest;
-            h = best;
-        }
+        minimiseOverSquare(k, dHat, basis, radius, tolerances, u, h);
     }
     result.scaleFactor = distance / h;
     result.normal = u.normalized();
