@@ -59,12 +59,20 @@ std::vector<bool> findRattlers(int count, const std::vector<std::pair<int, int>>
     return rattler;
 }
 
-/// Throws unless s of pair (i, j) at this centre distance lies within the exact bounds of the
-/// inscribed and circumscribed spheres (below 2 inradius the pair certainly touches or overlaps).
-void checkAgainstSpheres(const Superball& shape, double s, double centreDistance, int i, int j) {
-    const double slack = boundSlack * shape.diameter();
-    if (!std::isfinite(s) || s > centreDistance - 2.0 * shape.inradius() + slack ||
-        s < centreDistance - 2.0 * shape.circumradius() - slack)
+/// The exact bounds on a pair's signed distance from its centre distance r: r - 2 R_out <= s <=
+/// r - 2 R_in (below 2 R_in the pair certainly touches or overlaps), each widened by `slack`.
+struct SphereBounds {
+    double inradius, circumradius, slack;
+    explicit SphereBounds(const Superball& shape)
+        : inradius(shape.inradius()), circumradius(shape.circumradius()),
+          slack(boundSlack * shape.diameter()) {}
+};
+
+/// Throws unless s of pair (i, j) at this centre distance lies within the sphere bounds.
+void checkAgainstSpheres(const SphereBounds& bounds, double s, double centreDistance, int i,
+                         int j) {
+    if (!std::isfinite(s) || s > centreDistance - 2.0 * bounds.inradius + bounds.slack ||
+        s < centreDistance - 2.0 * bounds.circumradius - bounds.slack)
         throw std::runtime_error("contact network: signed distance " + std::to_string(s) +
                                  " of pair " + pairName(i, j) + " at centre distance " +
                                  std::to_string(centreDistance) +
@@ -117,8 +125,9 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
     const Superball shape = packing.shape();
     const double diameter = shape.diameter();
     const double contactGap = parameters_.tolerance * diameter;
+    const SphereBounds bounds(shape);
     // Beyond this centre distance the gap is at least contactGap.
-    const double range = 2.0 * shape.circumradius() + contactGap;
+    const double range = 2.0 * bounds.circumradius + contactGap;
 
     std::vector<Matrix3d> rotations(size);
     for (std::size_t i = 0; i < size; ++i)
@@ -139,7 +148,7 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
         const SignedDistanceResult pair =
             signedDistance(SuperballPair{shape, rotations[i], rotations[j], d});
         const double s = pair.signedDistance;
-        checkAgainstSpheres(shape, s, d.norm(), i, j);
+        checkAgainstSpheres(bounds, s, d.norm(), i, j);
         result.pairIterations += pair.iterations;
         if (s < result.worstGap) {
             result.worstGap = s;
