@@ -55,18 +55,21 @@ std::filesystem::path interruptCheckpointPath(const sbpack::GeneratorOptions& o)
     return path.replace_extension(".checkpoint.h5");
 }
 
-/// The protocol of the options, or of the file resumed (with a new --pressure-final); its
-/// warnings printed.
+/// The protocol of the options, or of the file resumed (with a new --pressure-final or
+/// --cost-limit); its warnings printed.
 sbpack::JammingProtocol startProtocol(const sbpack::GeneratorOptions& o) {
     sbpack::JammingProtocol protocol =
         o.resume ? sbpack::JammingProtocol(sbpack::readPacking(*o.resume), o.resume->string())
                  : sbpack::JammingProtocol(o.protocol);
-    if (o.resume && o.pressureFinal) {
-        try {
-            protocol.setPressureFinal(*o.pressureFinal);
-        } catch (const sbpack::ProtocolParameterError& e) {
-            throw std::invalid_argument("option --pressure-final: " + e.problem());
-        }
+    try {
+        if (o.resume && o.pressureFinal) protocol.setPressureFinal(*o.pressureFinal);
+    } catch (const sbpack::ProtocolParameterError& e) {
+        throw std::invalid_argument("option --pressure-final: " + e.problem());
+    }
+    try {
+        if (o.resume && o.costLimit) protocol.setCostLimit(*o.costLimit);
+    } catch (const sbpack::ProtocolParameterError& e) {
+        throw std::invalid_argument("option --cost-limit: " + e.problem());
     }
     for (const std::string& warning : sbpack::protocolWarnings(protocol.parameters()))
         std::cerr << "sbgen: warning: " << warning << '\n';

@@ -20,14 +20,16 @@ at rate gamma (dD/dt = gamma sqrt(kT/m)) until the reduced pressure P = PV/(NkT)
 In the DTS sphere code's units (dR/dt at <|v|^2> = 1) that rate is gamma / (2 sqrt 3).
 
 usage: sbgen --out FILE.h5 [options]
-       sbgen --resume CHECKPOINT.h5 --out FILE.h5 [--pressure-final P] [--checkpoint FILE.h5])";
+       sbgen --resume CHECKPOINT.h5 --out FILE.h5 [--pressure-final P] [--cost-limit K]
+             [--checkpoint FILE.h5])";
 
 constexpr const char* kFooter =
     R"(No jam is declared from the pressure alone: at --pressure-final the contact network must hold
 (at most 10 % rattlers or particles whose contacts lie in one hemisphere, at gaps below 100 / P D,
 clamped to [1e-10, 1e-2] D), and a pressure
 carried by a chain of particles that wraps around the periodic box (columns of near-cubes in
-small boxes) ends the run early. Such an output is still written, with provenance jammed = 0 and the reason.
+small boxes) ends the run early, and so does --cost-limit. Such an output is still written, with
+provenance jammed = 0 and the reason; one stopped at the cost limit resumes.
 
 Exit status: 0 jammed; 1 bad input or error; 3 written but not jammed; 128 + signal when
 SIGINT or SIGTERM wrote a checkpoint (to --checkpoint, else OUT with .checkpoint.h5). A signal
@@ -117,9 +119,19 @@ void GeneratorCommandLine::addFileOptions() {
             [&o](const std::string& v) {
                 o.pressureFinal = o.protocol.pressureFinal = parseNumber("--pressure-final", v);
             },
-            "reduced pressure at which the packing is jammed (default 1e12); the one\n"
-            "protocol option --resume accepts")
+            "reduced pressure at which the packing is jammed (default 1e12); --resume\n"
+            "accepts it")
         ->type_name("P");
+    app_.add_option_function<std::string>(
+            "--cost-limit",
+            [&o](const std::string& v) {
+                o.costLimit = o.protocol.costLimit = parseNumber("--cost-limit", v);
+            },
+            "stop, written as not jammed (exit 3), after K times the expected collisions\n"
+            "(the cost sbgen expects from measured runs, docs/design.md §3; default 20,\n"
+            "2.3 times the most a run that jammed took; 0: no limit); --resume accepts it,\n"
+            "so a run stopped there goes on with a larger K")
+        ->type_name("K");
     app_.add_option_function<std::string>(
             "--out", [&o](const std::string& v) { o.out = v; },
             "the packing (sbpack.packing format; see README), written atomically")
@@ -154,7 +166,8 @@ void validateAsOptions(const ProtocolParameters& protocol) {
         {"gamma_slow", "--gamma-slow"},
         {"pressure_switch", "--pressure-switch"},
         {"pressure_final", "--pressure-final"},
-        {"collisions_per_window", "--window"}};
+        {"collisions_per_window", "--window"},
+        {"cost_limit", "--cost-limit"}};
     try {
         protocol.validate();
     } catch (const ProtocolParameterError& e) {
@@ -171,7 +184,7 @@ void finish(GeneratorOptions& o, const std::set<std::string>& protocolOptions) {
         if (!protocolOptions.empty())
             throw std::invalid_argument("option " + *protocolOptions.begin() +
                                         ": the protocol comes from the --resume file and cannot "
-                                        "change (only --pressure-final can)");
+                                        "change (only --pressure-final and --cost-limit can)");
     } else {
         validateAsOptions(o.protocol);
     }

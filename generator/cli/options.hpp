@@ -16,7 +16,8 @@ struct GeneratorOptions {
     std::optional<std::filesystem::path> checkpoint;
     double checkpointInterval = 600.0; ///< seconds of wall time between checkpoints
     std::optional<std::filesystem::path> resume;
-    std::optional<double> pressureFinal; ///< given explicitly (the only change allowed on resume)
+    std::optional<double> pressureFinal; ///< given explicitly (may change on resume)
+    std::optional<double> costLimit;     ///< given explicitly (may change on resume)
     bool quiet = false;
     bool help = false;
     bool version = false;

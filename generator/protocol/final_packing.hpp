@@ -9,7 +9,7 @@ namespace sbpack {
 
 /// The finished protocol's checkpoint with the contact analysis of common/ (at the jam check's
 /// tolerance max(1e-10, 100 / P) D) and the jam check in its provenance. Needs a run that
-/// reached Phase::Done.
+/// finished (run() returned true: Phase::Done or the cost limit).
 Packing finalPacking(const JammingProtocol& protocol);
 
 } // namespace sbpack

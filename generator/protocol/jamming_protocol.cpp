@@ -4,11 +4,13 @@
 #include "geometry/superball.hpp"
 #include "initial/random_start.hpp"
 #include "protocol/paper_rates.hpp"
+#include "protocol/protocol_advice.hpp"
 #include "version.hpp"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <stdexcept>
 
@@ -127,6 +129,12 @@ GrowthClock growthClockOf(const Packing& packing, const std::string& source) {
     return clock;
 }
 
+/// A parameter added by a later version: its default in checkpoints written before it.
+double optionalParameter(const Packing& packing, const std::string& key, double fallback,
+                         const std::string& source) {
+    return packing.provenance.count(key) == 0 ? fallback : stateValue<double>(packing, key, source);
+}
+
 } // namespace
 
 bool rotating(double p) {
@@ -139,6 +147,11 @@ double ProtocolParameters::fastGrowthRate() const {
 
 double ProtocolParameters::slowGrowthRate() const {
     return gammaSlow.value_or(rotating(p) ? paperSlowRate(p) : 1e-4);
+}
+
+std::uint64_t ProtocolParameters::collisionLimit() const {
+    if (costLimit == 0.0) return 0;
+    return static_cast<std::uint64_t>(std::ceil(costLimit * expectedCost(*this).collisions));
 }
 
 void ProtocolParameters::validate() const {
@@ -159,6 +172,8 @@ void ProtocolParameters::validate() const {
     require(positiveFinite(collisionsPerWindow) && collisionsPerWindow * particles >= 1.0 &&
                 collisionsPerWindow <= 1e6,
             "collisions_per_window", "must be in (0, 1e6] with at least one collision a window");
+    require(std::isfinite(costLimit) && costLimit >= 0.0 && costLimit <= 1e6, "cost_limit",
+            "must be in [0, 1e6] (times the expected collisions; 0: no limit)");
 }
 
 JammingProtocol::JammingProtocol(const ProtocolParameters& parameters)
@@ -184,6 +199,7 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
     parameters_.pressureSwitch = stateValue<double>(packing, "pressure_switch", source);
     parameters_.pressureFinal = stateValue<double>(packing, "pressure_final", source);
     parameters_.collisionsPerWindow = stateValue<double>(packing, "collisions_per_window", source);
+    parameters_.costLimit = optionalParameter(packing, "cost_limit", parameters_.costLimit, source);
     try {
         parameters_.validate();
     } catch (const ProtocolParameterError& e) {
@@ -231,6 +247,31 @@ void JammingProtocol::setPressureFinal(double pressure) {
         status_.phase = Phase::Slow;
 }
 
+void JammingProtocol::setCostLimit(double limit) {
+    ProtocolParameters changed = parameters_;
+    changed.costLimit = limit;
+    changed.validate();
+    parameters_ = changed;
+}
+
+bool JammingProtocol::stopAtCostLimit() {
+    const std::uint64_t limit = parameters_.collisionLimit();
+    if (limit == 0 || status_.collisions < limit) return false;
+    JamCheck check = checkJam(checkpoint(), status_.reducedPressure, parameters_.jamCheck);
+    char line[512];
+    std::snprintf(line, sizeof line,
+                  "stopped at the cost limit before the final pressure: %.3g collisions, %g "
+                  "times the expected %.3g (docs/design.md §3, \"Cost limit\"), at reduced "
+                  "pressure %.3g < %.3g; the contact network there: ",
+                  static_cast<double>(status_.collisions), parameters_.costLimit,
+                  expectedCost(parameters_).collisions, status_.reducedPressure,
+                  parameters_.pressureFinal);
+    check.verdict = line + check.verdict + "; resume with a larger cost limit to go on";
+    check.jammed = false;
+    status_.jam = std::move(check);
+    return true;
+}
+
 bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
                           const volatile std::sig_atomic_t* stopNow,
                           const std::function<void(const ProtocolStatus&)>& onWindow) {
@@ -238,6 +279,7 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
     const std::uint64_t perWindow = static_cast<std::uint64_t>(
         std::ceil(parameters_.collisionsPerWindow * parameters_.particles));
     while (status_.phase != Phase::Done) {
+        if (stopAtCostLimit()) return true;
         const auto start = Clock::now();
         const std::clock_t cpuStart = std::clock();
         const RunReport report = std::visit(
@@ -356,6 +398,8 @@ Packing JammingProtocol::checkpoint() const {
     log["pressure_switch"] = parameters_.pressureSwitch;
     log["pressure_final"] = parameters_.pressureFinal;
     log["collisions_per_window"] = parameters_.collisionsPerWindow;
+    log["cost_limit"] = parameters_.costLimit;
+    log["expected_collisions"] = expectedCost(parameters_).collisions;
     log["final_reduced_pressure"] = status_.reducedPressure;
     log["collisions"] = static_cast<std::int64_t>(status_.collisions);
     log["relists"] = static_cast<std::int64_t>(status_.relists);

@@ -48,6 +48,11 @@ struct ProtocolParameters {
     double pressureSwitch = 1e6;
     double pressureFinal = 1e12;
     double collisionsPerWindow = 10.0; ///< per particle, between thermostat rescalings
+    /// The run stops, written as not jammed and resumable, once its collisions exceed costLimit
+    /// times the expected ones (expectedCost, docs/design.md §3, "Cost limit"); 0: no limit.
+    /// 20 is 2.3 times the largest ratio measured in a run that jammed (bench/RESULTS.md,
+    /// "Near-cubes at N = 1000: p = 5 and 10").
+    double costLimit = 20.0;
     /// The contact-network criterion of the jam, checked before a jam is declared.
     JamCheckParameters jamCheck{};
 
@@ -61,6 +66,9 @@ struct ProtocolParameters {
     /// (paperSlowRate: the rate that reproduces its Z, whose superball Z keeps rising as the slow
     /// phase slows; bench/RESULTS.md, "Fidelity", E11).
     double slowGrowthRate() const;
+
+    /// The collisions after which the run stops (costLimit times the expected ones); 0: none.
+    std::uint64_t collisionLimit() const;
 
     /// Throws ProtocolParameterError naming the first bad parameter (by its provenance name,
     /// e.g. "phi_init"; the command line maps it to its option).
@@ -102,7 +110,8 @@ struct ProtocolStatus {
     std::int64_t stalledWindows = 0;
     double stallPressure = 0.0;
     /// The jam check, made when the final pressure is reached, or on the way when it finds a
-    /// chain that wraps around the box (then the run ends, not jammed).
+    /// chain that wraps around the box (then the run ends, not jammed), or the refusal of a run
+    /// that reached its cost limit (then the phase stays, so the output resumes).
     std::optional<JamCheck> jam;
     double wallSeconds = 0.0; ///< summed over the run and every resumed part
     double cpuSeconds = 0.0;  ///< process CPU time, likewise (throughput on a shared machine)
@@ -116,17 +125,20 @@ class JammingProtocol {
     /// `source` if the packing carries no sbgen state.
     JammingProtocol(const Packing& checkpoint, const std::string& source);
 
-    /// Runs windows until Phase::Done or a stop; calls onWindow after every window (with the
+    /// Runs windows until Phase::Done, the cost limit (status().jam then says why) or a stop;
+    /// calls onWindow after every window (with the
     /// protocol synchronised, so checkpoint() may be called there). `stop` is looked at after
     /// each window, so a run stopped by it is synchronised and its checkpoint resumes bit for bit
     /// like a periodic one; `stopNow` interrupts the window at its next event (a checkpoint then
-    /// resumes the run, but not bit for bit). Returns true when done.
+    /// resumes the run, but not bit for bit). Returns true when done or at the cost limit.
     bool run(const volatile std::sig_atomic_t* stop, const volatile std::sig_atomic_t* stopNow,
              const std::function<void(const ProtocolStatus&)>& onWindow);
 
     const ProtocolParameters& parameters() const { return parameters_; }
-    /// Only the final pressure may change on resume (e.g. to continue from 1e12 to 1e14).
+    /// Only the final pressure and the cost limit may change on resume (e.g. to continue from
+    /// 1e12 to 1e14, or a run stopped at its cost limit).
     void setPressureFinal(double pressure);
+    void setCostLimit(double limit);
     const ProtocolStatus& status() const { return status_; }
 
     /// The synchronised state as a packing whose provenance holds every parameter and the exact
@@ -143,6 +155,9 @@ class JammingProtocol {
     /// After a window in which `participants` particles collided: the jam check on the way, when
     /// a subset has carried the pressure or the sustained pressure has stalled for a while.
     void watchJam(std::uint64_t participants, double sustained);
+    /// Past the cost limit: status_.jam says the run stopped there, with the contact network at
+    /// its pressure; returns whether it did.
+    bool stopAtCostLimit();
     /// phi = N v1 / L^3 at the current diameter.
     double packingFraction() const;
 

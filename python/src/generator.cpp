@@ -4,6 +4,7 @@
 
 #include "protocol/final_packing.hpp"
 #include "protocol/jamming_protocol.hpp"
+#include "protocol/protocol_advice.hpp"
 
 #include <pybind11/stl.h>
 
@@ -94,8 +95,8 @@ void registerGenerator(py::module_& m) {
     m.def(
         "generate",
         [](int n, double p, std::uint64_t seed, Option phiInit, Option gammaFast, Option gammaSlow,
-           Option pressureSwitch, Option pressureFinal, Option window, const py::object& progress,
-           double progressInterval) {
+           Option pressureSwitch, Option pressureFinal, Option window, Option costLimit,
+           const py::object& progress, double progressInterval) {
             // Options left None keep ProtocolParameters' defaults, which are sbgen's.
             ProtocolParameters parameters;
             parameters.particles = n;
@@ -107,16 +108,34 @@ void registerGenerator(py::module_& m) {
             parameters.pressureSwitch = pressureSwitch.value_or(parameters.pressureSwitch);
             parameters.pressureFinal = pressureFinal.value_or(parameters.pressureFinal);
             parameters.collisionsPerWindow = window.value_or(parameters.collisionsPerWindow);
+            parameters.costLimit = costLimit.value_or(parameters.costLimit);
             return generate(parameters, progress, progressInterval);
         },
         py::kw_only(), py::arg("n") = 1000, py::arg("p") = 1.0, py::arg("seed") = 1,
         py::arg("phi_init") = py::none(), py::arg("gamma_fast") = py::none(),
         py::arg("gamma_slow") = py::none(), py::arg("pressure_switch") = py::none(),
         py::arg("pressure_final") = py::none(), py::arg("window") = py::none(),
-        py::arg("progress") = py::none(), py::arg("progress_interval") = 2.0,
+        py::arg("cost_limit") = py::none(), py::arg("progress") = py::none(),
+        py::arg("progress_interval") = 2.0,
         "Jams a packing as sbgen does with the same options and defaults (docs/python.md); "
         "progress(status) every progress_interval seconds; Ctrl-C stops at the end of the "
         "running window");
+    m.def(
+        "expected_collisions",
+        [](int n, double p, Option gammaSlow, Option pressureSwitch, Option pressureFinal) {
+            ProtocolParameters parameters;
+            parameters.particles = n;
+            parameters.p = p;
+            if (gammaSlow) parameters.gammaSlow = gammaSlow;
+            parameters.pressureSwitch = pressureSwitch.value_or(parameters.pressureSwitch);
+            parameters.pressureFinal = pressureFinal.value_or(parameters.pressureFinal);
+            validateAsKeywords(parameters);
+            return expectedCost(parameters).collisions;
+        },
+        py::kw_only(), py::arg("n") = 1000, py::arg("p") = 1.0, py::arg("gamma_slow") = py::none(),
+        py::arg("pressure_switch") = py::none(), py::arg("pressure_final") = py::none(),
+        "The collisions sbgen expects of this protocol (docs/design.md §3, \"Expected cost\"; "
+        "provenance expected_collisions); cost_limit is a multiple of it");
 }
 
 } // namespace sbpack::python

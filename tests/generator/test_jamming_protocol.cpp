@@ -1,7 +1,9 @@
 // The protocol: bad parameters, determinism, and exact checkpoint/resume through the HDF5 file.
 #include "io/packing_io.hpp"
+#include "protocol/final_packing.hpp"
 #include "protocol/jamming_protocol.hpp"
 #include "protocol/paper_rates.hpp"
+#include "protocol/protocol_advice.hpp"
 
 #include <gtest/gtest.h>
 
@@ -71,6 +73,8 @@ TEST(JammingProtocol, RejectsBadParametersNamingTheParameter) {
     expectBad([](auto& p) { p.pressureFinal = p.pressureSwitch; }, "pressure_final");
     expectBad([](auto& p) { p.collisionsPerWindow = 1e30; }, "collisions_per_window");
     expectBad([](auto& p) { p.collisionsPerWindow = 1e-4; }, "collisions_per_window");
+    expectBad([](auto& p) { p.costLimit = -1.0; }, "cost_limit");
+    expectBad([](auto& p) { p.costLimit = NAN; }, "cost_limit");
 }
 
 TEST(JammingProtocol, SameSeedGivesIdenticalPacking) {
@@ -150,6 +154,41 @@ TEST(JammingProtocol, AFinishedRunContinuesToAHigherFinalPressure) {
     ASSERT_TRUE(more.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
     EXPECT_GE(more.status().reducedPressure, 1e9);
     EXPECT_GT(more.status().collisions, run.status().collisions);
+}
+
+TEST(JammingProtocol, ARunStopsAtItsCostLimitNotJammedAndGoesOnWithALargerOne) {
+    // The limit is costLimit times expectedCost's collisions (docs/design.md §3, "Cost limit");
+    // set here to stop halfway. The output says why, keeps its phase, and resumes bit for bit.
+    ProtocolParameters parameters = smallSuperballRun(4);
+    parameters.costLimit = 0.0;
+    JammingProtocol uninterrupted(parameters);
+    ASSERT_TRUE(uninterrupted.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    const double all = static_cast<double>(uninterrupted.status().collisions);
+    parameters.costLimit = 0.5 * all / expectedCost(parameters).collisions;
+    JammingProtocol limited(parameters);
+    ASSERT_TRUE(limited.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    const ProtocolStatus& s = limited.status();
+    EXPECT_NE(s.phase, Phase::Done);
+    EXPECT_GE(s.collisions, parameters.collisionLimit());
+    EXPECT_LT(static_cast<double>(s.collisions), all);
+    EXPECT_LT(s.reducedPressure, parameters.pressureFinal);
+    ASSERT_TRUE(s.jam.has_value());
+    EXPECT_FALSE(s.jam->jammed);
+    EXPECT_NE(s.jam->verdict.find("cost limit"), std::string::npos) << s.jam->verdict;
+
+    const auto file = std::filesystem::temp_directory_path() / "sbgen-test-cost-limit.h5";
+    writePacking(finalPacking(limited), file);
+    const Packing written = readPacking(file);
+    std::filesystem::remove(file);
+    EXPECT_EQ(written.provenance.at("jammed"), ProvenanceValue(std::int64_t{0}));
+    JammingProtocol same(written, "memory"); // the same limit: stops before any window
+    ASSERT_TRUE(same.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    EXPECT_EQ(same.status().collisions, s.collisions);
+    JammingProtocol resumed(written, "memory");
+    resumed.setCostLimit(0.0);
+    ASSERT_TRUE(resumed.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    EXPECT_TRUE(resumed.status().jam->jammed);
+    expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
 }
 
 TEST(JammingProtocol, RefusesToResumeFromOverlappingParticles) {

@@ -16,7 +16,8 @@ TIMES = ("wall_time_s", "cpu_time_s")
 
 def sbgen_options(options):
     flags = {"n": "--n", "p": "--p", "seed": "--seed", "gamma_slow": "--gamma-slow",
-             "pressure_switch": "--pressure-switch", "pressure_final": "--pressure-final"}
+             "pressure_switch": "--pressure-switch", "pressure_final": "--pressure-final",
+             "cost_limit": "--cost-limit"}
     return [a for k, v in options.items() for a in (flags[k], str(v))]
 
 
@@ -57,3 +58,25 @@ def test_an_exception_in_progress_stops_the_run():
         raise RuntimeError(f"stop at {status['windows']}")
     with pytest.raises(RuntimeError, match="stop at 1$"):
         sbpack.generate(n=200, seed=1, progress=stop, progress_interval=0.0)
+
+
+def test_generate_stops_at_the_cost_limit_as_sbgen_does(sbgen, tmp_path):
+    """cost_limit = 0.01: stopped after 1 % of the expected collisions, far below the final
+    pressure; sbgen exits 3 and generate warns, both writing the same packing, jammed = 0."""
+    options = dict(RUNS["superballs"], cost_limit=0.01)
+    out = tmp_path / "sbgen.h5"
+    r = run([sbgen, *sbgen_options(options), "--quiet", "--out", str(out)])
+    assert r.returncode == 3 and "stopped at the cost limit" in r.stderr, r.stderr
+    with pytest.warns(RuntimeWarning, match="stopped at the cost limit"):
+        mine = sbpack.generate(**options)
+    theirs = sbpack.Packing.read(out)
+    assert np.array_equal(mine.positions, theirs.positions)
+    assert mine.provenance["jammed"] == 0 == theirs.provenance["jammed"]
+    assert mine.provenance["cost_limit"] == 0.01
+    expected = sbpack.expected_collisions(
+        **{k: options[k] for k in ("n", "p", "gamma_slow", "pressure_switch", "pressure_final")})
+    assert mine.provenance["expected_collisions"] == expected
+    assert 0.01 * expected <= mine.provenance["collisions"] < 0.02 * expected
+    with pytest.raises(ValueError, match="n: need at least 2"):
+        sbpack.expected_collisions(n=1)
+    assert mine.reduced_pressure < options["pressure_final"]
