@@ -262,7 +262,7 @@ bool JammingProtocol::stopAtCostLimit() {
     std::snprintf(line, sizeof line,
                   "stopped at the cost limit before the final pressure: %.3g collisions, %g "
                   "times the expected %.3g (docs/design.md §3, \"Cost limit\"), at reduced "
-                  "pressure %.3g < %.3g; the contact network there: ",
+                  "pressure %.3g < %.3g; its jam check at that pressure: ",
                   static_cast<double>(status_.collisions), parameters_.costLimit,
                   expectedCost(parameters_).collisions, status_.reducedPressure,
                   parameters_.pressureFinal);

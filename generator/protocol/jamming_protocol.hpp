@@ -50,8 +50,8 @@ struct ProtocolParameters {
     double collisionsPerWindow = 10.0; ///< per particle, between thermostat rescalings
     /// The run stops, written as not jammed and resumable, once its collisions exceed costLimit
     /// times the expected ones (expectedCost, docs/design.md §3, "Cost limit"); 0: no limit.
-    /// 20 is 2.3 times the largest ratio measured in a run that jammed (bench/RESULTS.md,
-    /// "Near-cubes at N = 1000: p = 5 and 10").
+    /// 20 is 2.3 times the largest ratio measured in a run that jammed (bench/RESULTS.md, "The
+    /// creep of p = 10 seed 2 and the cost limit").
     double costLimit = 20.0;
     /// The contact-network criterion of the jam, checked before a jam is declared.
     JamCheckParameters jamCheck{};
@@ -126,11 +126,11 @@ class JammingProtocol {
     JammingProtocol(const Packing& checkpoint, const std::string& source);
 
     /// Runs windows until Phase::Done, the cost limit (status().jam then says why) or a stop;
-    /// calls onWindow after every window (with the
-    /// protocol synchronised, so checkpoint() may be called there). `stop` is looked at after
-    /// each window, so a run stopped by it is synchronised and its checkpoint resumes bit for bit
-    /// like a periodic one; `stopNow` interrupts the window at its next event (a checkpoint then
-    /// resumes the run, but not bit for bit). Returns true when done or at the cost limit.
+    /// calls onWindow after every window (with the protocol synchronised, so checkpoint() may be
+    /// called there). `stop` is looked at after each window, so a run stopped by it is
+    /// synchronised and its checkpoint resumes bit for bit like a periodic one; `stopNow`
+    /// interrupts the window at its next event (a checkpoint then resumes the run, but not bit
+    /// for bit). Returns true when done or at the cost limit.
     bool run(const volatile std::sig_atomic_t* stop, const volatile std::sig_atomic_t* stopNow,
              const std::function<void(const ProtocolStatus&)>& onWindow);
 
