@@ -87,7 +87,11 @@ std::vector<std::string> protocolWarnings(const ProtocolParameters& parameters) 
     const ExpectedCost cost = expectedCost(parameters);
     if (cost.cpuSeconds > kSlowRunSeconds)
         warnings.push_back("a very slow run: expected " + costText(cost) +
-                           " from the measured collision counts and rates (docs/design.md §3)");
+                           " from the measured collision counts and rates (docs/design.md §3)" +
+                           (parameters.costLimit > 0.0
+                                ? format("; --cost-limit stops it, not jammed, after %g times that",
+                                         parameters.costLimit)
+                                : std::string()));
     const double fast = parameters.fastGrowthRate();
     if (fast > kPaperFastMax)
         warnings.push_back(
