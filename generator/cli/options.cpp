@@ -128,8 +128,8 @@ void GeneratorCommandLine::addFileOptions() {
                 o.costLimit = o.protocol.costLimit = parseNumber("--cost-limit", v);
             },
             "stop, written as not jammed (exit 3), after K times the expected collisions\n"
-            "(the cost sbgen expects from measured runs, docs/design.md §3; default 20,\n"
-            "2.3 times the most a run that jammed took; 0: no limit); --resume accepts it,\n"
+            "(the cost sbgen expects from measured runs, docs/design.md §3; default 40,\n"
+            "2.6 times the most a run that jammed took; 0: no limit); --resume accepts it,\n"
             "so a run stopped there goes on with a larger K")
         ->type_name("K");
     app_.add_option_function<std::string>(

@@ -66,7 +66,7 @@ TEST(ProtocolAdvice, AVerySlowRunIsToldItsExpectedCost) {
     const auto warnings = protocolWarnings(slow);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("CPU hours"), std::string::npos) << warnings[0];
-    EXPECT_NE(warnings[0].find("after 20 times that"), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[0].find("after 40 times that"), std::string::npos) << warnings[0];
     slow.costLimit = 0.0;
     EXPECT_EQ(protocolWarnings(slow)[0].find("cost-limit"), std::string::npos);
 }
