@@ -1,8 +1,8 @@
 """Collisions over the expected ones (docs/design.md §3, "Expected cost" and "Cost limit") for
 every sbgen output under the given folders: the measurement behind --cost-limit's default.
 Reads provenance expected_collisions, or for outputs written before it the same model through
-sbpack.expected_collisions. Checkpoints are left out (their runs are unfinished), and so are copies of one run (the same p, N,
-seed and collision count).
+sbpack.expected_collisions. Checkpoints are left out (their runs are unfinished), and so are
+copies of one run (the same p, N, seed and collision count).
 usage: PYTHONPATH=build/python /usr/bin/python3 bench/cost_ratios.py FOLDER..."""
 import pathlib
 import sys

@@ -8,5 +8,6 @@ from .analyses import (Contacts, Hyperuniformity, PoreSizes, SpectralDensity, St
                        Transport, analyze)
 from .results import read_results
 
-__all__ = ["Packing", "generate", "expected_collisions", "Contacts", "StructureFactor", "SpectralDensity", "PoreSizes",
-           "Transport", "Hyperuniformity", "analyze", "read_results", "__version__"]
+__all__ = ["Packing", "generate", "expected_collisions", "Contacts", "StructureFactor",
+           "SpectralDensity", "PoreSizes", "Transport", "Hyperuniformity", "analyze",
+           "read_results", "__version__"]

@@ -88,25 +88,35 @@ Packing generate(const ProtocolParameters& parameters, const py::object& progres
     return finalPacking(protocol);
 }
 
+using Option = std::optional<double>;
+
+/// The parameters that set the expected cost (expected_collisions's keywords). Options left None
+/// keep ProtocolParameters' defaults, which are sbgen's.
+ProtocolParameters costParameters(int n, double p, Option gammaSlow, Option pressureSwitch,
+                                  Option pressureFinal) {
+    ProtocolParameters parameters;
+    parameters.particles = n;
+    parameters.p = p;
+    if (gammaSlow) parameters.gammaSlow = gammaSlow;
+    parameters.pressureSwitch = pressureSwitch.value_or(parameters.pressureSwitch);
+    parameters.pressureFinal = pressureFinal.value_or(parameters.pressureFinal);
+    return parameters;
+}
+
 } // namespace
 
 void registerGenerator(py::module_& m) {
-    using Option = std::optional<double>;
     m.def(
         "generate",
         [](int n, double p, std::uint64_t seed, Option phiInit, Option gammaFast, Option gammaSlow,
            Option pressureSwitch, Option pressureFinal, Option window, Option costLimit,
            const py::object& progress, double progressInterval) {
             // Options left None keep ProtocolParameters' defaults, which are sbgen's.
-            ProtocolParameters parameters;
-            parameters.particles = n;
-            parameters.p = p;
+            ProtocolParameters parameters =
+                costParameters(n, p, gammaSlow, pressureSwitch, pressureFinal);
             parameters.seed = seed;
             parameters.phiInit = phiInit.value_or(parameters.phiInit);
             if (gammaFast) parameters.gammaFast = gammaFast;
-            if (gammaSlow) parameters.gammaSlow = gammaSlow;
-            parameters.pressureSwitch = pressureSwitch.value_or(parameters.pressureSwitch);
-            parameters.pressureFinal = pressureFinal.value_or(parameters.pressureFinal);
             parameters.collisionsPerWindow = window.value_or(parameters.collisionsPerWindow);
             parameters.costLimit = costLimit.value_or(parameters.costLimit);
             return generate(parameters, progress, progressInterval);
@@ -123,12 +133,8 @@ void registerGenerator(py::module_& m) {
     m.def(
         "expected_collisions",
         [](int n, double p, Option gammaSlow, Option pressureSwitch, Option pressureFinal) {
-            ProtocolParameters parameters;
-            parameters.particles = n;
-            parameters.p = p;
-            if (gammaSlow) parameters.gammaSlow = gammaSlow;
-            parameters.pressureSwitch = pressureSwitch.value_or(parameters.pressureSwitch);
-            parameters.pressureFinal = pressureFinal.value_or(parameters.pressureFinal);
+            const ProtocolParameters parameters =
+                costParameters(n, p, gammaSlow, pressureSwitch, pressureFinal);
             validateAsKeywords(parameters);
             return expectedCost(parameters).collisions;
         },
