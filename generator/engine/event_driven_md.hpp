@@ -167,7 +167,12 @@ template <EngineShape Shape> class EventDrivenMd {
         ParticleState& s = state_[i];
         s.position += s.velocity * (t - time_[i]);
         s.orientation = shape_.turned(s.orientation, s.angularVelocity, t - time_[i]);
+        turned_[i] = turnedAt(i, t);
         time_[i] = t;
+    }
+    /// i's accumulated rotation angle at time t (since the last rebuild).
+    double turnedAt(int i, double t) const {
+        return turned_[i] + state_[i].angularVelocity.norm() * (t - time_[i]);
     }
 
     /// The pair at time t in its local frame: the minimum-image displacement of the stored
@@ -180,6 +185,8 @@ template <EngineShape Shape> class EventDrivenMd {
         m.diameter = clock_.diameter(t);
         m.growthRate = clock_.rate;
         shape_.orient(m, state_[i], t - time_[i], state_[j], t - time_[j]);
+        m.turnedI = turnedAt(i, t);
+        m.turnedJ = turnedAt(j, t);
         return m;
     }
 
@@ -293,6 +300,7 @@ template <EngineShape Shape> class EventDrivenMd {
         memories_.reset(size()); // a rebuild is a deterministic function of the synchronised state
         resolvedAt_ = -kNever;
         time_.assign(size(), 0.0);
+        turned_.assign(size(), 0.0);
         counter_.assign(size(), 0);
         changedAt_.assign(size(), -kNever);
         collision_.assign(size(), {});
@@ -313,6 +321,7 @@ template <EngineShape Shape> class EventDrivenMd {
     NeighbourLists lists_;
     EventQueue queue_;
     std::vector<double> time_;
+    std::vector<double> turned_; ///< accumulated rotation angle at time_ (witness records' clock)
     std::vector<std::uint64_t> counter_;
     std::vector<PredictedCollision> collision_;
     std::vector<double> exit_;      ///< time each particle leaves its neighbour-list sphere

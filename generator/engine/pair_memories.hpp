@@ -1,6 +1,7 @@
 #pragma once
 // What the engine keeps of each pair between predictions: the shape's Memory (shapes/shape.hpp;
-// the superball predictor's warm-start normal and the bound on its plane gap), when it was left
+// the superball predictor's warm-start normal, the bound on its plane gap and its witness
+// record), when it was left
 // and both particles' collision counters then. A memory is handed to the predictor as seen from
 // the particle predicted (the normal from i to j) and stored as seen from the lower index. A
 // shape that remembers nothing (NoPairMemory: the sphere) stores nothing and pays no lookup.
@@ -43,9 +44,9 @@ template <class Memory> class PairMemories {
         Memory memory = unchanged(low, record.counterLow) && unchanged(high, record.counterHigh)
                             ? record.memory.after(t - record.time)
                             : record.memory.normalOnly();
-        if (i > j) memory.normal = -memory.normal;
+        if (i > j) memory.flip();
         const auto answer = use(memory);
-        if (i > j) memory.normal = -memory.normal;
+        if (i > j) memory.flip();
         record = {memory, t, clocks.counter[low], clocks.counter[high]};
         return answer;
     }
@@ -54,11 +55,10 @@ template <class Memory> class PairMemories {
     /// it replaces the memory (its stamp is kept).
     template <class Use> auto collideWith(int i, int j, Use&& use) {
         Record& record = records_[key(i, j)];
-        Memory memory = record.memory;
-        if (i > j) memory.normal = -memory.normal;
+        Memory& memory = record.memory;
+        if (i > j) memory.flip();
         const auto answer = use(memory);
-        if (i > j) memory.normal = -memory.normal;
-        record.memory = memory;
+        if (i > j) memory.flip();
         return answer;
     }
 

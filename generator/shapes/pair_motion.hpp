@@ -29,6 +29,9 @@ struct PairMotion {
     Vector3d angularVelocityI = Vector3d::Zero(), angularVelocityJ = Vector3d::Zero();
     double diameter = 1.0;   ///< D now
     double growthRate = 0.0; ///< dD/dt = gamma
+    /// Each body's accumulated rotation angle now (the integral of |omega| dt since the engine's
+    /// last rebuild): the witness records' clock (shapes/witness_bound.hpp).
+    double turnedI = 0.0, turnedJ = 0.0;
 };
 
 /// Free flight of the orientation: exp(omega tau / 2) q0 for lab-frame omega, exact (constant
@@ -47,6 +50,18 @@ struct Prediction {
     bool contact = true;
 };
 
+/// Two material points of a pair: the support points of the pair's normal (PairMemory::normal,
+/// from i to j) of both bodies at semi-axis 1 in their body frames (j's of +normal: the bodies
+/// are centrally symmetric, so its point facing i is minus it), and each body's accumulated
+/// rotation angle (PairMotion::turnedI, turnedJ) when they were taken; NaN angles: none.
+struct WitnessRecord {
+    Vector3d pointI = Vector3d::Zero(), pointJ = Vector3d::Zero();
+    double turnedI = std::numeric_limits<double>::quiet_NaN(), turnedJ = turnedI;
+
+    /// The same record seen from j (normal from j to i).
+    WitnessRecord seenFromOther() const { return {-pointJ, -pointI, turnedJ, turnedI}; }
+};
+
 /// What a prediction leaves for the pair's next one: the warm-start normal from i to j, and a
 /// lower bound on that normal's plane gap, g_n(0) >= gap, falling no faster than `rate` for tau in
 /// [0, span] along the motion predicted (the tier-2 rate bound of superball_shape.cpp). The next
@@ -60,6 +75,9 @@ struct PairMemory {
     /// The prediction left found a contact, and `normal` is its normal there (the collision's
     /// contact starts from it).
     bool atContact = false;
+    /// Two material points of the bodies on `normal`'s plane, valid whatever the particles did
+    /// since (shapes/witness_bound.hpp); none once the normal has moved on.
+    WitnessRecord witness;
 
     /// The same memory `elapsed` later along the motion predicted.
     PairMemory after(double elapsed) const {
@@ -68,8 +86,19 @@ struct PairMemory {
                                                       : -std::numeric_limits<double>::infinity();
         return later;
     }
-    /// The normal alone (a particle's motion has changed: the gap bound no longer holds).
-    PairMemory normalOnly() const { return {normal}; }
+    /// The normal and the witness (a particle's motion has changed: the gap bound no longer
+    /// holds).
+    PairMemory normalOnly() const {
+        PairMemory kept;
+        kept.normal = normal;
+        kept.witness = witness;
+        return kept;
+    }
+    /// Seen from the other particle from now on (normals from j to i).
+    void flip() {
+        normal = -normal;
+        witness = witness.seenFromOther();
+    }
 };
 
 /// What a shape whose exact predictor needs nothing from a pair's last prediction keeps of it

@@ -12,6 +12,7 @@ struct PredictorStats {
     long calls = 0;
     long sphereRejections = 0;  ///< circumscribed spheres do not meet before the horizon
     long boundRejections = 0;   ///< the remembered bound on its gap shows it, unevaluated
+    long witnessRejections = 0; ///< the witness record's material points separate them
     long planeRejections = 0;   ///< the cached normal's plane separates up to the horizon
     long evaluations = 0;       ///< exact signed distances (advancement, Newton, refinement)
     long localSearches = 0;     ///< of those, near contact: Newton's normal polished locally
@@ -34,6 +35,7 @@ struct PredictorStats {
         {"predictor_calls", &PredictorStats::calls},
         {"predictor_sphere_rejections", &PredictorStats::sphereRejections},
         {"predictor_bound_rejections", &PredictorStats::boundRejections},
+        {"predictor_witness_rejections", &PredictorStats::witnessRejections},
         {"predictor_plane_rejections", &PredictorStats::planeRejections},
         {"predictor_evaluations", &PredictorStats::evaluations},
         {"predictor_local_searches", &PredictorStats::localSearches},

@@ -3,6 +3,8 @@
 #include "geometry/superball.hpp"
 #include "pair/pair_geometry.hpp"
 #include "shapes/sphere.hpp"
+#include "shapes/witness_bound.hpp"
+
 
 #include <algorithm>
 #include <cmath>
@@ -15,10 +17,12 @@ namespace {
 
 constexpr double kNever = std::numeric_limits<double>::infinity();
 
-/// A separating plane's gap g_n(tau) = n.d(tau) - h_i(n) - h_j(n) and its exact rate.
+/// A separating plane's gap g_n(tau) = n.d(tau) - h_i(n) - h_j(n), its exact rate, and the two
+/// support points of n in the bodies' frames at semi-axis 1 (a witness record's points).
 struct PlaneGap {
     double gap = 0.0;
     double rate = 0.0;
+    Vector3d pointI = Vector3d::Zero(), pointJ = Vector3d::Zero();
 };
 
 /// dg_n/dtau from the two support points x_k (lab frame, about each centre) by the envelope
@@ -468,10 +472,12 @@ class PairPrediction {
             advancedOrientation(m_.orientationI, m_.angularVelocityI, tau).toRotationMatrix();
         const Matrix3d qj =
             advancedOrientation(m_.orientationJ, m_.angularVelocityJ, tau).toRotationMatrix();
-        const Vector3d xI = qi * body.supportPoint(qi.transpose() * n);
-        const Vector3d xJ = qj * body.supportPoint(qj.transpose() * n);
+        const Vector3d bodyI = body.supportPoint(qi.transpose() * n);
+        const Vector3d bodyJ = body.supportPoint(qj.transpose() * n);
+        const Vector3d xI = qi * bodyI, xJ = qj * bodyJ;
         return {n.dot(m_.displacement + m_.relativeVelocity * tau - xI - xJ),
-                planeGapRate(m_, diameter, n, xI, xJ)};
+                planeGapRate(m_, diameter, n, xI, xJ), bodyI / body.semiAxis(),
+                bodyJ / body.semiAxis()};
     }
 
     /// Tier 3 from `start` (the cached plane's gap `cached` at tau = 0 known): advancement along
@@ -678,6 +684,7 @@ Found PairPrediction::advance(double start, const Vector3d& normal, PlaneGap cac
 SuperballShape::SuperballShape(double p)
     : p_(p), c_(Superball(p, 1.0).circumradius()), cIn_(Superball(p, 1.0).inradius()),
       lever_(std::sqrt(c_ * c_ - cIn_ * cIn_)),
+      witness_(p > 0.5 ? std::optional(supportHolderBound(p)) : std::nullopt),
       inertiaPerMassUnit_(Superball(p, 1.0).inertiaPerMass()) {}
 
 double SuperballShape::inertiaPerMass(double diameter) const {
@@ -686,15 +693,18 @@ double SuperballShape::inertiaPerMass(double diameter) const {
 
 // Tier 1: the circumscribed spheres meet before the horizon. Tier 2: the cached normal's
 // separating plane holds up to `end`, by the first-order bound from the remembered lower bound on
-// its gap (no support point) or from its exact gap, then by the chord to `end`; a pair without a
-// normal (after a rebuild) tries the centre line's. Either bound, with this motion's rate, is
-// left for the next prediction. Tier 3: conservative advancement on exact s (PairPrediction).
+// its gap (no support point), by the pair's witness record (shapes/witness_bound.hpp: its
+// material points, whatever either particle did since), or from its exact gap, then by the
+// chord to `end`; a pair without a normal (after a rebuild) tries the centre line's. The exact
+// gap's support points become the witness record; either plane bound, with this motion's rate,
+// is left for the next prediction. Tier 3: conservative advancement on exact s (PairPrediction).
 Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, PairMemory& memory,
                                          bool resolved) {
     ++stats.calls;
     Vector3d& normal = memory.normal;
     const double remembered = memory.gap;
     memory.gap = -kNever; // unless a bound on this normal's gap now is known below
+    memory.atContact = false;
     const Prediction none{kNever};
     if (!(horizon > 0.0)) return none;
     const std::optional<SphereWindow> window = circumscribedWindow(m, c_, horizon);
@@ -707,13 +717,25 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Pa
     if (normal.isZero(0.0)) normal = m.displacement.normalized();
     const double fall = std::min(0.0, prediction.planeRate(normal));
     auto separatedToEnd = [&](double gap) { return gap > 0.0 && gap + fall * end > 0.0; };
+    auto bound = [&](double gap) {
+        memory.gap = gap;
+        memory.rate = fall;
+        memory.span = end;
+    };
     if (separatedToEnd(remembered)) {
         ++stats.boundRejections;
-        memory = {normal, remembered, fall, end};
+        bound(remembered);
+        return none;
+    }
+    if (witness_ && witnessSeparates(m, normal, memory.witness, *witness_, c_, end,
+                                     limits.contactGap * m.diameter)) {
+        ++stats.witnessRejections;
         return none;
     }
     const PlaneGap cached = prediction.planeGap(normal, 0.0);
-    memory = {normal, cached.gap, fall, end};
+    const Vector3d recorded = normal;
+    bound(cached.gap);
+    memory.witness = {cached.pointI, cached.pointJ, m.turnedI, m.turnedJ};
     if (separatedToEnd(cached.gap) || (cached.gap > 0.0 && end < kNever &&
                                        std::min(cached.gap, prediction.planeGap(normal, end).gap) >
                                            0.125 * prediction.planeCurvature(normal) * end * end)) {
@@ -723,7 +745,13 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Pa
     const Found found =
         prediction.advance(window->enter, normal, cached, resolved,
                            resolved ? resolvedContactSeenFrom(m) : std::nullopt, memory);
-    if (found.contact && found.time < kNever) memory = {found.normal, -kNever, 0.0, 0.0, true};
+    if (normal != recorded) memory.witness = {}; // the record was of the plane left
+    if (found.contact && found.time < kNever) {
+        normal = found.normal;
+        memory.witness = {};
+        memory.gap = -kNever;
+        memory.atContact = true;
+    }
     return {found.time, found.contact};
 }
 
@@ -755,8 +783,10 @@ PairContact SuperballShape::contact(const PairMotion& m, PairMemory& memory) {
         r = exactSignedDistance(pair, normal, kNever, limits, stats).result;
     else
         ++stats.predictedContacts;
+    if (normal != r.normal) memory.witness = {};
     normal = r.normal;
-    memory = {normal}; // a new normal: its gap bound is unknown
+    memory.gap = -kNever; // a new normal: its gap bound is unknown
+    memory.atContact = false;
     resolved_ = {m.displacement, m.diameter, r};
     const Vector3d armI = 0.5 * (r.contactA + r.contactB);
     return {r.normal, armI, armI - m.displacement, m.displacement.norm()};

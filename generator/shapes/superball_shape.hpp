@@ -30,6 +30,7 @@
 #include "shapes/pair_motion.hpp"
 #include "shapes/predictor_stats.hpp"
 #include "shapes/sphere.hpp"
+#include "shapes/witness_bound.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -160,6 +161,7 @@ class SuperballShape {
     double c_;
     double cIn_;
     double lever_; ///< sqrt(c^2 - c_in^2): bound on a support point's offset from its normal
+    std::optional<SupportHolderBound> witness_; ///< none for the octahedron
     double inertiaPerMassUnit_;                 ///< I / m at semi-axis 1
     std::vector<PairMotion> motions_;           ///< inPredictionOrder's scratch: the motions
     std::vector<std::pair<double, int>> order_; ///< and when the inscribed spheres touch

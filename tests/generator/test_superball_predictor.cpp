@@ -35,6 +35,8 @@ PairMotion advancedPair(const PairMotion& m, double tau) {
     a.orientationI = advancedOrientation(m.orientationI, m.angularVelocityI, tau);
     a.orientationJ = advancedOrientation(m.orientationJ, m.angularVelocityJ, tau);
     a.diameter += m.growthRate * tau;
+    a.turnedI += m.angularVelocityI.norm() * tau;
+    a.turnedJ += m.angularVelocityJ.norm() * tau;
     return a;
 }
 
@@ -257,12 +259,14 @@ std::string number(double x) {
 }
 
 void printStats(double p, const PredictorStats& s) {
-    std::printf("p %5.2f predictor: %ld calls, %ld sphere + %ld bound + %ld plane rejections, "
+    std::printf("p %5.2f predictor: %ld calls, %ld sphere + %ld bound + %ld witness + %ld plane "
+                "rejections, "
                 "%ld evaluations (%ld robust), %ld plane steps (%ld chord), %ld Newton brackets "
                 "(%ld uncertified), "
                 "%ld refinement steps, %ld rechecks, %ld limit hits, %ld pair-solver fallbacks, "
                 "%ld start overlaps\n",
-                p, s.calls, s.sphereRejections, s.boundRejections, s.planeRejections, s.evaluations,
+                p, s.calls, s.sphereRejections, s.boundRejections, s.witnessRejections,
+                s.planeRejections, s.evaluations,
                 s.robustEvaluations, s.planeSteps, s.chordSteps, s.newtonBrackets,
                 s.uncertifiedRoots, s.refinementSteps, s.rechecks, s.limitHits, s.distanceFallbacks,
                 s.startOverlaps);
@@ -333,7 +337,7 @@ TEST_P(SuperballPredictorByP, NeverMissesAndAgreesWithBruteForce) {
 
         PairMemory memory;
         for (const char* start : {"cold", "warm"}) {
-            memory = memory.normalOnly();
+            memory = PairMemory{memory.normal}; // the warm start alone, no record of a future
             const EnginePrediction predicted =
                 predictLikeTheEngine(shape, m, horizon, memory, start[0] == 'c' ? 1 : 8);
             const std::string where = "p " + number(p) + " #" + std::to_string(trial) + " (" +
@@ -398,6 +402,7 @@ TEST_P(SuperballPredictorByP, NeverMissesAndAgreesWithBruteForce) {
     printStats(p, shape.stats);
     EXPECT_GT(bruteContacts, pairs / 4);
     EXPECT_GT(shape.stats.boundRejections, 0); // the pieces' bounds were used
+    EXPECT_GT(shape.stats.witnessRejections, 0); // and their witness records
     EXPECT_GE(agreed + shallow + flat, bruteContacts - thinContacts);
 }
 
@@ -529,6 +534,7 @@ PairMotion seenFromJ(const PairMotion& m) {
     r.relativeVelocity = -m.relativeVelocity;
     std::swap(r.orientationI, r.orientationJ);
     std::swap(r.angularVelocityI, r.angularVelocityJ);
+    std::swap(r.turnedI, r.turnedJ);
     return r;
 }
 
