@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Two sbgen builds side by side on whole default runs: for each p and seed, BASE and NEW run the
 # same command at once (one core each, so the shared machine's load falls on both alike), first
-# to the switch pressure (the fast phase alone), then to the default final pressure. Prints, per
+# just past the switch pressure (the fast phase, --pressure-final must exceed the switch), then to the default final pressure. Prints, per
 # run, collisions, CPU seconds and collisions per CPU second of each build and NEW over BASE
 # (bench/RESULTS.md, "Witness-point certificates").
 # usage: bench/throughput_side_by_side.sh BASE_SBGEN NEW_SBGEN "P..." "SEED..." [N] [SECONDS_CAP]
@@ -19,7 +19,7 @@ for p in $exponents; do
     for seed in $seeds; do
         for phase in fast whole; do
             extra=()
-            [ "$phase" = fast ] && extra=(--pressure-final 1e6)
+            [ "$phase" = fast ] && extra=(--pressure-final 1.01e6) # just past the switch at 1e6
             for build in base new; do
                 binary=$base
                 [ "$build" = new ] && binary=$new

@@ -64,9 +64,9 @@ struct WitnessRecord {
 
 /// What a prediction leaves for the pair's next one: the warm-start normal from i to j, and a
 /// lower bound on that normal's plane gap, g_n(0) >= gap, falling no faster than `rate` for tau in
-/// [0, span] along the motion predicted (the tier-2 rate bound of superball_shape.cpp). The next
-/// prediction may use the bound moved on to its time (`after`) only while neither particle has
-/// changed its motion since, but for at that very time.
+/// [0, span] along the motion predicted (the tier-2 rate bound of SuperballShape::separatingPlane).
+/// The next prediction may use the bound moved on to its time (`after`) only while neither particle
+/// has changed its motion since, but for at that very time.
 struct PairMemory {
     Vector3d normal = Vector3d::Zero();                    ///< zero: none yet
     double gap = -std::numeric_limits<double>::infinity(); ///< -inf: no bound
@@ -77,7 +77,7 @@ struct PairMemory {
     bool atContact = false;
     /// Two material points of the bodies on `normal`'s plane, valid whatever the particles did
     /// since (shapes/witness_bound.hpp); none once the normal has moved on.
-    WitnessRecord witness;
+    WitnessRecord witness{};
 
     /// The same memory `elapsed` later along the motion predicted.
     PairMemory after(double elapsed) const {

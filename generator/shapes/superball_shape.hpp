@@ -14,7 +14,9 @@
 // certifies [t0, t1] (the chord step), however fast the first-order bound says s could fall.
 // Tiers, cheapest first: the circumscribed spheres do not meet before the horizon; the cached
 // normal's plane separates up to it (first from the bound on its gap that the pair's last
-// prediction left, moved on by its rate bound: no support point; then from its exact gap);
+// prediction left, moved on by its rate bound: no support point; then from the pair's witness
+// record, two material points kept through collisions (shapes/witness_bound.hpp); then from its
+// exact gap, whose support points become the record); layers in shapes/superball/:
 // conservative advancement on planes (first-order and chord steps on cheap plane gaps),
 // refreshed by exact signed distances (warm Newton on the sphere, restarted from the best face
 // normal for p > 1, the robust pair solver as fallback; far from contact an unconverged Newton's
@@ -30,6 +32,7 @@
 #include "shapes/pair_motion.hpp"
 #include "shapes/predictor_stats.hpp"
 #include "shapes/sphere.hpp"
+#include "shapes/superball/predictor_limits.hpp"
 #include "shapes/witness_bound.hpp"
 
 #include <algorithm>
@@ -39,44 +42,10 @@
 
 namespace sbpack {
 
-/// Tolerances and limits of the superball predictor, in one place.
-struct SuperballPredictorLimits {
-    /// Touching for the engine: s <= contactGap * D (gaps of 1e-13 D stay resolvable).
-    double contactGap = 1e-14;
-    /// Below nearGap * D and closing, advancement also tries Newton steps in time, from an exact
-    /// sample only (a lower bound's plane has no exact rate; lower bounds are taken wherever
-    /// they prove the pair apart, down to contactGap).
-    double nearGap = 1e-3;
-    /// Advancement steps before the prediction settles for a safe recheck time.
-    int maxAdvancementSteps = 100;
-    /// Warm Newton steps of an exact signed distance before its plane serves as a lower bound or
-    /// the local search and the robust pair solver take over (at p = 1.5 the robust solver
-    /// served one exact evaluation in 170 with 32, one in 37 with 8; since lower bounds serve
-    /// down to the contact gap, 16 costs p = 1.5 nothing and spares near-cubes the steps of a
-    /// Newton that will not converge: 1.2-1.26x per collision at p = 10, 1.05x at p = 5;
-    /// bench/RESULTS.md, "Near-cubes: lower bounds down to the contact gap").
-    int newtonSteps = 16;
-    /// Where a lower bound on s will do (it must clear the contact gap), warm Newton stops, from
-    /// its second iterate on, once its plane gap clears that need by 1 / this times the ascent
-    /// its next step predicts: the plane serves, and at p = 10 the steps it spares were also the
-    /// exact samples from which Newton steps in time bracketed kinked roots (1.37-1.49x per
-    /// collision at p = 10, 1.05x at p = 5, none at p = 1.5; from the first iterate on p = 1.5
-    /// lost 9 %: bench/RESULTS.md, "Warm Newton stops where its plane will do").
-    double boundAscentRatio = 0.25;
-    /// Newton steps in time from one exact sample before advancement goes on along planes.
-    int newtonStepsInTime = 8;
-    /// Evaluations of the bracketed refinement before it settles for the bracket's safe end.
-    int maxRefinementSteps = 100;
-    /// Along a trajectory each exact evaluation starts from the last optimal normal carried at
-    /// its rate dn/dtau, while that turns it by less than this (radians).
-    double maxNormalCarry = 0.1;
-    /// Near contact, an unconverged Newton's normal is polished by the cutting-plane search over
-    /// the normals within this (radians, about) of it before the robust pair solver is called.
-    double localSearchRadius = 1e-3;
-    /// The polish stops when its normal is known to this (radians, about): f is stationary or
-    /// has a kink |u|^q, q > 1, at its maximum, so its value is then exact to rounding.
-    double localSearchResolution = 1e-16;
-};
+namespace superball {
+class PairPrediction;
+struct PlaneGap;
+} // namespace superball
 
 class SuperballShape {
   public:
@@ -155,6 +124,12 @@ class SuperballShape {
     };
     /// The last contact seen from m's i, if m is its pair at that state (from either side).
     std::optional<SignedDistanceResult> resolvedContactSeenFrom(const PairMotion& m) const;
+    /// Tier 2 of collisionTime: none where a plane of the pair's normal separates it up to the
+    /// prediction's end (`remembered`: the memory's gap bound moved on to now), else that
+    /// plane's gap now; leaves the plane's bounds and witness record in `memory`.
+    std::optional<superball::PlaneGap> separatingPlane(const PairMotion& m,
+                                                       const superball::PairPrediction& prediction,
+                                                       double remembered, PairMemory& memory);
 
     ResolvedContact resolved_;
     double p_;

@@ -59,14 +59,13 @@ bool witnessSeparates(const PairMotion& m, const Vector3d& n, const WitnessRecor
     const Vector3d yI = m.orientationI * record.pointI, yJ = m.orientationJ * record.pointJ;
     const double along = n.dot(yI + yJ);
     const double gap = n.dot(m.displacement) - radius * along;
-    const double rate = n.dot(m.relativeVelocity) - 0.5 * growth * along -
-                        radius * (n.dot(m.angularVelocityI.cross(yI)) +
-                                  n.dot(m.angularVelocityJ.cross(yJ)));
+    const double rate =
+        n.dot(m.relativeVelocity) - 0.5 * growth * along -
+        radius * (n.dot(m.angularVelocityI.cross(yI)) + n.dot(m.angularVelocityJ.cross(yJ)));
     const double curvature = circumscribedRatio * (spinI * (std::abs(growth) + largest * spinI) +
                                                    spinJ * (std::abs(growth) + largest * spinJ));
     // The slack at the end bounds it over the whole interval (it grows with tau).
-    const double slack =
-        largest * bound.constant * (bound.power(reachI) + bound.power(reachJ));
+    const double slack = largest * bound.constant * (bound.power(reachI) + bound.power(reachJ));
     const double atStart = gap - slack;
     const double atEnd = gap + rate * end - 0.5 * curvature * end * end - slack;
     return atStart > margin && atEnd > margin;

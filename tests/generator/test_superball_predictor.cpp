@@ -266,10 +266,9 @@ void printStats(double p, const PredictorStats& s) {
                 "%ld refinement steps, %ld rechecks, %ld limit hits, %ld pair-solver fallbacks, "
                 "%ld start overlaps\n",
                 p, s.calls, s.sphereRejections, s.boundRejections, s.witnessRejections,
-                s.planeRejections, s.evaluations,
-                s.robustEvaluations, s.planeSteps, s.chordSteps, s.newtonBrackets,
-                s.uncertifiedRoots, s.refinementSteps, s.rechecks, s.limitHits, s.distanceFallbacks,
-                s.startOverlaps);
+                s.planeRejections, s.evaluations, s.robustEvaluations, s.planeSteps, s.chordSteps,
+                s.newtonBrackets, s.uncertifiedRoots, s.refinementSteps, s.rechecks, s.limitHits,
+                s.distanceFallbacks, s.startOverlaps);
 }
 
 /// One ctest case: `pairs` pairs of exponent p from the shard's own seed.
@@ -401,7 +400,7 @@ TEST_P(SuperballPredictorByP, NeverMissesAndAgreesWithBruteForce) {
         recheckRounds, bruteEvaluations);
     printStats(p, shape.stats);
     EXPECT_GT(bruteContacts, pairs / 4);
-    EXPECT_GT(shape.stats.boundRejections, 0); // the pieces' bounds were used
+    EXPECT_GT(shape.stats.boundRejections, 0);   // the pieces' bounds were used
     EXPECT_GT(shape.stats.witnessRejections, 0); // and their witness records
     EXPECT_GE(agreed + shallow + flat, bruteContacts - thinContacts);
 }

@@ -87,7 +87,8 @@ TEST(SupportHolderBound, ItsExponentIsSharpAcrossACoordinatePlane) {
         const Vector3d v = Vector3d(0.0, 0.6, 0.8);
         for (const double angle : {1e-3, 1e-5, 1e-7}) {
             const Vector3d u = Eigen::AngleAxisd(angle, Vector3d(0.0, 0.8, -0.6)) * v;
-            const double ratio = holderDefect(unit, u, v) / std::pow((u - v).norm(), bound.exponent);
+            const double ratio =
+                holderDefect(unit, u, v) / std::pow((u - v).norm(), bound.exponent);
             EXPECT_GT(ratio, 0.05 * bound.constant) << "p " << p << ", angle " << angle;
             EXPECT_LE(ratio, bound.constant) << "p " << p << ", angle " << angle;
         }
