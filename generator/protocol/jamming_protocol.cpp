@@ -3,6 +3,7 @@
 #include "contacts/contact_network.hpp"
 #include "geometry/superball.hpp"
 #include "initial/random_start.hpp"
+#include "protocol/checkpoint_entries.hpp"
 #include "protocol/paper_rates.hpp"
 #include "protocol/protocol_advice.hpp"
 #include "version.hpp"
@@ -16,8 +17,6 @@
 
 namespace sbpack {
 namespace {
-
-constexpr const char* kStateFormat = "sbgen.state/1";
 
 void require(bool ok, const std::string& parameter, const std::string& problem) {
     if (!ok) throw ProtocolParameterError(parameter, problem);
@@ -63,76 +62,25 @@ template <class Engine> Engine freshEngine(const ProtocolParameters& parameters)
                               GrowthClock{1.0, 0.0, parameters.fastGrowthRate()});
 }
 
-/// Entry `key` of a file's group (`provenance` or `resume_state`), refused when missing or of
-/// another type.
-template <class T>
-T entryOf(const std::map<std::string, ProvenanceValue>& entries, const char* group,
-          const std::string& key, const std::string& source) {
-    const auto found = entries.find(key);
-    if (found == entries.end() || !std::holds_alternative<T>(found->second))
-        throw std::invalid_argument("'" + source + "': not an sbgen checkpoint (" + group + " '" +
-                                    key + "' missing or of the wrong type)");
-    return std::get<T>(found->second);
-}
-
-template <class T>
-T stateValue(const Packing& packing, const std::string& key, const std::string& source) {
-    return entryOf<T>(packing.provenance, "provenance", key, source);
-}
-
-template <class T>
-T resumeValue(const Packing& packing, const std::string& key, const std::string& source) {
-    return entryOf<T>(packing.resumeState, "resume_state", key, source);
-}
-
-std::uint64_t counterValue(const Packing& packing, const std::string& key,
-                           const std::string& source) {
-    return static_cast<std::uint64_t>(stateValue<std::int64_t>(packing, key, source));
-}
-
-/// A counter added by a later version: 0 in checkpoints written before it.
-std::uint64_t optionalCounter(const Packing& packing, const std::string& key,
-                              const std::string& source) {
-    return packing.provenance.count(key) == 0 ? 0 : counterValue(packing, key, source);
-}
-
-/// A resume-state entry added by a later version: zero in checkpoints written before it.
-template <class T>
-T optionalState(const Packing& packing, const std::string& key, const std::string& source) {
-    return packing.resumeState.count(key) == 0 ? T{} : resumeValue<T>(packing, key, source);
+/// The engine of a checkpoint's particles, refused without velocities or with overlaps.
+template <class Engine>
+Engine resumedEngine(const Packing& packing, const std::string& source, GrowthClock clock) {
+    if (packing.velocities.size() != packing.size() ||
+        (rotating(packing.p) && packing.angularVelocities.size() != packing.size()))
+        throw std::invalid_argument("'" + source + "': checkpoint without velocities");
+    refuseOverlaps(packing, source);
+    std::vector<ParticleState> state(packing.size());
+    for (std::size_t i = 0; i < packing.size(); ++i) {
+        state[i] = {packing.positions[i], packing.velocities[i], packing.orientations[i]};
+        if (rotating(packing.p)) state[i].angularVelocity = packing.angularVelocities[i];
+    }
+    return makeEngine<Engine>(packing.p, packing.boxLength, std::move(state), clock);
 }
 
 /// A watch that has counted `count` windows checks the jam at base, 2 base, 4 base, ... windows.
 bool dueAt(std::int64_t count, std::int64_t base) {
     const std::int64_t multiple = count / base;
     return count % base == 0 && multiple > 0 && (multiple & (multiple - 1)) == 0;
-}
-
-/// The engine's growth clock from a checkpoint, refused if tampered with: a non-positive size
-/// or rate, or a diameter that disagrees with the packing's semi_axis (a resume must continue
-/// the packing in the file, not silently another size).
-GrowthClock growthClockOf(const Packing& packing, const std::string& source) {
-    const GrowthClock clock{resumeValue<double>(packing, "base_diameter", source),
-                            resumeValue<double>(packing, "growth_elapsed", source),
-                            resumeValue<double>(packing, "growth_rate", source)};
-    const auto refuse = [&](const std::string& problem) {
-        throw std::invalid_argument("'" + source + "': checkpoint state " + problem);
-    };
-    if (!positiveFinite(clock.baseDiameter)) refuse("base_diameter must be positive");
-    if (!positiveFinite(clock.rate)) refuse("growth_rate must be positive");
-    if (!(std::isfinite(clock.elapsed) && clock.elapsed >= 0.0))
-        refuse("growth_elapsed must be finite and non-negative");
-    const double diameter = 2.0 * packing.semiAxis;
-    if (std::abs(clock.diameter() - diameter) > 1e-12 * diameter)
-        refuse("gives the diameter " + std::to_string(clock.diameter()) +
-               ", not 2 semi_axis = " + std::to_string(diameter));
-    return clock;
-}
-
-/// A parameter added by a later version: its default in checkpoints written before it.
-double optionalParameter(const Packing& packing, const std::string& key, double fallback,
-                         const std::string& source) {
-    return packing.provenance.count(key) == 0 ? fallback : stateValue<double>(packing, key, source);
 }
 
 } // namespace
@@ -183,52 +131,13 @@ JammingProtocol::JammingProtocol(const ProtocolParameters& parameters)
 }
 
 JammingProtocol::JammingProtocol(const Packing& packing, const std::string& source)
-    : engine_(EventDrivenMd<SphereShape>(SphereShape{}, packing.boxLength, {}, {})) {
-    if (resumeValue<std::string>(packing, "format", source) != kStateFormat)
-        throw std::invalid_argument("'" + source + "': checkpoint state format is not " +
-                                    std::string(kStateFormat));
-    if (packing.velocities.size() != packing.size() ||
-        (rotating(packing.p) && packing.angularVelocities.size() != packing.size()))
-        throw std::invalid_argument("'" + source + "': checkpoint without velocities");
-    parameters_.particles = static_cast<int>(packing.size());
-    parameters_.p = packing.p;
-    parameters_.seed = counterValue(packing, "seed", source);
-    parameters_.phiInit = stateValue<double>(packing, "phi_init", source);
-    parameters_.gammaFast = stateValue<double>(packing, "gamma_fast", source);
-    parameters_.gammaSlow = stateValue<double>(packing, "gamma_slow", source);
-    parameters_.pressureSwitch = stateValue<double>(packing, "pressure_switch", source);
-    parameters_.pressureFinal = stateValue<double>(packing, "pressure_final", source);
-    parameters_.collisionsPerWindow = stateValue<double>(packing, "collisions_per_window", source);
-    parameters_.costLimit = optionalParameter(packing, "cost_limit", parameters_.costLimit, source);
-    try {
-        parameters_.validate();
-    } catch (const ProtocolParameterError& e) {
-        throw std::invalid_argument("'" + source + "': checkpoint parameter " + e.what());
-    }
-    refuseOverlaps(packing, source);
-    status_.phase = static_cast<Phase>(resumeValue<std::int64_t>(packing, "phase", source));
-    status_.reducedPressure = stateValue<double>(packing, "final_reduced_pressure", source);
-    status_.collisions = counterValue(packing, "collisions", source);
-    status_.relists = counterValue(packing, "relists", source);
-    status_.staleEvents = counterValue(packing, "stale_events", source);
-    status_.rechecks = optionalCounter(packing, "rechecks", source);
-    for (const auto& [name, counter] : PredictorStats::kCounters)
-        status_.predictor.*counter = static_cast<long>(optionalCounter(packing, name, source));
-    status_.windows = counterValue(packing, "windows", source);
-    status_.subsetWindows = optionalState<std::int64_t>(packing, "subset_windows", source);
-    status_.stalledWindows = optionalState<std::int64_t>(packing, "stalled_windows", source);
-    status_.stallPressure = optionalState<double>(packing, "stall_pressure", source);
-    status_.wallSeconds = stateValue<double>(packing, "wall_time_s", source);
-    if (packing.provenance.count("cpu_time_s") != 0)
-        status_.cpuSeconds = stateValue<double>(packing, "cpu_time_s", source);
+    : JammingProtocol(packing, source, readCheckpoint(packing, source)) {}
+
+JammingProtocol::JammingProtocol(const Packing& packing, const std::string& source,
+                                 const CheckpointFields& fields)
+    : parameters_(fields.parameters), status_(fields.status),
+      engine_(resumedEngine<Engine>(packing, source, fields.clock)) {
     status_.packingFraction = packing.packingFraction();
-    const GrowthClock clock = growthClockOf(packing, source);
-    std::vector<ParticleState> state(packing.size());
-    for (std::size_t i = 0; i < packing.size(); ++i) {
-        state[i] = {packing.positions[i], packing.velocities[i], packing.orientations[i]};
-        if (rotating(packing.p)) state[i].angularVelocity = packing.angularVelocities[i];
-    }
-    engine_ = makeEngine<Engine>(packing.p, packing.boxLength, std::move(state), clock);
     adaptSkin(); // as the run that wrote the checkpoint did at the end of its window
 }
 
@@ -389,39 +298,7 @@ Packing JammingProtocol::checkpoint() const {
     packing.reducedPressure = status_.reducedPressure;
     packing.seed = parameters_.seed;
     packing.generatorVersion = kVersion;
-    auto& log = packing.provenance;
-    log["generator"] = std::string("sbgen (DTS event-driven MD)");
-    log["seed"] = static_cast<std::int64_t>(parameters_.seed);
-    log["phi_init"] = parameters_.phiInit;
-    log["gamma_fast"] = parameters_.fastGrowthRate();
-    log["gamma_slow"] = parameters_.slowGrowthRate();
-    log["pressure_switch"] = parameters_.pressureSwitch;
-    log["pressure_final"] = parameters_.pressureFinal;
-    log["collisions_per_window"] = parameters_.collisionsPerWindow;
-    log["cost_limit"] = parameters_.costLimit;
-    log["expected_collisions"] = expectedCost(parameters_).collisions;
-    log["final_reduced_pressure"] = status_.reducedPressure;
-    log["collisions"] = static_cast<std::int64_t>(status_.collisions);
-    log["relists"] = static_cast<std::int64_t>(status_.relists);
-    log["stale_events"] = static_cast<std::int64_t>(status_.staleEvents);
-    log["rechecks"] = static_cast<std::int64_t>(status_.rechecks);
-    log["events"] = static_cast<std::int64_t>(status_.collisions + status_.relists +
-                                              status_.staleEvents + status_.rechecks);
-    if (rotating(parameters_.p))
-        for (const auto& [name, counter] : PredictorStats::kCounters)
-            log[name] = static_cast<std::int64_t>(status_.predictor.*counter);
-    log["windows"] = static_cast<std::int64_t>(status_.windows);
-    log["wall_time_s"] = status_.wallSeconds;
-    log["cpu_time_s"] = status_.cpuSeconds;
-    auto& state = packing.resumeState;
-    state["format"] = std::string(kStateFormat);
-    state["phase"] = static_cast<std::int64_t>(status_.phase);
-    state["subset_windows"] = status_.subsetWindows;
-    state["stalled_windows"] = status_.stalledWindows;
-    state["stall_pressure"] = status_.stallPressure;
-    state["base_diameter"] = clock.baseDiameter;
-    state["growth_elapsed"] = clock.elapsed;
-    state["growth_rate"] = clock.rate;
+    writeCheckpoint({parameters_, status_, clock}, packing);
     return packing;
 }
 

@@ -32,6 +32,8 @@
 
 namespace sbpack {
 
+struct CheckpointFields;
+
 /// Whether bodies of exponent p rotate: all but spheres, which run on the exact sphere shape (the
 /// one place the protocol tells the shapes apart; the engine does not).
 bool rotating(double p);
@@ -146,6 +148,9 @@ class JammingProtocol {
     Packing checkpoint() const;
 
   private:
+    /// The resume constructor's work, from the checkpoint's entries (checkpoint_entries.hpp).
+    JammingProtocol(const Packing& checkpoint, const std::string& source,
+                    const CheckpointFields& fields);
     /// The reduced pressure from the window's virial, the thermostat and the phase; returns the
     /// sustained pressure (the lower of this window's and the last one's).
     double finishWindow(double virial, double duration);

@@ -1,0 +1,98 @@
+// The checkpoint's one table (protocol/checkpoint_entries.hpp): every entry the resume reads is
+// required or has a default, a checkpoint resumes to the same entries, and out-of-range or
+// missing state is refused naming its group and key.
+#include "protocol/checkpoint_entries.hpp"
+#include "protocol/jamming_protocol.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+namespace sbpack {
+namespace {
+
+/// A checkpoint of a short superball run (the rotating engine: predictor counters included).
+Packing shortSuperballCheckpoint() {
+    ProtocolParameters p;
+    p.particles = 27;
+    p.p = 1.5;
+    p.gammaFast = 0.05;
+    p.gammaSlow = 0.01;
+    p.pressureSwitch = 1e2;
+    p.pressureFinal = 1e4;
+    JammingProtocol run(p);
+    run.run(nullptr, nullptr, [](const ProtocolStatus&) {});
+    return run.checkpoint();
+}
+
+std::map<std::string, ProvenanceValue>& groupOf(Packing& packing, const std::string& group) {
+    return group == "provenance" ? packing.provenance : packing.resumeState;
+}
+
+/// The message of resuming `packing`, empty if it resumes.
+std::string refusal(const Packing& packing) {
+    try {
+        JammingProtocol resumed(packing, "edited.h5");
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(CheckpointEntries, EveryKeyIsWrittenOnceAndResumesToTheSameEntries) {
+    const Packing written = shortSuperballCheckpoint();
+    std::set<std::string> seen;
+    for (const CheckpointKey& k : checkpointKeys()) {
+        EXPECT_TRUE(seen.insert(k.group + "/" + k.key).second) << k.key << " declared twice";
+        Packing copy = written;
+        EXPECT_EQ(groupOf(copy, k.group).count(k.key), 1u) << k.group << " " << k.key;
+    }
+    EXPECT_EQ(seen.size(), written.provenance.size() + written.resumeState.size());
+    const Packing again = JammingProtocol(written, "written.h5").checkpoint();
+    EXPECT_EQ(again.provenance, written.provenance);
+    EXPECT_EQ(again.resumeState, written.resumeState);
+}
+
+TEST(CheckpointEntries, AMissingRequiredEntryIsRefusedByNameAndAMissingOptionalOneDefaults) {
+    const Packing written = shortSuperballCheckpoint();
+    int required = 0;
+    for (const CheckpointKey& k : checkpointKeys()) {
+        if (!k.read) continue;
+        Packing edited = written;
+        groupOf(edited, k.group).erase(k.key);
+        const std::string message = refusal(edited);
+        if (k.optional) {
+            EXPECT_EQ(message, "") << k.key;
+            continue;
+        }
+        ++required;
+        EXPECT_NE(message.find("'edited.h5': not an sbgen checkpoint (" + k.group + " '" + k.key +
+                               "' missing"),
+                  std::string::npos)
+            << message;
+        if (k.key == "format") continue; // a string either way: its value is checked below
+        groupOf(edited, k.group)[k.key] = std::string("wrong type");
+        EXPECT_NE(refusal(edited).find("of the wrong type"), std::string::npos) << k.key;
+    }
+    EXPECT_GE(required, 15);
+}
+
+TEST(CheckpointEntries, APhaseOutOfRangeOrANegativeCounterIsRefused) {
+    Packing edited = shortSuperballCheckpoint();
+    edited.resumeState["phase"] = std::int64_t{5}; // would never reach its end
+    EXPECT_NE(refusal(edited).find("checkpoint state phase is 5, not 0 (fast), 1 (slow) or 2"),
+              std::string::npos)
+        << refusal(edited);
+    edited = shortSuperballCheckpoint();
+    edited.provenance["collisions"] = std::int64_t{-1};
+    EXPECT_NE(refusal(edited).find("checkpoint entry 'collisions' is negative"), std::string::npos)
+        << refusal(edited);
+    edited = shortSuperballCheckpoint();
+    edited.resumeState["format"] = std::string("sbgen.state/0");
+    EXPECT_NE(refusal(edited).find("checkpoint state format is not sbgen.state/1"),
+              std::string::npos);
+}
+
+} // namespace
+} // namespace sbpack
