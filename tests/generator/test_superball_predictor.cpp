@@ -3,6 +3,7 @@
 // a fine grid, the exact sphere quadratic at p = 1, and the conservation laws of an elastic
 // collision of two rotating bodies in the engine.
 #include "engine/event_driven_md.hpp"
+#include "free_flight.hpp"
 #include "geometry/superball.hpp"
 #include "initial/random_start.hpp"
 #include "pair/pair_geometry.hpp"
@@ -27,18 +28,6 @@ namespace {
 constexpr double kNever = std::numeric_limits<double>::infinity();
 
 // ---- The pair along its free flight ---------------------------------------------------------
-
-/// The pair after tau of free flight: what the engine hands the predictor at a recheck.
-PairMotion advancedPair(const PairMotion& m, double tau) {
-    PairMotion a = m;
-    a.displacement += m.relativeVelocity * tau;
-    a.orientationI = advancedOrientation(m.orientationI, m.angularVelocityI, tau);
-    a.orientationJ = advancedOrientation(m.orientationJ, m.angularVelocityJ, tau);
-    a.diameter += m.growthRate * tau;
-    a.turnedI += m.angularVelocityI.norm() * tau;
-    a.turnedJ += m.angularVelocityJ.norm() * tau;
-    return a;
-}
 
 /// The geometry of the pair after tau, for the pair solvers of common/pair.
 SuperballPair pairAt(double p, const PairMotion& m, double tau) {

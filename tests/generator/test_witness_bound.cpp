@@ -3,6 +3,7 @@
 // Hessian diverges for p > 1, and edges of near-cubes), its closed form at p = 1 and the
 // sharpness of its exponent; and the pair certificate against exact signed distances after
 // random collisions.
+#include "free_flight.hpp"
 #include "geometry/superball.hpp"
 #include "pair/pair_geometry.hpp"
 #include "random/random.hpp"
@@ -103,18 +104,6 @@ TEST(SupportHolderBound, RefusesTheOctahedronAndWideAngles) {
 
 // ---- The pair certificate ----------------------------------------------------------------------
 
-/// The pair after tau of free flight (as the engine moves it), accumulated angles included.
-PairMotion flown(const PairMotion& m, double tau) {
-    PairMotion a = m;
-    a.displacement += m.relativeVelocity * tau;
-    a.orientationI = advancedOrientation(m.orientationI, m.angularVelocityI, tau);
-    a.orientationJ = advancedOrientation(m.orientationJ, m.angularVelocityJ, tau);
-    a.diameter += m.growthRate * tau;
-    a.turnedI += m.angularVelocityI.norm() * tau;
-    a.turnedJ += m.angularVelocityJ.norm() * tau;
-    return a;
-}
-
 /// New velocities and spins, as a collision with a third particle would leave them.
 void kick(Random& random, PairMotion& m, double spin) {
     m.relativeVelocity = random.normalVector();
@@ -162,7 +151,7 @@ TEST(WitnessCertificate, WhereItCertifiesTheExactGapStaysPositiveAfterCollisions
             const Vector3d n = signedDistance(pair).normal;
             const WitnessRecord record = recordOf(p, m, n);
             for (int hit = 0; hit < 3; ++hit) {
-                m = flown(m, 0.01 * random.uniform());
+                m = advancedPair(m, 0.01 * random.uniform());
                 kick(random, m, spin);
             }
             const double end = 0.02 * random.uniform(), margin = 1e-14 * m.diameter;
@@ -170,7 +159,7 @@ TEST(WitnessCertificate, WhereItCertifiesTheExactGapStaysPositiveAfterCollisions
             ++certified;
             for (int k = 0; k <= 40; ++k) {
                 const double tau = end * k / 40.0;
-                ASSERT_GT(exactGap(p, flown(m, tau)), margin)
+                ASSERT_GT(exactGap(p, advancedPair(m, tau)), margin)
                     << "p " << p << " #" << trial << " at tau " << tau << " of " << end;
             }
         }
