@@ -152,9 +152,11 @@ std::vector<Entry> statusEntries() {
                                                                      s.staleEvents + s.rechecks));
                 }),
     };
-    for (const auto& [name, counter] : PredictorStats::kCounters) {
+    for (const auto& named : PredictorStats::kCounters) {
+        const auto counter = named.second; // captured below (a structured binding cannot be)
         Entry e = field<std::int64_t>(
-            P, name, [counter](auto& f) -> auto& { return f.status.predictor.*counter; }, true);
+            P, named.first, [counter](auto& f) -> auto& { return f.status.predictor.*counter; },
+            true);
         e.write = [counter](const CheckpointFields& f) -> std::optional<ProvenanceValue> {
             if (!rotating(f.parameters.p)) return std::nullopt; // spheres predict exactly
             return ProvenanceValue(static_cast<std::int64_t>(f.status.predictor.*counter));
