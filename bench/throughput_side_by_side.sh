@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Two sbgen builds side by side on whole default runs: for each p and seed, BASE and NEW run the
 # same command at once (one core each, so the shared machine's load falls on both alike), first
-# just past the switch pressure (the fast phase, --pressure-final must exceed the switch), then to the default final pressure. Prints, per
-# run, collisions, CPU seconds and collisions per CPU second of each build and NEW over BASE
-# (bench/RESULTS.md, "Witness-point certificates").
+# just past the switch pressure (the fast phase: --pressure-final must exceed the switch), then
+# to the default final pressure. Prints, per run, collisions, CPU seconds and collisions per CPU
+# second of each build and NEW over BASE (bench/RESULTS.md, "Witness-point certificates").
 # usage: bench/throughput_side_by_side.sh BASE_SBGEN NEW_SBGEN "P..." "SEED..." [N] [SECONDS_CAP]
 set -euo pipefail
 if [ $# -lt 4 ]; then
