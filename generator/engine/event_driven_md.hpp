@@ -33,6 +33,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace sbpack {
@@ -167,13 +168,16 @@ template <EngineShape Shape> class EventDrivenMd {
         ParticleState& s = state_[i];
         s.position += s.velocity * (t - time_[i]);
         s.orientation = shape_.turned(s.orientation, s.angularVelocity, t - time_[i]);
-        turned_[i] = turnedAt(i, t);
+        if constexpr (kWitnessClock) turned_[i] = turnedAt(i, t);
         time_[i] = t;
     }
     /// i's accumulated rotation angle at time t (since the last rebuild).
     double turnedAt(int i, double t) const {
         return turned_[i] + state_[i].angularVelocity.norm() * (t - time_[i]);
     }
+    /// Only a shape that keeps pair memories reads the accumulated angles (its witness
+    /// records); the sphere's fast path pays nothing for them.
+    static constexpr bool kWitnessClock = !std::is_same_v<typename Shape::Memory, NoPairMemory>;
 
     /// The pair at time t in its local frame: the minimum-image displacement of the stored
     /// positions first, then each particle's own flight since its time stamp.
@@ -185,8 +189,10 @@ template <EngineShape Shape> class EventDrivenMd {
         m.diameter = clock_.diameter(t);
         m.growthRate = clock_.rate;
         shape_.orient(m, state_[i], t - time_[i], state_[j], t - time_[j]);
-        m.turnedI = turnedAt(i, t);
-        m.turnedJ = turnedAt(j, t);
+        if constexpr (kWitnessClock) {
+            m.turnedI = turnedAt(i, t);
+            m.turnedJ = turnedAt(j, t);
+        }
         return m;
     }
 

@@ -96,7 +96,8 @@ std::optional<PlaneGap> SuperballShape::separatingPlane(const PairMotion& m,
     }
     const PlaneGap cached = prediction.planeGap(normal, 0.0);
     bound(cached.gap);
-    memory.witness = {cached.pointI, cached.pointJ, m.turnedI, m.turnedJ};
+    const double semiAxis = 0.5 * m.diameter; // the record's points are at semi-axis 1
+    memory.witness = {cached.pointI / semiAxis, cached.pointJ / semiAxis, m.turnedI, m.turnedJ};
     if (separatedToEnd(cached.gap) || (cached.gap > 0.0 && end < kNever &&
                                        std::min(cached.gap, prediction.planeGap(normal, end).gap) >
                                            0.125 * prediction.planeCurvature(normal) * end * end)) {

@@ -17,7 +17,8 @@
 namespace sbpack::superball {
 
 /// A separating plane's gap g_n(tau) = n.d(tau) - h_i(n) - h_j(n), its exact rate, and the two
-/// support points of n in the bodies' frames at semi-axis 1 (a witness record's points).
+/// support points of n in the bodies' frames (at the bodies' semi-axis then: a witness record's
+/// points once scaled to semi-axis 1).
 struct PlaneGap {
     double gap = 0.0;
     double rate = 0.0;
@@ -94,8 +95,7 @@ class PairPrediction {
         const Vector3d bodyJ = body.supportPoint(qj.transpose() * n);
         const Vector3d xI = qi * bodyI, xJ = qj * bodyJ;
         return {n.dot(m_.displacement + m_.relativeVelocity * tau - xI - xJ),
-                planeGapRate(m_, diameter, n, xI, xJ), bodyI / body.semiAxis(),
-                bodyJ / body.semiAxis()};
+                planeGapRate(m_, diameter, n, xI, xJ), bodyI, bodyJ};
     }
 
     /// Tier 3 from `start` (the cached plane's gap `cached` at tau = 0 known): advancement along
