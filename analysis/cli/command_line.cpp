@@ -89,6 +89,7 @@ class CommandLine {
                   "sbanalyze"};
     const Communicator& communicator_;
     RunSettings settings_;
+    ComputeDevice device_ = ComputeDevice::Auto;
     std::vector<std::string> inputs_;
     CLI::App* info_ = nullptr;
     ContactParameters infoContacts_;
@@ -138,6 +139,12 @@ void CommandLine::addAnalysisOptions() {
             fmt::format("threads for TBB, FFTW and OpenMP alike (default: the hardware's, {})",
                         hardwareThreads()))
         ->type_name("T");
+    app_.add_option_function<std::string>(
+            "--device", [this](const std::string& v) { device_ = computeDeviceFromName(v); },
+            "where the grids of voxels, chi and pores are computed: cpu, cuda (an NVIDIA GPU,\n"
+            "builds with SBPACK_WITH_CUDA; not with hyper, --pores refined, --vdb or\n"
+            "--distribute grids) or auto (default: cuda where granted, else cpu; docs/gpu.md)")
+        ->type_name("cpu|cuda|auto");
     addContactOptions(app_, s.contacts);
     addDistributionOptions();
     app_.add_flag("--quiet", s.quiet, "no progress lines (by default one per stage on stderr)");
@@ -248,6 +255,17 @@ void CommandLine::addFftOptions() {
                         "no limit (a measured 300^3 plan takes ~20 s once, then is wisdom)",
                         kDefaultFftPlanningBudget))
         ->type_name("SECONDS|none");
+    app_.add_option_function<std::string>(
+            "--fft-precision",
+            [&s](const std::string& v) {
+                if (v != "double" && v != "single")
+                    throw std::invalid_argument("option --fft-precision: '" + v +
+                                                "' is not double or single");
+                s.fftSingle = v == "single";
+            },
+            "chi's transform on the GPU: double (default) or single (cuFFT, --device cuda;\n"
+            "its error against double is tabulated in docs/gpu.md)")
+        ->type_name("double|single");
     app_.add_option_function<std::string>(
             "--fft-wisdom",
             [&s](const std::string& v) {
@@ -368,6 +386,11 @@ void CommandLine::finishAnalysis() {
             fmt::format("option --pore-voxels: {} is above {}, the largest grid of --pores refined",
                         settings_.poreVoxels, maxFeatureTransformVoxels));
     static_cast<void>(ContactNetwork(settings_.contacts)); // throws on a bad tolerance or threshold
+    if (!app_.get_subcommands().empty()) return;           // info, convert, schema: no grids
+    settings_.device = resolveComputeDevice(device_, settings_.cpuOnlyReason());
+    if (settings_.fftSingle && settings_.device.device != ComputeDevice::Cuda)
+        throw std::invalid_argument(
+            "option --fft-precision single: only cuFFT has it (--device cuda on a CUDA build)");
 }
 
 void CommandLine::refuseAnalysisOptionsWith(const CLI::App& subcommand) const {

@@ -175,8 +175,9 @@ SpectralDensityResult MpiGrids::spectralDensity(const Packing& packing, const Sl
     clock = Stopwatch();
     ShellAccumulator shells(packing.boxLength, result.maxShell);
     collectively(comm_, [&] {
-        const SpectrumSlab slab{data.get(), m, static_cast<int>(s.start1),
-                                static_cast<int>(s.start1 + s.n1)};
+        const SpectrumSlab slab{
+            data.get(), m,        static_cast<int>(s.start1), static_cast<int>(s.start1 + s.n1),
+            m,          m / 2 + 1};
         shells = spectralShellSums(slab, result.voxelSize, packing.boxLength, result.maxShell,
                                    progress, parameters.serial);
     });

@@ -6,6 +6,7 @@
 #include "pipeline/record_bytes.hpp"
 #include "pipeline/resources.hpp"
 #include "pipeline/scale_plan.hpp"
+#include "pipeline/stages/stages.hpp"
 #include "pipeline/summary_json.hpp"
 #include "voxels/voxelization.hpp"
 
@@ -137,6 +138,9 @@ void checkPackingForRun(const Packing& packing, const RunSettings& settings,
                                         std::to_string(settings.voxelsOf(grid)) + ": " + e.what());
         }
     }
+#ifdef SBPACK_WITH_CUDA
+    if (settings.device.device == ComputeDevice::Cuda) stages::checkCudaRun(settings);
+#endif
     // Distributed grids are checked per rank by the plan (pipeline/scale_plan.hpp).
     if (settings.distribute == Distribution::Files)
         checkMemory(packing, settings, quotedName(input));

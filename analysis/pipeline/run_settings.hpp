@@ -2,6 +2,7 @@
 // Everything one sbanalyze run is asked to do (filled by the command line, cli/).
 
 #include "contacts/contact_network.hpp"
+#include "gpu/compute_device.hpp"
 #include "hyperuniformity/hyperuniformity.hpp"
 #include "pipeline/analysis_registry.hpp"
 #include "pores/pore_size_distribution.hpp"
@@ -40,6 +41,10 @@ struct RunSettings {
     ContactParameters contacts;
     FftSettings fft;
     bool quiet = false;
+    /// Where the grids are computed (--device, resolved when the options are read; docs/gpu.md)
+    ResolvedDevice device;
+    /// cuFFT in single precision (--fft-precision single; --device cuda only)
+    bool fftSingle = false;
     Distribution distribute = Distribution::Files;
     /// --plan: print the per-rank memory and communication of the run and stop before any work
     bool plan = false;
@@ -49,6 +54,16 @@ struct RunSettings {
     /// M of a grid; 0 for VoxelGrid::None.
     int voxelsOf(VoxelGrid grid) const {
         return grid == VoxelGrid::Spectral ? voxels : grid == VoxelGrid::Pore ? poreVoxels : 0;
+    }
+    /// Why this run's grids must stay on the CPU ("" when the GPU can compute them all).
+    std::string cpuOnlyReason() const {
+        if (runs(Analysis::Hyperuniformity))
+            return "hyper needs the spectrum at every wave vector of the grid (CPU only)";
+        if (runs(Analysis::PoreSizes) && poreMethod == PoreMethod::Refined)
+            return "--pores refined needs the feature transform (CPU only)";
+        if (!vdbDirectory.empty()) return "--vdb exports the CPU's OpenVDB voxel tree";
+        if (distribute == Distribution::Grids) return "--distribute grids shares CPU slabs";
+        return "";
     }
     /// The grids the requested analyses work on.
     std::set<VoxelGrid> grids() const {

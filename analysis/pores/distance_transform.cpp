@@ -395,6 +395,9 @@ PoreSizeMap::PoreSizeMap(int voxels, double voxelSize) : voxels_(voxels), voxelS
     squaredDistances_.reset(new std::uint32_t[m * m * m]);
 }
 
+PoreSizeMap::PoreSizeMap(int voxels, double voxelSize, std::unique_ptr<std::uint32_t[]> squared)
+    : voxels_(voxels), voxelSize_(voxelSize), squaredDistances_(std::move(squared)) {}
+
 std::span<const std::uint32_t> PoreSizeMap::squaredDistances() const {
     const std::size_t m = static_cast<std::size_t>(voxels_);
     return {squaredDistances_.get(), m * m * m};
@@ -421,14 +424,7 @@ std::int64_t checkMask(std::span<const std::uint8_t> solidMask, int voxels, doub
                                     " is not finite and positive");
     const std::int64_t solid =
         std::count_if(solidMask.begin(), solidMask.end(), [](std::uint8_t v) { return v != 0; });
-    if (solid == 0)
-        throw std::domain_error("pore sizes: no solid voxel at M = " + std::to_string(voxels) +
-                                " (no particle covers a voxel centre); the pore sizes are "
-                                "undefined: use a larger M or check the packing");
-    if (solid == total)
-        throw std::domain_error("pore sizes: no void voxel at M = " + std::to_string(voxels) +
-                                " (the particles cover every voxel centre); the pore-size "
-                                "distribution is undefined: use a larger M or check the packing");
+    checkSolidCount(solid, voxels);
     return solid;
 }
 
@@ -477,6 +473,29 @@ PoreSizeMap transformMask(std::span<const std::uint8_t> solidMask, int voxels, d
         serial);
     map.voidCount_ = total - solid;
     map.maxSquaredDistance_ = *std::max_element(planeLargest.begin(), planeLargest.end());
+    return map;
+}
+
+void checkSolidCount(std::int64_t solid, int voxels) {
+    const std::int64_t total = static_cast<std::int64_t>(voxels) * voxels * voxels;
+    if (solid == 0)
+        throw std::domain_error("pore sizes: no solid voxel at M = " + std::to_string(voxels) +
+                                " (no particle covers a voxel centre); the pore sizes are "
+                                "undefined: use a larger M or check the packing");
+    if (solid == total)
+        throw std::domain_error("pore sizes: no void voxel at M = " + std::to_string(voxels) +
+                                " (the particles cover every voxel centre); the pore-size "
+                                "distribution is undefined: use a larger M or check the packing");
+}
+
+PoreSizeMap PoreSizeMap::fromSquaredDistances(std::unique_ptr<std::uint32_t[]> squared, int voxels,
+                                              double voxelSize) {
+    checkVoxels(voxels);
+    PoreSizeMap map(voxels, voxelSize, std::move(squared));
+    const std::int64_t m = voxels;
+    const std::uint32_t* d = map.squaredDistances_.get();
+    map.voidCount_ = std::count_if(d, d + m * m * m, [](std::uint32_t v) { return v != 0; });
+    map.maxSquaredDistance_ = *std::max_element(d, d + m * m * m);
     return map;
 }
 

@@ -72,6 +72,12 @@ class PoreSizeMap {
     std::span<const std::uint32_t> features() const;
     bool hasFeatures() const { return features_ != nullptr; }
 
+    /// A map computed elsewhere (the GPU, gpu/cuda_grid.cpp): the M^3 squared distances, the
+    /// void count and the largest taken from them. Throws std::invalid_argument for M outside
+    /// [1, maxPoreSizeVoxels].
+    static PoreSizeMap fromSquaredDistances(std::unique_ptr<std::uint32_t[]> squared, int voxels,
+                                            double voxelSize);
+
     /// Writes the map as an OpenVDB FloatGrid named "pore_size": active on the void voxels only,
     /// value the pore size in length units, index (i, j, k) centred at ((i, j, k) + 0.5) a, with
     /// metadata box_length, voxels and units. Atomic (AtomicOutput); throws OutputPathError.
@@ -82,6 +88,7 @@ class PoreSizeMap {
   private:
     friend PoreSizeMap transformMask(std::span<const std::uint8_t>, int, double, bool, bool);
     PoreSizeMap(int voxels, double voxelSize);
+    PoreSizeMap(int voxels, double voxelSize, std::unique_ptr<std::uint32_t[]> squared);
 
     int voxels_;
     double voxelSize_;
@@ -90,6 +97,10 @@ class PoreSizeMap {
     std::int64_t voidCount_ = 0;
     std::uint32_t maxSquaredDistance_ = 0;
 };
+
+/// Throws std::domain_error when `solid` of the M^3 voxels leave no solid or no void voxel (the
+/// pore sizes are undefined).
+void checkSolidCount(std::int64_t solid, int voxels);
 
 /// Exact separable distance transform of a periodic M^3 grid; `solidMask[(i * M + j) * M + k]
 /// != 0` marks a solid voxel (as Voxelization::copySolidMask fills it). A 1-D pass along x, then

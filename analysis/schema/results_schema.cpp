@@ -36,6 +36,8 @@ constexpr Field kRun[] = {
     {"sbanalyze_version", A, S, "", "version of the sbanalyze that wrote the file"},
     {"compute", A, S, "", "the analyses run, comma-separated (--compute with what they need)"},
     {"threads", A, I, "1", "threads of the run (--threads), per rank"},
+    {"device", A, S, "",
+     "where the grids were computed (--device): \"cpu\", or \"cuda: \" and the GPU (docs/gpu.md)"},
     {"ranks", A, I, "1", "MPI processes of the run (1 without mpirun; docs/scale-out.md)"},
     {"distribute", A, S, "", "what the ranks shared out (--distribute): files or grids"},
     {"n_files", A, I, "1", "inputs: groups files/0 ... files/<n_files - 1>"},
@@ -78,6 +80,8 @@ constexpr Field kSpectralDensity[] = {
      "--fft-planning-budget: without wisdom, measuring predicted to take longer falls back on "
      "estimate (inf: no limit)"},
     {"fft_s", A, F, "s", "filling the grid and the FFT"},
+    {"fft_precision", A, S, "",
+     "\"double\" (FFTW, or cuFFT), or \"single\" (cuFFT, --fft-precision single)"},
     {"shell_average_s", A, F, "s", "shell averaging"},
     {"ranks", A, I, "1", kRanks, No, true},
     {"slab", A, I, "1", kSlab, No, true},

@@ -79,24 +79,24 @@ std::vector<double> voxelFormFactors(double voxelSize, int m, int s) {
 
 ShellAccumulator spectralShellSums(const SpectrumSlab& slab, double voxelSize, double boxLength,
                                    int s, const Progress& progress, bool serial) {
-    const int m = slab.voxels;
-    const std::int64_t half = m / 2 + 1;
+    const int m = slab.voxels, rows = slab.rows;
+    const std::int64_t half = slab.rowLength;
     const double volume = std::pow(boxLength, 3);
     const std::int64_t maxN2 = maxSquaredIndex(s);
     const std::vector<double> formFactor2 = voxelFormFactors(voxelSize, m, s);
     std::vector<int> planes;
     for (int outer = slab.outerBegin; outer < slab.outerEnd; ++outer)
-        if (std::abs(signedIndex(outer, m)) <= s) planes.push_back(outer);
+        if (std::abs(signedIndex(outer, rows)) <= s) planes.push_back(outer);
     std::vector<ShellAccumulator> partial(planes.size(), ShellAccumulator(boxLength, s));
     parallelFor(
         0, static_cast<std::int64_t>(planes.size()), 1,
         [&](std::int64_t begin, std::int64_t end) {
             for (std::int64_t p = begin; p < end; ++p) {
                 progress.checkInterrupt();
-                const int no = signedIndex(planes[p], m);
-                const double* plane = slab.data + (planes[p] - slab.outerBegin) * m * half * 2;
-                for (int inner = 0; inner < m; ++inner) {
-                    const int ni = signedIndex(inner, m);
+                const int no = signedIndex(planes[p], rows);
+                const double* plane = slab.data + (planes[p] - slab.outerBegin) * rows * half * 2;
+                for (int inner = 0; inner < rows; ++inner) {
+                    const int ni = signedIndex(inner, rows);
                     const std::int64_t n2io = std::int64_t{no} * no + std::int64_t{ni} * ni;
                     if (n2io > maxN2) continue;
                     const double fxy = formFactor2[no + s] * formFactor2[ni + s];
@@ -182,7 +182,8 @@ SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Vox
     result.fillSeconds = transform.fillSeconds();
     result.transformSeconds = transform.transformSeconds();
     const Stopwatch shellClock;
-    const SpectrumSlab whole{transform.data(), voxels.voxels(), 0, voxels.voxels()};
+    const int m = voxels.voxels();
+    const SpectrumSlab whole{transform.data(), m, 0, m, m, m / 2 + 1};
     ShellAverage shells = spectralShellSums(whole, voxels.voxelSize(), packing.boxLength,
                                             result.maxShell, progress, parameters_.serial)
                               .average();

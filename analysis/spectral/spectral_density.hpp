@@ -63,13 +63,17 @@ struct SpectralDensityResult {
 
 /// The wave vectors of a real-to-complex transform of an M^3 grid, or of one slab of it: planes
 /// [outerBegin, outerEnd) of the outer index, coefficient (outer, inner, kz) interleaved at
-/// (((outer - outerBegin) M + inner) (M/2 + 1) + kz) 2. The whole transform has outer = kx,
-/// inner = ky; a rank of FFTW's MPI transform with transposed output outer = ky, inner = kx
-/// (docs/scale-out.md). Eq. 12 is symmetric in the two, so one shell sum serves both.
+/// (((outer - outerBegin) rows + inner) rowLength + kz) 2. The whole transform has outer = kx,
+/// inner = ky, rows = M and rowLength = M/2 + 1; a rank of FFTW's MPI transform with transposed
+/// output outer = ky, inner = kx (docs/scale-out.md). Eq. 12 is symmetric in the two, so one
+/// shell sum serves both. A compact cube of the low wave vectors (the GPU's, gpu/cuda_grid.hpp)
+/// has rows = 2s + 1 outer and inner indices, the signed index n at n mod rows, and rowLength
+/// s + 1: the index period is `rows`, the voxels' form factors those of M.
 struct SpectrumSlab {
     const double* data;
     int voxels;
     int outerBegin, outerEnd;
+    int rows, rowLength;
 };
 
 /// The shell sums of Eq. 12 over the wave vectors of `slab`, shells 1..maxShell: |F|^2

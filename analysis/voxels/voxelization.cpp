@@ -1,6 +1,7 @@
 // The only translation unit of sbanalyze that includes OpenVDB's tree (each costs ~30 s to build).
 #include "voxels/voxelization.hpp"
 
+#include "gpu/grid_kernels.hpp"
 #include "io/atomic_file.hpp"
 #include "parallel/parallel.hpp"
 #include "voxels/vdb_image.hpp"
@@ -43,23 +44,7 @@ struct Candidate {
     int particle;
 };
 
-/// Voxels [lo, hi] along one axis whose centres (i + 1/2) a lie within `radius` of c, clipped
-/// to [first, last]; empty when lo > hi.
-std::pair<int, int> voxelRange(double c, double radius, double a, int first, int last) {
-    const double lo = std::ceil((c - radius) / a - 0.5);
-    const double hi = std::floor((c + radius) / a - 0.5);
-    return {static_cast<int>(std::max<double>(lo, first)),
-            static_cast<int>(std::min<double>(hi, last))};
-}
-
-/// Image shifts along one axis that bring a body of circumradius rc centred at c in [0, L)
-/// over some voxel centre: 0, and +L (-L) when it sticks out below 0 (above L).
-std::vector<double> imageShifts(double c, double rc, double boxLength) {
-    std::vector<double> shifts{0.0};
-    if (c - rc < 0.0) shifts.push_back(boxLength);
-    if (c + rc > boxLength) shifts.push_back(-boxLength);
-    return shifts;
-}
+using gpu::voxelRange;
 
 /// Superball::contains for body-frame points, mostly without std::pow. With y = |x| / R and the
 /// integers lo = floor(2p) <= 2p <= hi = ceil(2p), sum y_i^hi <= sum y_i^2p <= sum y_i^lo while
@@ -173,7 +158,7 @@ std::array<std::uint64_t, kBlock> voxelizeBlock(int ox, int oy, int oz,
                 };
                 const auto [in0, in1] = rxy2 < ri2
                                             ? voxelRange(c.z(), std::sqrt(ri2 - rxy2), g.a, z0, z1)
-                                            : std::pair<int, int>{z1 + 1, z1};
+                                            : gpu::IndexRange{z1 + 1, z1};
                 if (in0 <= in1) {
                     word |= rowBits(in0, in1, shift);
                     for (int z = z0; z < in0; ++z)
@@ -327,6 +312,17 @@ Voxelizer::Voxelizer(VoxelizationParameters parameters) : parameters_(parameters
                                    ")");
 }
 
+std::vector<double> periodicImageShifts(double c, double rc, double boxLength) {
+    std::vector<double> shifts{0.0};
+    if (c - rc < 0.0) shifts.push_back(boxLength);
+    if (c + rc > boxLength) shifts.push_back(-boxLength);
+    return shifts;
+}
+
+double Voxelizer::reach(const Superball& shape) {
+    return shape.circumradius() * (1.0 + kSphereMargin);
+}
+
 int Voxelizer::minimumVoxels(const Packing& packing) {
     const double width = 2.0 * packing.shape().inradius();
     return static_cast<int>(std::ceil(kMinVoxelsAcross * packing.boxLength / width));
@@ -381,9 +377,9 @@ BlockCandidates blockCandidates(const Packing& packing, const BlockGeometry& g) 
     auto forEachImageBlock = [&](auto&& visit) {
         for (std::size_t j = 0; j < packing.size(); ++j) {
             const Vector3d& r = packing.positions[j];
-            for (double sx : imageShifts(r.x(), rc, boxLength))
-                for (double sy : imageShifts(r.y(), rc, boxLength))
-                    for (double sz : imageShifts(r.z(), rc, boxLength)) {
+            for (double sx : periodicImageShifts(r.x(), rc, boxLength))
+                for (double sy : periodicImageShifts(r.y(), rc, boxLength))
+                    for (double sz : periodicImageShifts(r.z(), rc, boxLength)) {
                         const Vector3d c = r + Vector3d(sx, sy, sz);
                         const auto [x0, x1] = voxelRange(c.x(), rc, a, g.x0, g.x1 - 1);
                         const auto [y0, y1] = voxelRange(c.y(), rc, a, 0, m - 1);
@@ -463,7 +459,7 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
     const Superball shape = packing.shape();
     const double boxLength = packing.boxLength;
     const double a = boxLength / m;
-    const double rc = shape.circumradius() * (1.0 + kSphereMargin);
+    const double rc = reach(shape);
     const double ri = shape.inradius() * (1.0 - kSphereMargin);
     const int blocks = (m + kBlock - 1) / kBlock;
     const int x0 = parameters_.slabBegin, x1 = parameters_.slabEnd;

@@ -14,6 +14,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace sbpack {
 
@@ -95,6 +96,10 @@ class Voxelization {
     int slabEnd_;
 };
 
+/// Image shifts along one axis that bring a body of reach rc centred at c in [0, L) over some
+/// voxel centre: 0, and +L (-L) when it sticks out below 0 (above L).
+std::vector<double> periodicImageShifts(double c, double rc, double boxLength);
+
 /// Compute object (docs/design.md §7): parameters validated at construction.
 class Voxelizer {
   public:
@@ -106,6 +111,9 @@ class Voxelizer {
     /// Throws VoxelResolutionError unless 1 <= voxels <= kMaxVoxels and the slab is in [0, M].
     explicit Voxelizer(VoxelizationParameters parameters);
 
+    /// The circumscribed radius with the margin that keeps the sphere shortcuts exact: voxel
+    /// centres farther from a particle's centre are never tested (the CPU and GPU voxelisers).
+    static double reach(const Superball& shape);
     /// Smallest M that puts kMinVoxelsAcross voxels across the particles of `packing`.
     static int minimumVoxels(const Packing& packing);
     /// Throws VoxelResolutionError if M < minimumVoxels(packing) (the message gives both), or if

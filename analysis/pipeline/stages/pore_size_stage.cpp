@@ -43,6 +43,9 @@ namespace {
 /// solid mask is released on return).
 PoreSizeMap poreSizeMap(const FileContext& context, int m, bool features) {
     checkPoreSizeMemory(m);
+#ifdef SBPACK_WITH_CUDA
+    if (context.settings().device.device == ComputeDevice::Cuda) return cudaPoreSizeMap(context, m);
+#endif
     std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m);
     double voxelSize = 0.0;
     {

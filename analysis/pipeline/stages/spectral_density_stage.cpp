@@ -72,12 +72,17 @@ bool runSpectralDensity(FileContext& context, schema::Record& record) {
     parameters.maxQw = context.settings().maxQw;
     parameters.fft = context.settings().fft;
     DistributionFigures figures;
-    const SpectralDensityResult s =
-        context.grids() == nullptr
-            ? wholeGrid(context, parameters)
-            : context.grids()->spectralDensity(context.packing(),
-                                               context.kept<SlabVoxels>(Analysis::Voxels),
-                                               parameters, context.progress(), figures);
+    SpectralDensityResult s;
+    if (context.grids() != nullptr)
+        s = context.grids()->spectralDensity(context.packing(),
+                                             context.kept<SlabVoxels>(Analysis::Voxels), parameters,
+                                             context.progress(), figures);
+#ifdef SBPACK_WITH_CUDA
+    else if (context.settings().device.device == ComputeDevice::Cuda)
+        s = cudaSpectralDensity(context, parameters);
+#endif
+    else
+        s = wholeGrid(context, parameters);
     report(context.progress(), s);
     if (context.grids() != nullptr) setDistribution(record, figures);
     record.set("voxels", s.voxels)
@@ -90,6 +95,7 @@ bool runSpectralDensity(FileContext& context, schema::Record& record) {
         .set("fft_plan_source", std::string(fftPlanSourceName(s.planSource)))
         .set("fft_planning_budget_s", s.parameters.fft.planningBudget)
         .set("fft_s", s.fillSeconds + s.transformSeconds)
+        .set("fft_precision", context.settings().fftSingle ? "single" : "double")
         .set("shell_average_s", s.shellSeconds)
         .set("runtime_s", s.runtimeSeconds);
     setShells(record, s.shells, "chi", context.meanWidth());

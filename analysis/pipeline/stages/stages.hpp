@@ -5,8 +5,11 @@
 #include "hyperuniformity/hyperuniformity.hpp"
 #include "pipeline/analysis_registry.hpp"
 #include "pipeline/distributed_grids.hpp"
+#include "pores/distance_transform.hpp"
 #include "shells/shell_average.hpp"
+#include "spectral/spectral_density.hpp"
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -36,6 +39,28 @@ struct KeptSpectrum {
 bool runHyperuniformity(FileContext& context, schema::Record& record);
 /// alpha_pooled of an ensemble from its mean E(t) over the mean window.
 void poolSpreadability(schema::Record& ensembleGroup);
+
+/// The voxel figures every voxelization records (the voxels group of the results schema).
+struct VoxelFigures {
+    int voxels;
+    double phiVoxel, phiExact, voxelSize;
+    std::int64_t solidVoxels;
+    double memoryBytes, runtimeSeconds;
+};
+void setVoxelFigures(schema::Record& record, const VoxelFigures& figures);
+
+#ifdef SBPACK_WITH_CUDA
+// --device cuda (gpu/cuda_stages.cpp, docs/gpu.md): the grids on the GPU.
+/// Refuses the run up front when its grids do not fit the device (gpu/gpu_memory.hpp).
+void checkCudaRun(const RunSettings& settings);
+/// voxels: the spectral grid voxelised on the GPU and kept there (a CudaGrid) for chi.
+bool runCudaVoxels(FileContext& context, schema::Record& record);
+/// chi from the kept CudaGrid, the transform by cuFFT.
+SpectralDensityResult cudaSpectralDensity(FileContext& context,
+                                          const SpectralDensityParameters& parameters);
+/// The pore grid voxelised and distance-transformed on the GPU.
+PoreSizeMap cudaPoreSizeMap(const FileContext& context, int voxels);
+#endif
 
 /// The figures of a distributed grid (ranks, slab, memory per rank, communication).
 void setDistribution(schema::Record& record, const DistributionFigures& figures);

@@ -27,13 +27,9 @@ bool runSlabVoxels(FileContext& context, schema::Record& record) {
         fmt::format("{}^3 over {} ranks, slab [{}, {}), phi_voxel = {} (phi = {})", m,
                     voxels.figures.ranks, voxels.slab.slabBegin(), voxels.slab.slabEnd(),
                     describe(voxels.phiVoxel()), describe(voxels.slab.phiExact())));
-    record.set("voxels", m)
-        .set("phi_voxel", voxels.phiVoxel())
-        .set("phi_exact", voxels.slab.phiExact())
-        .set("voxel_size", voxels.slab.voxelSize())
-        .set("solid_voxels", voxels.solidCount)
-        .set("memory_bytes", static_cast<std::int64_t>(voxels.slab.memoryBytes()))
-        .set("runtime_s", voxels.slab.runtimeSeconds());
+    setVoxelFigures(record, {m, voxels.phiVoxel(), voxels.slab.phiExact(), voxels.slab.voxelSize(),
+                             voxels.solidCount, static_cast<double>(voxels.slab.memoryBytes()),
+                             voxels.slab.runtimeSeconds()});
     setDistribution(record, voxels.figures);
     context.keep(Analysis::Voxels, std::move(voxels));
     return true;
@@ -41,8 +37,22 @@ bool runSlabVoxels(FileContext& context, schema::Record& record) {
 
 } // namespace
 
+void setVoxelFigures(schema::Record& record, const VoxelFigures& figures) {
+    record.set("voxels", figures.voxels)
+        .set("phi_voxel", figures.phiVoxel)
+        .set("phi_exact", figures.phiExact)
+        .set("voxel_size", figures.voxelSize)
+        .set("solid_voxels", figures.solidVoxels)
+        .set("memory_bytes", static_cast<std::int64_t>(figures.memoryBytes))
+        .set("runtime_s", figures.runtimeSeconds);
+}
+
 bool runVoxels(FileContext& context, schema::Record& record) {
     if (context.grids() != nullptr) return runSlabVoxels(context, record);
+#ifdef SBPACK_WITH_CUDA
+    if (context.settings().device.device == ComputeDevice::Cuda)
+        return runCudaVoxels(context, record);
+#endif
     const int m = context.settings().voxels;
     Voxelization voxels = Voxelizer({m}).compute(context.packing(), context.progress());
     context.progress().stageDone(
@@ -50,13 +60,9 @@ bool runVoxels(FileContext& context, schema::Record& record) {
         fmt::format("{}^3, phi_voxel = {} (phi = {}), OpenVDB tree {}", m,
                     describe(voxels.phiVoxel()), describe(voxels.phiExact()),
                     formatBytes(static_cast<double>(voxels.memoryBytes()))));
-    record.set("voxels", voxels.parameters().voxels)
-        .set("phi_voxel", voxels.phiVoxel())
-        .set("phi_exact", voxels.phiExact())
-        .set("voxel_size", voxels.voxelSize())
-        .set("solid_voxels", voxels.solidCount())
-        .set("memory_bytes", static_cast<std::int64_t>(voxels.memoryBytes()))
-        .set("runtime_s", voxels.runtimeSeconds());
+    setVoxelFigures(record, {m, voxels.phiVoxel(), voxels.phiExact(), voxels.voxelSize(),
+                             voxels.solidCount(), static_cast<double>(voxels.memoryBytes()),
+                             voxels.runtimeSeconds()});
     if (const VdbExport* vdb = context.vdbExport(Analysis::Voxels)) {
         const Stopwatch clock;
         vdb->output->write(voxels.vdbImage());

@@ -1,0 +1,53 @@
+#pragma once
+// A packing's voxel grid on the GPU (SBPACK_WITH_CUDA builds; docs/gpu.md): voxelised there,
+// transformed there (chi_V, paper Eq. 12) and distance-transformed there (pore sizes, Eq. 13);
+// only the shell sums' coefficients and the squared distances come back to the host. Each result
+// is the CPU path's: the same voxels bit for bit, the same integer distances, chi_V to rounding.
+
+#include "gpu/cuda_kernels.hpp"
+#include "packing/packing.hpp"
+#include "pores/distance_transform.hpp"
+#include "progress/progress.hpp"
+#include "spectral/spectral_density.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace sbpack {
+
+class CudaGrid {
+  public:
+    /// Voxelises `packing` on M^3 voxels as Voxelizer does (Voxelizer::checkResolution first:
+    /// VoxelResolutionError for too coarse a grid); std::runtime_error from CUDA.
+    CudaGrid(const Packing& packing, int voxels);
+
+    int voxels() const { return voxels_; }
+    double voxelSize() const { return boxLength_ / voxels_; }
+    std::int64_t solidCount() const { return solidCount_; }
+    double phiVoxel() const;
+    double runtimeSeconds() const { return runtimeSeconds_; }
+    /// Device memory of the voxel bits.
+    std::size_t deviceBytes() const { return words_.bytes(); }
+
+    /// mask[(i M + j) M + k] = 1 on solid voxels, as Voxelization::copySolidMask.
+    std::vector<std::uint8_t> solidMask() const;
+
+    /// chi_V(Q) as SpectralDensity::compute, the indicator transformed by cuFFT (single
+    /// precision when `single`); fillSeconds and transformSeconds are the device's.
+    SpectralDensityResult spectralDensity(const Packing& packing,
+                                          const SpectralDensityParameters& parameters, bool single,
+                                          const Progress& progress) const;
+
+    /// The exact periodic distance transform, as periodicDistanceTransform (std::domain_error
+    /// when no voxel is solid or none void), `linesPerBatch` lines per envelope launch.
+    PoreSizeMap poreSizeMap(std::int64_t linesPerBatch) const;
+
+  private:
+    int voxels_;
+    double boxLength_;
+    gpu::cuda::DeviceBuffer words_;
+    std::int64_t solidCount_ = 0;
+    double runtimeSeconds_ = 0.0;
+};
+
+} // namespace sbpack

@@ -1,0 +1,267 @@
+// The CUDA kernels of the GPU grid analysis (docs/gpu.md): each thread runs one function of
+// grid_kernels.hpp, the code the host tests run against the CPU path. Built with -fmad=false
+// (CMake), so that the voxel test rounds as the host's does (no contracted multiply-adds).
+#include "gpu/cuda_kernels.hpp"
+
+#include <cuda_runtime.h>
+#include <cufft.h>
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace sbpack::gpu::cuda {
+
+namespace {
+
+void check(cudaError_t status, const char* call) {
+    if (status != cudaSuccess)
+        throw std::runtime_error(std::string("CUDA: ") + call + ": " + cudaGetErrorString(status));
+}
+
+void checkFft(cufftResult status, const char* call) {
+    if (status != CUFFT_SUCCESS)
+        throw std::runtime_error(std::string("cuFFT: ") + call + " failed with error " +
+                                 std::to_string(static_cast<int>(status)));
+}
+
+/// Waits for the device and throws the first error of the kernels launched before.
+void synchronize(const char* what) {
+    check(cudaGetLastError(), what);
+    check(cudaDeviceSynchronize(), what);
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+constexpr int kThreads = 256;
+
+unsigned blocksFor(std::int64_t work) {
+    return static_cast<unsigned>((work + kThreads - 1) / kThreads);
+}
+
+/// One block per particle image; its threads share the image's rows (x, y).
+__global__ void voxelizeImages(const ParticleImage* images, VoxelGeometry g, std::uint32_t* words) {
+    const ParticleImage image = images[blockIdx.x];
+    const ImageRows rows = imageRows(image, g);
+    for (int r = static_cast<int>(threadIdx.x); r < rows.count(); r += blockDim.x)
+        imageRow(image, rows.xOf(r), rows.yOf(r), g,
+                 [words](std::int64_t word, std::uint32_t bits) { atomicOr(words + word, bits); });
+}
+
+__global__ void popcountWords(const std::uint32_t* words, std::int64_t count,
+                              unsigned long long* total) {
+    unsigned long long sum = 0;
+    for (std::int64_t i = blockIdx.x * std::int64_t{blockDim.x} + threadIdx.x; i < count;
+         i += std::int64_t{gridDim.x} * blockDim.x)
+        sum += __popc(words[i]);
+    for (int offset = 16; offset > 0; offset >>= 1)
+        sum += __shfl_down_sync(0xffffffffu, sum, offset);
+    if ((threadIdx.x & 31) == 0) atomicAdd(total, sum);
+}
+
+/// The indicator in cuFFT's in-place real-to-complex layout (rows of 2 (M/2 + 1) reals).
+template <class Real>
+__global__ void fillIndicator(const std::uint32_t* words, int m, std::int64_t rowStride,
+                              Real* grid) {
+    const std::int64_t v = blockIdx.x * std::int64_t{blockDim.x} + threadIdx.x;
+    const std::int64_t total = std::int64_t{m} * m * m;
+    if (v >= total) return;
+    const std::int64_t row = v / m;
+    const int z = static_cast<int>(v % m);
+    const std::uint32_t word = words[row * wordsPerRow(m) + (z >> 5)];
+    grid[row * rowStride + z] = static_cast<Real>((word >> (z & 31)) & 1u);
+}
+
+/// The compact cube of spectrumCube from the transform (complex (re, im) pairs, M/2 + 1 a row).
+template <class Real>
+__global__ void gatherCube(const Real* transform, int m, int s, double* cube) {
+    const std::int64_t r = 2 * s + 1;
+    const std::int64_t i = blockIdx.x * std::int64_t{blockDim.x} + threadIdx.x;
+    if (i >= r * r * (s + 1)) return;
+    const int kz = static_cast<int>(i % (s + 1));
+    const std::int64_t oy = (i / (s + 1)) % r, ox = i / ((s + 1) * r);
+    const std::int64_t nx = ox <= s ? ox : ox - r, ny = oy <= s ? oy : oy - r;
+    const std::int64_t kx = (nx + m) % m, ky = (ny + m) % m;
+    const std::int64_t at = ((kx * m + ky) * (m / 2 + 1) + kz) * 2;
+    cube[2 * i] = static_cast<double>(transform[at]);
+    cube[2 * i + 1] = static_cast<double>(transform[at + 1]);
+}
+
+__global__ void rowPass(const std::uint32_t* words, int m, std::uint32_t* distances) {
+    const std::int64_t row = blockIdx.x * std::int64_t{blockDim.x} + threadIdx.x;
+    if (row >= std::int64_t{m} * m) return;
+    rowDistances(words + row * wordsPerRow(m), m, distances + row * m);
+}
+
+/// Lines [first, first + count) of one axis: line l starts at (l / inner) outerStride +
+/// (l % inner), its voxels `stride` apart; thread t uses scratch column t.
+struct LineSet {
+    std::int64_t first, count;
+    std::int64_t inner, outerStride, stride;
+};
+
+__global__ void envelopePass(std::uint32_t* distances, int m, LineSet lines, EnvelopeScratch s) {
+    const std::int64_t t = blockIdx.x * std::int64_t{blockDim.x} + threadIdx.x;
+    if (t >= lines.count) return;
+    const std::int64_t l = lines.first + t;
+    std::uint32_t* line = distances + (l / lines.inner) * lines.outerStride + l % lines.inner;
+    EnvelopeScratch mine = s;
+    mine.site += t, mine.value += t, mine.startNumerator += t, mine.startDenominator += t;
+    envelopeLine(line, lines.stride, m, line, lines.stride, mine);
+}
+
+} // namespace
+
+bool probe(DeviceInfo& info, std::string& reason) {
+    int count = 0;
+    const cudaError_t status = cudaGetDeviceCount(&count);
+    if (status != cudaSuccess) {
+        reason = cudaGetErrorString(status);
+        return false;
+    }
+    if (count == 0) {
+        reason = "no CUDA device";
+        return false;
+    }
+    cudaDeviceProp properties{};
+    check(cudaGetDeviceProperties(&properties, 0), "cudaGetDeviceProperties");
+    info.name = properties.name;
+    info.computeMajor = properties.major;
+    info.computeMinor = properties.minor;
+    info.multiprocessors = properties.multiProcessorCount;
+    check(cudaMemGetInfo(&info.freeBytes, &info.totalBytes), "cudaMemGetInfo");
+    return true;
+}
+
+DeviceBuffer::DeviceBuffer(std::size_t bytes) : bytes_(bytes) {
+    check(cudaMalloc(&data_, bytes), "cudaMalloc");
+}
+
+DeviceBuffer::DeviceBuffer(DeviceBuffer&& other) noexcept
+    : data_(std::exchange(other.data_, nullptr)), bytes_(std::exchange(other.bytes_, 0)) {}
+
+DeviceBuffer& DeviceBuffer::operator=(DeviceBuffer&& other) noexcept {
+    std::swap(data_, other.data_);
+    std::swap(bytes_, other.bytes_);
+    return *this;
+}
+
+DeviceBuffer::~DeviceBuffer() {
+    if (data_ != nullptr) cudaFree(data_);
+}
+
+void DeviceBuffer::download(void* host) const {
+    check(cudaMemcpy(host, data_, bytes_, cudaMemcpyDeviceToHost), "cudaMemcpy to the host");
+}
+
+DeviceBuffer voxelize(const std::vector<ParticleImage>& images, const VoxelGeometry& geometry) {
+    const std::int64_t m = geometry.voxels;
+    DeviceBuffer words(static_cast<std::size_t>(m * m * wordsPerRow(geometry.voxels)) *
+                       sizeof(std::uint32_t));
+    check(cudaMemset(words.get(), 0, words.bytes()), "cudaMemset");
+    if (images.empty()) return words;
+    DeviceBuffer onDevice(images.size() * sizeof(ParticleImage));
+    check(cudaMemcpy(onDevice.get(), images.data(), onDevice.bytes(), cudaMemcpyHostToDevice),
+          "cudaMemcpy to the device");
+    voxelizeImages<<<static_cast<unsigned>(images.size()), 128>>>(
+        static_cast<const ParticleImage*>(onDevice.get()), geometry,
+        static_cast<std::uint32_t*>(words.get()));
+    synchronize("voxelizeImages");
+    return words;
+}
+
+std::int64_t countSolid(const DeviceBuffer& words) {
+    DeviceBuffer total(sizeof(unsigned long long));
+    check(cudaMemset(total.get(), 0, total.bytes()), "cudaMemset");
+    const auto count = static_cast<std::int64_t>(words.bytes() / sizeof(std::uint32_t));
+    popcountWords<<<1024, kThreads>>>(static_cast<const std::uint32_t*>(words.get()), count,
+                                      static_cast<unsigned long long*>(total.get()));
+    synchronize("popcountWords");
+    unsigned long long host = 0;
+    total.download(&host);
+    return static_cast<std::int64_t>(host);
+}
+
+namespace {
+
+template <class Real>
+SpectrumCube transformAndGather(const DeviceBuffer& words, int voxels, int s, cufftType type) {
+    const std::int64_t m = voxels, half = m / 2 + 1;
+    SpectrumCube out;
+    auto clock = std::chrono::steady_clock::now();
+    DeviceBuffer grid(static_cast<std::size_t>(m * m * half * 2) * sizeof(Real));
+    fillIndicator<Real>
+        <<<blocksFor(m * m * m), kThreads>>>(static_cast<const std::uint32_t*>(words.get()), voxels,
+                                             2 * half, static_cast<Real*>(grid.get()));
+    synchronize("fillIndicator");
+    out.fillSeconds = secondsSince(clock);
+    clock = std::chrono::steady_clock::now();
+    cufftHandle plan = 0;
+    checkFft(cufftPlan3d(&plan, voxels, voxels, voxels, type), "cufftPlan3d");
+    cufftResult status = CUFFT_SUCCESS;
+    if constexpr (sizeof(Real) == sizeof(double))
+        status = cufftExecD2Z(plan, static_cast<cufftDoubleReal*>(grid.get()),
+                              static_cast<cufftDoubleComplex*>(grid.get()));
+    else
+        status = cufftExecR2C(plan, static_cast<cufftReal*>(grid.get()),
+                              static_cast<cufftComplex*>(grid.get()));
+    cufftDestroy(plan);
+    checkFft(status, "cufftExec");
+    synchronize("cufftExec");
+    out.transformSeconds = secondsSince(clock);
+    const std::int64_t r = 2 * std::int64_t{s} + 1, entries = r * r * (s + 1);
+    DeviceBuffer cube(static_cast<std::size_t>(entries) * 2 * sizeof(double));
+    gatherCube<Real><<<blocksFor(entries), kThreads>>>(static_cast<const Real*>(grid.get()), voxels,
+                                                       s, static_cast<double*>(cube.get()));
+    synchronize("gatherCube");
+    out.data.resize(static_cast<std::size_t>(entries) * 2);
+    cube.download(out.data.data());
+    return out;
+}
+
+} // namespace
+
+SpectrumCube spectrumCube(const DeviceBuffer& words, int voxels, int s, bool single) {
+    return single ? transformAndGather<float>(words, voxels, s, CUFFT_R2C)
+                  : transformAndGather<double>(words, voxels, s, CUFFT_D2Z);
+}
+
+std::size_t fftWorkBytes(int voxels, bool single) {
+    std::size_t bytes = 0;
+    checkFft(cufftEstimate3d(voxels, voxels, voxels, single ? CUFFT_R2C : CUFFT_D2Z, &bytes),
+             "cufftEstimate3d");
+    return bytes;
+}
+
+DeviceBuffer squaredDistances(const DeviceBuffer& words, int voxels, std::int64_t linesPerBatch) {
+    const std::int64_t m = voxels, lines = m * m;
+    DeviceBuffer distances(static_cast<std::size_t>(m * m * m) * sizeof(std::uint32_t));
+    auto* d = static_cast<std::uint32_t*>(distances.get());
+    rowPass<<<blocksFor(lines), kThreads>>>(static_cast<const std::uint32_t*>(words.get()), voxels,
+                                            d);
+    synchronize("rowPass");
+    const std::int64_t batch = linesPerBatch < lines ? linesPerBatch : lines;
+    const std::size_t entries = static_cast<std::size_t>((2 * m + 1) * batch);
+    DeviceBuffer site(entries * sizeof(std::int32_t)), value(entries * sizeof(std::uint32_t)),
+        numerator(entries * sizeof(std::int64_t)), denominator(entries * sizeof(std::int32_t));
+    const EnvelopeScratch scratch{static_cast<std::int32_t*>(site.get()),
+                                  static_cast<std::uint32_t*>(value.get()),
+                                  static_cast<std::int64_t*>(numerator.get()),
+                                  static_cast<std::int32_t*>(denominator.get()), batch};
+    // Along y: line (x, z) at x M^2 + z, stride M; along x: line (y, z) at y M + z, stride M^2.
+    for (const LineSet axis : {LineSet{0, 0, m, m * m, m}, LineSet{0, 0, m, m, m * m}}) {
+        for (std::int64_t first = 0; first < lines; first += batch) {
+            LineSet part = axis;
+            part.first = first;
+            part.count = lines - first < batch ? lines - first : batch;
+            envelopePass<<<blocksFor(part.count), kThreads>>>(d, voxels, part, scratch);
+        }
+        synchronize("envelopePass");
+    }
+    return distances;
+}
+
+} // namespace sbpack::gpu::cuda

@@ -1,0 +1,74 @@
+// --device cuda (docs/gpu.md): the voxels, chi and pore-grid stages on the GPU, with the CPU
+// stages' progress lines and results (pipeline/stages/).
+#include "gpu/cuda_grid.hpp"
+#include "gpu/gpu_memory.hpp"
+#include "pipeline/resources.hpp"
+#include "pipeline/stage.hpp"
+#include "pipeline/stages/stages.hpp"
+
+#include <fmt/format.h>
+
+namespace sbpack::stages {
+
+namespace {
+
+/// The device's free memory now.
+std::size_t freeDeviceBytes() {
+    std::string reason;
+    const std::optional<CudaDevice> device = probeCudaDevice(reason);
+    if (!device) throw std::runtime_error("--device cuda: " + reason);
+    return device->freeBytes;
+}
+
+GpuMemoryPlan planFor(const RunSettings& settings, std::size_t freeBytes) {
+    const bool spectral =
+        settings.runs(Analysis::Voxels) || settings.runs(Analysis::SpectralDensity);
+    const bool pores =
+        settings.runs(Analysis::PoreSizes) && settings.poreMethod == PoreMethod::Voxel;
+    const int m = spectral ? settings.voxels : 0;
+    return planGpuMemory(m, pores ? settings.poreVoxels : 0, settings.fftSingle,
+                         m > 0 ? gpu::cuda::fftWorkBytes(m, settings.fftSingle) : 0, freeBytes);
+}
+
+} // namespace
+
+void checkCudaRun(const RunSettings& settings) {
+    const std::size_t freeBytes = freeDeviceBytes();
+    checkGpuMemory(planFor(settings, freeBytes), freeBytes, settings.device.description());
+}
+
+bool runCudaVoxels(FileContext& context, schema::Record& record) {
+    const int m = context.settings().voxels;
+    CudaGrid grid(context.packing(), m);
+    const double phiExact = context.packing().packingFraction();
+    context.progress().stageDone("voxelization (cuda)", grid.runtimeSeconds(),
+                                 fmt::format("{}^3, phi_voxel = {} (phi = {}), GPU bits {}", m,
+                                             describe(grid.phiVoxel()), describe(phiExact),
+                                             formatBytes(static_cast<double>(grid.deviceBytes()))));
+    setVoxelFigures(record, {m, grid.phiVoxel(), phiExact, grid.voxelSize(), grid.solidCount(),
+                             static_cast<double>(grid.deviceBytes()), grid.runtimeSeconds()});
+    context.keep(Analysis::Voxels, std::move(grid));
+    return true;
+}
+
+SpectralDensityResult cudaSpectralDensity(FileContext& context,
+                                          const SpectralDensityParameters& parameters) {
+    const CudaGrid& grid = context.kept<CudaGrid>(Analysis::Voxels);
+    return grid.spectralDensity(context.packing(), parameters, context.settings().fftSingle,
+                                context.progress());
+}
+
+PoreSizeMap cudaPoreSizeMap(const FileContext& context, int voxels) {
+    const CudaGrid grid(context.packing(), voxels);
+    context.progress().stageDone(
+        "pore voxelization (cuda)", grid.runtimeSeconds(),
+        fmt::format("{}^3, phi_voxel = {}", voxels, describe(grid.phiVoxel())));
+    const Stopwatch clock;
+    const GpuMemoryPlan plan = planGpuMemory(0, voxels, false, 0, freeDeviceBytes());
+    PoreSizeMap map = grid.poreSizeMap(plan.linesPerBatch);
+    context.progress().stageDone("distance transform (cuda)", clock.seconds(),
+                                 fmt::format("{} void voxels", map.voidCount()));
+    return map;
+}
+
+} // namespace sbpack::stages

@@ -1,0 +1,62 @@
+#include "gpu/gpu_memory.hpp"
+
+#include "gpu/cuda_kernels.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sbpack {
+
+namespace {
+
+constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+constexpr std::int64_t kFewestLines = 1024;
+constexpr double kMostScratchBytes = 4.0 * kGiB;
+
+} // namespace
+
+double gpuVoxelBytes(int voxels) {
+    const double m = voxels;
+    return m * m * gpu::wordsPerRow(voxels) * 4.0;
+}
+
+double gpuFftGridBytes(int voxels, bool single) {
+    const double m = voxels;
+    return m * m * (std::floor(m / 2) + 1) * 2.0 * (single ? 4.0 : 8.0);
+}
+
+GpuMemoryPlan planGpuMemory(int spectralVoxels, int poreVoxels, bool single,
+                            std::size_t fftWorkBytes, std::size_t freeBytes) {
+    GpuMemoryPlan plan;
+    const double kept = spectralVoxels > 0 ? gpuVoxelBytes(spectralVoxels) : 0.0;
+    if (spectralVoxels > 0)
+        plan.spectralBytes =
+            kept + gpuFftGridBytes(spectralVoxels, single) + static_cast<double>(fftWorkBytes);
+    if (poreVoxels > 0) {
+        const double m = poreVoxels;
+        const double grids = gpuVoxelBytes(poreVoxels) + m * m * m * 4.0;
+        const auto perLine =
+            static_cast<double>(gpu::cuda::envelopeScratchBytesPerLine(poreVoxels));
+        const double budget = std::min(
+            kMostScratchBytes, std::max(0.0, static_cast<double>(freeBytes) - kept - grids) / 2);
+        plan.linesPerBatch = std::clamp(static_cast<std::int64_t>(budget / perLine), kFewestLines,
+                                        static_cast<std::int64_t>(m * m));
+        plan.poreBytes = grids + perLine * static_cast<double>(plan.linesPerBatch);
+    }
+    plan.peakBytes = std::max(plan.spectralBytes, kept + plan.poreBytes);
+    return plan;
+}
+
+void checkGpuMemory(const GpuMemoryPlan& plan, std::size_t freeBytes, const std::string& device) {
+    if (plan.peakBytes <= static_cast<double>(freeBytes)) return;
+    throw std::runtime_error(fmt::format(
+        "--device cuda: the grids need {:.2f} GiB on the GPU (chi {:.2f} GiB, pores {:.2f} GiB), "
+        "but {} has {:.2f} GiB free; choose a smaller --voxels or --pore-voxels, or --device cpu",
+        plan.peakBytes / kGiB, plan.spectralBytes / kGiB, plan.poreBytes / kGiB, device,
+        static_cast<double>(freeBytes) / kGiB));
+}
+
+} // namespace sbpack

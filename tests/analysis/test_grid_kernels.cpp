@@ -1,0 +1,245 @@
+// The GPU's per-thread code (analysis/gpu/grid_kernels.hpp) run on the host against the CPU path,
+// and the host side of --device cuda: what can be tested without a GPU (docs/gpu.md).
+#include "gpu/compute_device.hpp"
+#include "gpu/gpu_memory.hpp"
+#include "gpu/grid_kernels.hpp"
+#include "gpu/particle_images.hpp"
+#include "io/packing_io.hpp"
+#include "pores/distance_transform.hpp"
+#include "spectral/spectral_density.hpp"
+#include "spectral/voxel_fourier_transform.hpp"
+#include "test_packings.hpp"
+#include "voxels/voxelization.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+namespace sbpack {
+namespace {
+
+using gpu::kNoSite;
+
+/// The voxel words of a packing as the kernel voxelizeImages makes them, on the host.
+std::vector<std::uint32_t> hostVoxelWords(const Packing& packing, int m) {
+    const gpu::VoxelGeometry g = gpu::voxelGeometry(packing, m);
+    std::vector<std::uint32_t> words(static_cast<std::size_t>(m) * m * gpu::wordsPerRow(m), 0);
+    for (const gpu::ParticleImage& image : gpu::particleImages(packing)) {
+        const gpu::ImageRows rows = gpu::imageRows(image, g);
+        for (int r = 0; r < rows.count(); ++r)
+            gpu::imageRow(image, rows.xOf(r), rows.yOf(r), g,
+                          [&words](std::int64_t word, std::uint32_t bits) { words[word] |= bits; });
+    }
+    return words;
+}
+
+std::vector<std::uint8_t> maskOfWords(const std::vector<std::uint32_t>& words, int m) {
+    const std::int64_t w = gpu::wordsPerRow(m);
+    std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m);
+    for (std::int64_t row = 0; row < std::int64_t{m} * m; ++row)
+        for (int k = 0; k < m; ++k)
+            mask[row * m + k] = (words[row * w + k / 32] >> (k % 32)) & 1u;
+    return mask;
+}
+
+std::vector<std::uint32_t> wordsOfMask(const std::vector<std::uint8_t>& mask, int m) {
+    const std::int64_t w = gpu::wordsPerRow(m);
+    std::vector<std::uint32_t> words(static_cast<std::size_t>(m) * m * w, 0);
+    for (std::int64_t row = 0; row < std::int64_t{m} * m; ++row)
+        for (int k = 0; k < m; ++k)
+            if (mask[row * m + k] != 0) words[row * w + k / 32] |= 1u << (k % 32);
+    return words;
+}
+
+/// The kernels rowPass and envelopePass (along y, then x) on the host, one line at a time.
+std::vector<std::uint32_t> hostSquaredDistances(const std::vector<std::uint32_t>& words, int m) {
+    const std::int64_t mm = m, w = gpu::wordsPerRow(m);
+    std::vector<std::uint32_t> d(static_cast<std::size_t>(mm * mm * mm));
+    for (std::int64_t row = 0; row < mm * mm; ++row)
+        gpu::rowDistances(words.data() + row * w, m, d.data() + row * mm);
+    std::vector<std::int32_t> site(2 * m + 1), denominator(2 * m + 1);
+    std::vector<std::uint32_t> value(2 * m + 1);
+    std::vector<std::int64_t> numerator(2 * m + 1);
+    const gpu::EnvelopeScratch s{site.data(), value.data(), numerator.data(), denominator.data(),
+                                 1};
+    for (std::int64_t x = 0; x < mm; ++x) // along y
+        for (std::int64_t z = 0; z < mm; ++z)
+            gpu::envelopeLine(d.data() + x * mm * mm + z, mm, m, d.data() + x * mm * mm + z, mm, s);
+    for (std::int64_t y = 0; y < mm; ++y) // along x
+        for (std::int64_t z = 0; z < mm; ++z)
+            gpu::envelopeLine(d.data() + y * mm + z, mm * mm, m, d.data() + y * mm + z, mm * mm, s);
+    return d;
+}
+
+std::vector<std::uint8_t> cpuMask(const Packing& packing, int m) {
+    std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m);
+    Voxelizer({m}).compute(packing, Progress()).copySolidMask(mask);
+    return mask;
+}
+
+Packing storedPacking(const char* name) {
+    return readPacking(std::string(SBPACK_DATA_DIR) + "/" + name);
+}
+
+TEST(GridKernels, ImageRowsVoxeliseAsTheCpu) {
+    for (double p : {0.5, 0.75, 1.0, 1.5, 3.0, 10.0}) {
+        const double spacing = 2.0 * Superball(p, 0.5).circumradius() + 0.3;
+        const Packing packing = testing::latticePacking(p, 3, spacing, 0.1, 7);
+        for (int m : {Voxelizer::minimumVoxels(packing), 64}) {
+            const std::vector<std::uint8_t> expected = cpuMask(packing, m);
+            EXPECT_EQ(maskOfWords(hostVoxelWords(packing, m), m), expected)
+                << "p " << p << " M " << m;
+        }
+    }
+    const Packing mrj = storedPacking("mrj-p1.5-1000.h5");
+    EXPECT_EQ(maskOfWords(hostVoxelWords(mrj, 90), 90), cpuMask(mrj, 90));
+}
+
+TEST(GridKernels, RowDistancesWrapAroundTheBox) {
+    std::uint32_t word = 1u; // one solid voxel at z = 0 of a row of 10
+    std::vector<std::uint32_t> out(10);
+    gpu::rowDistances(&word, 10, out.data());
+    EXPECT_EQ(out, (std::vector<std::uint32_t>{0, 1, 4, 9, 16, 25, 16, 9, 4, 1}));
+    word = 0u;
+    gpu::rowDistances(&word, 10, out.data());
+    EXPECT_EQ(out, std::vector<std::uint32_t>(10, kNoSite));
+}
+
+TEST(GridKernels, EnvelopeLineIsTheBruteForceMinimum) {
+    std::mt19937_64 rng(3);
+    for (int m : {1, 2, 3, 8, 17, 64}) {
+        std::vector<std::int32_t> site(2 * m + 1), denominator(2 * m + 1);
+        std::vector<std::uint32_t> value(2 * m + 1);
+        std::vector<std::int64_t> numerator(2 * m + 1);
+        const gpu::EnvelopeScratch s{site.data(), value.data(), numerator.data(),
+                                     denominator.data(), 1};
+        for (int trial = 0; trial < 200; ++trial) {
+            std::vector<std::uint32_t> f(m);
+            for (auto& v : f)
+                v = rng() % 3 == 0 ? kNoSite : static_cast<std::uint32_t>(rng() % (m * m + 1));
+            std::vector<std::uint32_t> expected(m, kNoSite);
+            for (int p = 0; p < m; ++p)
+                for (int q = 0; q < m; ++q) {
+                    if (f[q] == kNoSite) continue;
+                    const std::int64_t d = std::min(std::abs(p - q), m - std::abs(p - q));
+                    expected[p] = std::min<std::uint32_t>(expected[p], f[q] + d * d);
+                }
+            gpu::envelopeLine(f.data(), 1, m, f.data(), 1, s); // in place, as the kernels
+            ASSERT_EQ(f, expected) << "M " << m << " trial " << trial;
+        }
+    }
+}
+
+TEST(GridKernels, DistancePassesEqualTheCpuTransform) {
+    std::mt19937_64 rng(11);
+    for (int m : {2, 5, 16, 31, 40}) {
+        for (double solidFraction : {0.5, 0.05, 0.002}) {
+            std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m);
+            for (auto& v : mask)
+                v = std::uniform_real_distribution<double>()(rng) < solidFraction;
+            mask.front() = 1; // at least one solid and one void voxel
+            mask.back() = 0;
+            const PoreSizeMap cpu = periodicDistanceTransform(mask, m, 1.0);
+            const std::vector<std::uint32_t> expected(cpu.squaredDistances().begin(),
+                                                      cpu.squaredDistances().end());
+            ASSERT_EQ(hostSquaredDistances(wordsOfMask(mask, m), m), expected)
+                << "M " << m << " solid fraction " << solidFraction;
+        }
+    }
+    const Packing mrj = storedPacking("mrj-p1.5-1000.h5");
+    const std::vector<std::uint8_t> mask = cpuMask(mrj, 70);
+    const PoreSizeMap cpu = periodicDistanceTransform(mask, 70, mrj.boxLength / 70);
+    EXPECT_EQ(
+        hostSquaredDistances(wordsOfMask(mask, 70), 70),
+        std::vector<std::uint32_t>(cpu.squaredDistances().begin(), cpu.squaredDistances().end()));
+}
+
+/// The GPU's compact cube of low wave vectors (cuda_kernels.hpp, gatherCube) gives the shells of
+/// the whole grid bit for bit: the same coefficients are added in the same order.
+TEST(GridKernels, CompactCubeGivesTheWholeGridShells) {
+    const Packing packing = testing::latticePacking(1.5, 3, 2.0, 0.15, 5);
+    const int m = 36, s = 12;
+    const Voxelization voxels = Voxelizer({m}).compute(packing, Progress());
+    FftSettings fft;
+    fft.planning = FftPlanning::Estimate;
+    fft.wisdomFile.clear();
+    const VoxelFourierTransform transform(voxels, fft, Progress());
+    const int rows = 2 * s + 1;
+    std::vector<double> cube;
+    for (int ox = 0; ox < rows; ++ox)
+        for (int oy = 0; oy < rows; ++oy)
+            for (int kz = 0; kz <= s; ++kz) {
+                const int nx = ox <= s ? ox : ox - rows, ny = oy <= s ? oy : oy - rows;
+                const std::complex<double> c =
+                    transform.coefficient((nx + m) % m, (ny + m) % m, kz);
+                cube.push_back(c.real());
+                cube.push_back(c.imag());
+            }
+    const double a = voxels.voxelSize(), l = packing.boxLength;
+    const ShellAverage whole =
+        spectralShellSums({transform.data(), m, 0, m, m, m / 2 + 1}, a, l, s, Progress(), true)
+            .average();
+    const ShellAverage compact =
+        spectralShellSums({cube.data(), m, 0, rows, rows, s + 1}, a, l, s, Progress(), true)
+            .average();
+    EXPECT_EQ(compact.value, whole.value);
+    EXPECT_EQ(compact.count, whole.count);
+    EXPECT_EQ(compact.q, whole.q);
+}
+
+TEST(GpuMemory, PlanAddsTheGridsAndBoundsTheScratch) {
+    constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
+    EXPECT_EQ(gpuVoxelBytes(500), 500.0 * 500 * 16 * 4);
+    EXPECT_EQ(gpuFftGridBytes(500, false), 500.0 * 500 * 251 * 16);
+    EXPECT_EQ(gpuFftGridBytes(500, true), 500.0 * 500 * 251 * 8);
+    const auto big = static_cast<std::size_t>(80 * kGiB);
+    const GpuMemoryPlan plan = planGpuMemory(500, 500, false, 1000, big);
+    EXPECT_EQ(plan.spectralBytes, gpuVoxelBytes(500) + gpuFftGridBytes(500, false) + 1000);
+    const double perLine = 1001.0 * 20;
+    EXPECT_EQ(plan.linesPerBatch, static_cast<std::int64_t>(4 * kGiB / perLine)); // the 4 GiB cap
+    EXPECT_EQ(plan.poreBytes,
+              gpuVoxelBytes(500) + 500.0 * 500 * 500 * 4 + perLine * plan.linesPerBatch);
+    EXPECT_EQ(plan.peakBytes, std::max(plan.spectralBytes, gpuVoxelBytes(500) + plan.poreBytes));
+    EXPECT_NO_THROW(checkGpuMemory(plan, big, "test GPU"));
+    // A small device: the fewest lines, and a refusal naming the sizes and the options.
+    const GpuMemoryPlan small =
+        planGpuMemory(0, 500, false, 0, static_cast<std::size_t>(0.1 * kGiB));
+    EXPECT_EQ(small.linesPerBatch, 1024);
+    try {
+        checkGpuMemory(small, static_cast<std::size_t>(0.1 * kGiB), "test GPU");
+        FAIL() << "no refusal";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("0.10 GiB free"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("--pore-voxels"), std::string::npos) << e.what();
+    }
+}
+
+TEST(ComputeDevice, NamesAndRefusals) {
+    EXPECT_EQ(computeDeviceFromName("cpu"), ComputeDevice::Cpu);
+    EXPECT_EQ(computeDeviceFromName("cuda"), ComputeDevice::Cuda);
+    EXPECT_EQ(computeDeviceFromName("auto"), ComputeDevice::Auto);
+    EXPECT_THROW(computeDeviceFromName("gpu"), std::invalid_argument);
+    EXPECT_EQ(resolveComputeDevice(ComputeDevice::Cpu, "").description(), "cpu");
+    // An analysis the GPU does not run keeps auto on the CPU and refuses cuda, naming it.
+    EXPECT_EQ(resolveComputeDevice(ComputeDevice::Auto, "hyper needs it").device,
+              ComputeDevice::Cpu);
+    try {
+        resolveComputeDevice(ComputeDevice::Cuda, "hyper needs it");
+        FAIL() << "no refusal";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("--device cuda: hyper needs it"), std::string::npos);
+    }
+    std::string reason;
+    if (probeCudaDevice(reason)) GTEST_SKIP() << "a CUDA device is present: nothing refused";
+    EXPECT_FALSE(reason.empty());
+    if (!builtWithCuda()) {
+        EXPECT_NE(reason.find("SBPACK_WITH_CUDA=ON"), std::string::npos);
+    }
+    EXPECT_EQ(resolveComputeDevice(ComputeDevice::Auto, "").device, ComputeDevice::Cpu);
+    EXPECT_THROW(resolveComputeDevice(ComputeDevice::Cuda, ""), std::invalid_argument);
+}
+
+} // namespace
+} // namespace sbpack

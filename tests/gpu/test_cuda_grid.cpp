@@ -1,0 +1,124 @@
+// The GPU grid analysis against the CPU path on a real GPU (docs/gpu.md): the acceptance of the
+// voxels (bit for bit), the distances (exactly) and chi_V (1e-10 relative in double precision).
+// Every test reports skipped, not passed, where no CUDA device is present.
+#include "gpu/compute_device.hpp"
+#include "gpu/cuda_grid.hpp"
+#include "gpu/gpu_memory.hpp"
+#include "io/packing_io.hpp"
+#include "pores/distance_transform.hpp"
+#include "spectral/spectral_density.hpp"
+#include "voxels/voxelization.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace sbpack {
+namespace {
+
+class CudaGridTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        std::string reason;
+        if (!probeCudaDevice(reason)) GTEST_SKIP() << "no CUDA device: " << reason;
+    }
+};
+
+/// data/ of the source tree, or $SBPACK_DATA_DIR where the tests run from a bundle on another
+/// machine (scripts/gpu-check.sh).
+Packing storedPacking(const std::string& name) {
+    const char* moved = std::getenv("SBPACK_DATA_DIR");
+    return readPacking(std::string(moved != nullptr ? moved : SBPACK_DATA_DIR) + "/" + name);
+}
+
+struct Case {
+    const char* file;
+    int voxels;
+};
+constexpr Case kCases[] = {{"mrj-p1.5-1000.h5", 100},
+                           {"mrj-p1.5-1000.h5", 257},
+                           {"mrj-spheres-5000.h5", 200},
+                           {"dense-p10-200.h5", 128},
+                           {"mrj-p1.5-5000.h5", 500}};
+
+std::vector<std::uint8_t> cpuMask(const Packing& packing, int m) {
+    std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m);
+    Voxelizer({m}).compute(packing, Progress()).copySolidMask(mask);
+    return mask;
+}
+
+TEST_F(CudaGridTest, VoxelsEqualTheCpuBitForBit) {
+    for (const Case& c : kCases) {
+        const Packing packing = storedPacking(c.file);
+        const CudaGrid grid(packing, c.voxels);
+        const std::vector<std::uint8_t> expected = cpuMask(packing, c.voxels);
+        EXPECT_EQ(grid.solidMask(), expected) << c.file << " M " << c.voxels;
+        EXPECT_EQ(grid.solidCount(), std::count(expected.begin(), expected.end(), 1));
+    }
+}
+
+TEST_F(CudaGridTest, DistancesEqualTheCpuExactly) {
+    for (const Case& c : kCases) {
+        const Packing packing = storedPacking(c.file);
+        const CudaGrid grid(packing, c.voxels);
+        const PoreSizeMap cpu =
+            periodicDistanceTransform(cpuMask(packing, c.voxels), c.voxels, grid.voxelSize());
+        for (std::int64_t lines : {std::int64_t{1024}, std::int64_t{1} << 30}) {
+            const PoreSizeMap gpu = grid.poreSizeMap(lines);
+            ASSERT_TRUE(std::ranges::equal(gpu.squaredDistances(), cpu.squaredDistances()))
+                << c.file << " M " << c.voxels << ", " << lines << " lines per batch";
+            EXPECT_EQ(gpu.voidCount(), cpu.voidCount());
+            EXPECT_EQ(gpu.maxSquaredDistance(), cpu.maxSquaredDistance());
+        }
+    }
+}
+
+/// Largest |chi - chi_cpu| / chi_cpu over the shells.
+double largestRelativeDifference(const ShellAverage& a, const ShellAverage& b) {
+    double worst = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        worst = std::max(worst, std::abs(a.value[i] - b.value[i]) / std::abs(b.value[i]));
+    return worst;
+}
+
+TEST_F(CudaGridTest, ChiAgreesWithTheCpu) {
+    SpectralDensityParameters parameters;
+    parameters.fft.planning = FftPlanning::Estimate;
+    parameters.fft.wisdomFile.clear();
+    for (const Case& c : kCases) {
+        const Packing packing = storedPacking(c.file);
+        const SpectralDensityResult cpu =
+            SpectralDensity(parameters)
+                .compute(packing, Voxelizer({c.voxels}).compute(packing, Progress()), Progress());
+        const CudaGrid grid(packing, c.voxels);
+        const SpectralDensityResult gpu =
+            grid.spectralDensity(packing, parameters, false, Progress());
+        ASSERT_EQ(gpu.shells.count, cpu.shells.count);
+        EXPECT_LE(largestRelativeDifference(gpu.shells, cpu.shells), 1e-10) << c.file;
+        const SpectralDensityResult single =
+            grid.spectralDensity(packing, parameters, true, Progress());
+        const double error = largestRelativeDifference(single.shells, cpu.shells);
+        std::cout << "[ single precision ] " << c.file << " M " << c.voxels << ": largest relative "
+                  << "error of chi over " << cpu.maxShell << " shells " << error
+                  << ", double: " << largestRelativeDifference(gpu.shells, cpu.shells) << '\n';
+        EXPECT_LE(error, 1e-3) << c.file;
+    }
+}
+
+TEST_F(CudaGridTest, PlanMatchesTheDevice) {
+    std::string reason;
+    const CudaDevice device = *probeCudaDevice(reason);
+    const GpuMemoryPlan plan =
+        planGpuMemory(500, 500, false, gpu::cuda::fftWorkBytes(500, false), device.freeBytes);
+    EXPECT_NO_THROW(checkGpuMemory(plan, device.freeBytes, device.describe()));
+    std::cout << "[ device ] " << device.describe() << ", plan at 500^3: peak "
+              << plan.peakBytes / 1e9 << " GB, " << plan.linesPerBatch << " lines per batch\n";
+}
+
+} // namespace
+} // namespace sbpack
