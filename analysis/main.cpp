@@ -3,7 +3,26 @@
 #include "cli/command_line.hpp"
 #include "io/read_guard.hpp"
 
+#include <cstdlib>
 #include <iostream>
+#include <stdexcept>
+
+namespace sbpack {
+namespace {
+
+/// io/read_guard.hpp with its 60 s; false, with the message, for a bad SBPACK_READ_DEADLINE_S.
+bool armSbanalyzeReadGuard() {
+    try {
+        armReadGuard("sbanalyze", 60.0);
+        return true;
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "sbanalyze: error: " << e.what() << '\n';
+        return false;
+    }
+}
+
+} // namespace
+} // namespace sbpack
 
 #ifdef SBPACK_WITH_MPI
 #include "mpi/mpi_communicator.hpp"
@@ -11,7 +30,7 @@
 #include <sstream>
 
 int main(int argc, char** argv) {
-    sbpack::armReadGuard("sbanalyze", 60.0); // io/read_guard.hpp
+    if (!sbpack::armSbanalyzeReadGuard()) return EXIT_FAILURE;
     const sbpack::MpiSession session(argc, argv);
     const sbpack::MpiCommunicator world;
     if (world.rank() == 0) return sbpack::runCommandLine(argc, argv, std::cout, std::cerr, world);
@@ -21,7 +40,7 @@ int main(int argc, char** argv) {
 }
 #else
 int main(int argc, char** argv) {
-    sbpack::armReadGuard("sbanalyze", 60.0); // io/read_guard.hpp
+    if (!sbpack::armSbanalyzeReadGuard()) return EXIT_FAILURE;
     return sbpack::runCommandLine(argc, argv, std::cout, std::cerr);
 }
 #endif

@@ -131,7 +131,12 @@ int generate(const sbpack::GeneratorOptions& o) {
 } // namespace
 
 int main(int argc, char** argv) {
-    sbpack::armReadGuard("sbgen", 60.0); // io/read_guard.hpp
+    try {
+        sbpack::armReadGuard("sbgen", 60.0); // io/read_guard.hpp
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "sbgen: error: " << e.what() << '\n';
+        return EXIT_FAILURE;
+    }
     if (argc == 1) {
         std::cerr << sbpack::generatorUsage();
         return EXIT_FAILURE;

@@ -46,12 +46,14 @@ exec > >(tee "$log") 2>&1
 [ -f "$bundle/sbanalyze-cuda.tar.xz" ] || { echo "gpu-check: no $bundle (run --bundle first)"; exit 1; }
 run=$(mktemp -d)
 tar -C "$run" -xJf "$bundle/sbanalyze-cuda.tar.xz"
-# cuFFT from the image: the toolkit's lib64, or the wheel nvidia-cufft beside PyTorch.
-cufft=$( (ldconfig -p | awk '/libcufft\.so\.12 /{print $NF}'; \
-          ls /usr/local/cuda/lib64/libcufft.so.12 /usr/local/cuda/targets/*/lib/libcufft.so.12 \
-             $(python3 -c 'import nvidia, os; print(os.path.dirname(nvidia.__path__[0]))' 2>/dev/null)/nvidia/cu*/lib/libcufft.so.12 \
-             $(python3 -c 'import nvidia, os; print(os.path.dirname(nvidia.__path__[0]))' 2>/dev/null)/nvidia/cufft/lib/libcufft.so.12 \
-             2>/dev/null) | head -1)
+# cuFFT from the image: ldconfig's, the toolkit's, or the wheel nvidia-cufft beside PyTorch.
+wheels=$(python3 -c 'import nvidia, os; print(os.path.dirname(nvidia.__path__[0]))' 2>/dev/null || true)
+cufft=""
+for candidate in $(ldconfig -p 2>/dev/null | awk '/libcufft\.so\.12 /{print $NF}') \
+    /usr/local/cuda/lib64/libcufft.so.12 /usr/local/cuda/targets/*/lib/libcufft.so.12 \
+    ${wheels:+$wheels/nvidia/cu*/lib/libcufft.so.12 $wheels/nvidia/cufft/lib/libcufft.so.12}; do
+    if [ -f "$candidate" ]; then cufft=$candidate; break; fi
+done
 export LD_LIBRARY_PATH="$run/lib${cufft:+:$(dirname "$cufft")}${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export SBPACK_DATA_DIR="$PWD/data"
 echo "gpu-check: $(date -u +%FT%TZ) on $(hostname), $(nproc) cores, cuFFT ${cufft:-not found}"
@@ -63,7 +65,7 @@ status=0
 "$run/gpu_tests" --gtest_color=no || status=$?
 
 echo "== benchmark: data/mrj-p1.5-5000.h5, voxels + chi + pores, CPU ($(nproc) threads) vs cuda"
-echo "grid,device,wall_s,voxels_s,chi_s,pores_s,phi_voxel,chi_peak,pore_mean_w,status" >"$out/gpu-bench.csv"
+echo "grid,device,wall_s,voxels_s,chi_s,pores_s,stages_s,phi_voxel,chi_peak,pore_mean_w,status" >"$out/gpu-bench.csv"
 bench() { # M DEVICE COMPUTE LIMIT_S
     local m=$1 device=$2 compute=$3 json="$out/bench-$1-$2.json" start end rc=0
     start=$(date +%s.%N)
@@ -81,7 +83,9 @@ done
 bench 2000 cuda pores 120
 bench 2000 cpu pores 150
 column -s, -t "$out/gpu-bench.csv"
-python3 scripts/gpu_bench_row.py --figure "$out/gpu-bench.csv" "$out/gpu-bench.png" || true
+python3 scripts/gpu_bench_row.py --figure "$out/gpu-bench.csv" "$out/gpu-bench.png" ||
+    /usr/bin/python3 scripts/gpu_bench_row.py --figure "$out/gpu-bench.csv" "$out/gpu-bench.png" ||
+    echo "gpu-check: no figure (no matplotlib)"
 rm -rf "$run"
 echo "gpu-check: GPU tests exit $status"
 exit "$status"

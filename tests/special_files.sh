@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# Special files and same-file outputs (issue 20, defects 1, 3, 11): a FIFO input is refused at
-# once by every command (never a hang); a device or FIFO output is refused and left as it was
-# (never renamed over); an output that is its own input (by inode, through a hard link too) is
-# refused and the input is unchanged.
+# Special files and same-file outputs (issue 20, defects 1, 3, 11; issue 46, defects 1-4, 7, 8,
+# 10, 13): a FIFO input is refused at once by every command (never a hang); a device or FIFO
+# output is refused and left as it was (never renamed over); an output that is its own input
+# (by inode, through a hard link too), an export or another output is refused and nothing
+# changes; a symbolic link output stays a link to the new file; standard output that cannot be
+# written is an error; a FIFO wisdom file is skipped with a warning, never opened.
 # usage: special_files.sh SBGEN SBANALYZE PACKING.h5 WORKDIR
 set -uo pipefail
 sbgen=$1 sbanalyze=$2 packing=$3 work=$4
@@ -43,4 +45,34 @@ expect "is also the input" "$sbanalyze" convert good.h5 hard.h5
 expect "is also the input" "$sbanalyze" good.h5 --compute contacts --out hard.h5
 expect "is also the input" "$sbgen" --resume good.h5 --out hard.h5
 [[ "$(md5sum good.h5)" == "$sum" ]] || { echo "FAIL: the input changed"; failures=$((failures + 1)); }
+# An output that is another output or an export (issue 46, defect 1; 13).
+mkdir -p v && echo precious >v/good.vdb
+vdb=(--vdb v --compute voxels --voxels 40 --fft-plan estimate)
+expect "is also where --vdb exports" "$sbanalyze" good.h5 --out v/good.vdb "${vdb[@]}"
+expect "is also where --vdb exports" "$sbanalyze" good.h5 --json v/good.vdb "${vdb[@]}"
+[[ "$(cat v/good.vdb)" == precious ]] || { echo "FAIL: an export path replaced"; failures=$((failures + 1)); }
+expect "again: each packing counts once" "$sbanalyze" good.h5 hard.h5 --compute contacts --json -
+expect "name the same file" "$sbgen" --n 10 --out same.h5 --checkpoint ./same.h5
+# Standard output that cannot be written (defect 2).
+for command in "good.h5 --compute contacts --json -" "info good.h5" "schema --json"; do
+    expect "cannot write to standard output" sh -c "\"\$0\" $command >/dev/full" "$sbanalyze"
+done
+# A symbolic link as output: written through, the link kept (defect 3).
+mkdir -p target && ln -s target/real.h5 link.h5
+if "$sbanalyze" convert good.h5 link.h5 2>/dev/null && [[ -L link.h5 && -f target/real.h5 ]]; then :
+else echo "FAIL: the link output was replaced or its target not written"; failures=$((failures + 1)); fi
+# A FIFO as the FFTW wisdom: skipped with a warning, the run completes (defect 4).
+output=$(timeout 20 "$sbanalyze" good.h5 --compute chi --voxels 40 --fft-plan measure \
+         --fft-wisdom fifo.h5 --json - 2>&1); rc=$?
+if [[ $rc -ne 0 || "$output" != *"is not a regular file"* ]]; then
+    echo "FAIL (rc $rc): FIFO wisdom: $output"; failures=$((failures + 1))
+fi
+# Bad values refused at once, naming their option or variable (defects 7, 8, 10).
+expect "exceed the 500^3" "$sbanalyze" good.h5 --compute pores --pore-points 1099511627776 --json -
+expect "use a smaller --pore-voxels" "$sbanalyze" good.h5 --compute pores --pore-voxels 10000 --json -
+for deadline in 1e10 99999999999 1e400 0 -1 abc ""; do
+    expect "SBPACK_READ_DEADLINE_S='$deadline' is not a number" \
+        env SBPACK_READ_DEADLINE_S="$deadline" "$sbanalyze" info good.h5
+done
+expect "SBPACK_READ_DEADLINE_S='abc' is not a number" env SBPACK_READ_DEADLINE_S=abc "$sbgen" --resume good.h5 --out y.h5
 [[ $failures -eq 0 ]] && echo "special files: ok"

@@ -12,8 +12,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <ostream>
 #include <stdexcept>
@@ -385,6 +387,12 @@ void CommandLine::finishAnalysis() {
         throw std::invalid_argument(
             fmt::format("option --pore-voxels: {} is above {}, the largest grid of --pores refined",
                         settings_.poreVoxels, maxFeatureTransformVoxels));
+    const std::int64_t m = settings_.poreVoxels;
+    if (settings_.poreMethod != PoreMethod::Exact && settings_.porePoints > m * m * m)
+        throw std::invalid_argument(fmt::format(
+            "option --pore-points: K = {} random void voxels exceed the {}^3 = {} voxels of "
+            "--pore-voxels (every void voxel, --pore-points 0, is the exact answer and cheaper)",
+            settings_.porePoints, m, m * m * m));
     static_cast<void>(ContactNetwork(settings_.contacts)); // throws on a bad tolerance or threshold
     if (!app_.get_subcommands().empty()) return;           // info, convert, schema: no grids
     settings_.device = resolveComputeDevice(device_, settings_.cpuOnlyReason());
@@ -424,8 +432,10 @@ std::string usage() {
     return commandLine.app().help();
 }
 
-int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
-                   const Communicator& communicator) {
+namespace {
+
+int runParsed(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+              const Communicator& communicator) {
     CommandLine commandLine(communicator);
     if (argc <= 1) {
         err << commandLine.app().help();
@@ -442,6 +452,23 @@ int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::os
         err << "sbanalyze: error: " << e.what() << '\n';
     }
     return EXIT_FAILURE;
+}
+
+} // namespace
+
+int runCommandLine(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
+                   const Communicator& communicator) {
+    const int status = runParsed(argc, argv, out, err, communicator);
+    // What went to standard output (--json -, info, schema, --help) must have arrived: a full
+    // disk or a closed pipe is an error, not a silent loss (docs/reliability.md).
+    errno = 0;
+    out.flush();
+    if (out.fail()) {
+        err << "sbanalyze: error: cannot write to standard output"
+            << (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string()) << '\n';
+        return EXIT_FAILURE;
+    }
+    return status;
 }
 
 RunSettings parseAnalyzeArguments(const std::vector<std::string>& args) {

@@ -132,6 +132,8 @@ bool probe(DeviceInfo& info, std::string& reason) {
     info.computeMajor = properties.major;
     info.computeMinor = properties.minor;
     info.multiprocessors = properties.multiProcessorCount;
+    // The context now (cudaFree(nullptr) creates it), so that no stage's time includes it.
+    check(cudaFree(nullptr), "cudaFree");
     check(cudaMemGetInfo(&info.freeBytes, &info.totalBytes), "cudaMemGetInfo");
     return true;
 }

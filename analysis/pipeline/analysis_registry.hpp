@@ -35,7 +35,8 @@ enum class VoxelGrid { None, Spectral, Pore };
 /// The largest transient allocation of a stage, for the memory check before a run.
 struct StageMemory {
     double bytes = 0.0;
-    std::string what; ///< e.g. "FFT grid 300^3"
+    std::string what;   ///< e.g. "FFT grid 300^3"
+    std::string option; ///< the option that sizes it, e.g. "--voxels"
 };
 
 /// Runs one analysis on the file of `context` and fills `record` (its results group); returns

@@ -25,15 +25,18 @@ std::string formatBytes(double bytes) {
 
 MemoryEstimate estimateMemory(const Packing& packing, const RunSettings& settings) {
     MemoryEstimate estimate;
-    auto add = [&](const std::string& what, double bytes) {
+    auto add = [&](const std::string& what, double bytes, const std::string& option) {
         estimate.bytes += bytes;
         estimate.breakdown +=
             (estimate.breakdown.empty() ? "" : ", ") + what + " " + formatBytes(bytes);
+        if (estimate.options.find(option) == std::string::npos)
+            estimate.options += (estimate.options.empty() ? "" : " or ") + option;
     };
     // Voxelizations are kept while the file is analysed, one per grid.
     for (VoxelGrid grid : settings.grids()) {
         const int m = settings.voxelsOf(grid);
-        add("voxel tree " + std::to_string(m) + "^3", Voxelizer::memoryEstimateBytes(packing, m));
+        add("voxel tree " + std::to_string(m) + "^3", Voxelizer::memoryEstimateBytes(packing, m),
+            grid == VoxelGrid::Pore ? "--pore-voxels" : "--voxels");
     }
     // The stages after the voxelization run one at a time: the largest counts.
     StageMemory largest;
@@ -42,7 +45,7 @@ MemoryEstimate estimateMemory(const Packing& packing, const RunSettings& setting
             StageMemory stage = memory(packing, settings);
             if (stage.bytes > largest.bytes) largest = std::move(stage);
         }
-    if (largest.bytes > 0.0) add(largest.what, largest.bytes);
+    if (largest.bytes > 0.0) add(largest.what, largest.bytes, largest.option);
     return estimate;
 }
 
@@ -54,7 +57,7 @@ void checkMemory(const Packing& packing, const RunSettings& settings, const std:
         throw std::invalid_argument(
             source + ": the analyses need about " + formatBytes(estimate.bytes) + " of memory (" +
             estimate.breakdown + "), more than the " + formatBytes(*available) +
-            " available; use a smaller --voxels or --qmax");
+            " available; use a smaller " + estimate.options);
 }
 
 } // namespace sbpack

@@ -14,6 +14,7 @@ namespace sbpack {
 struct MemoryEstimate {
     double bytes = 0.0;
     std::string breakdown; ///< e.g. "FFT grid 217 MB, voxel tree 9 MB"
+    std::string options;   ///< the options that size them, e.g. "--voxels or --pore-voxels"
 };
 MemoryEstimate estimateMemory(const Packing& packing, const RunSettings& settings);
 

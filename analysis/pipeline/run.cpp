@@ -11,6 +11,7 @@
 #include "voxels/voxelization.hpp"
 
 #include <fmt/format.h>
+#include <sys/stat.h>
 
 #include <fstream>
 #include <map>
@@ -77,7 +78,19 @@ std::vector<std::map<Analysis, fs::path>> vdbTargets(const RunSettings& settings
     return targets;
 }
 
-/// The outputs can be written and overwrite neither each other nor an input.
+/// The results and JSON files are none of the .vdb exports (each would replace the other).
+void checkNotExported(const RunSettings& settings, const std::vector<fs::path>& outputs) {
+    for (const std::map<Analysis, fs::path>& exports : vdbTargets(settings))
+        for (const auto& [analysis, target] : exports)
+            for (const fs::path& output : outputs)
+                if (sameDestination(output, target))
+                    throw std::invalid_argument("output " + quotedName(output) +
+                                                " is also where --vdb exports " +
+                                                std::string(analysisInfo(analysis).name) +
+                                                ": name another file or --vdb directory");
+}
+
+/// The outputs can be written and overwrite neither each other, an export nor an input.
 void checkOutputs(const RunSettings& settings) {
     if (settings.output.empty() && settings.json.empty())
         throw std::invalid_argument("nothing to write: give --out RESULTS.h5 and/or --json FILE");
@@ -86,16 +99,27 @@ void checkOutputs(const RunSettings& settings) {
     if (!settings.json.empty() && settings.json != "-") outputs.push_back(settings.json);
     for (std::size_t i = 0; i < outputs.size(); ++i) {
         checkWritable(outputs[i]);
-        const fs::path target = fs::weakly_canonical(outputs[i]);
-        if (i == 1 && target == fs::weakly_canonical(outputs[0]))
+        if (i == 1 && sameDestination(outputs[1], outputs[0]))
             throw std::invalid_argument("--out and --json name the same file " +
                                         quotedName(outputs[i]));
-        for (const fs::path& input : settings.inputs) {
-            if (target == fs::weakly_canonical(input))
-                throw std::invalid_argument("output " + quotedName(outputs[i]) +
-                                            " is also an input");
+        for (const fs::path& input : settings.inputs)
             checkNotInput(outputs[i], input, "input");
-        }
+    }
+    checkNotExported(settings, outputs);
+}
+
+/// No input is given twice (through links and other spellings): it would count twice in its
+/// ensemble, with a standard deviation that says nothing.
+void checkDistinctInputs(const RunSettings& settings) {
+    std::map<std::pair<dev_t, ino_t>, fs::path> seen;
+    for (const fs::path& input : settings.inputs) {
+        struct stat status {};
+        if (::stat(input.c_str(), &status) != 0) continue; // the reader names a missing file
+        const auto [at, fresh] = seen.emplace(std::pair{status.st_dev, status.st_ino}, input);
+        if (!fresh)
+            throw std::invalid_argument("input " + quotedName(input) + " is the file " +
+                                        quotedName(at->second) +
+                                        " again: each packing counts once in its ensemble");
     }
 }
 
@@ -277,6 +301,7 @@ RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostr
     collectively(comm, [&] {
         checkDistribution(settings, comm);
         if (!settings.plan) checkOutputs(settings);
+        checkDistinctInputs(settings);
         vdbTargets(settings); // option errors before any reading
         packings = readAndCheckInputs(settings, mine);
         if (settings.distribute == Distribution::Grids && !settings.plan)

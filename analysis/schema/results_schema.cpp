@@ -153,7 +153,10 @@ constexpr Field kPoreSize[] = {
     {"slab", A, I, "1", kSlab, No, true},
     {"memory_per_rank_bytes", A, F, "bytes", kRankMemory, No, true},
     {"communication_bytes", A, F, "bytes", kCommunication, No, true},
-    {"runtime_s", A, F, "s", kRuntime},
+    {"runtime_s", A, F, "s", "wall-clock time of the statistics over the pore-size map or points"},
+    {"map_s", A, F, "s",
+     "voxel and refined: wall-clock time of the pore grid's voxelization and distance transform",
+     No, true},
     {"max_sampled", A, F, "length", "refined and exact: the sample's largest pore size", No, true},
     {"max_upper_bound", A, F, "length",
      "refined over every void voxel: certified bound max <= max_sampled + sqrt(3)/2 a (the pore "

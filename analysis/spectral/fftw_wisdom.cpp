@@ -77,7 +77,14 @@ void importWisdom(const fs::path& file, const Progress& progress) {
     if (file.empty() || imported.count(file) != 0) return;
     imported.insert(file);
     std::error_code ec;
-    if (!fs::exists(file, ec)) return; // first run: nothing remembered yet
+    const fs::file_status status = fs::status(file, ec);
+    if (!fs::exists(status)) return;    // first run: nothing remembered yet
+    if (!fs::is_regular_file(status)) { // a FIFO would block the open (docs/reliability.md)
+        progress.warn("FFTW wisdom '" + file.string() +
+                      "' is not a regular file (a FIFO, device or directory): not read; planning "
+                      "afresh");
+        return;
+    }
     if (fftw_import_wisdom_from_filename(file.c_str()) == 0)
         progress.warn("cannot read FFTW wisdom from '" + file.string() + "'; planning afresh");
 }

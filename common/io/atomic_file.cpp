@@ -32,10 +32,34 @@ void syncToDisk(const fs::path& path, int flags, const fs::path& reportAs) {
 
 } // namespace
 
+fs::path linkTarget(const fs::path& file) {
+    fs::path path = file;
+    for (int hops = 0; hops <= 40; ++hops) {
+        std::error_code ec;
+        if (!fs::is_symlink(fs::symlink_status(path, ec))) return path;
+        const fs::path target = fs::read_symlink(path, ec);
+        if (ec)
+            throw OutputPathError("cannot write '" + file.string() + "': cannot read the link '" +
+                                  path.string() + "': " + ec.message());
+        path = target.is_absolute() ? target : directoryOf(path) / target;
+    }
+    throw OutputPathError("cannot write '" + file.string() +
+                          "': more than 40 symbolic links in a chain (a loop?)");
+}
+
+bool sameDestination(const fs::path& a, const fs::path& b) {
+    std::error_code ec;
+    if (fs::equivalent(a, b, ec)) return true;
+    auto resolved = [&ec](const fs::path& p) {
+        return fs::weakly_canonical(fs::absolute(linkTarget(p), ec), ec);
+    };
+    return resolved(a) == resolved(b);
+}
+
 void checkWritable(const fs::path& file) {
     if (file.empty() || !file.has_filename())
         throw OutputPathError("output path '" + file.string() + "' does not name a file");
-    const fs::path dir = directoryOf(file);
+    const fs::path dir = directoryOf(linkTarget(file));
     std::error_code ec;
     if (!fs::is_directory(dir, ec))
         throw OutputPathError("cannot write '" + file.string() + "': directory '" + dir.string() +
@@ -78,13 +102,14 @@ void removeStaleTemporaries(const fs::path& dir, const std::string& prefix) {
 
 } // namespace
 
-AtomicOutput::AtomicOutput(fs::path finalPath) : final_(std::move(finalPath)) {
+AtomicOutput::AtomicOutput(fs::path finalPath)
+    : final_(std::move(finalPath)), target_(linkTarget(final_)) {
     checkWritable(final_);
     std::string prefix = "."; // appended piecewise: GCC 12 misreports "." + string (-Wrestrict)
-    prefix += final_.filename().string();
+    prefix += target_.filename().string();
     prefix += ".tmp-";
-    removeStaleTemporaries(directoryOf(final_), prefix);
-    temporary_ = directoryOf(final_) / (prefix + std::to_string(::getpid()));
+    removeStaleTemporaries(directoryOf(target_), prefix);
+    temporary_ = directoryOf(target_) / (prefix + std::to_string(::getpid()));
     std::error_code ec;
     fs::remove(temporary_, ec); // a stale temporary of an earlier process with our pid
 }
@@ -118,12 +143,12 @@ void AtomicOutput::commit() {
     if (committed_) throw OutputPathError("'" + final_.string() + "' was already committed");
     syncToDisk(temporary_, O_RDONLY, final_);
     std::error_code ec;
-    fs::rename(temporary_, final_, ec);
+    fs::rename(temporary_, target_, ec);
     if (ec)
-        throw OutputPathError("cannot rename '" + temporary_.string() + "' to '" + final_.string() +
-                              "': " + ec.message());
+        throw OutputPathError("cannot rename '" + temporary_.string() + "' to '" +
+                              target_.string() + "': " + ec.message());
     committed_ = true;
-    syncToDisk(directoryOf(final_), O_RDONLY | O_DIRECTORY, final_);
+    syncToDisk(directoryOf(target_), O_RDONLY | O_DIRECTORY, final_);
 }
 
 } // namespace sbpack

@@ -15,10 +15,10 @@ class OutputPathError : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// Throws OutputPathError unless `file` could be created or replaced: its directory exists and
-/// is writable, and `file` is not itself a directory or another non-regular file (a device or
-/// FIFO would be replaced by the rename). Lets a program reject a bad output path before any
-/// work starts.
+/// Throws OutputPathError unless `file` could be created or replaced: the directory of its
+/// linkTarget exists and is writable, and `file` is not itself a directory or another non-regular
+/// file (a device or FIFO would be replaced by the rename). Lets a program reject a bad output path
+/// before any work starts.
 void checkWritable(const std::filesystem::path& file);
 
 /// Throws OutputPathError when `output` names the same file as `input` (by device and inode,
@@ -26,8 +26,18 @@ void checkWritable(const std::filesystem::path& file);
 void checkNotInput(const std::filesystem::path& output, const std::filesystem::path& input,
                    const std::string& what);
 
+/// Where writing `file` lands: `file` itself, or, when it is a symbolic link (dangling or not),
+/// the file at the end of its chain of links, so that the link survives and its target is
+/// written. Throws OutputPathError for a chain of more than 40 links (a loop).
+std::filesystem::path linkTarget(const std::filesystem::path& file);
+
+/// Whether writing `a` and writing `b` would land on the same file (through links and other
+/// spellings, existing or not): two outputs that must not replace each other.
+bool sameDestination(const std::filesystem::path& a, const std::filesystem::path& b);
+
 /// A temporary file `.NAME.tmp-<pid>` next to `NAME`; commit() renames it onto `NAME`
-/// atomically (same directory). Destroying an uncommitted AtomicOutput removes the temporary;
+/// atomically (same directory). `NAME` is linkTarget(finalPath): a symbolic link stays a link
+/// to the new file. Destroying an uncommitted AtomicOutput removes the temporary;
 /// the temporaries of `NAME` left by processes that are gone (kill -9) are removed when the
 /// next AtomicOutput of `NAME` is made.
 class AtomicOutput {
@@ -51,6 +61,7 @@ class AtomicOutput {
 
   private:
     std::filesystem::path final_;
+    std::filesystem::path target_; ///< linkTarget(final_)
     std::filesystem::path temporary_;
     bool committed_ = false;
 };

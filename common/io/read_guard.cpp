@@ -1,12 +1,14 @@
 #include "io/read_guard.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <condition_variable>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 #include <unistd.h>
 
@@ -46,7 +48,17 @@ struct ReadGuard::Watch {
 };
 
 void armReadGuard(const std::string& program, double seconds) {
-    if (const char* text = std::getenv("SBPACK_READ_DEADLINE_S")) seconds = std::atof(text);
+    if (const char* text = std::getenv("SBPACK_READ_DEADLINE_S")) {
+        char* end = nullptr;
+        errno = 0;
+        seconds = std::strtod(text, &end);
+        if (end == text || *end != '\0' || errno != 0 || !(seconds >= kFewestDeadlineSeconds) ||
+            !(seconds <= kMostDeadlineSeconds))
+            throw std::invalid_argument(
+                "environment variable SBPACK_READ_DEADLINE_S='" + std::string(text) +
+                "' is not a number of seconds in [" + std::to_string(kFewestDeadlineSeconds) +
+                ", " + std::to_string(kMostDeadlineSeconds) + "] (unset it for the default)");
+    }
     limit() = {program, seconds};
 }
 

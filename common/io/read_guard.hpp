@@ -13,8 +13,14 @@
 
 namespace sbpack {
 
+/// Deadlines SBPACK_READ_DEADLINE_S may set (seconds): a longer one would overflow the clock.
+inline constexpr double kFewestDeadlineSeconds = 0.1;
+inline constexpr double kMostDeadlineSeconds = 1e6;
+
 /// Arms the guard for every later ReadGuard: `program` names the messages; a deadline of
-/// `seconds` <= 0 disarms it. The environment variable SBPACK_READ_DEADLINE_S overrides it.
+/// `seconds` <= 0 disarms it. The environment variable SBPACK_READ_DEADLINE_S overrides it:
+/// std::invalid_argument naming it unless it is a number in [kFewestDeadlineSeconds,
+/// kMostDeadlineSeconds].
 void armReadGuard(const std::string& program, double seconds);
 
 /// While alive, reading `file` must finish before the armed deadline and must not fault.

@@ -52,9 +52,12 @@ void validatePacking(const Packing& packing, const std::string& source) {
     if (!(packing.semiAxis > 0.0 && std::isfinite(packing.semiAxis)))
         reject(source,
                "semi_axis = " + formatDouble(packing.semiAxis) + " (must be finite and > 0)");
-    if (packing.reducedPressure && !std::isfinite(*packing.reducedPressure))
+    // A pressure of hard particles is positive: zero or negative is no pressure a generator
+    // wrote, and reading it as "no pressure" would hide the damage.
+    if (packing.reducedPressure &&
+        !(std::isfinite(*packing.reducedPressure) && *packing.reducedPressure > 0.0))
         reject(source, "reduced_pressure = " + formatDouble(*packing.reducedPressure) +
-                           " (must be finite)");
+                           " (must be finite and positive)");
 
     if (2.0 * packing.semiAxis > packing.boxLength)
         reject(source, "semi_axis = " + formatDouble(packing.semiAxis) +

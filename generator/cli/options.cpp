@@ -190,6 +190,9 @@ void finish(GeneratorOptions& o, const std::set<std::string>& protocolOptions) {
     }
     checkWritable(o.out);
     if (o.checkpoint) checkWritable(*o.checkpoint);
+    if (o.checkpoint && sameDestination(o.out, *o.checkpoint))
+        throw std::invalid_argument("options --out and --checkpoint name the same file '" +
+                                    o.out.string() + "': each write would replace the other");
     if (o.resume) {
         checkNotInput(o.out, *o.resume, "--resume");
         if (o.checkpoint) checkNotInput(*o.checkpoint, *o.resume, "--resume");

@@ -349,6 +349,30 @@ TEST_F(PackingIo, SemiAxisNotPositive) {
     expectError<InvalidPacking>([&] { readPacking(path); }, {"packing.h5", "semi_axis = -0.5"});
 }
 
+TEST_F(PackingIo, ReducedPressureNotPositive) { // issue 46, defect 11
+    const fs::path path = goodFile();
+    for (double pressure : {-1.0, 0.0}) {
+        writeDoubleAttribute(openForEditing(path).get(), "reduced_pressure", pressure);
+        expectError<InvalidPacking>([&] { readPacking(path); },
+                                    {"packing.h5", "reduced_pressure = ", "positive"});
+    }
+}
+
+TEST_F(PackingIo, WritesThroughASymbolicLink) { // issue 46, defect 3
+    const Packing packing = makePacking();
+    fs::create_directory(file("target"));
+    fs::create_symlink("target/real.h5", file("link.h5")); // dangling until written
+    writePacking(packing, file("link.h5"));
+    EXPECT_TRUE(fs::is_symlink(file("link.h5")));
+    EXPECT_EQ(readPacking(file("target") / "real.h5").positions, packing.positions);
+    fs::create_symlink("link.h5", file("chain.h5")); // a chain, to an existing file
+    writePacking(packing, file("chain.h5"));
+    EXPECT_TRUE(fs::is_symlink(file("chain.h5")) && fs::is_symlink(file("link.h5")));
+    fs::create_symlink("loop.h5", file("loop.h5"));
+    expectError<OutputPathError>([&] { writePacking(packing, file("loop.h5")); },
+                                 {"loop.h5", "symbolic links"});
+}
+
 TEST_F(PackingIo, PhiDisagreeingWithContents) {
     const fs::path path = goodFile();
     writeDoubleAttribute(openForEditing(path).get(), "phi", 0.6);

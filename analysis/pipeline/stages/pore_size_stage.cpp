@@ -26,15 +26,16 @@ StageMemory poreSizesMemory(const Packing& packing, const RunSettings& settings)
             settings.porePoints > 0 ? settings.porePoints : RunSettings::kDefaultExactPorePoints;
         return {static_cast<double>(k) * 2.0 * sizeof(double) +
                     static_cast<double>(packing.size()) * 100.0,
-                fmt::format("exact pore sizes of {} points", k)};
+                fmt::format("exact pore sizes of {} points", k), "--pore-points"};
     }
     case PoreMethod::Refined:
         return {static_cast<double>(poreSizeMemoryBytes(m)) + 4.0 * m * m * static_cast<double>(m),
-                fmt::format("pore-size map and feature transform {}^3", m)};
+                fmt::format("pore-size map and feature transform {}^3", m), "--pore-voxels"};
     case PoreMethod::Voxel:
         break;
     }
-    return {static_cast<double>(poreSizeMemoryBytes(m)), fmt::format("pore-size map {}^3", m)};
+    return {static_cast<double>(poreSizeMemoryBytes(m)), fmt::format("pore-size map {}^3", m),
+            "--pore-voxels"};
 }
 
 namespace {
@@ -64,9 +65,10 @@ PoreSizeMap poreSizeMap(const FileContext& context, int m, bool features) {
     return map;
 }
 
-/// The pore sizes by the run's method; `map` is filled unless the method is exact.
-PoreSizeDistributionResult measurePores(const FileContext& context,
-                                        std::optional<PoreSizeMap>& map) {
+/// The pore sizes by the run's method; `map` is filled unless the method is exact, and mapSeconds
+/// is the time it took.
+PoreSizeDistributionResult measurePores(const FileContext& context, std::optional<PoreSizeMap>& map,
+                                        double& mapSeconds) {
     const RunSettings& s = context.settings();
     if (s.poreMethod == PoreMethod::Exact) {
         ExactPoreSizeParameters parameters;
@@ -76,7 +78,9 @@ PoreSizeDistributionResult measurePores(const FileContext& context,
         return ExactPoreSizeDistribution(parameters).compute(context.packing());
     }
     const bool refined = s.poreMethod == PoreMethod::Refined;
+    const Stopwatch clock;
     map.emplace(poreSizeMap(context, s.poreVoxels, refined));
+    mapSeconds = clock.seconds();
     PoreSizeParameters parameters;
     parameters.randomPoints = s.porePoints;
     parameters.seed = s.poreSeed;
@@ -152,7 +156,8 @@ bool runDistributedPoreSizes(FileContext& context, schema::Record& record) {
 bool runPoreSizes(FileContext& context, schema::Record& record) {
     if (context.grids() != nullptr) return runDistributedPoreSizes(context, record);
     std::optional<PoreSizeMap> map;
-    PoreSizeDistributionResult pores = measurePores(context, map);
+    double mapSeconds = 0.0;
+    PoreSizeDistributionResult pores = measurePores(context, map, mapSeconds);
     context.progress().stageDone(
         fmt::format("pore sizes ({})", poreMethodName(context.settings().poreMethod)),
         pores.runtimeSeconds, poreDetail(pores));
@@ -162,6 +167,7 @@ bool runPoreSizes(FileContext& context, schema::Record& record) {
         context.progress().stageDone("pore vdb export", clock.seconds(), vdb->destination.string());
     }
     setPoreSizes(record, pores);
+    if (map) record.set("map_s", mapSeconds);
     context.keep(Analysis::PoreSizes, std::move(pores));
     return true;
 }

@@ -22,7 +22,7 @@ StageMemory spectralDensityMemory(const Packing& packing, const RunSettings& set
                                                        packing.shape().meanWidth(), m);
         bytes += collectiveDensityBytes(packing, std::max(shell, 1));
     }
-    return {bytes, fmt::format("FFT grid {}^3", m)};
+    return {bytes, fmt::format("FFT grid {}^3", m), "--voxels"};
 }
 
 namespace {

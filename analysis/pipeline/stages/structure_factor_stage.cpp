@@ -12,7 +12,7 @@ namespace sbpack::stages {
 StageMemory structureFactorMemory(const Packing& packing, const RunSettings& settings) {
     const int shell = StructureFactor::maxShellFor(settings.maxQw, packing.boxLength,
                                                    packing.shape().meanWidth());
-    return {collectiveDensityBytes(packing, std::max(shell, 1)), "S(Q) tables"};
+    return {collectiveDensityBytes(packing, std::max(shell, 1)), "S(Q) tables", "--qmax"};
 }
 
 bool runStructureFactor(FileContext& context, schema::Record& record) {

@@ -13,7 +13,8 @@ namespace sbpack::stages {
 StageMemory voxelsMemory(const Packing&, const RunSettings& settings) {
     if (settings.vdbDirectory.empty()) return {};
     // Float leaves of the .vdb export: 8^3 floats and their masks per block, at most every block.
-    return {std::pow(std::ceil(settings.voxels / 8.0), 3) * (512.0 * 4.0 + 200.0), ".vdb export"};
+    return {std::pow(std::ceil(settings.voxels / 8.0), 3) * (512.0 * 4.0 + 200.0), ".vdb export",
+            "--voxels"};
 }
 
 namespace {
