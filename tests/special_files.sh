@@ -75,4 +75,15 @@ for deadline in 1e10 99999999999 1e400 0 -1 abc ""; do
         env SBPACK_READ_DEADLINE_S="$deadline" "$sbanalyze" info good.h5
 done
 expect "SBPACK_READ_DEADLINE_S='abc' is not a number" env SBPACK_READ_DEADLINE_S=abc "$sbgen" --resume good.h5 --out y.h5
+# Smaller ones (defect 14): a name of 250 characters still gets its temporary; an XYZ given to a
+# reader is named as such; a relative XDG_CACHE_HOME is ignored (the XDG specification).
+long=$(printf 'a%.0s' {1..247}).h5
+"$sbanalyze" convert good.h5 "$long" 2>/dev/null && [[ -f "$long" ]] ||
+    { echo "FAIL: a 250-character output name"; failures=$((failures + 1)); }
+"$sbanalyze" convert good.h5 out.xyz 2>/dev/null
+expect "extended XYZ is written for OVITO, not read" "$sbanalyze" info out.xyz
+mkdir -p home && HOME=$PWD/home XDG_CACHE_HOME=relative "$sbanalyze" good.h5 --compute chi \
+    --voxels 40 --fft-plan measure --fft-planning-budget none --json - >/dev/null 2>&1
+[[ ! -e relative && -f home/.cache/sbpack/fftw-wisdom ]] ||
+    { echo "FAIL: a relative XDG_CACHE_HOME was used"; failures=$((failures + 1)); }
 [[ $failures -eq 0 ]] && echo "special files: ok"

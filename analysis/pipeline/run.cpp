@@ -180,7 +180,7 @@ std::string rankContext(const Communicator& comm, std::string context) {
 }
 
 /// Analyses the files `mine` (the packings read for them); grids exported go to temporaries,
-/// added to `exports` for the commit. With several ranks an error names its file.
+/// added to `exports` for the commit. With several inputs or ranks an error names its file.
 IndexedFiles analyzeAll(const RunSettings& settings, const std::vector<std::size_t>& mine,
                         const std::vector<Packing>& packings, Progress& progress,
                         std::vector<std::unique_ptr<AtomicOutput>>& exports,
@@ -200,7 +200,7 @@ IndexedFiles analyzeAll(const RunSettings& settings, const std::vector<std::size
             files.emplace_back(i, analyzeFile(packings[k], settings.inputs[i], settings, progress,
                                               targets, comm.grids()));
         } catch (const std::exception& e) {
-            if (comm.size() == 1) throw;
+            if (comm.size() == 1 && settings.inputs.size() == 1) throw;
             throw std::runtime_error(quotedName(settings.inputs[i]) + ": " + e.what());
         }
     }

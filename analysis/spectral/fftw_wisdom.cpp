@@ -63,7 +63,9 @@ double predictedPlanningSeconds(int voxels, FftPlanning planning) {
 }
 
 fs::path defaultWisdomFile() {
-    if (const char* cache = std::getenv("XDG_CACHE_HOME"); cache != nullptr && *cache != '\0')
+    // The XDG Base Directory specification: a relative XDG_CACHE_HOME is invalid and ignored.
+    if (const char* cache = std::getenv("XDG_CACHE_HOME");
+        cache != nullptr && fs::path(cache).is_absolute())
         return fs::path(cache) / "sbpack" / "fftw-wisdom";
     if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0')
         return fs::path(home) / ".cache" / "sbpack" / "fftw-wisdom";

@@ -105,8 +105,11 @@ void removeStaleTemporaries(const fs::path& dir, const std::string& prefix) {
 AtomicOutput::AtomicOutput(fs::path finalPath)
     : final_(std::move(finalPath)), target_(linkTarget(final_)) {
     checkWritable(final_);
+    // `.NAME.tmp-<pid>`, NAME cut so that the whole stays within NAME_MAX (255 bytes).
+    constexpr std::size_t kLongestName = 255 - 1 - 5 - 10; // ".", ".tmp-", a pid
+    const std::string name = target_.filename().string();
     std::string prefix = "."; // appended piecewise: GCC 12 misreports "." + string (-Wrestrict)
-    prefix += target_.filename().string();
+    prefix += name.size() > kLongestName ? name.substr(0, kLongestName - 1) + "~" : name;
     prefix += ".tmp-";
     removeStaleTemporaries(directoryOf(target_), prefix);
     temporary_ = directoryOf(target_) / (prefix + std::to_string(::getpid()));

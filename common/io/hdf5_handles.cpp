@@ -197,8 +197,17 @@ Hdf5Handle openGroup(hid_t parent, const std::string& name) {
 }
 
 bool hasLink(hid_t parent, const std::string& name) {
-    return checked(H5Lexists(parent, name.c_str(), H5P_DEFAULT), parent, name, "link", "look up") >
-           0;
+    if (checked(H5Lexists(parent, name.c_str(), H5P_DEFAULT), parent, name, "link", "look up") <= 0)
+        return false;
+    // An external (or user-defined) link leaves the file: to another file, or to a FIFO that would
+    // block the open. sbpack's files are self-contained; such a link is refused, never followed.
+    H5L_info_t info{};
+    checked(H5Lget_info(parent, name.c_str(), &info, H5P_DEFAULT), parent, name, "link", "look up");
+    if (info.type != H5L_TYPE_HARD && info.type != H5L_TYPE_SOFT)
+        fail(parent, name, "link",
+             "is an external link to another file; sbpack reads self-contained files only "
+             "(h5repack or h5copy can bring its target in)");
+    return true;
 }
 
 bool hasAttribute(hid_t object, const std::string& name) {

@@ -204,8 +204,16 @@ Packing readPacking(const fs::path& file) {
     const std::string name = file.string();
     checkInputFile(file);
     if (!std::ifstream(file)) throw PackingFileError("'" + name + "': cannot open for reading");
-    if (!isHdf5File(file))
-        throw PackingFileError("'" + name + "': not an HDF5 file (no HDF5 signature)");
+    if (!isHdf5File(file)) {
+        const std::string extension = file.extension().string();
+        throw PackingFileError(
+            "'" + name + "': not an HDF5 file (no HDF5 signature)" +
+            (extension == ".txt" ? std::string("; a text packing is read by 'sbanalyze convert'")
+             : extension == ".xyz"
+                 ? std::string("; extended XYZ is written for OVITO, not read: give the .h5 "
+                               "or .txt packing")
+                 : std::string()));
+    }
     const ReadGuard guard(file); // armed by the programs only (io/read_guard.hpp)
     try {
         Hdf5Handle h5;

@@ -9,6 +9,9 @@ Each group is a dict of its attributes (numbers, strings) and datasets (numpy ar
 analyses' groups as sub-dicts and the units under "units". ``files`` and ``ensembles`` are lists in
 the order of their indices. Reading HDF5 is all it does (h5py); the numbers are sbanalyze's.
 """
+import errno
+import os
+
 import h5py
 import numpy as np
 
@@ -49,7 +52,11 @@ def _indexed(d):
 
 def read_results(path):
     """The results file at ``path`` as nested dicts; ValueError if it is not an sbpack.results
-    file of format_version 2."""
+    file of format_version 2. Only a regular file is opened: a FIFO or device raises OSError at
+    once instead of blocking (docs/reliability.md), as Packing.read does."""
+    if os.path.exists(path) and not os.path.isfile(path):
+        raise OSError(errno.EINVAL, "not a regular file (a FIFO, device, socket or directory); "
+                      "results are read from regular files only", str(path))
     with h5py.File(path, "r") as f:
         if _value(f.attrs.get("format")) != FORMAT or f.attrs.get("format_version") != FORMAT_VERSION:
             raise ValueError(f"'{path}': not an {FORMAT} file of format_version {FORMAT_VERSION}")

@@ -358,6 +358,23 @@ TEST_F(PackingIo, ReducedPressureNotPositive) { // issue 46, defect 11
     }
 }
 
+TEST_F(PackingIo, AnExternalLinkIsRefusedNotFollowed) { // issue 46, defect 5
+    const fs::path path = goodFile();
+    ASSERT_EQ(::mkfifo(file("fifo.h5").c_str(), 0600), 0);
+    for (const char* target : {"fifo.h5", "packing.h5"}) { // a FIFO would block the open
+        {
+            const Hdf5Handle h5 = openForEditing(path);
+            if (H5Lexists(h5.get(), "velocities", H5P_DEFAULT) > 0)
+                H5Ldelete(h5.get(), "velocities", H5P_DEFAULT);
+            ASSERT_GE(H5Lcreate_external(target, "/velocities", h5.get(), "velocities",
+                                         H5P_DEFAULT, H5P_DEFAULT),
+                      0);
+        }
+        expectError<PackingFileError>([&] { readPacking(path); },
+                                      {"packing.h5", "velocities", "external link"});
+    }
+}
+
 TEST_F(PackingIo, WritesThroughASymbolicLink) { // issue 46, defect 3
     const Packing packing = makePacking();
     fs::create_directory(file("target"));

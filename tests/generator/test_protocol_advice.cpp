@@ -71,6 +71,14 @@ TEST(ProtocolAdvice, AVerySlowRunIsToldItsExpectedCost) {
     EXPECT_EQ(protocolWarnings(slow)[0].find("cost-limit"), std::string::npos);
 }
 
+TEST(ProtocolAdvice, NearOctahedraAreToldTheirCost) { // issue 46, defect 12
+    // About 200 collisions a second at p = 0.5000001 (bench/RESULTS.md, "Near-octahedra"):
+    // a default N = 1000 run takes CPU hours, and says so.
+    EXPECT_LT(collisionRate(0.5000001), 300.0);
+    EXPECT_TRUE(mentions(protocolWarnings(defaults(0.5000001, 1000)), "CPU hours"));
+    EXPECT_GT(collisionRate(0.51), 10.0 * collisionRate(0.5000001));
+}
+
 TEST(ProtocolAdvice, FastRatesOutsideThePapersRangeAreNamed) {
     ProtocolParameters fast = defaults(1.5, 1000);
     fast.gammaFast = 0.1;

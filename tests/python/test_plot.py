@@ -101,3 +101,11 @@ def test_read_results_is_the_file(results):
             f["ensembles/0/contacts"].attrs["z_mean_std"]
         assert r["files"][0]["units"]["box_length"] == "length"
         assert r["files"][0]["structure_factor"]["units"]["Q"] == "1/length"
+
+
+def test_read_results_refuses_a_fifo_at_once(tmp_path):
+    """A FIFO is refused before it is opened (issue 46, defect 6): h5py would block in open()."""
+    fifo = tmp_path / "results.h5"
+    os.mkfifo(fifo)
+    with pytest.raises(OSError, match="not a regular file"):
+        sbpack.read_results(str(fifo))
