@@ -82,7 +82,10 @@ void GeneratorCommandLine::addProtocolOptions() {
         "otherwise rotating superballs); practical up to 10, above it a warning");
     protocol(
         "--n",
-        [&p](auto n, auto v) { p.particles = static_cast<int>(parseInteger(n, v, 2, 100000000)); },
+        [&p](auto n, auto v) {
+            p.particles = static_cast<int>(parseInteger(n, v, ProtocolParameters::kFewestParticles,
+                                                        ProtocolParameters::kMostParticles));
+        },
         "number of particles (default 1000)");
     protocol(
         "--seed",

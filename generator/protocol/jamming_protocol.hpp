@@ -39,6 +39,8 @@ struct CheckpointFields;
 bool rotating(double p);
 
 struct ProtocolParameters {
+    /// The range of N that sbgen --n and sbpack.generate accept.
+    static constexpr int kFewestParticles = 2, kMostParticles = 100'000'000;
     int particles = 1000;
     double p = 1.0;
     std::uint64_t seed = 1;

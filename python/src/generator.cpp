@@ -90,12 +90,32 @@ Packing generate(const ProtocolParameters& parameters, const py::object& progres
 
 using Option = std::optional<double>;
 
+/// N from a Python int: ValueError naming n beyond sbgen --n's largest (pybind11 would raise
+/// TypeError with its signature for an int beyond C's); small ones are the protocol's to refuse.
+int particleCount(const py::int_& n) {
+    int overflow = 0;
+    const long long value = PyLong_AsLongLongAndOverflow(n.ptr(), &overflow);
+    if (overflow != 0 || value > ProtocolParameters::kMostParticles ||
+        value < -ProtocolParameters::kMostParticles)
+        throw std::invalid_argument("n = " + py::repr(n).cast<std::string>() + " is not in [" +
+                                    std::to_string(ProtocolParameters::kFewestParticles) + ", " +
+                                    std::to_string(ProtocolParameters::kMostParticles) + "]");
+    return static_cast<int>(value);
+}
+
+/// A progress callback must be callable (or None), checked before the run, not after it.
+void checkProgress(const py::object& progress) {
+    if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+        throw py::type_error("progress must be a callable taking the status dict, or None, not " +
+                             py::repr(progress).cast<std::string>());
+}
+
 /// The parameters that set the expected cost (expected_collisions's keywords). Options left None
 /// keep ProtocolParameters' defaults, which are sbgen's.
-ProtocolParameters costParameters(int n, double p, Option gammaSlow, Option pressureSwitch,
-                                  Option pressureFinal) {
+ProtocolParameters costParameters(const py::int_& n, double p, Option gammaSlow,
+                                  Option pressureSwitch, Option pressureFinal) {
     ProtocolParameters parameters;
-    parameters.particles = n;
+    parameters.particles = particleCount(n);
     parameters.p = p;
     if (gammaSlow) parameters.gammaSlow = gammaSlow;
     parameters.pressureSwitch = pressureSwitch.value_or(parameters.pressureSwitch);
@@ -108,9 +128,10 @@ ProtocolParameters costParameters(int n, double p, Option gammaSlow, Option pres
 void registerGenerator(py::module_& m) {
     m.def(
         "generate",
-        [](int n, double p, std::uint64_t seed, Option phiInit, Option gammaFast, Option gammaSlow,
-           Option pressureSwitch, Option pressureFinal, Option window, Option costLimit,
-           const py::object& progress, double progressInterval) {
+        [](const py::int_& n, double p, std::uint64_t seed, Option phiInit, Option gammaFast,
+           Option gammaSlow, Option pressureSwitch, Option pressureFinal, Option window,
+           Option costLimit, const py::object& progress, double progressInterval) {
+            checkProgress(progress);
             // Options left None keep ProtocolParameters' defaults, which are sbgen's.
             ProtocolParameters parameters =
                 costParameters(n, p, gammaSlow, pressureSwitch, pressureFinal);
@@ -132,7 +153,8 @@ void registerGenerator(py::module_& m) {
         "running window");
     m.def(
         "expected_collisions",
-        [](int n, double p, Option gammaSlow, Option pressureSwitch, Option pressureFinal) {
+        [](const py::int_& n, double p, Option gammaSlow, Option pressureSwitch,
+           Option pressureFinal) {
             const ProtocolParameters parameters =
                 costParameters(n, p, gammaSlow, pressureSwitch, pressureFinal);
             validateAsKeywords(parameters);

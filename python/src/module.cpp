@@ -1,8 +1,10 @@
 // The extension module sbpack._sbpack (docs/python.md): one binding file per area. C++ errors
 // become Python exceptions: std::invalid_argument (pybind11's default), InvalidPacking and
-// std::domain_error are ValueError; PackingFileError is OSError; Interrupted is KeyboardInterrupt.
+// std::domain_error are ValueError; PackingFileError and OutputPathError are OSError; Interrupted
+// is KeyboardInterrupt.
 #include "bindings.hpp"
 
+#include "io/atomic_file.hpp"
 #include "io/packing_io.hpp"
 #include "packing/validation.hpp"
 #include "progress/progress.hpp"
@@ -17,6 +19,8 @@ void translateErrors() {
         } catch (const sbpack::InvalidPacking& e) {
             PyErr_SetString(PyExc_ValueError, e.what());
         } catch (const sbpack::PackingFileError& e) {
+            PyErr_SetString(PyExc_OSError, e.what());
+        } catch (const sbpack::OutputPathError& e) {
             PyErr_SetString(PyExc_OSError, e.what());
         } catch (const sbpack::Interrupted& e) {
             PyErr_SetString(PyExc_KeyboardInterrupt, e.what());

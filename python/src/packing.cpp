@@ -21,21 +21,34 @@ namespace fs = std::filesystem;
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
 /// The HDF5 reader's message for a misshapen dataset (common/io/hdf5_handles.cpp):
-/// "'<source>': dataset '/positions': has shape 5 x 2, expected 5 x 3".
+/// "'<source>': dataset '/positions': has shape 5 x 2, expected 5 x 3"; `rows` < 0: any N.
 void checkShape(const Array& a, const char* name, py::ssize_t rows, py::ssize_t cols,
                 const std::string& source) {
-    if (a.ndim() == 2 && a.shape(0) == rows && a.shape(1) == cols) return;
+    if (a.ndim() == 2 && (rows < 0 || a.shape(0) == rows) && a.shape(1) == cols) return;
     std::string shape = "rank " + std::to_string(a.ndim());
     if (a.ndim() == 2) shape = std::to_string(a.shape(0)) + " x " + std::to_string(a.shape(1));
+    std::string expected = std::to_string(rows) + " x " + std::to_string(cols);
+    if (rows < 0) {
+        const bool transposed = a.ndim() == 2 && a.shape(0) == cols;
+        expected = "N x " + std::to_string(cols) + " (one row per particle" +
+                   (transposed ? "; transposed?)" : ")");
+    }
     throw InvalidPacking("'" + source + "': dataset '/" + name + "': has shape " + shape +
-                         ", expected " + std::to_string(rows) + " x " + std::to_string(cols));
+                         ", expected " + expected);
+}
+
+/// Refuses a string that C++ messages would cut short at an embedded NUL.
+void checkNoNul(const std::string& text, const char* what) {
+    if (text.find('\0') != std::string::npos)
+        throw std::invalid_argument(std::string(what) + " contains a NUL character");
 }
 
 /// A packing from arrays, validated and canonicalised as the readers do (common/io).
 Packing fromArrays(const Array& positions, const Array& orientations, double boxLength, double p,
                    double semiAxis, const std::string& source) {
-    const py::ssize_t n = positions.ndim() == 2 ? positions.shape(0) : 0;
-    checkShape(positions, "positions", n, 3, source);
+    checkNoNul(source, "source");
+    checkShape(positions, "positions", -1, 3, source);
+    const py::ssize_t n = positions.shape(0);
     checkShape(orientations, "orientations", n, 4, source);
     Packing packing;
     packing.p = p;
@@ -62,10 +75,15 @@ Packing read(const fs::path& file) {
 }
 
 void write(const Packing& packing, const fs::path& file) {
+    const fs::path extension = file.extension();
+    if (extension != ".h5" && extension != ".hdf5" && extension != ".txt" && extension != ".xyz")
+        throw std::invalid_argument("'" + file.string() +
+                                    "': unknown extension (use .h5, .txt or .xyz), as sbanalyze "
+                                    "convert");
     py::gil_scoped_release release;
     if (isText(file)) {
         writeTextPacking(packing, file);
-    } else if (file.extension() == ".xyz") {
+    } else if (extension == ".xyz") {
         writeExtendedXyz(packing, file);
     } else {
         writePacking(packing, file);

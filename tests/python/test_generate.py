@@ -80,3 +80,12 @@ def test_generate_stops_at_the_cost_limit_as_sbgen_does(sbgen, tmp_path):
     with pytest.raises(ValueError, match="n: need at least 2"):
         sbpack.expected_collisions(n=1)
     assert mine.reduced_pressure < options["pressure_final"]
+
+
+def test_misuses_are_refused_before_the_run():
+    """Issue 46, defect 15: an n beyond C's int is a ValueError naming it, a progress that cannot
+    be called is refused before any work."""
+    with pytest.raises(ValueError, match=r"n = 1000000000000 is not in \[2, 100000000\]"):
+        sbpack.generate(n=10**12)
+    with pytest.raises(TypeError, match="progress must be a callable"):
+        sbpack.generate(n=10**6, progress=5)

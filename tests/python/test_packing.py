@@ -94,3 +94,21 @@ def test_bad_option_raises_the_clis_message(sbanalyze, tmp_path):
 def test_a_missing_file_is_an_os_error(tmp_path):
     with pytest.raises(OSError, match="no such file"):
         sbpack.Packing.read(tmp_path / "missing.h5")
+
+
+def test_misuses_are_named(tmp_path):
+    """Issue 46, defect 15: transposed or 1-D positions, an unknown extension, a NUL in source,
+    and write errors as OSError."""
+    with pytest.raises(ValueError, match=r"has shape 3 x 100, expected N x 3 \(one row per "
+                                         r"particle; transposed\?\)"):
+        sbpack.Packing(np.zeros((3, 100)), np.zeros((100, 4)), 5.0)
+    with pytest.raises(ValueError, match=r"has shape rank 1, expected N x 3"):
+        sbpack.Packing(np.zeros(3), np.zeros((1, 4)), 5.0)
+    with pytest.raises(ValueError, match="source contains a NUL"):
+        sbpack.Packing(np.zeros((1, 3)), [[1.0, 0, 0, 0]], 5.0, source="a\0b")
+    packing = sbpack.Packing.read(P15)
+    with pytest.raises(ValueError, match=r"unknown extension \(use .h5, .txt or .xyz\)"):
+        packing.write(tmp_path / "x.bad")
+    assert not (tmp_path / "x.bad").exists()
+    with pytest.raises(OSError, match="does not exist"):
+        packing.write(tmp_path / "missing" / "x.h5")
