@@ -115,7 +115,7 @@ CommandLine::CommandLine(const Communicator& communicator) : communicator_(commu
     });
     app_.footer(kFooter);
     app_.get_formatter()->column_width(28);
-    app_.add_option("FILE", inputs_, "packing files (.h5) to analyse, one after the other");
+    app_.add_option("FILE", inputs_, "packing files (.h5 or .txt) to analyse, one after the other");
     addAnalysisOptions();
     addGridOptions();
     addOutputOptions();
@@ -143,8 +143,8 @@ void CommandLine::addAnalysisOptions() {
         ->type_name("T");
     app_.add_option_function<std::string>(
             "--device", [this](const std::string& v) { device_ = computeDeviceFromName(v); },
-            "where the grids of voxels, chi and pores are computed: cpu, cuda (an NVIDIA GPU,\n"
-            "builds with SBPACK_WITH_CUDA; not with hyper, --pores refined, --vdb or\n"
+            "where the grids of voxels, chi, hyper and pores are computed: cpu, cuda (an\n"
+            "NVIDIA GPU, builds with SBPACK_WITH_CUDA; not with --pores refined, --vdb or\n"
             "--distribute grids) or auto (default: cuda where granted, else cpu; docs/gpu.md)")
         ->type_name("cpu|cuda|auto");
     addContactOptions(app_, s.contacts);
@@ -365,7 +365,7 @@ void CommandLine::addSubcommands() {
                 "gap or worst overlap, Z over non-rattlers and the rattler fraction phi_R");
     addContactOptions(*info_, infoContacts_);
     info_->add_option("FILE", infoFiles_,
-                      "packing files (.h5); a bad one is reported, the others still are");
+                      "packing files (.h5 or .txt); a bad one is reported, the others still are");
     convert_ = app_.add_subcommand(
         "convert", "convert between .h5 and .txt (a header with p, semi_axis, box_length, then\n"
                    "x y z qw qx qy qz per particle), and to extended XYZ (.xyz) for OVITO");

@@ -1,8 +1,11 @@
 #include "gpu/cuda_grid.hpp"
 
+#include "gpu/compact_cube.hpp"
 #include "gpu/particle_images.hpp"
 #include "voxels/voxelization.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 namespace sbpack {
@@ -33,26 +36,39 @@ std::vector<std::uint8_t> CudaGrid::solidMask() const {
     return mask;
 }
 
-SpectralDensityResult CudaGrid::spectralDensity(const Packing& packing,
-                                                const SpectralDensityParameters& parameters,
-                                                bool single, const Progress& progress) const {
+CudaGrid::Spectra CudaGrid::spectralDensity(const Packing& packing,
+                                            const SpectralDensityParameters& parameters,
+                                            bool single, const VoxelSpectrumOptions* spectrum,
+                                            const Progress& progress) const {
     const Stopwatch clock;
     const SpectralDensity chi(parameters);
-    SpectralDensityResult result = chi.start(packing, voxels_, phiVoxel());
-    const int s = result.maxShell;
-    const gpu::cuda::SpectrumCube cube = gpu::cuda::spectrumCube(words_, voxels_, s, single);
-    result.fillSeconds = cube.fillSeconds;
-    result.transformSeconds = cube.transformSeconds;
+    Spectra out{chi.start(packing, voxels_, phiVoxel()), std::nullopt};
+    int s = out.chi.maxShell;
+    std::vector<double> f;
+    const double meanWidth = packing.shape().meanWidth();
+    if (spectrum != nullptr) { // the cube reaches the single wave vectors too
+        const auto reach = static_cast<int>(std::ceil(std::sqrt(
+            static_cast<double>(individualMaxN2(voxels_, boxLength_, meanWidth, *spectrum)))));
+        s = std::max(s, reach);
+        f = axisFactors(voxels_, voxelSize(), spectrum->cubeFormFactor);
+    }
+    gpu::cuda::SpectrumCube cube =
+        gpu::cuda::spectrumCube(words_, voxels_, s, single, f, std::pow(boxLength_, 3));
+    out.chi.fillSeconds = cube.fillSeconds;
+    out.chi.transformSeconds = cube.transformSeconds;
     const Stopwatch shellClock;
-    const int rows = 2 * s + 1;
-    const SpectrumSlab compact{cube.data.data(), voxels_, 0, rows, rows, s + 1};
     ShellAverage shells =
-        spectralShellSums(compact, voxelSize(), packing.boxLength, s, progress, parameters.serial)
+        spectralShellSums(gpu::compactCubeSlab(cube.data, voxels_, s), voxelSize(),
+                          packing.boxLength, out.chi.maxShell, progress, parameters.serial)
             .average();
-    result.shellSeconds = shellClock.seconds();
-    result.runtimeSeconds = clock.seconds();
-    chi.finish(packing, std::move(shells), progress, result);
-    return result;
+    out.chi.shellSeconds = shellClock.seconds();
+    if (spectrum != nullptr)
+        out.voxelSpectrum =
+            voxelSpectrumFrom(std::move(cube.sumByN2), gpu::compactCubePower(cube.data, voxels_, s),
+                              {voxels_, boxLength_, phiVoxel()}, meanWidth, *spectrum);
+    out.chi.runtimeSeconds = clock.seconds();
+    chi.finish(packing, std::move(shells), progress, out.chi);
+    return out;
 }
 
 PoreSizeMap CudaGrid::poreSizeMap(std::int64_t linesPerBatch) const {

@@ -5,12 +5,14 @@
 // is the CPU path's: the same voxels bit for bit, the same integer distances, chi_V to rounding.
 
 #include "gpu/cuda_kernels.hpp"
+#include "hyperuniformity/discrete_spectrum.hpp"
 #include "packing/packing.hpp"
 #include "pores/distance_transform.hpp"
 #include "progress/progress.hpp"
 #include "spectral/spectral_density.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace sbpack {
@@ -33,10 +35,17 @@ class CudaGrid {
     std::vector<std::uint8_t> solidMask() const;
 
     /// chi_V(Q) as SpectralDensity::compute, the indicator transformed by cuFFT (single
-    /// precision when `single`); fillSeconds and transformSeconds are the device's.
-    SpectralDensityResult spectralDensity(const Packing& packing,
-                                          const SpectralDensityParameters& parameters, bool single,
-                                          const Progress& progress) const;
+    /// precision when `single`); fillSeconds and transformSeconds are the device's. With
+    /// `spectrum`, also the voxel spectrum of the hyperuniformity analysis, as voxelSpectrum
+    /// (hyperuniformity/discrete_spectrum.hpp) with those options: the sums per |n|^2 made on
+    /// the device, the single wave vectors read from the gathered cube.
+    struct Spectra {
+        SpectralDensityResult chi;
+        std::optional<DiscreteSpectrum> voxelSpectrum;
+    };
+    Spectra spectralDensity(const Packing& packing, const SpectralDensityParameters& parameters,
+                            bool single, const VoxelSpectrumOptions* spectrum,
+                            const Progress& progress) const;
 
     /// The exact periodic distance transform, as periodicDistanceTransform (std::domain_error
     /// when no voxel is solid or none void), `linesPerBatch` lines per envelope launch.

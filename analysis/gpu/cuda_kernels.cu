@@ -90,6 +90,24 @@ __global__ void gatherCube(const Real* transform, int m, int s, double* cube) {
     cube[2 * i + 1] = static_cast<double>(transform[at + 1]);
 }
 
+/// The sums by |n|^2 of the whole transform (complex (re, im) pairs, M/2 + 1 a row).
+template <class Real>
+__global__ void sumsByN2(const Real* transform, int m, const double* f, double volume,
+                         double* sums) {
+    const std::int64_t half = m / 2 + 1;
+    const std::int64_t i = blockIdx.x * std::int64_t{blockDim.x} + threadIdx.x;
+    if (i >= std::int64_t{m} * m * half) return;
+    const int kz = static_cast<int>(i % half);
+    const int ky = static_cast<int>((i / half) % m), kx = static_cast<int>(i / (half * m));
+    const std::int64_t nx = 2 * kx <= m ? kx : kx - m, ny = 2 * ky <= m ? ky : ky - m;
+    const std::int64_t n2 = nx * nx + ny * ny + std::int64_t{kz} * kz;
+    if (n2 == 0) return;
+    const double re = static_cast<double>(transform[2 * i]);
+    const double im = static_cast<double>(transform[2 * i + 1]);
+    const double weight = kz == 0 || 2 * kz == m ? 1.0 : 2.0;
+    atomicAdd(sums + n2, weight * (re * re + im * im) * (f[kx] * f[ky] / volume) * f[kz]);
+}
+
 __global__ void rowPass(const std::uint32_t* words, int m, std::uint32_t* distances) {
     const std::int64_t row = blockIdx.x * std::int64_t{blockDim.x} + threadIdx.x;
     if (row >= std::int64_t{m} * m) return;
@@ -189,8 +207,28 @@ std::int64_t countSolid(const DeviceBuffer& words) {
 
 namespace {
 
+/// The sums by |n|^2 (spectrumCube) of the transform in `grid`.
 template <class Real>
-SpectrumCube transformAndGather(const DeviceBuffer& words, int voxels, int s, cufftType type) {
+std::vector<double> gridSums(const DeviceBuffer& grid, int voxels,
+                             const std::vector<double>& axisFactors, double volume) {
+    const std::int64_t m = voxels, half = m / 2;
+    DeviceBuffer f(axisFactors.size() * sizeof(double));
+    check(cudaMemcpy(f.get(), axisFactors.data(), f.bytes(), cudaMemcpyHostToDevice),
+          "cudaMemcpy to the device");
+    std::vector<double> sums(static_cast<std::size_t>(3 * half * half + 1), 0.0);
+    DeviceBuffer onDevice(sums.size() * sizeof(double));
+    check(cudaMemset(onDevice.get(), 0, onDevice.bytes()), "cudaMemset");
+    sumsByN2<Real><<<blocksFor(m * m * (half + 1)), kThreads>>>(
+        static_cast<const Real*>(grid.get()), voxels, static_cast<const double*>(f.get()), volume,
+        static_cast<double*>(onDevice.get()));
+    synchronize("sumsByN2");
+    onDevice.download(sums.data());
+    return sums;
+}
+
+template <class Real>
+SpectrumCube transformAndGather(const DeviceBuffer& words, int voxels, int s, cufftType type,
+                                const std::vector<double>& axisFactors, double volume) {
     const std::int64_t m = voxels, half = m / 2 + 1;
     SpectrumCube out;
     auto clock = std::chrono::steady_clock::now();
@@ -221,14 +259,16 @@ SpectrumCube transformAndGather(const DeviceBuffer& words, int voxels, int s, cu
     synchronize("gatherCube");
     out.data.resize(static_cast<std::size_t>(entries) * 2);
     cube.download(out.data.data());
+    if (!axisFactors.empty()) out.sumByN2 = gridSums<Real>(grid, voxels, axisFactors, volume);
     return out;
 }
 
 } // namespace
 
-SpectrumCube spectrumCube(const DeviceBuffer& words, int voxels, int s, bool single) {
-    return single ? transformAndGather<float>(words, voxels, s, CUFFT_R2C)
-                  : transformAndGather<double>(words, voxels, s, CUFFT_D2Z);
+SpectrumCube spectrumCube(const DeviceBuffer& words, int voxels, int s, bool single,
+                          const std::vector<double>& axisFactors, double volume) {
+    return single ? transformAndGather<float>(words, voxels, s, CUFFT_R2C, axisFactors, volume)
+                  : transformAndGather<double>(words, voxels, s, CUFFT_D2Z, axisFactors, volume);
 }
 
 std::size_t fftWorkBytes(int voxels, bool single) {

@@ -52,13 +52,18 @@ std::int64_t countSolid(const DeviceBuffer& words);
 
 /// The DFT F(k) of the voxel indicator (cuFFT, double precision unless `single`) at the wave
 /// indices |n_x|, |n_y| <= s and 0 <= n_z <= s, as a compact cube: (re, im) of signed index
-/// (nx, ny, nz) at (((nx mod R) R + (ny mod R)) (s + 1) + nz) 2 with R = 2s + 1. Seconds of
-/// filling the grid and of the transform in fillSeconds and transformSeconds.
+/// (nx, ny, nz) at (((nx mod R) R + (ny mod R)) (s + 1) + nz) 2 with R = 2s + 1. With
+/// `axisFactors` (M entries, hyperuniformity/discrete_spectrum.hpp; empty: none) also the sums
+/// over the whole grid per |n|^2 of w(kz) |F|^2 f[kx] f[ky] / volume f[kz] (the half space's
+/// weights), 3 (M/2)^2 + 1 bins, as discrete_spectrum's gridSums but summed in no fixed order.
+/// Seconds of filling the grid and of the transform in fillSeconds and transformSeconds.
 struct SpectrumCube {
     std::vector<double> data;
+    std::vector<double> sumByN2;
     double fillSeconds = 0.0, transformSeconds = 0.0;
 };
-SpectrumCube spectrumCube(const DeviceBuffer& words, int voxels, int s, bool single);
+SpectrumCube spectrumCube(const DeviceBuffer& words, int voxels, int s, bool single,
+                          const std::vector<double>& axisFactors, double volume);
 
 /// Bytes cuFFT expects to need beside the M^3 in-place transform (cufftEstimate3d).
 std::size_t fftWorkBytes(int voxels, bool single);

@@ -54,8 +54,17 @@ bool runCudaVoxels(FileContext& context, schema::Record& record) {
 SpectralDensityResult cudaSpectralDensity(FileContext& context,
                                           const SpectralDensityParameters& parameters) {
     const CudaGrid& grid = context.kept<CudaGrid>(Analysis::Voxels);
-    return grid.spectralDensity(context.packing(), parameters, context.settings().fftSingle,
-                                context.progress());
+    const bool hyper = context.settings().runs(Analysis::Hyperuniformity);
+    const VoxelSpectrumOptions spectrum; // as the CPU stage's voxelSpectrum
+    CudaGrid::Spectra s =
+        grid.spectralDensity(context.packing(), parameters, context.settings().fftSingle,
+                             hyper ? &spectrum : nullptr, context.progress());
+    if (hyper)
+        context.keep(
+            Analysis::SpectralDensity,
+            KeptSpectrum{std::move(*s.voxelSpectrum),
+                         spectralPeak(s.chi.shells.q, s.chi.shells.value, context.meanWidth())});
+    return std::move(s.chi);
 }
 
 PoreSizeMap cudaPoreSizeMap(const FileContext& context, int voxels) {

@@ -26,17 +26,6 @@ double sinc(double x) {
     return x == 0.0 ? 1.0 : std::sin(x) / x;
 }
 
-/// Per axis and DFT index k: [a sinc(pi n / M)]^2 (the cube form factor along that axis,
-/// Q a / 2 = pi n / M) or a^2.
-std::vector<double> axisFactors(int m, double a, bool cubeFormFactor) {
-    std::vector<double> f(m);
-    for (int k = 0; k < m; ++k) {
-        const double s = cubeFormFactor ? sinc(std::numbers::pi * signedIndex(k, m) / m) : 1.0;
-        f[k] = a * a * s * s;
-    }
-    return f;
-}
-
 /// sum of chi over every wave vector of the grid, per |n|^2.
 std::vector<double> gridSums(const VoxelFourierTransform& transform, const std::vector<double>& f,
                              double volume, bool serial) {
@@ -81,30 +70,54 @@ double excessAtZero(const DiscreteSpectrum& s) {
 
 } // namespace
 
+std::vector<double> axisFactors(int m, double a, bool cubeFormFactor) {
+    std::vector<double> f(m);
+    for (int k = 0; k < m; ++k) {
+        const double s = cubeFormFactor ? sinc(std::numbers::pi * signedIndex(k, m) / m) : 1.0;
+        f[k] = a * a * s * s;
+    }
+    return f;
+}
+
 DiscreteSpectrum voxelSpectrum(const VoxelFourierTransform& transform, const Voxelization& voxels,
                                double meanWidth, const VoxelSpectrumOptions& options) {
     if (transform.voxels() != voxels.voxels())
         throw std::invalid_argument("voxel spectrum: the transform is of a different grid");
-    const int m = voxels.voxels();
-    const double boxLength = voxels.boxLength(), volume = std::pow(boxLength, 3);
-    const std::vector<double> f = axisFactors(m, voxels.voxelSize(), options.cubeFormFactor);
+    const VoxelGridFigures grid{voxels.voxels(), voxels.boxLength(), voxels.phiVoxel()};
+    const std::vector<double> f =
+        axisFactors(grid.voxels, voxels.voxelSize(), options.cubeFormFactor);
+    return voxelSpectrumFrom(
+        gridSums(transform, f, std::pow(grid.boxLength, 3), options.serial),
+        [&transform](int kx, int ky, int kz) { return transform.power(kx, ky, kz); }, grid,
+        meanWidth, options);
+}
+
+std::int64_t individualMaxN2(int voxels, double boxLength, double meanWidth,
+                             const VoxelSpectrumOptions& options) {
+    const double reach = options.individualQw * boxLength / (2.0 * std::numbers::pi * meanWidth);
+    const std::int64_t inside = (voxels + 1) / 2 - 1; // |n_i| < M/2: +-n both in the grid
+    return std::min(static_cast<std::int64_t>(std::floor(reach * reach)), inside * inside);
+}
+
+DiscreteSpectrum voxelSpectrumFrom(std::vector<double> sumByN2, const PowerAt& power,
+                                   const VoxelGridFigures& grid, double meanWidth,
+                                   const VoxelSpectrumOptions& options) {
+    const int m = grid.voxels;
+    const double boxLength = grid.boxLength, volume = std::pow(boxLength, 3);
+    const std::vector<double> f = axisFactors(m, boxLength / m, options.cubeFormFactor);
     DiscreteSpectrum s;
     s.source = "voxel";
     s.boxLength = boxLength;
     s.meanWidth = meanWidth;
-    s.phi = voxels.phiVoxel();
-    s.sumByN2 = gridSums(transform, f, volume, options.serial);
-    // Individually: |n_i| < M/2, so that +-n both lie in the grid.
-    const double reach = options.individualQw * boxLength / (2.0 * std::numbers::pi * meanWidth);
-    const std::int64_t inside = (m + 1) / 2 - 1;
-    s.individualMaxN2 =
-        std::min(static_cast<std::int64_t>(std::floor(reach * reach)), inside * inside);
+    s.phi = grid.phiVoxel;
+    s.sumByN2 = std::move(sumByN2);
+    s.individualMaxN2 = individualMaxN2(m, boxLength, meanWidth, options);
     s.modes = {boxLength, s.individualMaxN2, halfSpaceWaveVectors(s.individualMaxN2), {}};
     for (const auto& n : s.modes.n) {
         // F(-n) is the conjugate of F(n): read the stored one with k_z >= 0.
         const int sign = n[2] < 0 ? -1 : 1;
         const int kx = (sign * n[0] + m) % m, ky = (sign * n[1] + m) % m, kz = sign * n[2];
-        s.modes.chi.push_back(transform.power(kx, ky, kz) * f[kx] * f[ky] * f[kz] / volume);
+        s.modes.chi.push_back(power(kx, ky, kz) * f[kx] * f[ky] * f[kz] / volume);
     }
     if (options.cubeFormFactor) {
         s.cutoffQ = 2.0 * std::numbers::pi * std::ceil(0.5 * m) / boxLength; // ceil(M/2)

@@ -11,6 +11,7 @@
 #include "voxels/voxelization.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,31 @@ struct VoxelSpectrumOptions {
 /// Throws std::invalid_argument if the transform is not of these voxels.
 DiscreteSpectrum voxelSpectrum(const VoxelFourierTransform& transform, const Voxelization& voxels,
                                double meanWidth, const VoxelSpectrumOptions& options);
+
+/// Per axis and DFT index k of an M-grid of voxel edge a: [a sinc(pi n / M)]^2 (the cube form
+/// factor along that axis, Q a / 2 = pi n / M), or a^2 without the form factor.
+std::vector<double> axisFactors(int m, double a, bool cubeFormFactor);
+
+/// The largest |n|^2 kept one by one: Q w <= individualQw and |n_i| < M/2.
+std::int64_t individualMaxN2(int voxels, double boxLength, double meanWidth,
+                             const VoxelSpectrumOptions& options);
+
+/// The grid a voxel spectrum is of.
+struct VoxelGridFigures {
+    int voxels;
+    double boxLength;
+    double phiVoxel;
+};
+/// |F(kx, ky, kz)|^2 of the indicator's DFT, 0 <= kz <= M/2.
+using PowerAt = std::function<double(int kx, int ky, int kz)>;
+
+/// voxelSpectrum from its parts, wherever the transform was made (the CPU's, or the GPU's,
+/// gpu/cuda_grid.hpp): the sums of chi per |n|^2 over the whole grid (the form factors of
+/// axisFactors and the weights of the half space applied, / V) and |F|^2 at the wave vectors
+/// up to individualMaxN2.
+DiscreteSpectrum voxelSpectrumFrom(std::vector<double> sumByN2, const PowerAt& power,
+                                   const VoxelGridFigures& grid, double meanWidth,
+                                   const VoxelSpectrumOptions& options);
 
 /// The exact spectrum alone: wave vectors with |n|^2 <= maxN2, phi = N v1 / V,
 /// missingWeight = (1 - phi) - E(0) (Parseval: chi_V sums to phi (1 - phi) V over every Q != 0).

@@ -1,6 +1,7 @@
 #include "info/packing_info.hpp"
 
 #include "io/packing_io.hpp"
+#include "io/text_io.hpp"
 
 #include <iomanip>
 #include <ostream>
@@ -8,7 +9,7 @@
 namespace sbpack {
 
 PackingInfo packingInfo(const std::filesystem::path& file, const ContactParameters& parameters) {
-    Packing packing = readPacking(file);
+    Packing packing = readPackingFile(file);
     const double meanWidth = packing.shape().meanWidth();
     ContactResult contacts = ContactNetwork(parameters).compute(packing);
     ContactResolution resolution = resolveContacts(packing, parameters.tolerance);

@@ -2,6 +2,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/packing_io.hpp"
+#include "io/text_io.hpp"
 #include "parallel/parallel.hpp"
 #include "pipeline/record_bytes.hpp"
 #include "pipeline/resources.hpp"
@@ -102,8 +103,12 @@ void checkOutputs(const RunSettings& settings) {
         if (i == 1 && sameDestination(outputs[1], outputs[0]))
             throw std::invalid_argument("--out and --json name the same file " +
                                         quotedName(outputs[i]));
-        for (const fs::path& input : settings.inputs)
+        for (const fs::path& input : settings.inputs) {
+            if (fs::weakly_canonical(outputs[i]) == fs::weakly_canonical(input))
+                throw std::invalid_argument("output " + quotedName(outputs[i]) +
+                                            " is also an input");
             checkNotInput(outputs[i], input, "input");
+        }
     }
     checkNotExported(settings, outputs);
 }
@@ -142,7 +147,7 @@ std::vector<Packing> readAndCheckInputs(const RunSettings& settings,
     if (settings.inputs.empty()) throw std::invalid_argument("no packing file given");
     std::vector<Packing> packings;
     for (std::size_t i : mine) {
-        Packing packing = readPacking(settings.inputs[i]);
+        Packing packing = readPackingFile(settings.inputs[i]);
         checkPackingForRun(packing, settings, settings.inputs[i]);
         packings.push_back(std::move(packing));
     }

@@ -57,8 +57,6 @@ struct RunSettings {
     }
     /// Why this run's grids must stay on the CPU ("" when the GPU can compute them all).
     std::string cpuOnlyReason() const {
-        if (runs(Analysis::Hyperuniformity))
-            return "hyper needs the spectrum at every wave vector of the grid (CPU only)";
         if (runs(Analysis::PoreSizes) && poreMethod == PoreMethod::Refined)
             return "--pores refined needs the feature transform (CPU only)";
         if (!vdbDirectory.empty()) return "--vdb exports the CPU's OpenVDB voxel tree";

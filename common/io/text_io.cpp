@@ -106,6 +106,10 @@ void writeTextPacking(const Packing& packing, const fs::path& file) {
     });
 }
 
+Packing readPackingFile(const fs::path& file) {
+    return file.extension() == ".txt" ? readTextPacking(file) : readPacking(file);
+}
+
 Packing readTextPacking(const fs::path& file) {
     LineReader reader(file);
     std::string line;

@@ -26,6 +26,11 @@ void writeTextPacking(const Packing& packing, const std::filesystem::path& file)
 /// the quaternions and wraps positions into [0, L).
 Packing readTextPacking(const std::filesystem::path& file);
 
+/// A packing in either documented format, by its extension: `.txt` the text format
+/// (readTextPacking), anything else the HDF5 file (readPacking, whose errors name a `.xyz` as
+/// output only). Every reader of the tools takes its inputs through here (issue 43).
+Packing readPackingFile(const std::filesystem::path& file);
+
 /// Writes an extended-XYZ file that OVITO opens with the periodic cell, orientations and
 /// superquadric shapes (Properties species, pos, orientation, aspherical_shape,
 /// superquadric_roundness).

@@ -137,7 +137,7 @@ void GeneratorCommandLine::addFileOptions() {
         ->type_name("K");
     app_.add_option_function<std::string>(
             "--out", [&o](const std::string& v) { o.out = v; },
-            "the packing (sbpack.packing format; see README), written atomically")
+            "the packing (sbpack.packing format: docs/design.md §4), written atomically")
         ->type_name("FILE.h5");
     app_.add_option_function<std::string>(
             "--checkpoint", [&o](const std::string& v) { o.checkpoint = v; },

@@ -17,8 +17,9 @@ namespace {
 /// the table held at 0.501's before, so that no warning came: issue 46, defect 12).
 const std::vector<MeasuredAtP>& rotatingRates() {
     static const std::vector<MeasuredAtP> rates = {
-        {0.5000001, 2.1e2}, {0.501, 3.8e3}, {0.51, 1.8e4}, {0.55, 3.9e4}, {0.85, 7.8e4}, {1.1, 8.4e4}, {1.5, 7.4e4},
-        {2.0, 5.3e4},   {3.0, 3.6e4},  {5.0, 1.1e4},  {10.0, 3.1e3}, {100.0, 280}, {1000.0, 310},
+        {0.5000001, 2.1e2}, {0.501, 3.8e3}, {0.51, 1.8e4}, {0.55, 3.9e4}, {0.85, 7.8e4},
+        {1.1, 8.4e4},       {1.5, 7.4e4},   {2.0, 5.3e4},  {3.0, 3.6e4},  {5.0, 1.1e4},
+        {10.0, 3.1e3},      {100.0, 280},   {1000.0, 310},
     };
     return rates;
 }

@@ -71,7 +71,7 @@ bool isText(const fs::path& file) {
 
 Packing read(const fs::path& file) {
     py::gil_scoped_release release;
-    return isText(file) ? readTextPacking(file) : readPacking(file);
+    return readPackingFile(file);
 }
 
 void write(const Packing& packing, const fs::path& file) {
@@ -125,10 +125,12 @@ py::dict provenanceOf(const Packing& packing) {
 void registerPacking(py::module_& m) {
     py::class_<Packing>(m, "Packing", "Identical superballs in a cubic periodic box")
         .def(py::init(&fromArrays), py::arg("positions"), py::arg("orientations"),
-             py::arg("box_length"), py::arg("p") = 1.0, py::arg("semi_axis") = 0.5,
+             py::arg("box_length"), py::kw_only(), py::arg("p"), py::arg("semi_axis"),
              py::arg("source") = "arrays",
-             "From N x 3 positions and N x 4 unit quaternions (w, x, y, z); checked as the file "
-             "readers check (ValueError with their message, naming `source`)")
+             "From N x 3 positions and N x 4 unit quaternions (w, x, y, z), the shape's p and "
+             "semi_axis given by keyword (no default: a packing's grown size is its own, "
+             "docs/python.md); checked as the file readers check (ValueError with their "
+             "message, naming `source`)")
         .def_static("read", &read, py::arg("path"), "Reads a .h5 (or .txt) packing file")
         .def("write", &write, py::arg("path"), "Writes .h5, .txt or .xyz (OVITO), atomically")
         .def_property_readonly("positions", &positionsOf, "N x 3 centroids in [0, L)")

@@ -1,9 +1,11 @@
 // The GPU's per-thread code (analysis/gpu/grid_kernels.hpp) run on the host against the CPU path,
 // and the host side of --device cuda: what can be tested without a GPU (docs/gpu.md).
+#include "gpu/compact_cube.hpp"
 #include "gpu/compute_device.hpp"
 #include "gpu/gpu_memory.hpp"
 #include "gpu/grid_kernels.hpp"
 #include "gpu/particle_images.hpp"
+#include "hyperuniformity/discrete_spectrum.hpp"
 #include "io/packing_io.hpp"
 #include "pores/distance_transform.hpp"
 #include "spectral/spectral_density.hpp"
@@ -156,17 +158,10 @@ TEST(GridKernels, DistancePassesEqualTheCpuTransform) {
         std::vector<std::uint32_t>(cpu.squaredDistances().begin(), cpu.squaredDistances().end()));
 }
 
-/// The GPU's compact cube of low wave vectors (cuda_kernels.hpp, gatherCube) gives the shells of
-/// the whole grid bit for bit: the same coefficients are added in the same order.
-TEST(GridKernels, CompactCubeGivesTheWholeGridShells) {
-    const Packing packing = testing::latticePacking(1.5, 3, 2.0, 0.15, 5);
-    const int m = 36, s = 12;
-    const Voxelization voxels = Voxelizer({m}).compute(packing, Progress());
-    FftSettings fft;
-    fft.planning = FftPlanning::Estimate;
-    fft.wisdomFile.clear();
-    const VoxelFourierTransform transform(voxels, fft, Progress());
-    const int rows = 2 * s + 1;
+/// The GPU's compact cube of low wave vectors (cuda_kernels.hpp, gatherCube), made here from the
+/// CPU's transform.
+std::vector<double> compactCube(const VoxelFourierTransform& transform, int s) {
+    const int m = transform.voxels(), rows = 2 * s + 1;
     std::vector<double> cube;
     for (int ox = 0; ox < rows; ++ox)
         for (int oy = 0; oy < rows; ++oy)
@@ -177,16 +172,41 @@ TEST(GridKernels, CompactCubeGivesTheWholeGridShells) {
                 cube.push_back(c.real());
                 cube.push_back(c.imag());
             }
+    return cube;
+}
+
+/// The cube gives the whole grid's shells bit for bit (the same coefficients added in the same
+/// order), and the voxel spectrum's single wave vectors bit for bit.
+TEST(GridKernels, CompactCubeGivesTheWholeGridsShellsAndModes) {
+    const Packing packing = testing::latticePacking(1.5, 3, 2.0, 0.15, 5);
+    const int m = 36, s = 15; // s^2 >= the single wave vectors' largest |n|^2 (182)
+    const Voxelization voxels = Voxelizer({m}).compute(packing, Progress());
+    FftSettings fft;
+    fft.planning = FftPlanning::Estimate;
+    fft.wisdomFile.clear();
+    const VoxelFourierTransform transform(voxels, fft, Progress());
+    const std::vector<double> cube = compactCube(transform, s);
     const double a = voxels.voxelSize(), l = packing.boxLength;
     const ShellAverage whole =
         spectralShellSums({transform.data(), m, 0, m, m, m / 2 + 1}, a, l, s, Progress(), true)
             .average();
     const ShellAverage compact =
-        spectralShellSums({cube.data(), m, 0, rows, rows, s + 1}, a, l, s, Progress(), true)
-            .average();
+        spectralShellSums(gpu::compactCubeSlab(cube, m, s), a, l, s, Progress(), true).average();
     EXPECT_EQ(compact.value, whole.value);
     EXPECT_EQ(compact.count, whole.count);
     EXPECT_EQ(compact.q, whole.q);
+
+    const double w = packing.shape().meanWidth();
+    const VoxelSpectrumOptions options;
+    const std::int64_t reach2 = individualMaxN2(m, l, w, options);
+    ASSERT_GT(reach2, 10);
+    ASSERT_LE(reach2, std::int64_t{s} * s);
+    const DiscreteSpectrum cpu = voxelSpectrum(transform, voxels, w, options);
+    const DiscreteSpectrum fromCube = voxelSpectrumFrom(
+        cpu.sumByN2, gpu::compactCubePower(cube, m, s), {m, l, voxels.phiVoxel()}, w, options);
+    EXPECT_EQ(fromCube.modes.chi, cpu.modes.chi);
+    EXPECT_EQ(fromCube.missingWeight, cpu.missingWeight);
+    EXPECT_EQ(fromCube.cutoffQ, cpu.cutoffQ);
 }
 
 TEST(GpuMemory, PlanAddsTheGridsAndBoundsTheScratch) {

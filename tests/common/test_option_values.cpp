@@ -29,9 +29,12 @@ TEST(OptionValues, NumbersAreParsedWhole) {
 }
 
 TEST(OptionValues, OutOfRangeIsNamedNotCalledNotANumber) {
-    EXPECT_EQ(refusal("1e-320"), "option --x: 1e-320 is below the range of double precision numbers");
-    EXPECT_EQ(refusal("1e400"), "option --x: 1e400 is beyond the range of double precision numbers");
-    EXPECT_EQ(refusal("-1e400"), "option --x: -1e400 is beyond the range of double precision numbers");
+    EXPECT_EQ(refusal("1e-320"),
+              "option --x: 1e-320 is below the range of double precision numbers");
+    EXPECT_EQ(refusal("1e400"),
+              "option --x: 1e400 is beyond the range of double precision numbers");
+    EXPECT_EQ(refusal("-1e400"),
+              "option --x: -1e400 is beyond the range of double precision numbers");
     EXPECT_EQ(parseNumber("--x", "2.3e-308"), 2.3e-308); // the smallest normal numbers stay
 }
 

@@ -366,8 +366,8 @@ TEST_F(PackingIo, AnExternalLinkIsRefusedNotFollowed) { // issue 46, defect 5
             const Hdf5Handle h5 = openForEditing(path);
             if (H5Lexists(h5.get(), "velocities", H5P_DEFAULT) > 0)
                 H5Ldelete(h5.get(), "velocities", H5P_DEFAULT);
-            ASSERT_GE(H5Lcreate_external(target, "/velocities", h5.get(), "velocities",
-                                         H5P_DEFAULT, H5P_DEFAULT),
+            ASSERT_GE(H5Lcreate_external(target, "/velocities", h5.get(), "velocities", H5P_DEFAULT,
+                                         H5P_DEFAULT),
                       0);
         }
         expectError<PackingFileError>([&] { readPacking(path); },

@@ -4,9 +4,11 @@
 #include "gpu/compute_device.hpp"
 #include "gpu/cuda_grid.hpp"
 #include "gpu/gpu_memory.hpp"
+#include "hyperuniformity/discrete_spectrum.hpp"
 #include "io/packing_io.hpp"
 #include "pores/distance_transform.hpp"
 #include "spectral/spectral_density.hpp"
+#include "spectral/voxel_fourier_transform.hpp"
 #include "voxels/voxelization.hpp"
 
 #include <gtest/gtest.h>
@@ -97,16 +99,50 @@ TEST_F(CudaGridTest, ChiAgreesWithTheCpu) {
                 .compute(packing, Voxelizer({c.voxels}).compute(packing, Progress()), Progress());
         const CudaGrid grid(packing, c.voxels);
         const SpectralDensityResult gpu =
-            grid.spectralDensity(packing, parameters, false, Progress());
+            grid.spectralDensity(packing, parameters, false, nullptr, Progress()).chi;
         ASSERT_EQ(gpu.shells.count, cpu.shells.count);
         EXPECT_LE(largestRelativeDifference(gpu.shells, cpu.shells), 1e-10) << c.file;
         const SpectralDensityResult single =
-            grid.spectralDensity(packing, parameters, true, Progress());
+            grid.spectralDensity(packing, parameters, true, nullptr, Progress()).chi;
         const double error = largestRelativeDifference(single.shells, cpu.shells);
         std::cout << "[ single precision ] " << c.file << " M " << c.voxels << ": largest relative "
                   << "error of chi over " << cpu.maxShell << " shells " << error
                   << ", double: " << largestRelativeDifference(gpu.shells, cpu.shells) << '\n';
         EXPECT_LE(error, 1e-3) << c.file;
+    }
+}
+
+/// Largest |a_i - b_i| / max |b| over two equally long lists.
+double largestDifferenceOverPeak(const std::vector<double>& a, const std::vector<double>& b) {
+    double worst = 0.0, peak = 0.0;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+        worst = std::max(worst, std::abs(a[i] - b[i]));
+        peak = std::max(peak, std::abs(b[i]));
+    }
+    return worst / peak;
+}
+
+TEST_F(CudaGridTest, HyperSpectrumAgreesWithTheCpu) {
+    SpectralDensityParameters parameters;
+    parameters.fft.planning = FftPlanning::Estimate;
+    parameters.fft.wisdomFile.clear();
+    const VoxelSpectrumOptions options;
+    for (const Case& c : {kCases[0], kCases[2], kCases[4]}) {
+        const Packing packing = storedPacking(c.file);
+        const Voxelization voxels = Voxelizer({c.voxels}).compute(packing, Progress());
+        const VoxelFourierTransform transform(voxels, parameters.fft, Progress());
+        const double w = packing.shape().meanWidth();
+        const DiscreteSpectrum cpu = voxelSpectrum(transform, voxels, w, options);
+        const DiscreteSpectrum gpu =
+            *CudaGrid(packing, c.voxels)
+                 .spectralDensity(packing, parameters, false, &options, Progress())
+                 .voxelSpectrum;
+        ASSERT_EQ(gpu.sumByN2.size(), cpu.sumByN2.size());
+        ASSERT_EQ(gpu.modes.chi.size(), cpu.modes.chi.size());
+        EXPECT_LE(largestDifferenceOverPeak(gpu.sumByN2, cpu.sumByN2), 1e-10) << c.file;
+        EXPECT_LE(largestDifferenceOverPeak(gpu.modes.chi, cpu.modes.chi), 1e-10) << c.file;
+        EXPECT_NEAR(gpu.missingWeight, cpu.missingWeight, 1e-10) << c.file;
+        EXPECT_EQ(gpu.phi, cpu.phi);
     }
 }
 

@@ -80,7 +80,8 @@ def test_wrong_shape_raises_the_clis_message(sbanalyze, tmp_path):
         f["positions"] = np.zeros((2, 3))
         f["orientations"] = np.zeros((2, 3))
     with pytest.raises(ValueError) as error:
-        sbpack.Packing(np.zeros((2, 3)), np.zeros((2, 3)), 5.0, source=str(path))
+        sbpack.Packing(np.zeros((2, 3)), np.zeros((2, 3)), 5.0, p=1.0, semi_axis=0.5,
+                       source=str(path))
     assert str(error.value) == cli_error(sbanalyze, path, tmp_path)
 
 
@@ -101,14 +102,27 @@ def test_misuses_are_named(tmp_path):
     and write errors as OSError."""
     with pytest.raises(ValueError, match=r"has shape 3 x 100, expected N x 3 \(one row per "
                                          r"particle; transposed\?\)"):
-        sbpack.Packing(np.zeros((3, 100)), np.zeros((100, 4)), 5.0)
+        sbpack.Packing(np.zeros((3, 100)), np.zeros((100, 4)), 5.0, p=1.5, semi_axis=0.5)
     with pytest.raises(ValueError, match=r"has shape rank 1, expected N x 3"):
-        sbpack.Packing(np.zeros(3), np.zeros((1, 4)), 5.0)
+        sbpack.Packing(np.zeros(3), np.zeros((1, 4)), 5.0, p=1.5, semi_axis=0.5)
     with pytest.raises(ValueError, match="source contains a NUL"):
-        sbpack.Packing(np.zeros((1, 3)), [[1.0, 0, 0, 0]], 5.0, source="a\0b")
+        sbpack.Packing(np.zeros((1, 3)), [[1.0, 0, 0, 0]], 5.0, p=1.5, semi_axis=0.5,
+                       source="a\0b")
     packing = sbpack.Packing.read(P15)
     with pytest.raises(ValueError, match=r"unknown extension \(use .h5, .txt or .xyz\)"):
         packing.write(tmp_path / "x.bad")
     assert not (tmp_path / "x.bad").exists()
     with pytest.raises(OSError, match="does not exist"):
         packing.write(tmp_path / "missing" / "x.h5")
+
+
+def test_the_shape_is_never_a_silent_default():
+    """Issue 43: rebuilding an MRJ packing from its arrays without semi_axis once gave phi = 0.2
+    (a default of 0.5); p and semi_axis are now required keywords."""
+    p = sbpack.Packing.read(P15)
+    with pytest.raises(TypeError):
+        sbpack.Packing(p.positions, p.orientations, p.box_length, p=1.5)
+    with pytest.raises(TypeError):
+        sbpack.Packing(p.positions, p.orientations, p.box_length, semi_axis=p.semi_axis)
+    q = sbpack.Packing(p.positions, p.orientations, p.box_length, p=p.p, semi_axis=p.semi_axis)
+    assert q.phi == p.phi

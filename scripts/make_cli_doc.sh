@@ -1,0 +1,186 @@
+#!/usr/bin/env bash
+# Prints docs/cli.md, the command-line manual, to standard output: the hand-written head below,
+# then the --help of sbgen, of sbanalyze and of sbanalyze's subcommands info, convert and schema,
+# each under a "## `command`" heading in a text block.
+#   scripts/make_cli_doc.sh build/generator/sbgen build/analysis/sbanalyze > docs/cli.md
+# tests/cli_doc_current.sh checks that docs/cli.md is what this prints. One change is made to the
+# programs' words: sbanalyze's --threads default names the thread count of the machine it runs on,
+# which is left out here, so that every machine generates the same file.
+set -euo pipefail
+
+if [[ $# -ne 2 ]]; then
+    echo "usage: make_cli_doc.sh SBGEN SBANALYZE" >&2
+    exit 2
+fi
+sbgen=$1
+sbanalyze=$2
+for program in "$sbgen" "$sbanalyze"; do
+    if [[ ! -x "$program" || -d "$program" ]]; then
+        echo "make_cli_doc.sh: '$program' is not an executable program" >&2
+        exit 2
+    fi
+done
+export LC_ALL=C
+
+cat <<'HEAD'
+# sbgen and sbanalyze on the command line
+
+`sbgen` generates one maximally random jammed packing of superballs (serial, event-driven).
+`sbanalyze` analyses stored packings, thread-parallel, into one HDF5 results file, and has the
+subcommands `info` (validate each packing and report it), `convert` (formats) and `schema` (the
+results file's names and units). Their `--help` texts close this file, as the programs print
+them (but for the machine's thread count in the default of `--threads`).
+
+- `sbgen` exits with 0 when the packing is jammed; 1 on bad input or an error; 3 when the packing
+  was written but is not jammed (the jam check failed or the cost limit stopped the run; the
+  reason is in the file's provenance and on stderr); 128 + signal when SIGINT or SIGTERM wrote a
+  checkpoint.
+- `sbanalyze` exits with 1 on any error or interrupt, and then leaves no output file; `info`
+  reports every file it can read and exits with 1 when one of them is bad.
+- The results file's groups, names and units: `docs/results-schema.md` (`sbanalyze schema`).
+  What the programs promise about inputs, outputs and exit codes, with the test behind each
+  promise: `docs/reliability.md`. The protocol and its conventions: `docs/design.md` §3.
+  `sbanalyze --version` also lists the versions of HDF5, FFTW, oneTBB, OpenMP and OpenVDB.
+
+This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
+`scripts/make_cli_doc.sh build/generator/sbgen build/analysis/sbanalyze > docs/cli.md`
+(`tests/cli_doc_current.sh` checks it).
+
+## What `--help` does not say
+
+### sbgen
+
+- **Progress**: a line on stderr every 2 s gives the phase, `phi`, `P`, collisions and
+  collisions per second, wall time (`--quiet` silences it).
+- **Warnings before a run, once each**: a protocol whose expected cost exceeds a CPU hour (the
+  estimate is printed: collisions per particle from the rates, collisions per CPU second
+  measured at `p`, and when the cost limit would stop it; docs/design.md §3), a fast rate
+  outside the paper's range (0.005, 0.05), `p > 10`, and near-cubes (`p >= 3`) in a box under 8
+  diameters across, where a column of them can span the box (`sbgen --p 3 --n 64 ...` says so;
+  `N >= 1000` avoids it). The defaults at the paper's `p` and `N = 1000` print none.
+- **Output**: the packing (format below, with `velocities`, and `angular_velocities` for
+  superballs) and, in `provenance`, every parameter, the seed, the version, the final reduced
+  pressure, collisions (and `expected_collisions`, docs/design.md §3), events, list rebuilds,
+  stale events and rechecks, the superball predictor's work (`predictor_*`: calls, sphere, bound
+  and plane rejections, exact and robust evaluations, warm Newton steps on the normal, plane and
+  chord steps, Newton brackets, uncertified roots, refinement steps, pair-solver fallbacks,
+  rechecks, limit hits, start overlaps), the wall and CPU time, and the final contact analysis of
+  `common/` (`z_mean`, `rattler_fraction`, `contact_tolerance`, `worst_gap_over_d`,
+  `overlapping_pairs`; contacts at `100 / P` D clamped to `[1e-10, 1e-2]` D, so a run stopped
+  below `P = 1e12` reports the `Z` of its load-bearing gaps, not `Z = 0`), plus the exact engine
+  state (`resume_state`, docs/design.md §4).
+- **Determinism**: the same seed and options give a bit-identical packing (every dataset and
+  provenance entry but the timings, `wall_time_s` and `cpu_time_s`). Random numbers use only `std::mt19937_64` and explicit
+  transforms, so they do not depend on the C++ library.
+- **Checkpoints**: `--checkpoint FILE` writes the synchronised state every
+  `--checkpoint-interval` seconds (atomically), and `--resume FILE` continues from it bit for bit.
+  A finished output can be resumed too, e.g. with `--pressure-final 1e14` to continue from 1e12,
+  or one stopped at its cost limit with a larger `--cost-limit`. A file without sbgen state is
+  refused, and so is an `--out` that is the `--resume` file.
+- **Bad input** (`p` outside `(0.5, 1000]` or NaN, `N < 2`, `phi-init` outside (0, 0.5),
+  non-positive or NaN rates or pressures, `pressure-final <= pressure-switch`, a negative
+  `cost-limit`, an unwritable output, a resume file that is not a checkpoint, protocol options
+  other than `--pressure-final` and `--cost-limit` given with `--resume`) is one line naming the
+  option or file, before any work.
+
+### sbanalyze
+
+- **`info`** reads and validates every file named; a bad file (missing, not HDF5, truncated,
+  wrong format or version, missing dataset, shape not matching `n_particles`, NaN/inf
+  coordinates, quaternion far from unit norm, `p < 0.5` or NaN, `box_length <= 0`,
+  `semi_axis <= 0`) gets one line naming the file and the problem. Overlapping particles are a
+  warning naming the worst pair and its depth.
+- **The analyses** (`--compute`; each brings what it needs and nothing else runs):
+
+  | name | what | paper |
+  |---|---|---|
+  | `contacts` | contact network: `Z` over non-rattlers, rattler fraction, contacts per particle | Secs. III A, IV C |
+  | `sq` | `S(Q) = \|sum_j exp(-i Q.r_j)\|^2 / N` of the centroids, `Q = 2 pi n / L != 0`, by direct summation in double precision (separable phase tables, half space `S(Q) = S(-Q)`) | Eq. 4 |
+  | `chi` | `chi_V(Q) = \|F(Q)\|^2 [prod_i a sinc(Q_i a / 2)]^2 / V`, `F` the FFT of the voxel indicator (FFTW r2c, threaded, wisdom kept), `a = L / M`; for spheres also exactly, `\|sum_j exp(-i Q.r_j)\|^2 m(Q)^2 / V` with `m(Q) = 4 pi (sin QR - QR cos QR) / Q^3`, and the voxel path's error against it | Eq. 12 |
+  | `voxels` | `M^3` voxels of the box, voxel `(i, j, k)` centred at `((i + 1/2) a, ...)`, solid when its centre is inside a particle or a periodic image; `phi_voxel` beside `phi` | Sec. III B |
+  | `pores` | by `--pores`: `voxel` (default), on the `--pore-voxels` grid the exact periodic Euclidean distance transform of the void (distance from each void voxel centre to the nearest solid voxel centre, minimum image; Felzenszwalb–Huttenlocher, parallel over lines); `refined`, each void voxel centre's certified distance to the nearest particle surface (feature transform, then the exact point-to-superball distance); `exact`, K random points of the void without voxels; then `F(delta)`, `P(delta)`, `<delta>`, `<delta^2>`, the largest pore (refined, exact: a local maximum by Nelder-Mead) and the saturation check `max delta < w / 2`, also divided by `w` | Eqs. 13–15 |
+  | `transport` | from the pore-size moments, diffusion-controlled limit: formation factor from the `zeta_2` interpolation of Sec. V A, `k ~ <delta^2> / F`, `tau <= <delta>^2 / D`, `T1 <= <delta^2> / D`, each also over `w^2` | Eqs. 16–20 |
+  | `hyper` | the excess spreadability `E(t)` as the exact lattice sum over the box's wave vectors, its local exponent, `alpha` from the long-time decay with a bootstrap error, the fit `chi_V = a0 + a1 Q^alpha` at that `alpha` (and the free fit), `H = a0 / chi_V(Q_peak)`, the Debye medium on the same time axis; `chi_V` exact (no voxels) at `Q w <= --chi-exact-qmax` (docs/hyperuniformity.md) | Eqs. FT_spread, PLF, fit, HX, deb |
+
+- **Shells**: curves are averaged over shells of width `2 pi / L`: shell `s` holds the `n` with
+  `round(|n|) = s`, so shells `1..s_max` use exactly the `n` with `|n| < s_max + 1/2`; `s_max` is
+  the last shell with `Q w <= qmax` (`--qmax`, `w` the mean width) and, for `chi`, also
+  `|n| < M / 2` (no aliasing). Each shell has its mean `Q`, mean value and number of wave vectors.
+- **Grids**: the pore grid takes 5 bytes a voxel, 625 MB at 500^3. A grid must put at least 4
+  voxels across a particle's narrowest width (`2 r_in`), else the run is refused with the
+  smallest acceptable `M`.
+- **`--threads`** caps TBB and FFTW (whose threads are OpenMP's) alike; `0` or more than 4
+  times the hardware threads is refused.
+- **`--vdb DIR`**: the density volume is in the packing's length units, with metadata `p`,
+  `phi_voxel`, `phi_exact`; Blender (Volume object), Houdini and ParaView open it. The pore-size
+  grid is active on the void voxels only. Every `.vdb` also carries `box_length`, `voxels`
+  (int64) and `units` (one writer, `analysis/voxels/vdb_image`).
+- **FFT planning**: planning predicted to take longer than `--fft-planning-budget` (a `n log n`
+  model calibrated on the reference machine, `bench/RESULTS.md`, "FFT planning") falls back on
+  FFTW's `estimate` plan, and measuring is cut off near the budget (FFTW's time limit); run once
+  with `none` to store measured plans. The "FFT plan" progress line gives the planning time and
+  where the plan came from (wisdom, measured, or estimate over the budget), as do `fft_plan_s`
+  and `fft_plan_source` in the results. A wisdom file that cannot be read or written is only a
+  warning.
+- **Progress**: one line per stage on standard error (stage, detail, wall time); Ctrl-C stops
+  the running stage at its next chunk.
+- **Several inputs** are processed one after the other (`sbanalyze run*/packing.h5 --out
+  all.h5`), so stored packings can be reprocessed in one call or from a script. The results
+  file, the JSON summary and the `.vdb` files are written to temporaries and renamed together at
+  the end.
+- **`hyper` skipped**: a box too small for a long-time window, or a fit window with too few wave
+  vectors, skips `hyper` for that file; the warning names the option to change
+  (`--alpha-window`, `--fit-qmax`, `--voxels`).
+- **Under `mpirun`** (builds with `-DSBPACK_WITH_MPI=ON`; docs/scale-out.md): `--distribute
+  grids` also refuses `--pores refined|exact`. The test `slurm_preemption`
+  (`tests/slurm_preemption.sh`) sends SIGTERM to a running Slurm array task, as `--signal=B:TERM`
+  does; the task saves its checkpoint and requeues itself, and the requeued task resumes to the
+  uninterrupted task's packing, bit for bit.
+
+### Files
+
+- **Packing file** (HDF5, `format = "sbpack.packing"`, `format_version = 1`): its attributes and
+  datasets are in docs/design.md §4; its `phi` must equal `N v1 / L^3`, which readers check.
+  Readable with h5py: `h5py.File(name)["positions"][:]`, `dict(f.attrs)`.
+- **Plain text** (`convert`): a header `# sbpack text packing v1`, `# p P`, `# semi_axis R`,
+  `# box_length L`, `# n_particles N`, then one particle per line `x y z qw qx qy qz`.
+- **Extended XYZ** (`convert`, output only): OVITO reads positions, `orientation` (its
+  quaternion order `x y z w`) and `aspherical_shape` directly; map the two
+  `superquadric_roundness` columns (both `1/p`) to OVITO's "Superquadric Roundness" in the
+  import dialog to see superball shapes.
+- **Results file** (HDF5, `format = "sbpack.results"`, `format_version = 2`): the root holds the
+  run, `files/<i>` one input with one subgroup per analysis, `ensembles/<k>` the inputs of equal
+  `p` and `N`; every name and unit is in docs/results-schema.md. Reading it with h5py
+  (`tests/read_results.py` does this):
+
+  ```python
+  import h5py
+  with h5py.File("results.h5") as f:
+      one = f["files/0"]
+      w = one.attrs["mean_width"]
+      Qw, S = one["structure_factor/Q_w"][:], one["structure_factor/S"][:]
+      chi_w3 = one["spectral_density/chi"][:] / w**3      # chi_V / w^3 against Q w, as the paper
+      print(one["spectral_density/chi"].attrs["units"])   # length^3
+      print(dict(f["ensembles/0/contacts"].attrs))        # z_mean, z_mean_std, ...
+  ```
+HEAD
+
+# One section: "## `TITLE`" and the output of the command in a text block.
+section() {
+    local title=$1
+    shift
+    local text
+    if ! text=$("$@"); then
+        echo "make_cli_doc.sh: '$title' failed" >&2
+        exit 1
+    fi
+    text=$(sed -E "s/\(default: the hardware's, [0-9]+\)/(default: the hardware's)/" <<<"$text")
+    # shellcheck disable=SC2016 # the backticks are Markdown, not a command substitution
+    printf '\n## `%s`\n\n```text\n%s\n```\n' "$title" "$text"
+}
+
+section "sbgen --help" "$sbgen" --help
+section "sbanalyze --help" "$sbanalyze" --help
+section "sbanalyze info --help" "$sbanalyze" info --help
+section "sbanalyze convert --help" "$sbanalyze" convert --help
+section "sbanalyze schema --help" "$sbanalyze" schema --help
