@@ -8,6 +8,7 @@
 # usage: special_files.sh SBGEN SBANALYZE PACKING.h5 WORKDIR
 set -uo pipefail
 sbgen=$1 sbanalyze=$2 packing=$3 work=$4
+lattice=$(cd "$(dirname "$0")/../scripts" && pwd)/make_lattice.py
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 cp "$packing" good.h5
 sum=$(md5sum good.h5)
@@ -75,6 +76,15 @@ for deadline in 1e10 99999999999 1e400 0 -1 abc ""; do
         env SBPACK_READ_DEADLINE_S="$deadline" "$sbanalyze" info good.h5
 done
 expect "SBPACK_READ_DEADLINE_S='abc' is not a number" env SBPACK_READ_DEADLINE_S=abc "$sbgen" --resume good.h5 --out y.h5
+# With several inputs an analysis error names its file (defect 9): aligned p = 10 cubes touching
+# face to face on a 4^3 lattice leave no voxel centre void at M = 16.
+python3 "$lattice" 10 4 cubes.txt && cp cubes.txt cubes2.txt
+expect "'cubes.txt': pore sizes: no void voxel at M = 16" \
+    "$sbanalyze" cubes.txt cubes2.txt --compute pores --pore-voxels 16 --json -
+# A huge --qmax is refused by the memory estimate, in a readable message (defect 14).
+expect "use a smaller --qmax" "$sbanalyze" good.h5 --compute sq --qmax 1e300 --json -
+output=$("$sbanalyze" good.h5 --compute sq --qmax 1e300 --json - 2>&1)
+[[ ${#output} -lt 400 ]] || { echo "FAIL: a 300-digit qmax: $output"; failures=$((failures + 1)); }
 # Smaller ones (defect 14): a name of 250 characters still gets its temporary; an XYZ given to a
 # reader is named as such; a relative XDG_CACHE_HOME is ignored (the XDG specification).
 long=$(printf 'a%.0s' {1..247}).h5

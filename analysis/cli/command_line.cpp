@@ -144,7 +144,7 @@ void CommandLine::addAnalysisOptions() {
     app_.add_option_function<std::string>(
             "--device", [this](const std::string& v) { device_ = computeDeviceFromName(v); },
             "where the grids of voxels, chi, hyper and pores are computed: cpu, cuda (an\n"
-            "NVIDIA GPU, builds with SBPACK_WITH_CUDA; not with --pores refined, --vdb or\n"
+            "NVIDIA GPU, builds with SBPACK_WITH_CUDA; not with --pores refined or\n"
             "--distribute grids) or auto (default: cuda where granted, else cpu; docs/gpu.md)")
         ->type_name("cpu|cuda|auto");
     addContactOptions(app_, s.contacts);

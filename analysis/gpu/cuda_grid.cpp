@@ -24,10 +24,15 @@ double CudaGrid::phiVoxel() const {
     return static_cast<double>(solidCount_) / (m * m * m);
 }
 
-std::vector<std::uint8_t> CudaGrid::solidMask() const {
-    const std::int64_t m = voxels_, w = gpu::wordsPerRow(voxels_);
+std::vector<std::uint32_t> CudaGrid::rowBits() const {
     std::vector<std::uint32_t> words(words_.bytes() / sizeof(std::uint32_t));
     words_.download(words.data());
+    return words;
+}
+
+std::vector<std::uint8_t> CudaGrid::solidMask() const {
+    const std::int64_t m = voxels_, w = gpu::wordsPerRow(voxels_);
+    const std::vector<std::uint32_t> words = rowBits();
     std::vector<std::uint8_t> mask(static_cast<std::size_t>(m * m * m));
     for (std::int64_t row = 0; row < m * m; ++row)
         for (std::int64_t k = 0; k < m; ++k)

@@ -33,6 +33,8 @@ class CudaGrid {
 
     /// mask[(i M + j) M + k] = 1 on solid voxels, as Voxelization::copySolidMask.
     std::vector<std::uint8_t> solidMask() const;
+    /// The voxel bits on the host (grid_kernels.hpp's rows), e.g. for Voxelizer::fromRowBits.
+    std::vector<std::uint32_t> rowBits() const;
 
     /// chi_V(Q) as SpectralDensity::compute, the indicator transformed by cuFFT (single
     /// precision when `single`); fillSeconds and transformSeconds are the device's. With

@@ -59,7 +59,6 @@ struct RunSettings {
     std::string cpuOnlyReason() const {
         if (runs(Analysis::PoreSizes) && poreMethod == PoreMethod::Refined)
             return "--pores refined needs the feature transform (CPU only)";
-        if (!vdbDirectory.empty()) return "--vdb exports the CPU's OpenVDB voxel tree";
         if (distribute == Distribution::Grids) return "--distribute grids shares CPU slabs";
         return "";
     }

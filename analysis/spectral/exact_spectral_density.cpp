@@ -5,6 +5,8 @@
 #include "spectral/superball_form_factor.hpp"
 #include "structure/collective_density.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -176,7 +178,7 @@ ExactSpectralDensity::ExactSpectralDensity(ExactSpectralDensityParameters parame
     if (!(parameters.maxQw > 0.0) || !std::isfinite(parameters.maxQw))
         throw std::invalid_argument("exact spectral density: qmax must be positive and finite, "
                                     "not " +
-                                    std::to_string(parameters.maxQw));
+                                    fmt::format("{:g}", parameters.maxQw));
 }
 
 std::int64_t ExactSpectralDensity::maxN2For(double maxQw, double boxLength, double meanWidth) {
@@ -197,12 +199,12 @@ ExactSpectralDensityResult ExactSpectralDensity::compute(const Packing& packing,
     const double qMinW = 2.0 * std::numbers::pi * result.meanWidth / packing.boxLength;
     if (result.maxN2 < 1)
         throw std::invalid_argument("exact spectral density: no wave vector with Q w <= qmax = " +
-                                    std::to_string(parameters_.maxQw) +
+                                    fmt::format("{:g}", parameters_.maxQw) +
                                     "; the box's smallest is Q w = " + std::to_string(qMinW));
     const double reach = parameters_.maxQw / result.meanWidth * shape.circumradius();
     if (!shape.isSphere() && reach > SuperballFormFactor::kSeriesLimit)
         throw std::invalid_argument(
-            "exact spectral density: qmax = " + std::to_string(parameters_.maxQw) +
+            "exact spectral density: qmax = " + fmt::format("{:g}", parameters_.maxQw) +
             " is beyond the form factor series' range for p = " + std::to_string(packing.p) +
             " (Q w <= " +
             std::to_string(SuperballFormFactor::kSeriesLimit * result.meanWidth /

@@ -5,6 +5,8 @@
 #include "spectral/voxel_fourier_transform.hpp"
 #include "structure/structure_factor.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -46,7 +48,7 @@ double sphereFormFactor(double q, double radius) {
 SpectralDensity::SpectralDensity(SpectralDensityParameters parameters) : parameters_(parameters) {
     if (!(parameters.maxQw > 0.0) || !std::isfinite(parameters.maxQw))
         throw std::invalid_argument("spectral density: qmax must be positive and finite, not " +
-                                    std::to_string(parameters.maxQw));
+                                    fmt::format("{:g}", parameters.maxQw));
 }
 
 int SpectralDensity::maxShellFor(double maxQw, double boxLength, double meanWidth, int voxels) {
@@ -149,7 +151,7 @@ SpectralDensityResult SpectralDensity::start(const Packing& packing, int voxels,
     result.maxShell = maxShellFor(parameters_.maxQw, packing.boxLength, result.meanWidth, voxels);
     if (result.maxShell < 1)
         throw std::invalid_argument(
-            "spectral density: no shell with Q w <= " + std::to_string(parameters_.maxQw) +
+            "spectral density: no shell with Q w <= " + fmt::format("{:g}", parameters_.maxQw) +
             " on a " + std::to_string(voxels) + "^3 grid of this box");
     return result;
 }

@@ -2,6 +2,9 @@
 
 #include "structure/collective_density.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -12,11 +15,14 @@ namespace sbpack {
 StructureFactor::StructureFactor(StructureFactorParameters parameters) : parameters_(parameters) {
     if (!(parameters.maxQw > 0.0) || !std::isfinite(parameters.maxQw))
         throw std::invalid_argument("structure factor: qmax must be positive and finite, not " +
-                                    std::to_string(parameters.maxQw));
+                                    fmt::format("{:g}", parameters.maxQw));
 }
 
 int StructureFactor::maxShellFor(double maxQw, double boxLength, double meanWidth) {
-    return static_cast<int>(std::floor(maxQw * boxLength / (2.0 * std::numbers::pi * meanWidth)));
+    // Saturated below INT_MAX: a huge qmax is a huge shell count (refused by the memory
+    // estimate), never an overflow read as "below the box's smallest wave number".
+    const double shells = std::floor(maxQw * boxLength / (2.0 * std::numbers::pi * meanWidth));
+    return static_cast<int>(std::min(shells, 1e9));
 }
 
 StructureFactorResult StructureFactor::compute(const Packing& packing,
@@ -29,7 +35,7 @@ StructureFactorResult StructureFactor::compute(const Packing& packing,
     result.maxShell = maxShellFor(parameters_.maxQw, packing.boxLength, result.meanWidth);
     if (result.maxShell < 1)
         throw std::invalid_argument(
-            "structure factor: qmax = " + std::to_string(parameters_.maxQw) +
+            "structure factor: qmax = " + fmt::format("{:g}", parameters_.maxQw) +
             " is below the smallest wave number of the box, 2 pi w / L = " +
             std::to_string(2.0 * std::numbers::pi * result.meanWidth / packing.boxLength));
     const DensityModes modes =

@@ -407,47 +407,98 @@ BlockCandidates blockCandidates(const Packing& packing, const BlockGeometry& g) 
 
 /// Each block voxelised: a leaf (some solid), full (all solid) or nothing, and its solid count.
 struct BlockMasks {
+    explicit BlockMasks(std::int64_t blocks) : leaves(blocks), full(blocks, 0), solid(blocks, 0) {}
     std::vector<std::unique_ptr<MaskLeaf>> leaves;
     std::vector<std::uint8_t> full;
     std::vector<int> solid;
+
+    /// Stores block b's 8 words (origin ox, oy, oz): full only when the block lies wholly in the
+    /// slab and the grid.
+    void store(std::int64_t b, const std::array<std::uint64_t, kBlock>& words,
+               const BlockGeometry& g) {
+        const auto [ox, oy, oz] = g.origin(b);
+        int count = 0;
+        bool whole = ox >= g.x0 && ox + kBlock <= g.x1 && oy + kBlock <= g.m && oz + kBlock <= g.m;
+        for (std::uint64_t w : words) {
+            count += std::popcount(w);
+            whole = whole && w == ~std::uint64_t{0};
+        }
+        solid[b] = count;
+        if (whole) {
+            full[b] = 1;
+        } else if (count > 0) {
+            auto leaf = std::make_unique<MaskLeaf>(openvdb::Coord(ox, oy, oz), false);
+            for (int x = 0; x < kBlock; ++x)
+                leaf->getValueMask().getWord<std::uint64_t>(x) = words[x];
+            leaves[b] = std::move(leaf);
+        }
+    }
 };
 
 BlockMasks voxelizeBlocks(const BlockCandidates& in, const std::vector<Eigen::Matrix3d>& toBody,
                           const ContainmentTest& inside, const BlockGeometry& geometry,
                           const Progress& progress, bool serial) {
-    const int m = geometry.m;
-    const std::int64_t blockCount = geometry.blockCount();
-    BlockMasks out{std::vector<std::unique_ptr<MaskLeaf>>(blockCount),
-                   std::vector<std::uint8_t>(blockCount, 0), std::vector<int>(blockCount, 0)};
+    BlockMasks out(geometry.blockCount());
     parallelFor(
-        0, blockCount, kBlocksPerTask,
+        0, geometry.blockCount(), kBlocksPerTask,
         [&](std::int64_t begin, std::int64_t end) {
             progress.checkInterrupt();
             for (std::int64_t b = begin; b < end; ++b) {
                 const auto [ox, oy, oz] = geometry.origin(b);
                 const std::span<const Candidate> mine(in.candidates.data() + in.start[b],
                                                       in.candidates.data() + in.start[b + 1]);
-                const auto words = voxelizeBlock(ox, oy, oz, mine, toBody, inside, geometry);
-                int count = 0;
-                bool full = ox >= geometry.x0 && ox + kBlock <= geometry.x1 && oy + kBlock <= m &&
-                            oz + kBlock <= m;
-                for (std::uint64_t w : words) {
-                    count += std::popcount(w);
-                    full = full && w == ~std::uint64_t{0};
-                }
-                out.solid[b] = count;
-                if (full) {
-                    out.full[b] = 1;
-                } else if (count > 0) {
-                    auto leaf = std::make_unique<MaskLeaf>(openvdb::Coord(ox, oy, oz), false);
-                    for (int x = 0; x < kBlock; ++x)
-                        leaf->getValueMask().getWord<std::uint64_t>(x) = words[x];
-                    out.leaves[b] = std::move(leaf);
-                }
+                out.store(b, voxelizeBlock(ox, oy, oz, mine, toBody, inside, geometry), geometry);
             }
         },
         serial);
     return out;
+}
+
+/// The whole grid's blocks from row bits (gpu/grid_kernels.hpp: M x M rows of ceil(M / 32)
+/// words, bit z & 31 of word z >> 5): a block's 8 z-bits never straddle a word (8 | 32).
+BlockMasks blocksFromRowBits(std::span<const std::uint32_t> rows, const BlockGeometry& g,
+                             bool serial) {
+    const std::int64_t m = g.m, perRow = gpu::wordsPerRow(g.m);
+    BlockMasks out(g.blockCount());
+    parallelFor(
+        0, g.blockCount(), kBlocksPerTask,
+        [&](std::int64_t begin, std::int64_t end) {
+            for (std::int64_t b = begin; b < end; ++b) {
+                const auto [ox, oy, oz] = g.origin(b);
+                std::array<std::uint64_t, kBlock> words{};
+                for (int x = 0; x < kBlock && ox + x < m; ++x)
+                    for (int y = 0; y < kBlock && oy + y < m; ++y) {
+                        const std::uint32_t word = rows[((ox + x) * m + oy + y) * perRow + oz / 32];
+                        words[x] |= std::uint64_t{(word >> (oz % 32)) & 0xffu} << (y * kBlock);
+                    }
+                out.store(b, words, g);
+            }
+        },
+        serial);
+    return out;
+}
+
+/// The mask grid of the blocks (serial, O(blocks)): leaves, and leaf-sized tiles of the level-1
+/// nodes for full blocks; `solid` counts the solid voxels.
+openvdb::MaskGrid::Ptr assembleTree(BlockMasks& masks, const BlockGeometry& g,
+                                    std::int64_t& solid) {
+    openvdb::MaskGrid::Ptr grid = openvdb::MaskGrid::create(false);
+    grid->setName("solid");
+    openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(g.a);
+    transform->postTranslate(openvdb::Vec3d(0.5 * g.a)); // index (i, j, k) -> centre (i + 1/2) a
+    grid->setTransform(transform);
+    MaskTree& tree = grid->tree();
+    solid = 0;
+    for (std::int64_t b = 0; b < g.blockCount(); ++b) {
+        solid += masks.solid[b];
+        if (masks.leaves[b]) {
+            tree.addLeaf(masks.leaves[b].release());
+        } else if (masks.full[b]) {
+            const auto [ox, oy, oz] = g.origin(b);
+            tree.addTile(1, openvdb::Coord(ox, oy, oz), true, true);
+        }
+    }
+    return grid;
 }
 
 } // namespace
@@ -468,7 +519,6 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
         m,      a,           rc,
         ri,     x0,          x1,
         blocks, firstBlockX, x1 > x0 ? (x1 - 1) / kBlock - firstBlockX + 1 : 0};
-    const std::int64_t blockCount = geometry.blockCount();
     // Lab-to-body rotations: x_body = R^T (x - r).
     std::vector<Eigen::Matrix3d> toBody(packing.size());
     for (std::size_t j = 0; j < packing.size(); ++j)
@@ -476,30 +526,31 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
     BlockMasks masks =
         voxelizeBlocks(blockCandidates(packing, geometry), toBody, ContainmentTest(shape), geometry,
                        progress, parameters_.serial);
-    auto& leaves = masks.leaves;
-    const auto& fullBlock = masks.full;
-    const auto& solidInBlock = masks.solid;
-
-    // Assemble the tree (serial, O(blocks)): leaves and leaf-sized tiles of the level-1 nodes.
     auto grid = std::make_unique<Voxelization::Grid>();
-    grid->grid = openvdb::MaskGrid::create(false);
-    grid->grid->setName("solid");
-    openvdb::math::Transform::Ptr transform = openvdb::math::Transform::createLinearTransform(a);
-    transform->postTranslate(openvdb::Vec3d(0.5 * a)); // index (i, j, k) -> centre (i + 1/2) a
-    grid->grid->setTransform(transform);
-    MaskTree& tree = grid->grid->tree();
     std::int64_t solid = 0;
-    for (std::int64_t b = 0; b < blockCount; ++b) {
-        solid += solidInBlock[b];
-        if (leaves[b]) {
-            tree.addLeaf(leaves[b].release());
-        } else if (fullBlock[b]) {
-            const auto [ox, oy, oz] = geometry.origin(b);
-            tree.addTile(1, openvdb::Coord(ox, oy, oz), true, true);
-        }
-    }
+    grid->grid = assembleTree(masks, geometry, solid);
     return Voxelization(std::move(grid), parameters_, boxLength, packing.p,
                         packing.packingFraction(), solid, clock.seconds());
+}
+
+Voxelization Voxelizer::fromRowBits(std::span<const std::uint32_t> rows, const Packing& packing,
+                                    int voxels, double runtimeSeconds) {
+    const std::int64_t m = voxels;
+    if (voxels < 1 || voxels > kMaxVoxels ||
+        rows.size() != static_cast<std::size_t>(m * m * gpu::wordsPerRow(voxels)))
+        throw std::invalid_argument("voxel grid from row bits: " + std::to_string(rows.size()) +
+                                    " words are not the rows of a " + std::to_string(voxels) +
+                                    "^3 grid");
+    const int blocks = (voxels + kBlock - 1) / kBlock;
+    const BlockGeometry geometry{voxels, packing.boxLength / voxels, 0.0, 0.0, 0, voxels, blocks, 0,
+                                 blocks};
+    BlockMasks masks = blocksFromRowBits(rows, geometry, false);
+    auto grid = std::make_unique<Voxelization::Grid>();
+    std::int64_t solid = 0;
+    grid->grid = assembleTree(masks, geometry, solid);
+    return Voxelization(std::move(grid), VoxelizationParameters{voxels, false, 0, voxels},
+                        packing.boxLength, packing.p, packing.packingFraction(), solid,
+                        runtimeSeconds);
 }
 
 } // namespace sbpack

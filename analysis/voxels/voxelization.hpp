@@ -123,6 +123,14 @@ class Voxelizer {
     /// per-leaf overhead, and the per-block candidate lists.
     static double memoryEstimateBytes(const Packing& packing, int voxels);
 
+    /// The voxelization of `packing` on M^3 voxels whose solid voxels are given as row bits
+    /// (gpu/grid_kernels.hpp's layout: M x M rows (x, y) of ceil(M / 32) words, bit z & 31 of
+    /// word z >> 5, as the GPU voxeliser makes them): the tree compute() would build from the
+    /// same voxels, for the host's export (--vdb with --device cuda). Throws
+    /// std::invalid_argument unless `rows` holds exactly those words.
+    static Voxelization fromRowBits(std::span<const std::uint32_t> rows, const Packing& packing,
+                                    int voxels, double runtimeSeconds);
+
     /// Parallel by output blocks (the 8^3 leaves of the tree): each block tests the voxels of
     /// the particles whose circumscribed sphere reaches it (candidate lists, O(voxels + N));
     /// voxels inside the inscribed sphere are solid without a test, only the shell up to the

@@ -99,6 +99,27 @@ TEST(GridKernels, ImageRowsVoxeliseAsTheCpu) {
     EXPECT_EQ(maskOfWords(hostVoxelWords(mrj, 90), 90), cpuMask(mrj, 90));
 }
 
+/// The GPU's bits become the CPU's OpenVDB tree (the --vdb export of --device cuda).
+TEST(GridKernels, RowBitsMakeTheVoxelisersTree) {
+    for (double p : {1.0, 3.0}) {
+        const double spacing = 2.0 * Superball(p, 0.5).circumradius() + 0.3;
+        const Packing packing = testing::latticePacking(p, 3, spacing, 0.1, 9);
+        for (int m : {43, 64}) { // a partial block at the edge, and none
+            const Voxelization cpu = Voxelizer({m}).compute(packing, Progress());
+            const Voxelization gpu =
+                Voxelizer::fromRowBits(hostVoxelWords(packing, m), packing, m, 0.0);
+            std::vector<std::uint8_t> a(static_cast<std::size_t>(m) * m * m), b(a.size());
+            cpu.copySolidMask(a);
+            gpu.copySolidMask(b);
+            EXPECT_EQ(a, b) << "p " << p << " M " << m;
+            EXPECT_EQ(gpu.solidCount(), cpu.solidCount());
+            EXPECT_EQ(gpu.memoryBytes(), cpu.memoryBytes()); // the same leaves and tiles
+        }
+    }
+    EXPECT_THROW(Voxelizer::fromRowBits(std::vector<std::uint32_t>(10), Packing{}, 4, 0.0),
+                 std::invalid_argument);
+}
+
 TEST(GridKernels, RowDistancesWrapAroundTheBox) {
     std::uint32_t word = 1u; // one solid voxel at z = 0 of a row of 10
     std::vector<std::uint32_t> out(10);
