@@ -47,6 +47,10 @@ constexpr double kPaperFastMin = 0.005, kPaperFastMax = 0.05;
 constexpr double kNearCubeExponent = 3.0;
 constexpr double kColumnBoxDiameters = 8.0;
 
+/// Below this N, jammed packings are often partly ordered, phi and Z above MRJ's, at every p
+/// measured (bench/RESULTS.md, "Small boxes order": p = 0.85 to 1.5, N = 40 to 200, defaults).
+constexpr int kSmallBoxParticles = 250;
+
 /// The box edge in diameters at jamming, with phi about 0.85 (near-cubes, bench/RESULTS.md).
 double jammedBoxDiameters(const ProtocolParameters& parameters) {
     const double unitVolume = Superball(parameters.p, 0.5).volume(); // D = 1
@@ -54,7 +58,7 @@ double jammedBoxDiameters(const ProtocolParameters& parameters) {
 }
 
 std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
-    char line[256];
+    char line[512];
     std::snprintf(line, sizeof line, pattern, a, b, c);
     return line;
 }
@@ -120,6 +124,13 @@ std::vector<std::string> protocolWarnings(const ProtocolParameters& parameters) 
                                   "alone; such runs end refused as not jammed (at N = 200 most "
                                   "did); N >= 1000 avoids it",
                                   parameters.p, parameters.particles, box));
+    else if (parameters.particles < kSmallBoxParticles)
+        warnings.push_back(format("N = %g: a box this small often jams partly ordered, phi and Z "
+                                  "above MRJ's (a third to two thirds of the seeds at N = 40-100, "
+                                  "p = 0.85-1.5, and still one of three at N = 200, p = 1.5: "
+                                  "bench/RESULTS.md, \"Small boxes order\"); N >= %g for MRJ, the "
+                                  "paper's N is 1000 and 5000",
+                                  parameters.particles, kSmallBoxParticles));
     return warnings;
 }
 

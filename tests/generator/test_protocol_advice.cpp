@@ -71,6 +71,17 @@ TEST(ProtocolAdvice, AVerySlowRunIsToldItsExpectedCost) {
     EXPECT_EQ(protocolWarnings(slow)[0].find("cost-limit"), std::string::npos);
 }
 
+TEST(ProtocolAdvice, SmallBoxesAreWarnedAtEveryP) { // issue 43
+    // sbgen --p 1.2 --n 40 --seed 1 jammed a crystal (phi 0.749, Z 10.95; the paper: 0.681, 7.51).
+    for (double p : {0.85, 1.0, 1.2, 1.5, 2.0})
+        EXPECT_TRUE(mentions(protocolWarnings(defaults(p, 40)), "partly ordered")) << p;
+    EXPECT_FALSE(mentions(protocolWarnings(defaults(1.2, 1000)), "partly ordered"));
+    // Near-cubes get the more specific column warning instead.
+    const auto cubes = protocolWarnings(defaults(10.0, 40));
+    EXPECT_TRUE(mentions(cubes, "column"));
+    EXPECT_FALSE(mentions(cubes, "partly ordered"));
+}
+
 TEST(ProtocolAdvice, NearOctahedraAreToldTheirCost) { // issue 46, defect 12
     // About 200 collisions a second at p = 0.5000001 (bench/RESULTS.md, "Near-octahedra"):
     // a default N = 1000 run takes CPU hours, and says so.
