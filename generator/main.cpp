@@ -1,5 +1,6 @@
 // sbgen: serial generator of MRJ packings (Donev-Torquato-Stillinger event-driven MD).
 #include "cli/options.hpp"
+#include "io/atomic_file.hpp"
 #include "io/packing_io.hpp"
 #include "io/read_guard.hpp"
 #include "protocol/final_packing.hpp"
@@ -82,6 +83,8 @@ int generate(const sbpack::GeneratorOptions& o) {
     // checkpoint of the starting state.
     std::signal(SIGINT, requestStop);
     std::signal(SIGTERM, requestStop);
+    // No other run may write this run's output or checkpoint while it lasts (io/atomic_file.hpp).
+    const sbpack::OutputLock outputLock(o.out), checkpointLock(interruptCheckpointPath(o));
     sbpack::JammingProtocol protocol = startProtocol(o);
 
     const auto start = Clock::now();

@@ -54,6 +54,13 @@ expect "is also where --vdb exports" "$sbanalyze" good.h5 --json v/good.vdb "${v
 [[ "$(cat v/good.vdb)" == precious ]] || { echo "FAIL: an export path replaced"; failures=$((failures + 1)); }
 expect "again: each packing counts once" "$sbanalyze" good.h5 hard.h5 --compute contacts --json -
 expect "name the same file" "$sbgen" --n 10 --out same.h5 --checkpoint ./same.h5
+# Two runs sharing an output or a checkpoint: the second is refused while the first runs.
+"$sbgen" --n 2000 --seed 1 --out busy.h5 --checkpoint busy-cp.h5 --quiet & first=$!
+sleep 1
+expect "'busy.h5' is being written by another process (pid $first)" "$sbgen" --n 10 --out busy.h5
+expect "is being written by another process" "$sbgen" --n 10 --out other.h5 --checkpoint busy-cp.h5
+kill -TERM "$first"; wait "$first" 2>/dev/null
+[[ ! -e .busy.h5.lock ]] || { echo "FAIL: a lock file left behind"; failures=$((failures + 1)); }
 # Standard output that cannot be written (defect 2).
 for command in "good.h5 --compute contacts --json -" "info good.h5" "schema --json"; do
     expect "cannot write to standard output" sh -c "\"\$0\" $command >/dev/full" "$sbanalyze"

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <string>
+#include <sys/file.h>
 #include <system_error>
 #include <unistd.h>
 
@@ -45,6 +46,39 @@ fs::path linkTarget(const fs::path& file) {
     }
     throw OutputPathError("cannot write '" + file.string() +
                           "': more than 40 symbolic links in a chain (a loop?)");
+}
+
+OutputLock::OutputLock(const fs::path& file) {
+    const fs::path target = linkTarget(file);
+    std::string name = "."; // appended piecewise: GCC 12 misreports "." + string (-Wrestrict)
+    name += target.filename().string();
+    name += ".lock";
+    path_ = directoryOf(target) / name;
+    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0)
+        throw OutputPathError("cannot lock '" + file.string() + "': " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+        char holder[32] = {};
+        const ssize_t n = ::pread(fd_, holder, sizeof holder - 1, 0);
+        ::close(fd_);
+        throw OutputPathError(
+            "'" + file.string() + "' is being written by another process" +
+            (n > 0 ? " (pid " + std::string(holder, static_cast<std::size_t>(n)) + ")"
+                   : std::string()) +
+            ": two runs would replace each other's files; name another file");
+    }
+    // The holder's pid, for the message above (a failure to note it leaves the lock intact).
+    const std::string pid = std::to_string(::getpid());
+    const bool noted = ::ftruncate(fd_, 0) == 0 && ::pwrite(fd_, pid.data(), pid.size(), 0) > 0;
+    static_cast<void>(noted);
+}
+
+OutputLock::~OutputLock() {
+    // Removed while still held, then released: no debris after a run (kill -9 leaves the file,
+    // which the next run reuses; the kernel released its lock).
+    std::error_code ec;
+    fs::remove(path_, ec);
+    ::close(fd_);
 }
 
 bool sameDestination(const fs::path& a, const fs::path& b) {

@@ -35,6 +35,23 @@ std::filesystem::path linkTarget(const std::filesystem::path& file);
 /// spellings, existing or not): two outputs that must not replace each other.
 bool sameDestination(const std::filesystem::path& a, const std::filesystem::path& b);
 
+/// While alive, no other process holding an OutputLock of the same destination (linkTarget) can
+/// take one: an advisory lock (flock) on `.NAME.lock` beside it, released by the kernel when the
+/// process ends, kill -9 included. Two long runs writing one output or checkpoint would replace
+/// each other's files ("last writer wins"); the second is refused at its start instead, with
+/// OutputPathError naming the file and the holder's pid.
+class OutputLock {
+  public:
+    explicit OutputLock(const std::filesystem::path& file);
+    OutputLock(const OutputLock&) = delete;
+    OutputLock& operator=(const OutputLock&) = delete;
+    ~OutputLock();
+
+  private:
+    std::filesystem::path path_;
+    int fd_ = -1;
+};
+
 /// A temporary file `.NAME.tmp-<pid>` next to `NAME`; commit() renames it onto `NAME`
 /// atomically (same directory). `NAME` is linkTarget(finalPath): a symbolic link stays a link
 /// to the new file. Destroying an uncommitted AtomicOutput removes the temporary;
