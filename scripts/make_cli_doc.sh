@@ -55,9 +55,12 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
 - **Warnings before a run, once each**: a protocol whose expected cost exceeds a CPU hour (the
   estimate is printed: collisions per particle from the rates, collisions per CPU second
   measured at `p`, and when the cost limit would stop it; docs/design.md §3), a fast rate
-  outside the paper's range (0.005, 0.05), `p > 10`, and near-cubes (`p >= 3`) in a box under 8
+  outside the paper's range (0.005, 0.05), `p > 10`, near-cubes (`p >= 3`) in a box under 8
   diameters across, where a column of them can span the box (`sbgen --p 3 --n 64 ...` says so;
-  `N >= 1000` avoids it). The defaults at the paper's `p` and `N = 1000` print none.
+  `N >= 1000` avoids it), and, at other `p`, `N < 250`, where a third to two thirds of the seeds
+  jam partly ordered (bench/RESULTS.md, "Small boxes order"). Near-octahedra (`p` just above
+  0.5) run at a few hundred collisions a second, and their expected cost says so. The defaults
+  at the paper's `p` and `N = 1000` print none.
 - **Output**: the packing (format below, with `velocities`, and `angular_velocities` for
   superballs) and, in `provenance`, every parameter, the seed, the version, the final reduced
   pressure, collisions (and `expected_collisions`, docs/design.md §3), events, list rebuilds,
@@ -125,7 +128,8 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
 - **Progress**: one line per stage on standard error (stage, detail, wall time); Ctrl-C stops
   the running stage at its next chunk.
 - **Several inputs** are processed one after the other (`sbanalyze run*/packing.h5 --out
-  all.h5`), so stored packings can be reprocessed in one call or from a script. The results
+  all.h5`), so stored packings can be reprocessed in one call or from a script; the same file
+  twice is refused, and an error names the file it came from. The results
   file, the JSON summary and the `.vdb` files are written to temporaries and renamed together at
   the end.
 - **`hyper` skipped**: a box too small for a long-time window, or a fit window with too few wave
@@ -142,7 +146,8 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
 - **Packing file** (HDF5, `format = "sbpack.packing"`, `format_version = 1`): its attributes and
   datasets are in docs/design.md §4; its `phi` must equal `N v1 / L^3`, which readers check.
   Readable with h5py: `h5py.File(name)["positions"][:]`, `dict(f.attrs)`.
-- **Plain text** (`convert`): a header `# sbpack text packing v1`, `# p P`, `# semi_axis R`,
+- **Plain text** (`.txt`, read by `info`, the analysis, `convert` and `sbpack.Packing.read`): a
+  header `# sbpack text packing v1`, `# p P`, `# semi_axis R`,
   `# box_length L`, `# n_particles N`, then one particle per line `x y z qw qx qy qz`.
 - **Extended XYZ** (`convert`, output only): OVITO reads positions, `orientation` (its
   quaternion order `x y z w`) and `aspherical_shape` directly; map the two
