@@ -97,6 +97,9 @@ output=$("$sbanalyze" good.h5 --compute sq --qmax 1e300 --json - 2>&1)
 long=$(printf 'a%.0s' {1..247}).h5
 "$sbanalyze" convert good.h5 "$long" 2>/dev/null && [[ -f "$long" ]] ||
     { echo "FAIL: a 250-character output name"; failures=$((failures + 1)); }
+rm -f "$long" # and sbgen's lock beside it (.NAME.lock) fits too
+"$sbgen" --n 10 --out "$long" --quiet 2>/dev/null && [[ -f "$long" ]] ||
+    { echo "FAIL: sbgen with a 250-character output name"; failures=$((failures + 1)); }
 "$sbanalyze" convert good.h5 out.xyz 2>/dev/null
 expect "extended XYZ is written for OVITO, not read" "$sbanalyze" info out.xyz
 mkdir -p home && HOME=$PWD/home XDG_CACHE_HOME=relative "$sbanalyze" good.h5 --compute chi \

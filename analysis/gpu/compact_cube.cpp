@@ -1,5 +1,7 @@
 #include "gpu/compact_cube.hpp"
 
+#include "gpu/grid_kernels.hpp"
+
 #include <cstdint>
 
 namespace sbpack::gpu {
@@ -12,8 +14,7 @@ SpectrumSlab compactCubeSlab(const std::vector<double>& cube, int voxels, int s)
 PowerAt compactCubePower(const std::vector<double>& cube, int voxels, int s) {
     return [&cube, voxels, s](int kx, int ky, int kz) {
         const int r = 2 * s + 1, m = voxels;
-        const int nx = 2 * kx <= m ? kx : kx - m, ny = 2 * ky <= m ? ky : ky - m;
-        const std::int64_t ox = (nx + r) % r, oy = (ny + r) % r;
+        const std::int64_t ox = (signedIndex(kx, m) + r) % r, oy = (signedIndex(ky, m) + r) % r;
         const double* c = cube.data() + ((ox * r + oy) * (s + 1) + kz) * 2;
         return c[0] * c[0] + c[1] * c[1];
     };

@@ -30,17 +30,6 @@ std::vector<std::uint32_t> CudaGrid::rowBits() const {
     return words;
 }
 
-std::vector<std::uint8_t> CudaGrid::solidMask() const {
-    const std::int64_t m = voxels_, w = gpu::wordsPerRow(voxels_);
-    const std::vector<std::uint32_t> words = rowBits();
-    std::vector<std::uint8_t> mask(static_cast<std::size_t>(m * m * m));
-    for (std::int64_t row = 0; row < m * m; ++row)
-        for (std::int64_t k = 0; k < m; ++k)
-            mask[row * m + k] =
-                static_cast<std::uint8_t>((words[row * w + k / 32] >> (k % 32)) & 1);
-    return mask;
-}
-
 CudaGrid::Spectra CudaGrid::spectralDensity(const Packing& packing,
                                             const SpectralDensityParameters& parameters,
                                             bool single, const VoxelSpectrumOptions* spectrum,

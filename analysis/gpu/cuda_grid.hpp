@@ -31,8 +31,6 @@ class CudaGrid {
     /// Device memory of the voxel bits.
     std::size_t deviceBytes() const { return words_.bytes(); }
 
-    /// mask[(i M + j) M + k] = 1 on solid voxels, as Voxelization::copySolidMask.
-    std::vector<std::uint8_t> solidMask() const;
     /// The voxel bits on the host (grid_kernels.hpp's rows), e.g. for Voxelizer::fromRowBits.
     std::vector<std::uint32_t> rowBits() const;
 

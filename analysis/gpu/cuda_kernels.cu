@@ -83,7 +83,8 @@ __global__ void gatherCube(const Real* transform, int m, int s, double* cube) {
     if (i >= r * r * (s + 1)) return;
     const int kz = static_cast<int>(i % (s + 1));
     const std::int64_t oy = (i / (s + 1)) % r, ox = i / ((s + 1) * r);
-    const std::int64_t nx = ox <= s ? ox : ox - r, ny = oy <= s ? oy : oy - r;
+    const std::int64_t nx = signedIndex(static_cast<int>(ox), static_cast<int>(r));
+    const std::int64_t ny = signedIndex(static_cast<int>(oy), static_cast<int>(r));
     const std::int64_t kx = (nx + m) % m, ky = (ny + m) % m;
     const std::int64_t at = ((kx * m + ky) * (m / 2 + 1) + kz) * 2;
     cube[2 * i] = static_cast<double>(transform[at]);
@@ -99,7 +100,7 @@ __global__ void sumsByN2(const Real* transform, int m, const double* f, double v
     if (i >= std::int64_t{m} * m * half) return;
     const int kz = static_cast<int>(i % half);
     const int ky = static_cast<int>((i / half) % m), kx = static_cast<int>(i / (half * m));
-    const std::int64_t nx = 2 * kx <= m ? kx : kx - m, ny = 2 * ky <= m ? ky : ky - m;
+    const std::int64_t nx = signedIndex(kx, m), ny = signedIndex(ky, m);
     const std::int64_t n2 = nx * nx + ny * ny + std::int64_t{kz} * kz;
     if (n2 == 0) return;
     const double re = static_cast<double>(transform[2 * i]);

@@ -48,14 +48,10 @@ bool runCudaVoxels(FileContext& context, schema::Record& record) {
                                              formatBytes(static_cast<double>(grid.deviceBytes()))));
     setVoxelFigures(record, {m, grid.phiVoxel(), phiExact, grid.voxelSize(), grid.solidCount(),
                              static_cast<double>(grid.deviceBytes()), grid.runtimeSeconds()});
-    if (const VdbExport* vdb = context.vdbExport(Analysis::Voxels)) { // OpenVDB on the host
-        const Stopwatch clock;
-        vdb->output->write(
-            Voxelizer::fromRowBits(grid.rowBits(), context.packing(), m, grid.runtimeSeconds())
-                .vdbImage());
-        record.set("vdb_file", vdb->destination.string());
-        context.progress().stageDone("vdb export", clock.seconds(), vdb->destination.string());
-    }
+    if (context.vdbExport(Analysis::Voxels) != nullptr) // OpenVDB on the host, from the GPU's bits
+        exportVoxels(
+            context, record,
+            Voxelizer::fromRowBits(grid.rowBits(), context.packing(), m, grid.runtimeSeconds()));
     context.keep(Analysis::Voxels, std::move(grid));
     return true;
 }

@@ -25,6 +25,12 @@ SBPACK_HD inline IndexRange voxelRange(double c, double radius, double a, int fi
     return {static_cast<int>(lo > first ? lo : first), static_cast<int>(hi < last ? hi : last)};
 }
 
+/// Signed wave index of DFT index k of an M-periodic transform: k for k <= M/2, else k - M (the
+/// CPU's shell sums and spectra, the GPU's gather and sums, the compact cube of period 2s + 1).
+SBPACK_HD inline int signedIndex(int k, int m) {
+    return 2 * k <= m ? k : k - m;
+}
+
 /// 32-bit words per grid row along z: bit z & 31 of word z >> 5 is voxel z.
 SBPACK_HD inline int wordsPerRow(int voxels) {
     return (voxels + 31) / 32;

@@ -1,5 +1,6 @@
 #include "hyperuniformity/discrete_spectrum.hpp"
 
+#include "gpu/grid_kernels.hpp"
 #include "parallel/parallel.hpp"
 
 #include <algorithm>
@@ -17,10 +18,7 @@ namespace {
 /// number of threads.
 constexpr int kPlaneBlocks = 16;
 
-/// Signed wave index of DFT index k: k for k <= M/2, else k - M.
-int signedIndex(int k, int m) {
-    return 2 * k <= m ? k : k - m;
-}
+using gpu::signedIndex;
 
 double sinc(double x) {
     return x == 0.0 ? 1.0 : std::sin(x) / x;

@@ -167,9 +167,6 @@ void checkPackingForRun(const Packing& packing, const RunSettings& settings,
                                         std::to_string(settings.voxelsOf(grid)) + ": " + e.what());
         }
     }
-#ifdef SBPACK_WITH_CUDA
-    if (settings.device.device == ComputeDevice::Cuda) stages::checkCudaRun(settings);
-#endif
     // Distributed grids are checked per rank by the plan (pipeline/scale_plan.hpp).
     if (settings.distribute == Distribution::Files)
         checkMemory(packing, settings, quotedName(input));
@@ -309,6 +306,11 @@ RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostr
         checkDistinctInputs(settings);
         vdbTargets(settings); // option errors before any reading
         packings = readAndCheckInputs(settings, mine);
+#ifdef SBPACK_WITH_CUDA
+        // The device's memory plan depends on the grids alone: once per run.
+        if (settings.device.device == ComputeDevice::Cuda && !settings.plan)
+            stages::checkCudaRun(settings);
+#endif
         if (settings.distribute == Distribution::Grids && !settings.plan)
             checkPlanMemory(settings, packings, comm.size());
     });

@@ -1,5 +1,6 @@
 #include "spectral/spectral_density.hpp"
 
+#include "gpu/grid_kernels.hpp"
 #include "parallel/parallel.hpp"
 #include "spectral/exact_spectral_density.hpp"
 #include "spectral/voxel_fourier_transform.hpp"
@@ -23,10 +24,7 @@ double sinc(double x) {
     return std::abs(x) < 1e-4 ? 1.0 - x * x / 6.0 : std::sin(x) / x;
 }
 
-/// Signed wave index of DFT index k: k for k <= M/2, else k - M.
-int signedIndex(int k, int m) {
-    return 2 * k <= m ? k : k - m;
-}
+using gpu::signedIndex;
 
 } // namespace
 

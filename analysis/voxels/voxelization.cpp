@@ -312,13 +312,6 @@ Voxelizer::Voxelizer(VoxelizationParameters parameters) : parameters_(parameters
                                    ")");
 }
 
-std::vector<double> periodicImageShifts(double c, double rc, double boxLength) {
-    std::vector<double> shifts{0.0};
-    if (c - rc < 0.0) shifts.push_back(boxLength);
-    if (c + rc > boxLength) shifts.push_back(-boxLength);
-    return shifts;
-}
-
 double Voxelizer::reach(const Superball& shape) {
     return shape.circumradius() * (1.0 + kSphereMargin);
 }
@@ -370,30 +363,22 @@ struct BlockCandidates {
 };
 
 BlockCandidates blockCandidates(const Packing& packing, const BlockGeometry& g) {
-    const double boxLength = packing.boxLength, rc = g.rc, a = g.a;
+    const double rc = g.rc, a = g.a;
     const int m = g.m, blocks = g.blocks;
     const std::int64_t blockCount = g.blockCount();
     BlockCandidates out{std::vector<std::int64_t>(blockCount + 1, 0), {}};
     auto forEachImageBlock = [&](auto&& visit) {
-        for (std::size_t j = 0; j < packing.size(); ++j) {
-            const Vector3d& r = packing.positions[j];
-            for (double sx : periodicImageShifts(r.x(), rc, boxLength))
-                for (double sy : periodicImageShifts(r.y(), rc, boxLength))
-                    for (double sz : periodicImageShifts(r.z(), rc, boxLength)) {
-                        const Vector3d c = r + Vector3d(sx, sy, sz);
-                        const auto [x0, x1] = voxelRange(c.x(), rc, a, g.x0, g.x1 - 1);
-                        const auto [y0, y1] = voxelRange(c.y(), rc, a, 0, m - 1);
-                        const auto [z0, z1] = voxelRange(c.z(), rc, a, 0, m - 1);
-                        if (x0 > x1 || y0 > y1 || z0 > z1) continue;
-                        for (int bx = x0 / kBlock; bx <= x1 / kBlock; ++bx)
-                            for (int by = y0 / kBlock; by <= y1 / kBlock; ++by)
-                                for (int bz = z0 / kBlock; bz <= z1 / kBlock; ++bz)
-                                    visit((std::int64_t{bx - g.firstBlockX} * blocks + by) *
-                                                  blocks +
-                                              bz,
-                                          Candidate{c, static_cast<int>(j)});
-                    }
-        }
+        forEachPeriodicImage(packing, rc, [&](const Vector3d& c, int j) {
+            const auto [x0, x1] = voxelRange(c.x(), rc, a, g.x0, g.x1 - 1);
+            const auto [y0, y1] = voxelRange(c.y(), rc, a, 0, m - 1);
+            const auto [z0, z1] = voxelRange(c.z(), rc, a, 0, m - 1);
+            if (x0 > x1 || y0 > y1 || z0 > z1) return;
+            for (int bx = x0 / kBlock; bx <= x1 / kBlock; ++bx)
+                for (int by = y0 / kBlock; by <= y1 / kBlock; ++by)
+                    for (int bz = z0 / kBlock; bz <= z1 / kBlock; ++bz)
+                        visit((std::int64_t{bx - g.firstBlockX} * blocks + by) * blocks + bz,
+                              Candidate{c, j});
+        });
     };
     forEachImageBlock([&](std::int64_t block, const Candidate&) { ++out.start[block + 1]; });
     for (std::int64_t b = 0; b < blockCount; ++b)

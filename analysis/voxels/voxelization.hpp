@@ -8,13 +8,13 @@
 #include "packing/packing.hpp"
 #include "progress/progress.hpp"
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace sbpack {
 
@@ -96,9 +96,29 @@ class Voxelization {
     int slabEnd_;
 };
 
-/// Image shifts along one axis that bring a body of reach rc centred at c in [0, L) over some
-/// voxel centre: 0, and +L (-L) when it sticks out below 0 (above L).
-std::vector<double> periodicImageShifts(double c, double rc, double boxLength);
+/// Every periodic image of every particle whose sphere of radius rc can reach a voxel centre of
+/// the box: along each axis the particle itself, and its copy shifted by +L (-L) where it sticks
+/// out below 0 (above L); visit(centre, particle index) for each, in one fixed order. The CPU
+/// and the GPU voxelisers (gpu/particle_images.cpp) visit these same images.
+template <class Visit> void forEachPeriodicImage(const Packing& packing, double rc, Visit&& visit) {
+    const double l = packing.boxLength;
+    auto shifts = [l, rc](double c, std::array<double, 3>& out) {
+        int n = 0;
+        out[n++] = 0.0;
+        if (c - rc < 0.0) out[n++] = l;
+        if (c + rc > l) out[n++] = -l;
+        return n;
+    };
+    std::array<double, 3> sx{}, sy{}, sz{};
+    for (std::size_t j = 0; j < packing.size(); ++j) {
+        const Vector3d& r = packing.positions[j];
+        const int nx = shifts(r.x(), sx), ny = shifts(r.y(), sy), nz = shifts(r.z(), sz);
+        for (int x = 0; x < nx; ++x)
+            for (int y = 0; y < ny; ++y)
+                for (int z = 0; z < nz; ++z)
+                    visit(Vector3d(r + Vector3d(sx[x], sy[y], sz[z])), static_cast<int>(j));
+    }
+}
 
 /// Compute object (docs/design.md §7): parameters validated at construction.
 class Voxelizer {

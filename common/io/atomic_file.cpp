@@ -2,9 +2,12 @@
 
 #include <cerrno>
 #include <csignal>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
 #include <string>
+#include <string_view>
 #include <sys/file.h>
 #include <system_error>
 #include <unistd.h>
@@ -31,6 +34,29 @@ void syncToDisk(const fs::path& path, int flags, const fs::path& reportAs) {
     ::close(fd);
 }
 
+/// `.NAME<suffix>`, the hidden sibling of `target`'s file NAME. A NAME too long for the whole,
+/// with `reserve` more bytes appended later, to stay within NAME_MAX (255 bytes) is cut and
+/// ends in `~` and the FNV-1a hash of the full NAME in hex, so two long names that share their
+/// beginning (an output and its checkpoint) get different siblings.
+std::string hiddenSibling(const fs::path& target, std::string_view suffix, std::size_t reserve) {
+    const std::size_t longest = 255 - 1 - suffix.size() - reserve;
+    const std::string name = target.filename().string();
+    std::string hidden = "."; // appended piecewise: GCC 12 misreports "." + string (-Wrestrict)
+    if (name.size() <= longest) {
+        hidden += name;
+    } else {
+        std::uint64_t hash = 14695981039346656037ull;
+        for (const unsigned char c : name)
+            hash = (hash ^ c) * 1099511628211ull;
+        char tag[18];
+        std::snprintf(tag, sizeof tag, "~%016llx", static_cast<unsigned long long>(hash));
+        hidden += name.substr(0, longest - (sizeof tag - 1));
+        hidden += tag;
+    }
+    hidden += suffix;
+    return hidden;
+}
+
 } // namespace
 
 fs::path linkTarget(const fs::path& file) {
@@ -50,10 +76,7 @@ fs::path linkTarget(const fs::path& file) {
 
 OutputLock::OutputLock(const fs::path& file) {
     const fs::path target = linkTarget(file);
-    std::string name = "."; // appended piecewise: GCC 12 misreports "." + string (-Wrestrict)
-    name += target.filename().string();
-    name += ".lock";
-    path_ = directoryOf(target) / name;
+    path_ = directoryOf(target) / hiddenSibling(target, ".lock", 0);
     fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd_ < 0)
         throw OutputPathError("cannot lock '" + file.string() + "': " + std::strerror(errno));
@@ -139,12 +162,7 @@ void removeStaleTemporaries(const fs::path& dir, const std::string& prefix) {
 AtomicOutput::AtomicOutput(fs::path finalPath)
     : final_(std::move(finalPath)), target_(linkTarget(final_)) {
     checkWritable(final_);
-    // `.NAME.tmp-<pid>`, NAME cut so that the whole stays within NAME_MAX (255 bytes).
-    constexpr std::size_t kLongestName = 255 - 1 - 5 - 10; // ".", ".tmp-", a pid
-    const std::string name = target_.filename().string();
-    std::string prefix = "."; // appended piecewise: GCC 12 misreports "." + string (-Wrestrict)
-    prefix += name.size() > kLongestName ? name.substr(0, kLongestName - 1) + "~" : name;
-    prefix += ".tmp-";
+    const std::string prefix = hiddenSibling(target_, ".tmp-", 10); // `.NAME.tmp-<pid>`
     removeStaleTemporaries(directoryOf(target_), prefix);
     temporary_ = directoryOf(target_) / (prefix + std::to_string(::getpid()));
     std::error_code ec;

@@ -59,7 +59,9 @@ TEST_F(CudaGridTest, VoxelsEqualTheCpuBitForBit) {
         const Packing packing = storedPacking(c.file);
         const CudaGrid grid(packing, c.voxels);
         const std::vector<std::uint8_t> expected = cpuMask(packing, c.voxels);
-        EXPECT_EQ(grid.solidMask(), expected) << c.file << " M " << c.voxels;
+        std::vector<std::uint8_t> mask(expected.size()); // the bits as the --vdb export reads them
+        Voxelizer::fromRowBits(grid.rowBits(), packing, c.voxels, 0.0).copySolidMask(mask);
+        EXPECT_EQ(mask, expected) << c.file << " M " << c.voxels;
         EXPECT_EQ(grid.solidCount(), std::count(expected.begin(), expected.end(), 1));
     }
 }

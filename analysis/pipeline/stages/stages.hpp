@@ -48,6 +48,8 @@ struct VoxelFigures {
     double memoryBytes, runtimeSeconds;
 };
 void setVoxelFigures(schema::Record& record, const VoxelFigures& figures);
+/// Writes `voxels` where --vdb exports them (nothing without --vdb), noting the file.
+void exportVoxels(const FileContext& context, schema::Record& record, const Voxelization& voxels);
 
 #ifdef SBPACK_WITH_CUDA
 // --device cuda (gpu/cuda_stages.cpp, docs/gpu.md): the grids on the GPU.

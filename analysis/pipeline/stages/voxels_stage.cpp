@@ -38,6 +38,15 @@ bool runSlabVoxels(FileContext& context, schema::Record& record) {
 
 } // namespace
 
+void exportVoxels(const FileContext& context, schema::Record& record, const Voxelization& voxels) {
+    const VdbExport* vdb = context.vdbExport(Analysis::Voxels);
+    if (vdb == nullptr) return;
+    const Stopwatch clock;
+    vdb->output->write(voxels.vdbImage());
+    record.set("vdb_file", vdb->destination.string());
+    context.progress().stageDone("vdb export", clock.seconds(), vdb->destination.string());
+}
+
 void setVoxelFigures(schema::Record& record, const VoxelFigures& figures) {
     record.set("voxels", figures.voxels)
         .set("phi_voxel", figures.phiVoxel)
@@ -64,12 +73,7 @@ bool runVoxels(FileContext& context, schema::Record& record) {
     setVoxelFigures(record, {m, voxels.phiVoxel(), voxels.phiExact(), voxels.voxelSize(),
                              voxels.solidCount(), static_cast<double>(voxels.memoryBytes()),
                              voxels.runtimeSeconds()});
-    if (const VdbExport* vdb = context.vdbExport(Analysis::Voxels)) {
-        const Stopwatch clock;
-        vdb->output->write(voxels.vdbImage());
-        record.set("vdb_file", vdb->destination.string());
-        context.progress().stageDone("vdb export", clock.seconds(), vdb->destination.string());
-    }
+    exportVoxels(context, record, voxels);
     context.keep(Analysis::Voxels, std::move(voxels));
     return true;
 }
