@@ -240,7 +240,8 @@ int errors(const Options& o, const Packing& packing) {
     const double w = packing.shape().meanWidth();
     sbpack::ExactPoreSizeParameters exactParameters;
     exactParameters.randomPoints = o.points;
-    const auto exact = sbpack::ExactPoreSizeDistribution(exactParameters).compute(packing);
+    const auto exact =
+        sbpack::ExactPoreSizeDistribution(exactParameters).compute(packing, sbpack::Progress());
     std::printf("exact (K = %lld random void points): %.2f s, <delta>/w = %.5f, <delta^2>/w^2 = "
                 "%.6f, max/w = %.4f\n",
                 static_cast<long long>(exact.samples), exact.runtimeSeconds, exact.meanOverWidth(),

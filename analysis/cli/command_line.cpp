@@ -5,6 +5,7 @@
 #include "info/library_versions.hpp"
 #include "parallel/parallel.hpp"
 #include "pores/distance_transform.hpp"
+#include "progress/progress.hpp"
 #include "version.hpp"
 #include "voxels/voxelization.hpp"
 
@@ -45,7 +46,8 @@ std::string computeHelp() {
 constexpr const char* kFooter =
     R"(Every input is read, validated and checked (at least 4 voxels across a particle, the memory
 the grids need against MemAvailable) before any analysis starts. On any error or interrupt
-(Ctrl-C) no output file is left behind and the exit status is 1. Each subcommand has its own
+no output file is written and earlier ones stay: exit 1 after an error, 128 + the signal after
+SIGINT (Ctrl-C, 130) or SIGTERM (143), within a second of it. Each subcommand has its own
 --help (sbanalyze info --help).)";
 
 /// --tolerance and --rattler-threshold, shared by the analysis and info.
@@ -448,6 +450,9 @@ int runParsed(int argc, const char* const* argv, std::ostream& out, std::ostream
         return commandLine.app().exit(e, out, err);
     } catch (const CLI::ParseError& e) {
         err << "sbanalyze: error: " << e.what() << " (see sbanalyze --help)\n";
+    } catch (const Interrupted& e) { // 128 + the signal, as sbgen and the shells report it
+        err << "sbanalyze: " << e.what() << '\n';
+        return e.signal() > 0 ? 128 + e.signal() : EXIT_FAILURE;
     } catch (const std::exception& e) {
         err << "sbanalyze: error: " << e.what() << '\n';
     }

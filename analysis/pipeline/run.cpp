@@ -201,6 +201,8 @@ IndexedFiles analyzeAll(const RunSettings& settings, const std::vector<std::size
         try {
             files.emplace_back(i, analyzeFile(packings[k], settings.inputs[i], settings, progress,
                                               targets, comm.grids()));
+        } catch (const Interrupted&) {
+            throw; // not the file's fault: the run's exit status says which signal
         } catch (const std::exception& e) {
             if (comm.size() == 1 && settings.inputs.size() == 1) throw;
             throw std::runtime_error(quotedName(settings.inputs[i]) + ": " + e.what());

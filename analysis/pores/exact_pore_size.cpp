@@ -306,7 +306,8 @@ void distinctSizes(const std::vector<SampleChunk>& chunks, std::vector<double>& 
 /// The exact pore sizes of K uniformly random points of the void (points inside a particle are
 /// drawn again), in fixed chunks (the result does not depend on the threads).
 std::vector<SampleChunk> sampleVoid(const ExactPoreSizes& pores,
-                                    const ExactPoreSizeParameters& parameters, double separation) {
+                                    const ExactPoreSizeParameters& parameters, double separation,
+                                    const Progress& progress) {
     const double length = pores.boxLength();
     const std::int64_t k = parameters.randomPoints;
     const std::int64_t chunks = (k + kRandomPointChunk - 1) / kRandomPointChunk;
@@ -315,6 +316,7 @@ std::vector<SampleChunk> sampleVoid(const ExactPoreSizes& pores,
         0, chunks, 1,
         [&](std::int64_t begin, std::int64_t end) {
             for (std::int64_t c = begin; c < end; ++c) {
+                progress.checkInterrupt();
                 Random generator = Random::stream(parameters.seed, c);
                 const std::int64_t points = std::min(kRandomPointChunk, k - c * kRandomPointChunk);
                 SampleChunk& chunk = local[c];
@@ -343,14 +345,15 @@ std::vector<SampleChunk> sampleVoid(const ExactPoreSizes& pores,
 
 } // namespace
 
-PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& packing) const {
+PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& packing,
+                                                              const Progress& progress) const {
     const auto started = std::chrono::steady_clock::now();
     const ExactPoreSizes pores(packing);
     const double length = pores.boxLength();
     const std::int64_t k = parameters_.randomPoints;
     // Starts of the largest pore at least 4 point spacings apart (distinct pores).
     const double spacing = length / std::cbrt(static_cast<double>(k));
-    const std::vector<SampleChunk> local = sampleVoid(pores, parameters_, 4.0 * spacing);
+    const std::vector<SampleChunk> local = sampleVoid(pores, parameters_, 4.0 * spacing, progress);
     std::vector<double> sizes;
     std::vector<std::int64_t> counts;
     PoreSizeSums sums;

@@ -6,6 +6,7 @@
 #include "contacts/cell_list.hpp"
 #include "packing/packing.hpp"
 #include "pores/pore_size_distribution.hpp"
+#include "progress/progress.hpp"
 
 #include <array>
 #include <cmath>
@@ -108,8 +109,9 @@ class ExactPoreSizeDistribution {
     explicit ExactPoreSizeDistribution(ExactPoreSizeParameters parameters);
 
     /// Throws std::invalid_argument for an empty packing and std::domain_error when no void
-    /// point is found among 1000 K draws (no void).
-    PoreSizeDistributionResult compute(const Packing& packing) const;
+    /// point is found among 1000 K draws (no void); Interrupted when `progress` is (it is polled
+    /// once per chunk of points).
+    PoreSizeDistributionResult compute(const Packing& packing, const Progress& progress) const;
 
     const ExactPoreSizeParameters& parameters() const { return parameters_; }
 

@@ -5,16 +5,24 @@
 #include <iomanip>
 #include <ostream>
 #include <sstream>
+#include <string>
 
 namespace sbpack {
 
 namespace {
 
-std::atomic<bool> interruptRequested{false};
-static_assert(std::atomic<bool>::is_always_lock_free, "the signal handler needs a lock-free flag");
+/// -1: none requested; else the signal that asked (0: requestInterrupt() without one).
+std::atomic<int> interruptRequested{-1};
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs a lock-free flag");
 
-extern "C" void onInterruptSignal(int) {
-    interruptRequested.store(true, std::memory_order_relaxed);
+extern "C" void onInterruptSignal(int signal) {
+    interruptRequested.store(signal, std::memory_order_relaxed);
+}
+
+std::string interruptMessage(int signal) {
+    const char* name = signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : nullptr;
+    return std::string("interrupted") + (name != nullptr ? std::string(" by ") + name : "") +
+           ": no output was written (earlier files at the output paths are kept)";
 }
 
 } // namespace
@@ -24,12 +32,15 @@ void installInterruptHandler() {
     std::signal(SIGTERM, onInterruptSignal);
 }
 
-void requestInterrupt() {
-    interruptRequested.store(true, std::memory_order_relaxed);
+Interrupted::Interrupted(int signal)
+    : std::runtime_error(interruptMessage(signal)), signal_(signal) {}
+
+void requestInterrupt(int signal) {
+    interruptRequested.store(signal, std::memory_order_relaxed);
 }
 
 void clearInterrupt() {
-    interruptRequested.store(false, std::memory_order_relaxed);
+    interruptRequested.store(-1, std::memory_order_relaxed);
 }
 
 Progress::Progress(std::ostream* log, std::ostream* warnings) : log_(log), warnings_(warnings) {}
@@ -56,7 +67,8 @@ void Progress::warn(std::string_view message) const {
 }
 
 void Progress::checkInterrupt() const {
-    if (interruptRequested.load(std::memory_order_relaxed)) throw Interrupted();
+    const int signal = interruptRequested.load(std::memory_order_relaxed);
+    if (signal >= 0) throw Interrupted(signal);
 }
 
 } // namespace sbpack

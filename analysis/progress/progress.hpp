@@ -12,17 +12,22 @@
 
 namespace sbpack {
 
-/// Thrown by Progress::checkInterrupt() once an interrupt was requested (SIGINT, SIGTERM).
+/// Thrown by Progress::checkInterrupt() once an interrupt was requested: `signal` is the
+/// SIGINT or SIGTERM that asked (0 for requestInterrupt() without one).
 class Interrupted : public std::runtime_error {
   public:
-    Interrupted() : std::runtime_error("interrupted") {}
+    explicit Interrupted(int signal);
+    int signal() const { return signal_; }
+
+  private:
+    int signal_;
 };
 
 /// Makes SIGINT and SIGTERM request an interrupt instead of killing the process, so that the
 /// running stage stops at its next chunk and unwinds (no output file is left behind).
 void installInterruptHandler();
-/// What the signal handler does; also usable from tests.
-void requestInterrupt();
+/// What the signal handler does (with its signal); also usable from tests (signal 0).
+void requestInterrupt(int signal = 0);
 /// Clears a pending request (tests).
 void clearInterrupt();
 

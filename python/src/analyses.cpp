@@ -48,7 +48,7 @@ class Analyzer {
                 const Progress progress(nullptr, &warnings);
                 results = analyzeFile(packing, input, settings_, progress);
             },
-            requestInterrupt);
+            [] { requestInterrupt(); });
         clearInterrupt();
         reportInPython(warnings.str());
         py::dict groups;
@@ -72,7 +72,7 @@ void analyzeFiles(const std::vector<std::string>& args) {
     std::ostringstream log;
     std::ostringstream out;
     clearInterrupt();
-    runInterruptibly([&] { runAnalyses(settings, log, out); }, requestInterrupt);
+    runInterruptibly([&] { runAnalyses(settings, log, out); }, [] { requestInterrupt(); });
     clearInterrupt();
     reportInPython(log.str());
 }
@@ -99,7 +99,7 @@ py::tuple voxelSlice(const Packing& packing, int voxels, int plane, int threads)
             for (std::size_t i = 0; i < m * m; ++i)
                 distance[i] = std::sqrt(static_cast<double>(d2[i])) * map.voxelSize();
         },
-        requestInterrupt);
+        [] { requestInterrupt(); });
     clearInterrupt();
     const auto n = static_cast<py::ssize_t>(m);
     py::array_t<std::uint8_t> solid({n, n});

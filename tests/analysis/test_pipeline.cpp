@@ -6,6 +6,7 @@
 #include "pipeline/ensemble.hpp"
 #include "pipeline/resources.hpp"
 #include "pipeline/run.hpp"
+#include "pores/exact_pore_size.hpp"
 #include "spectral/spectral_density.hpp"
 #include "structure/structure_factor.hpp"
 #include "voxels/voxelization.hpp"
@@ -16,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -336,8 +338,23 @@ TEST(Pipeline, InterruptStopsAStageAtItsNextChunk) {
     requestInterrupt();
     EXPECT_THROW(Voxelizer({40}).compute(packing, quiet), Interrupted);
     EXPECT_THROW(StructureFactor({10.0}).compute(packing, quiet), Interrupted);
+    EXPECT_THROW(ExactPoreSizeDistribution({1000}).compute(packing, quiet), Interrupted);
     clearInterrupt();
     EXPECT_NO_THROW(Voxelizer({40}).compute(packing, quiet));
+}
+
+TEST(Pipeline, AnInterruptNamesItsSignal) {
+    requestInterrupt(SIGTERM);
+    try {
+        Progress().checkInterrupt();
+        ADD_FAILURE() << "no Interrupted";
+    } catch (const Interrupted& e) {
+        EXPECT_EQ(e.signal(), SIGTERM);
+        EXPECT_NE(std::string(e.what()).find("by SIGTERM: no output was written"),
+                  std::string::npos)
+            << e.what();
+    }
+    clearInterrupt();
 }
 
 } // namespace

@@ -224,9 +224,9 @@ TEST(ExactPoreSize, SingleSphereDistributionMatchesTheClosedForm) {
     ExactPoreSizeParameters parameters;
     parameters.randomPoints = 100000;
     const PoreSizeDistributionResult result =
-        ExactPoreSizeDistribution(parameters).compute(packing);
+        ExactPoreSizeDistribution(parameters).compute(packing, Progress());
     parameters.serial = true;
-    EXPECT_EQ(ExactPoreSizeDistribution(parameters).compute(packing).F, result.F);
+    EXPECT_EQ(ExactPoreSizeDistribution(parameters).compute(packing, Progress()).F, result.F);
     EXPECT_EQ(result.method, "exact");
     EXPECT_EQ(result.samples, 100000);
     EXPECT_DOUBLE_EQ(result.meanWidth, 1.0);

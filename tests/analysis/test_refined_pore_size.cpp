@@ -94,7 +94,8 @@ TEST(RefinedPoreSize, AgreesWithTheExactSamplerOnRandomSuperballs) {
         const PoreSizeDistributionResult s = refined(packing, 120);
         ExactPoreSizeParameters parameters;
         parameters.randomPoints = 400000;
-        const PoreSizeDistributionResult e = ExactPoreSizeDistribution(parameters).compute(packing);
+        const PoreSizeDistributionResult e =
+            ExactPoreSizeDistribution(parameters).compute(packing, Progress());
         EXPECT_NEAR(s.mean, e.mean, 4.0 * e.meanStandardError + 2e-3 * e.mean) << "p = " << p;
         EXPECT_NEAR(s.secondMoment, e.secondMoment,
                     4.0 * e.secondMomentStandardError + 2e-3 * e.secondMoment)
@@ -192,7 +193,8 @@ TEST(ExactPoreSize, SamplerRecordsStandardErrorsAndACertificate) {
     const Packing packing = testing::latticePacking(1.5, 3, 1.4, 0.1, 3);
     ExactPoreSizeParameters parameters;
     parameters.randomPoints = 20000;
-    const PoreSizeDistributionResult e = ExactPoreSizeDistribution(parameters).compute(packing);
+    const PoreSizeDistributionResult e =
+        ExactPoreSizeDistribution(parameters).compute(packing, Progress());
     EXPECT_GT(e.meanStandardError, 0.0);
     EXPECT_LT(e.meanStandardError, 0.02 * e.mean);
     EXPECT_LE(e.errorBound, 1e-11);

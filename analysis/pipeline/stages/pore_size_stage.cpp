@@ -75,7 +75,7 @@ PoreSizeDistributionResult measurePores(const FileContext& context, std::optiona
         parameters.randomPoints =
             s.porePoints > 0 ? s.porePoints : RunSettings::kDefaultExactPorePoints;
         parameters.seed = s.poreSeed;
-        return ExactPoreSizeDistribution(parameters).compute(context.packing());
+        return ExactPoreSizeDistribution(parameters).compute(context.packing(), context.progress());
     }
     const bool refined = s.poreMethod == PoreMethod::Refined;
     const Stopwatch clock;
