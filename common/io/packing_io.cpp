@@ -83,6 +83,21 @@ std::map<std::string, ProvenanceValue> readAttributeGroup(hid_t root, const std:
     return provenance;
 }
 
+/// resume_state/pair_records, as many rows as resumeState["pair_records"] says (none without
+/// it), at most 1000 a particle.
+std::vector<double> readPairRecords(hid_t root, const std::map<std::string, ProvenanceValue>& state,
+                                    std::size_t particles, const std::string& file) {
+    const auto count = state.find("pair_records");
+    if (count == state.end()) return {};
+    const auto* rows = std::get_if<std::int64_t>(&count->second);
+    if (rows == nullptr || *rows < 0 || *rows > 1000 * static_cast<std::int64_t>(particles))
+        throw PackingFileError("'" + file + "': resume_state attribute 'pair_records' must be " +
+                               "an integer in [0, 1000 n_particles]");
+    if (*rows == 0) return {};
+    return readMatrixDataset(openGroup(root, "resume_state").get(), "pair_records",
+                             static_cast<std::size_t>(*rows), kPairRecordColumns);
+}
+
 /// Files written before `resume_state` kept it in the provenance as `state_*`: moved there.
 void moveEarlierResumeState(Packing& packing) {
     const std::string prefix = "state_";
@@ -129,6 +144,9 @@ std::string fileContents(const Packing& packing, const std::string& name) {
     if (!packing.provenance.empty()) writeAttributeGroup(root, "provenance", packing.provenance);
     if (!packing.resumeState.empty())
         writeAttributeGroup(root, "resume_state", packing.resumeState);
+    if (!packing.pairRecords.empty())
+        writeMatrixDataset(openGroup(root, "resume_state").get(), "pair_records",
+                           packing.pairRecords, kPairRecordColumns);
     return fileImage(file, name);
 }
 
@@ -171,9 +189,10 @@ Packing readContents(hid_t root, const std::string& file) {
             unflatten(readMatrixDataset(root, "angular_velocities", rows, 3));
     if (hasLink(root, "provenance"))
         packing.provenance = readAttributeGroup(root, "provenance", file);
-    if (hasLink(root, "resume_state"))
+    if (hasLink(root, "resume_state")) {
         packing.resumeState = readAttributeGroup(root, "resume_state", file);
-    else
+        packing.pairRecords = readPairRecords(root, packing.resumeState, rows, file);
+    } else
         moveEarlierResumeState(packing);
 
     validatePacking(packing, file);

@@ -21,6 +21,9 @@ using Eigen::Quaterniond;
 /// A provenance value: the generator's parameters and run log (group `provenance`).
 using ProvenanceValue = std::variant<std::int64_t, double, std::string>;
 
+/// Values per row of Packing::pairRecords.
+inline constexpr std::size_t kPairRecordColumns = 13;
+
 /// Identical superballs in a cubic periodic box of edge L.
 struct Packing {
     double p = 1.0;
@@ -37,6 +40,10 @@ struct Packing {
     /// What a generator needs to resume beyond the particles (group `resume_state`, sbgen's
     /// format, phase and growth clock: docs/design.md §4); not part of the provenance.
     std::map<std::string, ProvenanceValue> resumeState;
+    /// sbgen's pair records, kPairRecordColumns values a row (dataset resume_state/pair_records,
+    /// its row count resumeState["pair_records"]; the columns: generator/protocol/
+    /// checkpoint_entries.cpp and docs/design.md §4).
+    std::vector<double> pairRecords;
 
     std::size_t size() const { return positions.size(); }
     Superball shape() const { return Superball(p, semiAxis); }

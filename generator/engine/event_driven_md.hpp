@@ -17,8 +17,11 @@
 //
 // Particles are advanced lazily (each has its own time stamp). run() ends synchronised: every
 // particle is advanced to the final time, wrapped into [0, L), and that time becomes the new time
-// origin, folded into the growth clock. The synchronised state plus the clock is the whole state:
-// rebuilding the events from it is deterministic, which makes checkpoints exact.
+// origin, folded into the growth clock; the pair memories keep across it what holds whatever
+// the motions (PairMemory::synchronised: the normal and the witness record) and are pruned to
+// the rebuilt lists. The synchronised state, the clock and those records are the whole state:
+// rebuilding the events from them is deterministic, which makes checkpoints exact
+// (pairRecords, restorePairRecords).
 
 #include "engine/growth_clock.hpp"
 #include "engine/pair_memories.hpp"
@@ -66,7 +69,8 @@ template <EngineShape Shape> class EventDrivenMd {
     EventDrivenMd(Shape shape, double boxLength, std::vector<ParticleState> particles,
                   GrowthClock clock, EngineParameters parameters = {})
         : shape_(shape), box_(boxLength), state_(std::move(particles)), clock_(clock),
-          parameters_(parameters), collidedInRun_(state_.size(), 0) {}
+          parameters_(parameters), memories_(static_cast<int>(state_.size())),
+          collidedInRun_(state_.size(), 0) {}
 
     int size() const { return static_cast<int>(state_.size()); }
     double boxLength() const { return box_; }
@@ -75,6 +79,12 @@ template <EngineShape Shape> class EventDrivenMd {
     /// The synchronised particles (valid between runs).
     const std::vector<ParticleState>& particles() const { return state_; }
     const Shape& shape() const { return shape_; }
+    /// The pair records of the synchronised state (valid between runs; empty for a shape that
+    /// remembers nothing), and their restoration into an engine of the same particles before
+    /// its first run (a resumed checkpoint).
+    using PairRecord = typename PairMemories<typename Shape::Memory>::Entry;
+    std::vector<PairRecord> pairRecords() const { return memories_.records(); }
+    void restorePairRecords(const std::vector<PairRecord>& records) { memories_.restore(records); }
     /// The predictor's counters since the last call.
     PredictorStats takePredictorStats() { return shape_.takeStats(); }
 
@@ -285,6 +295,7 @@ template <EngineShape Shape> class EventDrivenMd {
             state_[i].position = wrapIntoBox(state_[i].position, box_);
             state_[i].orientation.normalize();
         }
+        memories_.synchronise(turned_);
         clock_.advance(t);
         dirty_ = true;
     }
@@ -303,7 +314,7 @@ template <EngineShape Shape> class EventDrivenMd {
             anchors[i] = state_[i].position;
         lists_ = NeighbourLists(box_, shape_.circumscribedRatio() * maximum + 2.0 * exitRadius_,
                                 std::move(anchors));
-        memories_.reset(size()); // a rebuild is a deterministic function of the synchronised state
+        memories_.retainListed(lists_);
         resolvedAt_ = -kNever;
         time_.assign(size(), 0.0);
         turned_.assign(size(), 0.0);

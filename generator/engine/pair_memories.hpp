@@ -1,8 +1,9 @@
 #pragma once
 // What the engine keeps of each pair between predictions: the shape's Memory (shapes/shape.hpp;
 // the superball predictor's warm-start normal, the bound on its plane gap and its witness
-// record), when it was left
-// and both particles' collision counters then. A memory is handed to the predictor as seen from
+// record), when it was left and both particles' collision counters then. Records survive a
+// window's end in what holds whatever the motions (synchronise) and go into the checkpoint
+// (records, restore). A memory is handed to the predictor as seen from
 // the particle predicted (the normal from i to j) and stored as seen from the lower index. A
 // shape that remembers nothing (NoPairMemory: the sphere) stores nothing and pays no lookup.
 
@@ -11,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace sbpack {
@@ -23,10 +25,51 @@ struct ParticleClocks {
 
 template <class Memory> class PairMemories {
   public:
-    /// Forgets every pair (a rebuild: predictions restart from the synchronised state).
-    void reset(int particles) {
-        particles_ = static_cast<std::uint64_t>(particles);
-        records_.clear();
+    explicit PairMemories(int particles = 0) : particles_(static_cast<std::uint64_t>(particles)) {}
+
+    /// At a synchronisation, where the particles' accumulated rotation angles were `turned` and
+    /// become zero: every record keeps what its Memory keeps across one (Memory::synchronised),
+    /// stamped as unchanged at time 0. The records then depend on the synchronised state alone,
+    /// as the checkpoint does (records(), restore()).
+    void synchronise(const std::vector<double>& turned) {
+        records_.forEach([&](std::uint64_t key, Record& record) {
+            const auto [low, high] = pair(key);
+            record = {record.memory.synchronised(turned[low], turned[high]), 0.0, 0, 0};
+        });
+    }
+
+    /// Keeps the records of the pairs in `lists` (a rebuild's neighbour lists, `lists.of(i)`),
+    /// forgets the others.
+    template <class Lists> void retainListed(const Lists& lists) {
+        PairTable<Record> kept;
+        for (int i = 0; i < static_cast<int>(particles_); ++i)
+            for (const int j : lists.of(i))
+                if (i < j)
+                    if (const Record* record = records_.find(key(i, j))) kept[key(i, j)] = *record;
+        records_ = std::move(kept);
+    }
+
+    /// Every synchronised record as (i, j, memory seen from i), i < j, in ascending order.
+    struct Entry {
+        int i, j;
+        Memory memory;
+    };
+    std::vector<Entry> records() const {
+        std::vector<Entry> entries;
+        records_.forEach([&](std::uint64_t key, const Record& record) {
+            const auto [low, high] = pair(key);
+            entries.push_back({low, high, record.memory});
+        });
+        std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+            return std::pair(a.i, a.j) < std::pair(b.i, b.j);
+        });
+        return entries;
+    }
+    /// The records of records() back, stamped as synchronise() leaves them.
+    void restore(const std::vector<Entry>& entries) {
+        records_ = {};
+        for (const Entry& e : entries)
+            records_[key(e.i, e.j)] = {e.memory, 0.0, 0, 0};
     }
 
     /// use(memory) with the pair's memory for a prediction of i against j at time t, as seen from
@@ -41,13 +84,17 @@ template <class Memory> class PairMemories {
                    (clocks.counter[k] == counter + 1 && clocks.changedAt[k] == t);
         };
         const auto [low, high] = std::minmax(i, j);
-        Memory memory = unchanged(low, record.counterLow) && unchanged(high, record.counterHigh)
-                            ? record.memory.after(t - record.time)
-                            : record.memory.normalOnly();
+        Memory& memory = record.memory; // used in place: no copy of the record
+        if (unchanged(low, record.counterLow) && unchanged(high, record.counterHigh))
+            memory.moveOn(t - record.time);
+        else
+            memory.forgetMotions();
         if (i > j) memory.flip();
         const auto answer = use(memory);
         if (i > j) memory.flip();
-        record = {memory, t, clocks.counter[low], clocks.counter[high]};
+        record.time = t;
+        record.counterLow = clocks.counter[low];
+        record.counterHigh = clocks.counter[high];
         return answer;
     }
 
@@ -69,6 +116,9 @@ template <class Memory> class PairMemories {
         std::uint64_t counterLow = 0, counterHigh = 0;
     };
     std::uint64_t key(int i, int j) const { return pairKey(i, j, particles_); }
+    std::pair<int, int> pair(std::uint64_t key) const {
+        return {static_cast<int>(key / particles_), static_cast<int>(key % particles_)};
+    }
 
     std::uint64_t particles_ = 0;
     PairTable<Record> records_;
@@ -77,7 +127,15 @@ template <class Memory> class PairMemories {
 /// Nothing to keep: the memory is an empty value, made for each use.
 template <> class PairMemories<NoPairMemory> {
   public:
-    void reset(int /*particles*/) {}
+    explicit PairMemories(int /*particles*/ = 0) {}
+    void synchronise(const std::vector<double>& /*turned*/) {}
+    template <class Lists> void retainListed(const Lists& /*lists*/) {}
+    struct Entry {
+        int i, j;
+        NoPairMemory memory;
+    };
+    std::vector<Entry> records() const { return {}; }
+    void restore(const std::vector<Entry>& /*entries*/) {}
     template <class Use>
     auto predictWith(int /*i*/, int /*j*/, double /*t*/, ParticleClocks /*clocks*/, Use&& use) {
         NoPairMemory memory;

@@ -38,6 +38,26 @@ template <class Value> class PairTable {
         return values_[slot];
     }
 
+    /// The value of `key`, or nullptr when absent (nothing inserted). Valid until the next
+    /// insertion.
+    Value* find(std::uint64_t key) {
+        if (keys_.empty()) return nullptr;
+        for (std::size_t slot = home(key);; slot = (slot + 1) & (keys_.size() - 1)) {
+            if (keys_[slot] == key) return &values_[slot];
+            if (keys_[slot] == kEmpty) return nullptr;
+        }
+    }
+
+    /// f(key, value) for every record, in slot order.
+    template <class F> void forEach(F&& f) {
+        for (std::size_t slot = 0; slot < keys_.size(); ++slot)
+            if (keys_[slot] != kEmpty) f(keys_[slot], values_[slot]);
+    }
+    template <class F> void forEach(F&& f) const {
+        for (std::size_t slot = 0; slot < keys_.size(); ++slot)
+            if (keys_[slot] != kEmpty) f(keys_[slot], values_[slot]);
+    }
+
     /// Forgets every record, keeping the capacity.
     void clear() {
         std::fill(keys_.begin(), keys_.end(), kEmpty);

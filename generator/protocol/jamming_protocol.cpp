@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <ctime>
 #include <stdexcept>
+#include <type_traits>
 
 namespace sbpack {
 namespace {
@@ -62,9 +63,11 @@ template <class Engine> Engine freshEngine(const ProtocolParameters& parameters)
                               GrowthClock{1.0, 0.0, parameters.fastGrowthRate()});
 }
 
-/// The engine of a checkpoint's particles, refused without velocities or with overlaps.
+/// The engine of a checkpoint's particles and pair records, refused without velocities or with
+/// overlaps.
 template <class Engine>
-Engine resumedEngine(const Packing& packing, const std::string& source, GrowthClock clock) {
+Engine resumedEngine(const Packing& packing, const std::string& source,
+                     const CheckpointFields& fields) {
     if (packing.velocities.size() != packing.size() ||
         (rotating(packing.p) && packing.angularVelocities.size() != packing.size()))
         throw std::invalid_argument("'" + source + "': checkpoint without velocities");
@@ -74,7 +77,11 @@ Engine resumedEngine(const Packing& packing, const std::string& source, GrowthCl
         state[i] = {packing.positions[i], packing.velocities[i], packing.orientations[i]};
         if (rotating(packing.p)) state[i].angularVelocity = packing.angularVelocities[i];
     }
-    return makeEngine<Engine>(packing.p, packing.boxLength, std::move(state), clock);
+    Engine engine =
+        makeEngine<Engine>(packing.p, packing.boxLength, std::move(state), fields.clock);
+    if (auto* superballs = std::get_if<EventDrivenMd<SuperballShape>>(&engine))
+        superballs->restorePairRecords(fields.pairRecords);
+    return engine;
 }
 
 /// A watch that has counted `count` windows checks the jam at base, 2 base, 4 base, ... windows.
@@ -136,7 +143,7 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
 JammingProtocol::JammingProtocol(const Packing& packing, const std::string& source,
                                  const CheckpointFields& fields)
     : parameters_(fields.parameters), status_(fields.status),
-      engine_(resumedEngine<Engine>(packing, source, fields.clock)) {
+      engine_(resumedEngine<Engine>(packing, source, fields)) {
     status_.packingFraction = packing.packingFraction();
     adaptSkin(); // as the run that wrote the checkpoint did at the end of its window
 }
@@ -281,10 +288,13 @@ double JammingProtocol::packingFraction() const {
 Packing JammingProtocol::checkpoint() const {
     Packing packing;
     packing.p = parameters_.p;
-    GrowthClock clock;
+    CheckpointFields fields{parameters_, status_, {}, {}};
     std::visit(
         [&](const auto& engine) {
-            clock = engine.clock();
+            fields.clock = engine.clock();
+            if constexpr (std::is_same_v<std::decay_t<decltype(engine)>,
+                                         EventDrivenMd<SuperballShape>>)
+                fields.pairRecords = engine.pairRecords();
             packing.semiAxis = 0.5 * engine.diameter();
             packing.boxLength = engine.boxLength();
             for (const ParticleState& s : engine.particles()) {
@@ -298,7 +308,7 @@ Packing JammingProtocol::checkpoint() const {
     packing.reducedPressure = status_.reducedPressure;
     packing.seed = parameters_.seed;
     packing.generatorVersion = kVersion;
-    writeCheckpoint({parameters_, status_, clock}, packing);
+    writeCheckpoint(fields, packing);
     return packing;
 }
 

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cmath>
 #include <limits>
 
 namespace sbpack {
@@ -34,12 +35,31 @@ struct PairMotion {
     double turnedI = 0.0, turnedJ = 0.0;
 };
 
+/// Below this phi^2 (phi = |omega| tau / 2, the half angle) advancedOrientation sums the series
+/// of cos(phi) and sin(phi) / phi through phi^6: what it leaves, phi^8 / 8! < 2.5e-17, is below
+/// half an ulp of 1, so the series is exact to rounding there, with neither sincos nor a square
+/// root (the near-jammed cage's flights turn by phi ~ 1e-4; bench/RESULTS.md, "Pair records
+/// across windows and the orientation series").
+inline constexpr double kOrientationSeriesLimit = 1e-3;
+
 /// Free flight of the orientation: exp(omega tau / 2) q0 for lab-frame omega, exact (constant
-/// omega between collisions: isotropic inertia, docs/design.md §3).
+/// omega between collisions: isotropic inertia, docs/design.md §3): the unit quaternion
+/// (cos phi, omega tau / 2 sin(phi) / phi) times q0.
 inline Quaterniond advancedOrientation(const Quaterniond& q0, const Vector3d& omega, double tau) {
-    const double speed = omega.norm();
-    if (speed == 0.0 || tau == 0.0) return q0;
-    return Quaterniond(Eigen::AngleAxisd(speed * tau, omega / speed)) * q0;
+    const double half = 0.5 * tau;
+    const double phi2 = omega.squaredNorm() * half * half;
+    if (phi2 == 0.0) return q0;
+    double cosine, sinc; // cos(phi), sin(phi) / phi
+    if (phi2 < kOrientationSeriesLimit) {
+        cosine = 1.0 - phi2 * (1.0 / 2.0 - phi2 * (1.0 / 24.0 - phi2 * (1.0 / 720.0)));
+        sinc = 1.0 - phi2 * (1.0 / 6.0 - phi2 * (1.0 / 120.0 - phi2 * (1.0 / 5040.0)));
+    } else {
+        const double phi = std::sqrt(phi2);
+        cosine = std::cos(phi);
+        sinc = std::sin(phi) / phi;
+    }
+    const Vector3d v = omega * (half * sinc);
+    return Quaterniond(cosine, v.x(), v.y(), v.z()) * q0;
 }
 
 /// A predictor's answer for one pair, as a delay from now: the bodies touch at `time`, or, when
@@ -79,19 +99,39 @@ struct PairMemory {
     /// since (shapes/witness_bound.hpp); none once the normal has moved on.
     WitnessRecord witness{};
 
+    /// Moves the memory on by `elapsed` along the motion predicted, in place (the engine's
+    /// records are updated where they lie).
+    void moveOn(double elapsed) {
+        gap = elapsed >= 0.0 && elapsed <= span ? gap + rate * elapsed
+                                                : -std::numeric_limits<double>::infinity();
+    }
+    /// Keeps the normal and the witness only, in place (a particle's motion has changed: the
+    /// gap bound no longer holds, nor the contact found along it).
+    void forgetMotions() {
+        gap = -std::numeric_limits<double>::infinity();
+        rate = span = 0.0;
+        atContact = false;
+    }
     /// The same memory `elapsed` later along the motion predicted.
     PairMemory after(double elapsed) const {
         PairMemory later = *this;
-        later.gap = elapsed >= 0.0 && elapsed <= span ? gap + rate * elapsed
-                                                      : -std::numeric_limits<double>::infinity();
+        later.moveOn(elapsed);
         return later;
     }
-    /// The normal and the witness (a particle's motion has changed: the gap bound no longer
-    /// holds).
+    /// The normal and the witness alone.
     PairMemory normalOnly() const {
-        PairMemory kept;
-        kept.normal = normal;
-        kept.witness = witness;
+        PairMemory kept = *this;
+        kept.forgetMotions();
+        return kept;
+    }
+    /// What survives a synchronisation, where each body's accumulated rotation angle (the
+    /// witness's clock) was `turnedI`, `turnedJ` and becomes the new zero: the normal and the
+    /// witness, its angles counted from there (a window's end: the thermostat changes every
+    /// motion, so the gap bound goes).
+    PairMemory synchronised(double turnedI, double turnedJ) const {
+        PairMemory kept = normalOnly();
+        kept.witness.turnedI -= turnedI;
+        kept.witness.turnedJ -= turnedJ;
         return kept;
     }
     /// Seen from the other particle from now on (normals from j to i).

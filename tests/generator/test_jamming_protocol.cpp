@@ -7,8 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <limits>
 #include <optional>
 
 namespace sbpack {
@@ -45,6 +47,11 @@ void expectIdentical(const Packing& a, const Packing& b) {
         EXPECT_EQ(a.orientations[i].coeffs(), b.orientations[i].coeffs()) << i;
     }
     EXPECT_EQ(a.angularVelocities, b.angularVelocities);
+    ASSERT_EQ(a.pairRecords.size(), b.pairRecords.size());
+    for (std::size_t k = 0; k < a.pairRecords.size(); ++k) // NaN: an angle without a witness
+        EXPECT_TRUE(a.pairRecords[k] == b.pairRecords[k] ||
+                    (std::isnan(a.pairRecords[k]) && std::isnan(b.pairRecords[k])))
+            << k;
     for (const auto& [key, value] : a.provenance)
         if (key != "wall_time_s" && key != "cpu_time_s") {
             EXPECT_EQ(value, b.provenance.at(key)) << key;
@@ -134,6 +141,9 @@ TEST(JammingProtocol, SuperballRunsAreDeterministicAndResumeExactly) {
         if (s.windows == 20) saved = uninterrupted.checkpoint();
     }));
     ASSERT_TRUE(saved.has_value());
+    // The pair records survive the window's end (the normals and witnesses in flight) and must
+    // resume with the particles (issue 40).
+    EXPECT_GT(saved->pairRecords.size(), kPairRecordColumns * saved->size());
     EXPECT_GE(uninterrupted.status().reducedPressure, 1e4);
     const auto file = std::filesystem::temp_directory_path() / "sbgen-test-superball-checkpoint.h5";
     writePacking(*saved, file);
@@ -326,6 +336,29 @@ TEST(JammingProtocol, RefusesATamperedGrowthClock) {
     refused([](Packing& p) { p.resumeState["base_diameter"] = 0.0; },
             "base_diameter must be positive");
     refused([](Packing& p) { p.semiAxis *= 0.99; }, "not 2 semi_axis");
+    EXPECT_NO_THROW(JammingProtocol(good, "good.h5"));
+}
+
+// Pair records that cannot be the engine's are refused, naming the row (issue 40).
+TEST(JammingProtocol, RefusesTamperedPairRecords) {
+    JammingProtocol run(smallSuperballRun(4));
+    run.run(nullptr, nullptr, [](const ProtocolStatus&) {});
+    const Packing good = run.checkpoint();
+    ASSERT_GT(good.pairRecords.size(), kPairRecordColumns);
+    const auto refused = [&](std::size_t column, double value, const std::string& words) {
+        Packing bad = good;
+        bad.pairRecords[kPairRecordColumns + column] = value;
+        try {
+            JammingProtocol resumed(bad, "bad.h5");
+            ADD_FAILURE() << "accepted: " << words;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+        }
+    };
+    refused(1, static_cast<double>(good.size()), "pair_records row 1: the particles must be");
+    refused(0, 0.5, "row 1: the particles must be indices");
+    refused(2, std::numeric_limits<double>::infinity(), "row 1: normal and points must be finite");
+    refused(2, 7.0, "row 1: the normal must be a unit vector or zero");
     EXPECT_NO_THROW(JammingProtocol(good, "good.h5"));
 }
 

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -185,4 +186,37 @@ TEST(WitnessCertificate, ARecordFromTheFutureNeverCertifies) {
 }
 
 } // namespace
+} // namespace sbpack
+
+namespace sbpack {
+
+// The orientation's free flight by its series below kOrientationSeriesLimit and by sincos above:
+// both the exact rotation (Eigen's angle-axis) to rounding, unit, and a flight of tau1 then tau2
+// is one of tau1 + tau2 (issue 40, the lean exact kernel).
+TEST(AdvancedOrientation, IsTheExactRotationOnBothSidesOfTheSeriesLimit) {
+    std::mt19937_64 rng(5);
+    std::normal_distribution<double> normal;
+    for (int k = 0; k < 20000; ++k) {
+        const Vector3d omega(normal(rng), normal(rng), normal(rng));
+        const Quaterniond q0 =
+            Quaterniond(normal(rng), normal(rng), normal(rng), normal(rng)).normalized();
+        // Half angles phi from 1e-9 to 3, many just either side of the series' limit.
+        const double phi = k % 2 == 0
+                               ? std::sqrt(kOrientationSeriesLimit) * (1.0 + 1e-3 * normal(rng))
+                               : std::pow(10.0, -9.0 + 9.5 * (k % 1000) / 1000.0);
+        const double tau = 2.0 * phi / omega.norm();
+        const Quaterniond exact =
+            Quaterniond(Eigen::AngleAxisd(omega.norm() * tau, omega.normalized())) * q0;
+        const Quaterniond turned = advancedOrientation(q0, omega, tau);
+        ASSERT_LT((turned.coeffs() - exact.coeffs()).norm(), 1e-15) << "phi " << phi;
+        ASSERT_LT(std::abs(turned.squaredNorm() - 1.0), 1e-15) << "phi " << phi;
+        const Quaterniond twice =
+            advancedOrientation(advancedOrientation(q0, omega, 0.3 * tau), omega, 0.7 * tau);
+        ASSERT_LT((twice.coeffs() - turned.coeffs()).norm(), 2e-15) << "phi " << phi;
+    }
+    const Quaterniond q0(0.5, 0.5, 0.5, 0.5);
+    EXPECT_EQ(advancedOrientation(q0, Vector3d::Zero(), 3.0).coeffs(), q0.coeffs());
+    EXPECT_EQ(advancedOrientation(q0, Vector3d(1.0, 2.0, 3.0), 0.0).coeffs(), q0.coeffs());
+}
+
 } // namespace sbpack
