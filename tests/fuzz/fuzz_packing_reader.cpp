@@ -1,39 +1,32 @@
 // libFuzzer target for the packing readers (issue 20; docs/reliability.md, "Inputs"): any bytes,
-// read as an HDF5 packing and as a text packing, give a valid packing or a std::exception that
-// names the file, and never a crash, a hang, undefined behaviour or an allocation the file does
-// not justify. Built by the CMake preset "fuzz" (clang); run by scripts/fuzz.sh.
+// read as an HDF5 packing and as a text packing, give a valid packing or a refusal of the
+// documented type (PackingFileError, InvalidPacking) whose message names the file, and never a
+// crash, a hang, undefined behaviour or an allocation the file does not justify. Built by the
+// CMake preset "fuzz" (clang); run by scripts/fuzz.sh.
+#include "fuzz_input.hpp"
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
+#include "packing/validation.hpp"
 
 #include <cstdint>
-#include <cstdlib>
 #include <exception>
-#include <filesystem>
-#include <fstream>
 #include <string>
-#include <unistd.h>
 
 namespace {
 
-/// A private directory for the inputs (the readers take paths, as the programs do).
-const std::filesystem::path& inputDirectory() {
-    static const std::filesystem::path directory = [] {
-        std::string pattern = (std::filesystem::temp_directory_path() / "sbpack-fuzz-XXXXXX");
-        if (mkdtemp(pattern.data()) == nullptr) std::abort();
-        return std::filesystem::path(pattern);
-    }();
-    return directory;
-}
-
 template <class Read>
 void readBytes(const std::uint8_t* data, std::size_t size, Read read, const char* name) {
-    const std::filesystem::path path = inputDirectory() / name;
-    std::ofstream(path, std::ios::binary | std::ios::trunc)
-        .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+    const auto path = sbpack::fuzz::writeInput(data, size, name);
+    const std::string quoted = "'" + path.string() + "'";
     try {
         read(path);
-    } catch (const std::exception&) {
+    } catch (const sbpack::PackingFileError& e) {
         // A refused input is the expected outcome for almost every mutation.
+        sbpack::fuzz::requireNamed(e, quoted, name);
+    } catch (const sbpack::InvalidPacking& e) {
+        sbpack::fuzz::requireNamed(e, quoted, name);
+    } catch (const std::exception& e) {
+        sbpack::fuzz::finding(std::string(name) + ": not PackingFileError or InvalidPacking", e);
     }
 }
 

@@ -1,0 +1,74 @@
+// libFuzzer target for the file-type dispatch readPackingFile (io/text_io.hpp; issue 46): the
+// tools take every packing through it, which picks the reader from the name (".txt": the text
+// format; anything else: HDF5). The input's bytes are written under one of several names, picked
+// by the input's size so that the bytes stay the file (scripts/fuzz.sh checks findings against
+// the release sbanalyze as they are). Whatever the name, the outcome must be the one of the
+// reader its extension names, called directly: the same packing, or the same refusal of the
+// documented type (PackingFileError, InvalidPacking) naming the file.
+#include "fuzz_input.hpp"
+#include "io/packing_io.hpp"
+#include "io/text_io.hpp"
+#include "packing/validation.hpp"
+
+#include <cstdint>
+#include <exception>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace {
+
+/// Names whose extension is not exactly ".txt" go to the HDF5 reader.
+constexpr const char* kNames[] = {"input.txt",    "input.h5",  "input.xyz",         "input",
+                                  "input.txt.h5", "input.TXT", "it's a packing.txt"};
+
+struct Outcome {
+    std::optional<sbpack::Packing> packing;
+    std::string refusal;
+};
+
+template <class Read> Outcome outcome(const std::filesystem::path& path, Read read) {
+    const std::string quoted = "'" + path.string() + "'";
+    try {
+        return {read(path), {}};
+    } catch (const sbpack::PackingFileError& e) {
+        sbpack::fuzz::requireNamed(e, quoted, "readPackingFile");
+        return {std::nullopt, e.what()};
+    } catch (const sbpack::InvalidPacking& e) {
+        sbpack::fuzz::requireNamed(e, quoted, "readPackingFile");
+        return {std::nullopt, e.what()};
+    } catch (const std::exception& e) {
+        sbpack::fuzz::finding("readPackingFile: not PackingFileError or InvalidPacking", e);
+    }
+}
+
+bool samePacking(const sbpack::Packing& a, const sbpack::Packing& b) {
+    if (a.size() != b.size() || a.p != b.p || a.semiAxis != b.semiAxis ||
+        a.boxLength != b.boxLength)
+        return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (a.positions[i] != b.positions[i] ||
+            a.orientations[i].coeffs() != b.orientations[i].coeffs())
+            return false;
+    return true;
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    const char* name = kNames[size % (sizeof kNames / sizeof *kNames)];
+    const auto path = sbpack::fuzz::writeInput(data, size, name);
+    const Outcome dispatched = outcome(path, sbpack::readPackingFile);
+    const bool text = path.extension() == ".txt";
+    const Outcome direct =
+        text ? outcome(path, sbpack::readTextPacking) : outcome(path, sbpack::readPacking);
+    const bool same = dispatched.packing
+                          ? direct.packing && samePacking(*dispatched.packing, *direct.packing)
+                          : !direct.packing && dispatched.refusal == direct.refusal;
+    if (!same)
+        sbpack::fuzz::finding(std::string("readPackingFile('") + name + "') differs from " +
+                                  (text ? "readTextPacking" : "readPacking"),
+                              std::runtime_error(dispatched.refusal + " | " + direct.refusal));
+    return 0;
+}
