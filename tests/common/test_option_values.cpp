@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -42,6 +44,19 @@ TEST(OptionValues, IntegersInTheirRange) {
     EXPECT_EQ(parseInteger("--n", "1000", 1, 1 << 20), 1000);
     EXPECT_THROW(parseInteger("--n", "1.5", 1, 10), std::invalid_argument);
     EXPECT_THROW(parseInteger("--n", "11", 1, 10), std::invalid_argument);
+}
+
+// Digits are read exactly: 2^63 - 1 is the largest int64_t and 2^63 beyond it (its double is
+// 2^63, which was cast), 2^53 + 1 stays itself (its double is 2^53); found by the fuzz target
+// tests/fuzz/fuzz_option_number (issue 46).
+TEST(OptionValues, IntegersBeyondDoublePrecisionAreExact) {
+    constexpr std::int64_t kMax = std::numeric_limits<std::int64_t>::max();
+    EXPECT_EQ(parseInteger("--seed", "9223372036854775807", 0, kMax), kMax);
+    EXPECT_THROW(parseInteger("--seed", "9223372036854775808", 0, kMax), std::invalid_argument);
+    EXPECT_EQ(parseInteger("--seed", "9007199254740993", 0, kMax), 9007199254740993LL);
+    EXPECT_THROW(parseInteger("--seed", "9007199254740993", 0, 9007199254740992LL),
+                 std::invalid_argument);
+    EXPECT_EQ(parseInteger("--n", "1e4", 1, kMax), 10000); // exponent form stays
 }
 
 } // namespace
