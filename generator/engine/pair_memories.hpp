@@ -67,7 +67,7 @@ template <class Memory> class PairMemories {
     }
     /// The records of records() back, stamped as synchronise() leaves them.
     void restore(const std::vector<Entry>& entries) {
-        records_ = {};
+        records_.clear();
         for (const Entry& e : entries)
             records_[key(e.i, e.j)] = {e.memory, 0.0, 0, 0};
     }

@@ -9,7 +9,6 @@
 // checkpoints of tests/fuzz/seeds/ (scripts/fuzz.sh).
 #include "fuzz_input.hpp"
 #include "io/packing_io.hpp"
-#include "packing/validation.hpp"
 #include "protocol/checkpoint_entries.hpp"
 #include "protocol/jamming_protocol.hpp"
 #include "protocol/protocol_advice.hpp"
@@ -26,14 +25,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::optional<sbpack::Packing> packing;
     try {
         packing = sbpack::readPacking(path);
-    } catch (const sbpack::PackingFileError& e) {
-        sbpack::fuzz::requireNamed(e, quoted, "readPacking");
-        return 0;
-    } catch (const sbpack::InvalidPacking& e) {
-        sbpack::fuzz::requireNamed(e, quoted, "readPacking");
-        return 0;
     } catch (const std::exception& e) {
-        sbpack::fuzz::finding("readPacking: not PackingFileError or InvalidPacking", e);
+        sbpack::fuzz::requirePackingRefusal(e, quoted, "readPacking");
+        return 0;
     }
     try {
         sbpack::readCheckpoint(*packing, source);

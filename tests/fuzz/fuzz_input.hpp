@@ -4,6 +4,9 @@
 // refusal. A refusal must be an exception of the documented type whose message names the file
 // (or the option) it refuses; anything else aborts, which libFuzzer records as a crash with the
 // input that caused it.
+#include "io/packing_io.hpp"
+#include "packing/validation.hpp"
+
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -64,6 +67,16 @@ inline void requireNamed(const std::exception& e, const std::string& subject,
                          const std::string& where) {
     if (std::string(e.what()).find(subject) == std::string::npos)
         finding(where + ": the message does not name " + subject, e);
+}
+
+/// A packing reader's refusal `e` (of the file written as `quoted`) must be a PackingFileError or
+/// an InvalidPacking that names the file; anything else is a finding.
+inline void requirePackingRefusal(const std::exception& e, const std::string& quoted,
+                                  const std::string& where) {
+    if (dynamic_cast<const PackingFileError*>(&e) == nullptr &&
+        dynamic_cast<const InvalidPacking*>(&e) == nullptr)
+        finding(where + ": not PackingFileError or InvalidPacking", e);
+    requireNamed(e, quoted, where);
 }
 
 } // namespace sbpack::fuzz

@@ -8,7 +8,6 @@
 #include "fuzz_input.hpp"
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
-#include "packing/validation.hpp"
 
 #include <cstdint>
 #include <exception>
@@ -32,14 +31,9 @@ template <class Read> Outcome outcome(const std::filesystem::path& path, Read re
     const std::string quoted = "'" + path.string() + "'";
     try {
         return {read(path), {}};
-    } catch (const sbpack::PackingFileError& e) {
-        sbpack::fuzz::requireNamed(e, quoted, "readPackingFile");
-        return {std::nullopt, e.what()};
-    } catch (const sbpack::InvalidPacking& e) {
-        sbpack::fuzz::requireNamed(e, quoted, "readPackingFile");
-        return {std::nullopt, e.what()};
     } catch (const std::exception& e) {
-        sbpack::fuzz::finding("readPackingFile: not PackingFileError or InvalidPacking", e);
+        sbpack::fuzz::requirePackingRefusal(e, quoted, "readPackingFile");
+        return {std::nullopt, e.what()};
     }
 }
 
