@@ -2,7 +2,8 @@
 
 #include "geometry/superball.hpp"
 #include "pair/pair_geometry.hpp"
-#include "shapes/superball/first_contact.hpp"
+#include "shapes/first_contact_search.hpp"
+#include "shapes/superball/pair_gap.hpp"
 #include "shapes/superball/warm_distance.hpp"
 #include "shapes/witness_bound.hpp"
 
@@ -15,11 +16,9 @@ namespace sbpack {
 using superball::atNormal;
 using superball::circumscribedWindow;
 using superball::exactSignedDistance;
-using superball::Found;
 using superball::kNever;
-using superball::PairPrediction;
-using superball::PlaneGap;
 using superball::SphereWindow;
+using superball::SuperballPairGap;
 
 SuperballShape::SuperballShape(double p)
     : p_(p), c_(Superball(p, 1.0).circumradius()), cIn_(Superball(p, 1.0).inradius()),
@@ -32,7 +31,8 @@ double SuperballShape::inertiaPerMass(double diameter) const {
 }
 
 // Tier 1: the circumscribed spheres meet before the horizon. Tier 2 (separatingPlane): no plane
-// separates them up to `end`. Tier 3: conservative advancement on exact s (PairPrediction); the
+// separates them up to `end`. Tier 3: the first-contact search on the pair's gap function
+// (shapes/first_contact_search.hpp over superball/pair_gap.hpp); the
 // witness record was of the cached normal's plane, so it goes where the normal moves on.
 Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, PairMemory& memory,
                                          bool resolved) {
@@ -48,14 +48,15 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Pa
         ++stats.sphereRejections;
         return none;
     }
-    PairPrediction prediction(m, p_, c_, lever_, *window, normal, limits, stats);
     if (normal.isZero(0.0)) normal = m.displacement.normalized();
-    const std::optional<PlaneGap> cached = separatingPlane(m, prediction, remembered, memory);
+    SuperballPairGap gap(m, p_, c_, lever_, window->end, normal, limits, stats);
+    const std::optional<PlaneGap> cached = separatingPlane(m, gap, window->end, remembered, memory);
     if (!cached) return none;
     const Vector3d recorded = normal;
-    const Found found =
-        prediction.advance(window->enter, normal, *cached, resolved,
-                           resolved ? resolvedContactSeenFrom(m) : std::nullopt, memory);
+    FirstContactSearch search(gap, window->end, m.diameter, limits, stats);
+    const Found found = search.advance(window->enter, normal, *cached, resolved,
+                                       resolved ? resolvedContactSeenFrom(m) : std::nullopt);
+    if (found.sampled) memory.gap = -kNever; // the samples moved the normal on
     if (normal != recorded) memory.witness = {};
     if (found.contact && found.time < kNever) {
         normal = found.normal;
@@ -73,11 +74,10 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Pa
 // the centre line's. The exact gap's support points become the witness record; either plane
 // bound, with this motion's rate, is left for the next prediction.
 std::optional<PlaneGap> SuperballShape::separatingPlane(const PairMotion& m,
-                                                        const PairPrediction& prediction,
+                                                        const SuperballPairGap& gap, double end,
                                                         double remembered, PairMemory& memory) {
     const Vector3d& normal = memory.normal;
-    const double end = prediction.end();
-    const double fall = std::min(0.0, prediction.planeRate(normal));
+    const double fall = std::min(0.0, gap.planeRate(normal));
     auto separatedToEnd = [&](double gap) { return gap > 0.0 && gap + fall * end > 0.0; };
     auto bound = [&](double gap) {
         memory.gap = gap;
@@ -94,13 +94,13 @@ std::optional<PlaneGap> SuperballShape::separatingPlane(const PairMotion& m,
         ++stats.witnessRejections;
         return std::nullopt;
     }
-    const PlaneGap cached = prediction.planeGap(normal, 0.0);
+    const PlaneGap cached = gap.planeGap(normal, 0.0);
     bound(cached.gap);
     const double semiAxis = 0.5 * m.diameter; // the record's points are at semi-axis 1
     memory.witness = {cached.pointI / semiAxis, cached.pointJ / semiAxis, m.turnedI, m.turnedJ};
     if (separatedToEnd(cached.gap) || (cached.gap > 0.0 && end < kNever &&
-                                       std::min(cached.gap, prediction.planeGap(normal, end).gap) >
-                                           0.125 * prediction.planeCurvature(normal) * end * end)) {
+                                       std::min(cached.gap, gap.planeGap(normal, end).gap) >
+                                           0.125 * gap.planeCurvature(normal) * end * end)) {
         ++stats.planeRejections;
         return std::nullopt;
     }

@@ -16,16 +16,15 @@
 // normal's plane separates up to it (first from the bound on its gap that the pair's last
 // prediction left, moved on by its rate bound: no support point; then from the pair's witness
 // record, two material points kept through collisions (shapes/witness_bound.hpp); then from its
-// exact gap, whose support points become the record); layers in shapes/superball/:
-// conservative advancement on planes (first-order and chord steps on cheap plane gaps),
-// refreshed by exact signed distances (warm Newton on the sphere, restarted from the best face
-// normal for p > 1, the robust pair solver as fallback; far from contact an unconverged Newton's
-// plane gap serves as a lower bound, and an overlap stands only with a witness point inside both
-// bodies); near contact Newton steps in time until one touches or brackets the root, a
-// safeguarded Newton refinement, and the root accepted as the first only when the root normal's
-// plane certifies the interval before it. A prediction that reaches its step limit
-// returns a safe time up to which nothing touches (Prediction::contact = false) instead of
-// guessing.
+// exact gap, whose support points become the record); then the shape-independent first-contact
+// search (shapes/first_contact_search.hpp: advancement on planes, Newton steps in time near
+// contact, the refinement and the certificate of the root) over the pair's gap function
+// (shapes/superball/pair_gap.hpp: plane gaps and their bounds, exact signed distances from
+// warm_distance.hpp: warm Newton on the sphere, restarted from the best face normal for p > 1,
+// the robust pair solver as fallback; far from contact an unconverged Newton's plane gap serves
+// as a lower bound, and an overlap stands only with a witness point inside both bodies). A
+// prediction that reaches its step limit returns a safe time up to which nothing touches
+// (Prediction::contact = false) instead of guessing.
 
 #include "pair/pair_geometry.hpp"
 #include "shapes/collision_resolver.hpp"
@@ -42,9 +41,9 @@
 
 namespace sbpack {
 
-namespace superball {
-class PairPrediction;
 struct PlaneGap;
+namespace superball {
+class SuperballPairGap;
 } // namespace superball
 
 class SuperballShape {
@@ -124,12 +123,12 @@ class SuperballShape {
     };
     /// The last contact seen from m's i, if m is its pair at that state (from either side).
     std::optional<SignedDistanceResult> resolvedContactSeenFrom(const PairMotion& m) const;
-    /// Tier 2 of collisionTime: none where a plane of the pair's normal separates it up to the
-    /// prediction's end (`remembered`: the memory's gap bound moved on to now), else that
+    /// Tier 2 of collisionTime: none where a plane of the pair's normal separates it up to
+    /// `end` (`remembered`: the memory's gap bound moved on to now), else that
     /// plane's gap now; leaves the plane's bounds and witness record in `memory`.
-    std::optional<superball::PlaneGap> separatingPlane(const PairMotion& m,
-                                                       const superball::PairPrediction& prediction,
-                                                       double remembered, PairMemory& memory);
+    std::optional<PlaneGap> separatingPlane(const PairMotion& m,
+                                            const superball::SuperballPairGap& gap, double end,
+                                            double remembered, PairMemory& memory);
 
     ResolvedContact resolved_;
     double p_;
