@@ -24,39 +24,45 @@ double sinc(double x) {
     return x == 0.0 ? 1.0 : std::sin(x) / x;
 }
 
-/// sum of chi over every wave vector of the grid, per |n|^2.
+/// |n|^2 = 0 .. 3 (M/2)^2: the bins of the grid's sums.
+std::size_t squaredIndexBins(int m) {
+    const std::int64_t half = m / 2;
+    return static_cast<std::size_t>(3 * half * half + 1);
+}
+
+/// sum of chi over the wave vectors of k_x planes block b of kPlaneBlocks, per |n|^2.
+std::vector<double> blockSums(const VoxelFourierTransform& transform, const std::vector<double>& f,
+                              double volume, std::int64_t b) {
+    const int m = transform.voxels();
+    std::vector<double> sum(squaredIndexBins(m), 0.0);
+    for (int kx = static_cast<int>(b * m / kPlaneBlocks);
+         kx < static_cast<int>((b + 1) * m / kPlaneBlocks); ++kx) {
+        const std::int64_t nx = signedIndex(kx, m);
+        for (int ky = 0; ky < m; ++ky) {
+            const std::int64_t ny = signedIndex(ky, m);
+            const double fxy = f[kx] * f[ky] / volume;
+            for (int kz = 0; kz <= m / 2; ++kz) {
+                const std::int64_t n2 = nx * nx + ny * ny + std::int64_t{kz} * kz;
+                if (n2 == 0) continue;
+                sum[n2] += transform.weight(kz) * transform.power(kx, ky, kz) * fxy * f[kz];
+            }
+        }
+    }
+    return sum;
+}
+
+/// sum of chi over every wave vector of the grid, per |n|^2: the blocks summed in order (into
+/// zeros: every term is >= +0, so the first block's sums are its own bit for bit).
 std::vector<double> gridSums(const VoxelFourierTransform& transform, const std::vector<double>& f,
                              double volume, bool serial) {
-    const int m = transform.voxels();
-    const std::int64_t half = m / 2;
-    const std::size_t bins = static_cast<std::size_t>(3 * half * half + 1);
-    std::vector<std::vector<double>> partial(kPlaneBlocks, std::vector<double>(bins, 0.0));
-    parallelFor(
-        0, kPlaneBlocks, 1,
-        [&](std::int64_t begin, std::int64_t end) {
-            for (std::int64_t b = begin; b < end; ++b) {
-                std::vector<double>& sum = partial[b];
-                for (int kx = static_cast<int>(b * m / kPlaneBlocks);
-                     kx < static_cast<int>((b + 1) * m / kPlaneBlocks); ++kx) {
-                    const std::int64_t nx = signedIndex(kx, m);
-                    for (int ky = 0; ky < m; ++ky) {
-                        const std::int64_t ny = signedIndex(ky, m);
-                        const double fxy = f[kx] * f[ky] / volume;
-                        for (int kz = 0; kz <= m / 2; ++kz) {
-                            const std::int64_t n2 = nx * nx + ny * ny + std::int64_t{kz} * kz;
-                            if (n2 == 0) continue;
-                            sum[n2] +=
-                                transform.weight(kz) * transform.power(kx, ky, kz) * fxy * f[kz];
-                        }
-                    }
-                }
-            }
+    return orderedReduce(
+        kPlaneBlocks, std::vector<double>(squaredIndexBins(transform.voxels()), 0.0),
+        [&](std::int64_t b) { return blockSums(transform, f, volume, b); },
+        [](std::vector<double>& sum, const std::vector<double>& block) {
+            for (std::size_t i = 0; i < sum.size(); ++i)
+                sum[i] += block[i];
         },
         serial);
-    for (int b = 1; b < kPlaneBlocks; ++b)
-        for (std::size_t i = 0; i < bins; ++i)
-            partial[0][i] += partial[b][i];
-    return std::move(partial[0]);
 }
 
 double excessAtZero(const DiscreteSpectrum& s) {

@@ -1,6 +1,7 @@
 #pragma once
 // The one parallel-for of sbanalyze (docs/design.md §7): TBB over an index range, with a serial
-// switch so that every parallel result can be compared with a serial one. Thread count is set once
+// switch so that every parallel result can be compared with a serial one; and the one ordered
+// reduce over it (partials per fixed chunk, combined in chunk order). Thread count is set once
 // per run by ThreadBudget and honoured by TBB and by FFTW, whose threads are OpenMP's
 // (libfftw3_omp), alike (no oversubscription).
 
@@ -10,6 +11,9 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
 
 namespace sbpack {
 
@@ -27,6 +31,29 @@ void parallelFor(std::int64_t begin, std::int64_t end, std::int64_t grain, const
     }
     tbb::parallel_for(tbb::blocked_range<std::int64_t>(begin, end, grain),
                       [&](const tbb::blocked_range<std::int64_t>& r) { body(r.begin(), r.end()); });
+}
+
+/// The ordered reduce of sbanalyze (docs/design.md §7): maps every chunk index of [0, chunks) to
+/// a partial result, mapChunk(c) -> T, in parallel (over parallelFor), then folds the partials
+/// into init in chunk order, combine(T& total, T&& partial), on the calling thread. The chunks
+/// are the caller's, fixed, so the result does not depend on the threads and equals serial = true
+/// bit for bit. Interrupt polls and progress belong in mapChunk, once per chunk. Every partial is
+/// kept until the fold: size the chunks for that.
+template <class T, class Map, class Combine>
+T orderedReduce(std::int64_t chunks, T init, const Map& mapChunk, const Combine& combine,
+                bool serial = false) {
+    std::vector<std::optional<T>> partials(
+        static_cast<std::size_t>(std::max<std::int64_t>(0, chunks)));
+    parallelFor(
+        0, chunks, 1,
+        [&](std::int64_t begin, std::int64_t end) {
+            for (std::int64_t c = begin; c < end; ++c)
+                partials[c].emplace(mapChunk(c));
+        },
+        serial);
+    for (std::optional<T>& partial : partials)
+        combine(init, std::move(*partial));
+    return init;
 }
 
 /// Caps every threading library at `threads` for its lifetime: TBB (global_control), FFTW

@@ -276,21 +276,26 @@ ExactPoreSizeDistribution::ExactPoreSizeDistribution(ExactPoreSizeParameters par
 
 namespace {
 
-/// One chunk of the exact sampler: its pore sizes, their largest certificate gap, the largest.
+/// A chunk of the exact sampler, or chunks joined: the pore sizes, their largest certificate gap,
+/// the largest.
 struct SampleChunk {
     explicit SampleChunk(double separation) : top(16, 0.0), spread(16, separation) {}
+    /// Appends a later chunk: its sizes after these, its largest points offered after these.
+    void add(const SampleChunk& later) {
+        sizes.insert(sizes.end(), later.sizes.begin(), later.sizes.end());
+        errorBound = std::max(errorBound, later.errorBound);
+        top.offer(later.top);
+        spread.offer(later.spread);
+    }
     std::vector<double> sizes;
     double errorBound = 0.0;
     LargestPoints top;    ///< the largest points
     LargestPoints spread; ///< the largest of distinct pores
 };
 
-/// The distinct sizes of the chunks, ascending, with their counts, and the sums of the sample.
-void distinctSizes(const std::vector<SampleChunk>& chunks, std::vector<double>& sizes,
+/// The distinct sizes of a sample, ascending, with their counts, and the sums of the sample.
+void distinctSizes(std::vector<double> all, std::vector<double>& sizes,
                    std::vector<std::int64_t>& counts, PoreSizeSums& sums) {
-    std::vector<double> all;
-    for (const SampleChunk& chunk : chunks)
-        all.insert(all.end(), chunk.sizes.begin(), chunk.sizes.end());
     std::sort(all.begin(), all.end());
     for (const double delta : all) {
         sums.add(delta);
@@ -303,44 +308,49 @@ void distinctSizes(const std::vector<SampleChunk>& chunks, std::vector<double>& 
     }
 }
 
-/// The exact pore sizes of K uniformly random points of the void (points inside a particle are
-/// drawn again), in fixed chunks (the result does not depend on the threads).
-std::vector<SampleChunk> sampleVoid(const ExactPoreSizes& pores,
-                                    const ExactPoreSizeParameters& parameters, double separation,
-                                    const Progress& progress) {
+/// The exact pore sizes of chunk c's random points of the void (its own stream of the seed;
+/// points inside a particle are drawn again).
+SampleChunk sampleChunk(const ExactPoreSizes& pores, const ExactPoreSizeParameters& parameters,
+                        double separation, std::int64_t c) {
     const double length = pores.boxLength();
-    const std::int64_t k = parameters.randomPoints;
-    const std::int64_t chunks = (k + kRandomPointChunk - 1) / kRandomPointChunk;
-    std::vector<SampleChunk> local(chunks, SampleChunk(separation));
-    parallelFor(
-        0, chunks, 1,
-        [&](std::int64_t begin, std::int64_t end) {
-            for (std::int64_t c = begin; c < end; ++c) {
-                progress.checkInterrupt();
-                Random generator = Random::stream(parameters.seed, c);
-                const std::int64_t points = std::min(kRandomPointChunk, k - c * kRandomPointChunk);
-                SampleChunk& chunk = local[c];
-                chunk.sizes.reserve(points);
-                std::int64_t draws = 0;
-                while (static_cast<std::int64_t>(chunk.sizes.size()) < points) {
-                    if (++draws > 1000 * points)
-                        throw std::domain_error("exact pore sizes: no void found in " +
-                                                std::to_string(draws - 1) +
-                                                " random points (the particles fill the box)");
-                    Vector3d x;
-                    for (int a = 0; a < 3; ++a)
-                        x[a] = length * generator.uniform();
-                    const SurfaceDistance delta = pores.poreSizeBounds(x);
-                    if (!(delta.upper > 0.0)) continue; // inside a particle: draw again
-                    chunk.sizes.push_back(delta.upper);
-                    chunk.errorBound = std::max(chunk.errorBound, delta.upper - delta.lower);
-                    chunk.top.offer(delta.upper, x);
-                    chunk.spread.offer(delta.upper, x);
-                }
-            }
+    Random generator = Random::stream(parameters.seed, c);
+    const std::int64_t points =
+        std::min(kRandomPointChunk, parameters.randomPoints - c * kRandomPointChunk);
+    SampleChunk chunk(separation);
+    chunk.sizes.reserve(points);
+    std::int64_t draws = 0;
+    while (static_cast<std::int64_t>(chunk.sizes.size()) < points) {
+        if (++draws > 1000 * points)
+            throw std::domain_error("exact pore sizes: no void found in " +
+                                    std::to_string(draws - 1) +
+                                    " random points (the particles fill the box)");
+        Vector3d x;
+        for (int a = 0; a < 3; ++a)
+            x[a] = length * generator.uniform();
+        const SurfaceDistance delta = pores.poreSizeBounds(x);
+        if (!(delta.upper > 0.0)) continue; // inside a particle: draw again
+        chunk.sizes.push_back(delta.upper);
+        chunk.errorBound = std::max(chunk.errorBound, delta.upper - delta.lower);
+        chunk.top.offer(delta.upper, x);
+        chunk.spread.offer(delta.upper, x);
+    }
+    return chunk;
+}
+
+/// The exact pore sizes of K uniformly random points of the void, in fixed chunks joined in
+/// order (the result does not depend on the threads).
+SampleChunk sampleVoid(const ExactPoreSizes& pores, const ExactPoreSizeParameters& parameters,
+                       double separation, const Progress& progress) {
+    const std::int64_t chunks =
+        (parameters.randomPoints + kRandomPointChunk - 1) / kRandomPointChunk;
+    return orderedReduce(
+        chunks, SampleChunk(separation),
+        [&](std::int64_t c) {
+            progress.checkInterrupt();
+            return sampleChunk(pores, parameters, separation, c);
         },
+        [](SampleChunk& sample, const SampleChunk& later) { sample.add(later); },
         parameters.serial);
-    return local;
 }
 
 } // namespace
@@ -353,11 +363,11 @@ PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& pac
     const std::int64_t k = parameters_.randomPoints;
     // Starts of the largest pore at least 4 point spacings apart (distinct pores).
     const double spacing = length / std::cbrt(static_cast<double>(k));
-    const std::vector<SampleChunk> local = sampleVoid(pores, parameters_, 4.0 * spacing, progress);
+    SampleChunk sample = sampleVoid(pores, parameters_, 4.0 * spacing, progress);
     std::vector<double> sizes;
     std::vector<std::int64_t> counts;
     PoreSizeSums sums;
-    distinctSizes(local, sizes, counts, sums);
+    distinctSizes(std::move(sample.sizes), sizes, counts, sums);
     PoreSizeDistributionResult r =
         poreSizeStatistics(sizes, counts, packing.shape().meanWidth(), parameters_.densityBins);
     r.method = "exact";
@@ -365,17 +375,11 @@ PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& pac
     r.parameters.seed = parameters_.seed;
     r.parameters.serial = parameters_.serial;
     setStandardErrors(r, sums);
-    LargestPoints top(16, 0.0), spread(16, 4.0 * spacing);
-    r.errorBound = 0.0;
-    for (const SampleChunk& chunk : local) {
-        top.offer(chunk.top);
-        spread.offer(chunk.spread);
-        r.errorBound = std::max(r.errorBound, chunk.errorBound);
-    }
+    r.errorBound = sample.errorBound;
     r.maxSampled = r.max;
     // First simplex: half the spacing of K points in the box, a scale the sample cannot resolve.
     r.max = std::max(r.max, largestPore([&pores](const Vector3d& x) { return pores.poreSize(x); },
-                                        pores.boxLength(), top, spread, 0.5 * spacing)
+                                        pores.boxLength(), sample.top, sample.spread, 0.5 * spacing)
                                 .size);
     r.saturated = r.max < 0.5 * r.meanWidth; // paper Sec. V A
     r.runtimeSeconds =

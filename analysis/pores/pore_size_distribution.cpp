@@ -251,36 +251,31 @@ PoreSizeDistributionResult PoreSizeDistribution::compute(const PoreSizeMap& map,
     const std::int64_t chunks =
         sampled ? (parameters_.randomPoints + kRandomPointChunk - 1) / kRandomPointChunk
                 : (m + planesPerChunk - 1) / planesPerChunk;
-    std::vector<std::vector<std::int64_t>> local(chunks);
-    parallelFor(
-        0, chunks, 1,
-        [&](std::int64_t begin, std::int64_t end) {
-            for (std::int64_t c = begin; c < end; ++c) {
-                std::vector<std::int64_t> histogram(levels, 0);
-                if (sampled) {
-                    // Uniform random void voxels: each equally likely (the paper's sampling,
-                    // Sec. III B).
-                    Random generator = Random::stream(parameters_.seed, c);
-                    const std::int64_t points = std::min(
-                        kRandomPointChunk, parameters_.randomPoints - c * kRandomPointChunk);
-                    for (const std::int64_t v :
-                         randomVoidVoxels(squared, total, map.voidFraction(), points, generator))
-                        ++histogram[squared[v]];
-                } else {
-                    const std::int64_t first = c * planesPerChunk * plane;
-                    const std::int64_t last =
-                        std::min<std::int64_t>(m, (c + 1) * planesPerChunk) * plane;
-                    for (std::int64_t v = first; v < last; ++v)
-                        ++histogram[squared[v]];
-                }
-                local[c] = std::move(histogram);
-            }
+    const auto countChunk = [&](std::int64_t c) {
+        std::vector<std::int64_t> histogram(levels, 0);
+        if (sampled) {
+            // Uniform random void voxels: each equally likely (the paper's sampling, Sec. III B).
+            Random generator = Random::stream(parameters_.seed, c);
+            const std::int64_t points =
+                std::min(kRandomPointChunk, parameters_.randomPoints - c * kRandomPointChunk);
+            for (const std::int64_t v :
+                 randomVoidVoxels(squared, total, map.voidFraction(), points, generator))
+                ++histogram[squared[v]];
+        } else {
+            const std::int64_t first = c * planesPerChunk * plane;
+            const std::int64_t last = std::min<std::int64_t>(m, (c + 1) * planesPerChunk) * plane;
+            for (std::int64_t v = first; v < last; ++v)
+                ++histogram[squared[v]];
+        }
+        return histogram;
+    };
+    const std::vector<std::int64_t> histogram = orderedReduce(
+        chunks, std::vector<std::int64_t>(levels, 0), countChunk,
+        [](std::vector<std::int64_t>& sum, const std::vector<std::int64_t>& h) {
+            for (std::size_t n = 0; n < sum.size(); ++n)
+                sum[n] += h[n];
         },
         parameters_.serial);
-    std::vector<std::int64_t> histogram(levels, 0);
-    for (const auto& h : local)
-        for (std::size_t n = 0; n < levels; ++n)
-            histogram[n] += h[n];
     PoreSizeDistributionResult r = fromHistogram(histogram, m, map.voxelSize(), meanWidth);
     r.runtimeSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -203,31 +203,35 @@ struct RandomVoxel {
     std::uint32_t feature;
 };
 
-/// The random void voxels of chunks [first, last) (each chunk its own stream of the seed, as
-/// PoreSizeDistribution), ordered by the 8^3 block of their feature voxels, whose voxels mostly
-/// lie in one particle: VoxelRefiner::particleContaining then mostly finds it at its hint. One
-/// sort of 64-bit keys: the block above the voxel's place in the round (< 2^20 of them).
+/// The random void voxels of chunk c (its own stream of the seed, as PoreSizeDistribution).
+std::vector<RandomVoxel> randomVoxels(const PoreSizeMap& map, const PoreSizeParameters& parameters,
+                                      std::int64_t c) {
+    const std::int64_t m = map.voxels();
+    Random generator = Random::stream(parameters.seed, c);
+    std::vector<RandomVoxel> chunk;
+    for (const std::int64_t v : randomVoidVoxels(
+             map.squaredDistances().data(), m * m * m, map.voidFraction(),
+             std::min(kRandomPointChunk, parameters.randomPoints - c * kRandomPointChunk),
+             generator))
+        chunk.push_back({v, map.features()[v]});
+    return chunk;
+}
+
+/// The random void voxels of chunks [first, last), ordered by the 8^3 block of their feature
+/// voxels, whose voxels mostly lie in one particle: VoxelRefiner::particleContaining then mostly
+/// finds it at its hint. One sort of 64-bit keys: the block above the voxel's place in the round
+/// (< 2^20 of them).
 std::vector<RandomVoxel> randomVoxelsByFeatureBlock(const PoreSizeMap& map,
                                                     const PoreSizeParameters& parameters,
                                                     std::int64_t first, std::int64_t last) {
     const std::int64_t m = map.voxels();
-    std::vector<std::vector<std::int64_t>> drawn(last - first);
-    parallelFor(
-        first, last, 1,
-        [&](std::int64_t begin, std::int64_t end) {
-            for (std::int64_t c = begin; c < end; ++c) {
-                Random generator = Random::stream(parameters.seed, c);
-                drawn[c - first] = randomVoidVoxels(
-                    map.squaredDistances().data(), m * m * m, map.voidFraction(),
-                    std::min(kRandomPointChunk, parameters.randomPoints - c * kRandomPointChunk),
-                    generator);
-            }
+    const std::vector<RandomVoxel> voxels = orderedReduce(
+        last - first, std::vector<RandomVoxel>(),
+        [&](std::int64_t i) { return randomVoxels(map, parameters, first + i); },
+        [](std::vector<RandomVoxel>& all, const std::vector<RandomVoxel>& chunk) {
+            all.insert(all.end(), chunk.begin(), chunk.end());
         },
         parameters.serial);
-    std::vector<RandomVoxel> voxels;
-    for (const auto& chunk : drawn)
-        for (const std::int64_t v : chunk)
-            voxels.push_back({v, map.features()[v]});
     constexpr int kPlaceBits = 20;
     static_assert(kChunksPerRound * kRandomPointChunk <= std::int64_t{1} << kPlaceBits);
     std::vector<std::uint64_t> keys(voxels.size());
@@ -255,37 +259,33 @@ Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const Vox
         sampled ? (parameters.randomPoints + kRandomPointChunk - 1) / kRandomPointChunk
                 : (m + planesPerChunk - 1) / planesPerChunk;
     const std::int64_t chunksPerRound = sampled ? kChunksPerRound : chunks;
-    std::vector<Tally> tallies(chunks, Tally(bins, separation));
+    Tally all(bins, separation);
     for (std::int64_t round = 0; round < chunks; round += chunksPerRound) {
         const std::int64_t end = std::min(chunks, round + chunksPerRound);
         const std::vector<RandomVoxel> points =
             sampled ? randomVoxelsByFeatureBlock(map, parameters, round, end)
                     : std::vector<RandomVoxel>();
-        parallelFor(
-            round, end, 1,
-            [&](std::int64_t begin, std::int64_t stop) {
-                VoxelPass pass(map, pores, refiner);
-                for (std::int64_t c = begin; c < stop; ++c) {
-                    progress.checkInterrupt();
-                    if (!sampled) {
-                        pass.refinePlanes(c * planesPerChunk,
-                                          std::min<std::int64_t>(m, (c + 1) * planesPerChunk),
-                                          tallies[c]);
-                        continue;
-                    }
-                    const auto mine = std::span(points).subspan(
-                        (c - round) * kRandomPointChunk,
-                        std::min<std::size_t>(kRandomPointChunk,
-                                              points.size() - (c - round) * kRandomPointChunk));
-                    for (const RandomVoxel& v : mine)
-                        pass.refine(v.feature, pass.centre(v.voxel), tallies[c]);
-                }
-            },
-            parameters.serial);
+        const auto tallyChunk = [&](std::int64_t i) {
+            progress.checkInterrupt();
+            VoxelPass pass(map, pores, refiner);
+            Tally tally(bins, separation);
+            const std::int64_t c = round + i;
+            if (!sampled) {
+                pass.refinePlanes(c * planesPerChunk,
+                                  std::min<std::int64_t>(m, (c + 1) * planesPerChunk), tally);
+                return tally;
+            }
+            const auto mine = std::span(points).subspan(
+                i * kRandomPointChunk,
+                std::min<std::size_t>(kRandomPointChunk, points.size() - i * kRandomPointChunk));
+            for (const RandomVoxel& v : mine)
+                pass.refine(v.feature, pass.centre(v.voxel), tally);
+            return tally;
+        };
+        all = orderedReduce(
+            end - round, std::move(all), tallyChunk,
+            [](Tally& total, const Tally& tally) { total.add(tally); }, parameters.serial);
     }
-    Tally all(bins, separation);
-    for (const Tally& t : tallies)
-        all.add(t);
     return all;
 }
 

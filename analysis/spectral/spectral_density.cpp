@@ -87,36 +87,32 @@ ShellAccumulator spectralShellSums(const SpectrumSlab& slab, double voxelSize, d
     std::vector<int> planes;
     for (int outer = slab.outerBegin; outer < slab.outerEnd; ++outer)
         if (std::abs(signedIndex(outer, rows)) <= s) planes.push_back(outer);
-    std::vector<ShellAccumulator> partial(planes.size(), ShellAccumulator(boxLength, s));
-    parallelFor(
-        0, static_cast<std::int64_t>(planes.size()), 1,
-        [&](std::int64_t begin, std::int64_t end) {
-            for (std::int64_t p = begin; p < end; ++p) {
-                progress.checkInterrupt();
-                const int no = signedIndex(planes[p], rows);
-                const double* plane = slab.data + (planes[p] - slab.outerBegin) * rows * half * 2;
-                for (int inner = 0; inner < rows; ++inner) {
-                    const int ni = signedIndex(inner, rows);
-                    const std::int64_t n2io = std::int64_t{no} * no + std::int64_t{ni} * ni;
-                    if (n2io > maxN2) continue;
-                    const double fxy = formFactor2[no + s] * formFactor2[ni + s];
-                    for (int kz = 0; kz <= s; ++kz) {
-                        const std::int64_t n2 = n2io + std::int64_t{kz} * kz;
-                        if (n2 > maxN2) break;
-                        if (n2 == 0) continue;
-                        const double* c = plane + (inner * half + kz) * 2;
-                        const double power = c[0] * c[0] + c[1] * c[1];
-                        const int weight = kz == 0 || 2 * kz == m ? 1 : 2;
-                        partial[p].add(n2, power * fxy * formFactor2[kz + s] / volume, weight);
-                    }
-                }
+    const auto planeShells = [&](std::int64_t p) {
+        progress.checkInterrupt();
+        ShellAccumulator shells(boxLength, s);
+        const int no = signedIndex(planes[p], rows);
+        const double* plane = slab.data + (planes[p] - slab.outerBegin) * rows * half * 2;
+        for (int inner = 0; inner < rows; ++inner) {
+            const int ni = signedIndex(inner, rows);
+            const std::int64_t n2io = std::int64_t{no} * no + std::int64_t{ni} * ni;
+            if (n2io > maxN2) continue;
+            const double fxy = formFactor2[no + s] * formFactor2[ni + s];
+            for (int kz = 0; kz <= s; ++kz) {
+                const std::int64_t n2 = n2io + std::int64_t{kz} * kz;
+                if (n2 > maxN2) break;
+                if (n2 == 0) continue;
+                const double* c = plane + (inner * half + kz) * 2;
+                const double power = c[0] * c[0] + c[1] * c[1];
+                const int weight = kz == 0 || 2 * kz == m ? 1 : 2;
+                shells.add(n2, power * fxy * formFactor2[kz + s] / volume, weight);
             }
-        },
+        }
+        return shells;
+    };
+    return orderedReduce(
+        static_cast<std::int64_t>(planes.size()), ShellAccumulator(boxLength, s), planeShells,
+        [](ShellAccumulator& shells, const ShellAccumulator& plane) { shells.merge(plane); },
         serial);
-    ShellAccumulator shells(boxLength, s);
-    for (const ShellAccumulator& p : partial)
-        shells.merge(p);
-    return shells;
 }
 
 namespace {

@@ -147,20 +147,16 @@ DensityModes collectiveDensity(std::span<const Eigen::Vector3d> positions, doubl
     const PhaseTable y = phaseTable(positions, 1, boxLength, kmax);
     const PhaseTable z = phaseTable(positions, 2, boxLength, kmax);
     const auto particles = static_cast<std::int64_t>(positions.size());
-    std::vector<DensityModes> planes(kmax + 1);
-    parallelFor(
-        0, kmax + 1, 1,
-        [&](std::int64_t b, std::int64_t e) {
-            for (std::int64_t nx = b; nx < e; ++nx)
-                planes[nx] = plane(static_cast<int>(nx), maxN2, particles, kmax, x, y, z, progress);
+    return orderedReduce(
+        kmax + 1, DensityModes{},
+        [&](std::int64_t nx) {
+            return plane(static_cast<int>(nx), maxN2, particles, kmax, x, y, z, progress);
+        },
+        [](DensityModes& all, const DensityModes& p) {
+            all.n.insert(all.n.end(), p.n.begin(), p.n.end());
+            all.intensity.insert(all.intensity.end(), p.intensity.begin(), p.intensity.end());
         },
         serial);
-    DensityModes all;
-    for (const DensityModes& p : planes) {
-        all.n.insert(all.n.end(), p.n.begin(), p.n.end());
-        all.intensity.insert(all.intensity.end(), p.intensity.begin(), p.intensity.end());
-    }
-    return all;
 }
 
 } // namespace sbpack

@@ -30,5 +30,42 @@ TEST(Parallel, SerialAndParallelVisitEveryIndexOnce) {
     }
 }
 
+TEST(Parallel, OrderedReduceFoldsInChunkOrderWhateverTheThreads) {
+    // The running sum after each chunk, of terms of very different magnitudes: any other order
+    // shows in the sequence and rounds differently.
+    const auto term = [](std::int64_t c) { return c % 3 == 0 ? 1e16 : 1.0 + 1e-3 * c; };
+    const auto add = [](std::vector<double>& seen, const std::vector<double>& part) {
+        seen.push_back(seen.back() + part.front());
+    };
+    std::vector<double> expected{0.0};
+    for (std::int64_t c = 0; c < 1000; ++c)
+        expected.push_back(expected.back() + term(c));
+    for (const int threads : {1, 2, 4})
+        for (const bool serial : {true, false}) {
+            const ThreadBudget budget(threads);
+            const std::vector<double> folded = orderedReduce(
+                1000, std::vector<double>{0.0},
+                [&](std::int64_t c) { return std::vector<double>{term(c)}; }, add, serial);
+            ASSERT_EQ(folded, expected) << threads << " threads, serial " << serial;
+        }
+}
+
+TEST(Parallel, OrderedReduceOfNoChunksIsItsStart) {
+    struct NoDefault { // partials need no default constructor
+        explicit NoDefault(int v) : value(v) {}
+        int value;
+    };
+    const NoDefault start = orderedReduce(
+        0, NoDefault(7), [](std::int64_t) -> NoDefault { throw std::logic_error("mapped"); },
+        [](NoDefault&, const NoDefault&) { throw std::logic_error("combined"); });
+    EXPECT_EQ(start.value, 7);
+    const NoDefault sum = orderedReduce(
+        5, NoDefault(1), [](std::int64_t c) { return NoDefault(static_cast<int>(c)); },
+        [](NoDefault& total, const NoDefault& part) {
+            total.value = 10 * total.value + part.value;
+        });
+    EXPECT_EQ(sum.value, 101234);
+}
+
 } // namespace
 } // namespace sbpack
