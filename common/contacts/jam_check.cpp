@@ -90,8 +90,10 @@ std::string verdictOf(const JamCheck& check, const Packing& packing, double redu
                format(" (box %.2f D) and carries the pressure; ",
                       packing.boxLength / packing.shape().diameter()) +
                network +
-               ". Particles (near-cubes above all) stack into such columns in boxes a few D long: "
-               "use more particles";
+               (packing.p >= kNearCubeExponent
+                    ? ". Near-cubes stack into such columns in boxes a few D long"
+                    : ". In a box this few D across, a few particles in a row span it") +
+               ": use more particles";
     }
     return "not jammed: " + network + format(" (above %.2f)", parameters.maxRattlerFraction);
 }

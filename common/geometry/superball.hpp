@@ -9,6 +9,10 @@ namespace sbpack {
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
+/// From this exponent on, superballs are "near-cubes": they stack face to face into columns that
+/// can span a small periodic box (bench/RESULTS.md, "Near-cubes after the jam check").
+inline constexpr double kNearCubeExponent = 3.0;
+
 class Superball {
   public:
     /// Throws std::invalid_argument unless 0.5 <= p < inf and 0 < semiAxis < inf.

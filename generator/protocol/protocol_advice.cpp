@@ -43,8 +43,8 @@ constexpr double kSlowRunSeconds = 3600.0;
 /// The paper's range of fast rates (Sec. III A).
 constexpr double kPaperFastMin = 0.005, kPaperFastMax = 0.05;
 
-/// Near-cubes form a column spanning a box this few diameters across (N = 200 at p >= 3).
-constexpr double kNearCubeExponent = 3.0;
+/// Near-cubes (p >= kNearCubeExponent) form a column spanning a box this few diameters across
+/// (N = 200 at p >= 3).
 constexpr double kColumnBoxDiameters = 8.0;
 
 /// Below this N, jammed packings are often partly ordered, phi and Z above MRJ's, at every p

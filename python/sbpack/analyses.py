@@ -5,7 +5,12 @@ Each takes the command line's options as keywords (``qmax=20`` is ``--qmax 20``;
 defaults and the messages (``ValueError``) are the command line's. ``compute(packing)`` runs the
 same stages as ``sbanalyze --compute NAME`` on that packing and returns the object; the results
 are attributes named as in the results file (docs/results-schema.md), e.g. ``StructureFactor().
-compute(p).S``; ``groups`` holds every group the run filled, as dicts of numpy arrays and numbers.
+compute(p).S``; ``groups`` holds every group the run filled, as dicts of numpy arrays and numbers;
+``dir()`` (and so tab completion) lists the results' names once computed.
+
+What sbanalyze prints as a warning is one RuntimeWarning per message, its continuation lines (the
+gap distribution of unresolved contacts, ...) included, raised at the caller's line; stage lines
+(``analyze(quiet=False)``) go to sys.stderr.
 """
 from . import _sbpack
 
@@ -42,6 +47,18 @@ class _Analysis:
     @property
     def threads(self):
         return self._analyzer.threads
+
+    def _result_names(self):
+        """The names of the results, as attributes: its own group's, then the other groups' (the
+        first group that has a name gives it); none before compute()."""
+        groups = self.__dict__.get("groups") or {}
+        names = {}
+        for group in (self._group, *groups):
+            names.update(dict.fromkeys(n for n in groups.get(group, {}) if n.isidentifier()))
+        return list(names)
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | set(self._result_names()))
 
     def __getattr__(self, name):
         groups = self.__dict__.get("groups")

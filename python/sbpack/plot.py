@@ -3,7 +3,8 @@
 usage: python3 -m sbpack.plot RESULTS.h5... [--out DIR] [--packing FILE.h5] [--slice-voxels M]
 
 Draws every figure the results support, as PNG and PDF in DIR (default: the current directory),
-every input of every file overlaid:
+every input of every file overlaid (above MANY_INPUTS inputs, one colour and legend entry per p
+and N, without the per-input fits):
   structure_factor     S(Q) against Q w                                  (paper Fig. S(Q))
   spectral_density     chi_V(Q) / w^3 against Q w, and at small Q on log axes with the fit
                        a0 + a1 Q^alpha of `hyper`                         (Figs. chi, H)
@@ -42,33 +43,74 @@ def inputs_with(runs, group):
     return [f for r in runs for f in r["files"] if group in f]
 
 
+MANY_INPUTS = 6  # above this, one colour and legend entry per (p, N) series, not per input
+
+
+def styles(files):
+    """A line style (label, colour) per input. Up to MANY_INPUTS inputs, each its own label and
+    the colour cycle's colour; above, the inputs of one (p, N) share a colour (viridis along p)
+    and one legend entry, "p = 1.5, N = 1000 (5 inputs)", the others none."""
+    if len(files) <= MANY_INPUTS:
+        return [{"label": label(f)} for f in files]
+    keys = [(f["p"], f["n_particles"]) for f in files]
+    series = sorted(set(keys))
+    colour = {k: plt.cm.viridis(0.9 * i / max(1, len(series) - 1)) for i, k in enumerate(series)}
+    out, labelled = [], set()
+    for k in keys:
+        text = f"p = {k[0]:g}, N = {k[1]} ({keys.count(k)} inputs)"
+        out.append({"label": "_nolegend_" if k in labelled else text, "color": colour[k]})
+        labelled.add(k)
+    return out
+
+
+def once(drawn, key):
+    """True the first time `key` is asked about (marks shared by many inputs drawn once)."""
+    new = key not in drawn
+    drawn.add(key)
+    return new
+
+
 def structure_factor(runs, ax):
-    for f in inputs_with(runs, "structure_factor"):
+    files = inputs_with(runs, "structure_factor")
+    for f, style in zip(files, styles(files)):
         s = f["structure_factor"]
-        ax.plot(s["Q_w"], s["S"], lw=1, label=label(f))
+        ax.plot(s["Q_w"], s["S"], lw=1, **style)
     ax.axhline(1.0, color="0.7", lw=0.8, ls=":")
     ax.set(xlabel=r"$Q\bar w$ (dimensionless)", ylabel=r"$S(Q)$ (dimensionless)",
            title="Structure factor")
 
 
+def small_q_fit(f, ax, colour):
+    """The fit a0 + a1 Q^alpha of `hyper`, only over its window: beyond it the fit says nothing
+    (and may turn negative)."""
+    h, qw = f["hyperuniformity"], f["spectral_density"]["Q_w"]
+    x = np.geomspace(min(qw[0], h["q_fit_max_w"]) * 0.9, h["q_fit_max_w"], 100)
+    ax.loglog(x, h["a0"] + h["a1"] * x ** h["alpha"], "-", color=colour,
+              label=fr"$a_0 + a_1 Q^{{{h['alpha']:.2f}}}$, $H = {h['H']:.2g} \pm "
+                    fr"{h['H_stderr']:.1g}$ ({h['fit_points']} exact $\chi_V$)")
+    ax.axvline(h["q_fit_max_w"], color="0.6", ls=":", lw=1)
+
+
+def small_q_title(files):
+    fits = sum("hyperuniformity" in f for f in files)
+    if not fits:
+        return r"Small $Q$ (no hyper results: no fit)"
+    if len(files) > MANY_INPUTS:
+        return fr"Small $Q$ ({len(files)} inputs: fits not drawn)"
+    return r"Small $Q$ and the fit ($Q\bar w \leq$ fit-qmax dotted)"
+
+
 def spectral_density(runs, axes):
     main, small = axes
-    fitted = False
-    for f in inputs_with(runs, "spectral_density"):
+    files = inputs_with(runs, "spectral_density")
+    for f, style in zip(files, styles(files)):
         s, w = f["spectral_density"], f["mean_width"]
         qw, chi = s["Q_w"], s["chi"] / w**3
-        line, = main.plot(qw, chi, lw=1, label=label(f))
+        line, = main.plot(qw, chi, lw=1, **style)
         keep = qw <= 4.0
         small.loglog(qw[keep], chi[keep], "o", ms=3, color=line.get_color())
-        if "hyperuniformity" in f:
-            fitted = True
-            h = f["hyperuniformity"]
-            # Only over the fit window: beyond it the fit says nothing (and may turn negative).
-            x = np.geomspace(min(qw[0], h["q_fit_max_w"]) * 0.9, h["q_fit_max_w"], 100)
-            small.loglog(x, h["a0"] + h["a1"] * x ** h["alpha"], "-", color=line.get_color(),
-                         label=fr"$a_0 + a_1 Q^{{{h['alpha']:.2f}}}$, $H = {h['H']:.2g} \pm "
-                               fr"{h['H_stderr']:.1g}$ ({h['fit_points']} exact $\chi_V$)")
-            small.axvline(h["q_fit_max_w"], color="0.6", ls=":", lw=1)
+        if "hyperuniformity" in f and len(files) <= MANY_INPUTS:
+            small_q_fit(f, small, line.get_color())
     ylabel = r"$\tilde\chi_V(Q)/\bar w^3$ (dimensionless)"
     main.set(xlabel=r"$Q\bar w$ (dimensionless)", ylabel=ylabel,
              title="Spectral density (voxels, shell averages)")
@@ -79,24 +121,36 @@ def spectral_density(runs, axes):
     # (else the axis has no number at all), in the decades' own notation.
     for formatter in (small.yaxis.set_major_formatter, small.yaxis.set_minor_formatter):
         formatter(ticker.LogFormatterSciNotation(labelOnlyBase=False, minor_thresholds=(1.5, 0.5)))
-    small.set(xlabel=r"$Q\bar w$ (dimensionless)", ylabel=ylabel,
-              title=r"Small $Q$ and the fit ($Q\bar w \leq$ fit-qmax dotted)" if fitted
-              else r"Small $Q$ (no hyper results: no fit)")
+    small.set(xlabel=r"$Q\bar w$ (dimensionless)", ylabel=ylabel, title=small_q_title(files))
+
+
+def spreadability_marks(s, axes, colour, drawn):
+    """The alpha window (shaded) and t_c (dotted) of one input; with many inputs (colour None),
+    in grey and once per window distinct to two digits (they scale with each input's w)."""
+    many = colour is None
+    colour = "0.5" if many else colour
+    window = tuple(f"{s[t]:.2g}" for t in ("t_fit_min", "t_fit_max"))
+    for ax in axes:
+        if not many or once(drawn, (ax, "window") + window):
+            ax.axvspan(s["t_fit_min"], s["t_fit_max"], color=colour, alpha=0.12)
+        if not many or once(drawn, (ax, "cutoff", f"{s['t_cutoff']:.2g}")):
+            ax.axvline(s["t_cutoff"], color=colour, ls=":", lw=1)
 
 
 def spreadability(runs, axes):
     top, bottom = axes
     debye_drawn = False
-    for f in inputs_with(runs, "spreadability"):
+    files, drawn = inputs_with(runs, "spreadability"), set()
+    many = len(files) > MANY_INPUTS
+    for f, style in zip(files, styles(files)):
         s = f["spreadability"]
-        line, = top.loglog(s["t"], s["excess"], lw=1.2, label=label(f))
+        line, = top.loglog(s["t"], s["excess"], lw=1.2, **style)
         c = line.get_color()
         bottom.semilogx(s["t"], s["local_alpha"], lw=1, color=c)
-        bottom.axhline(s["alpha"], color=c, ls="--", lw=1,
-                       label=fr"$\alpha = {s['alpha']:.2f} \pm {s['alpha_stderr']:.2f}$")
-        for ax in axes:
-            ax.axvspan(s["t_fit_min"], s["t_fit_max"], color=c, alpha=0.12)
-            ax.axvline(s["t_cutoff"], color=c, ls=":", lw=1)
+        if not many:  # many inputs: their alpha is versus_p's
+            bottom.axhline(s["alpha"], color=c, ls="--", lw=1,
+                           label=fr"$\alpha = {s['alpha']:.2f} \pm {s['alpha_stderr']:.2f}$")
+        spreadability_marks(s, axes, None if many else c, drawn)
         if not debye_drawn and "spreadability_debye" in f:
             d = f["spreadability_debye"]
             top.loglog(d["t"], d["excess"], "k--", lw=1,
@@ -109,9 +163,10 @@ def spreadability(runs, axes):
 
 
 def pore_size(runs, ax):
-    for f in inputs_with(runs, "pore_size"):
+    files = inputs_with(runs, "pore_size")
+    for f, style in zip(files, styles(files)):
         s = f["pore_size"]
-        ax.step(s["delta_w"], s["F"], where="post", lw=1, label=label(f))
+        ax.step(s["delta_w"], s["F"], where="post", lw=1, **style)
     ax.set(xlabel=r"$\delta/\bar w$ (dimensionless)", ylabel=r"$F(\delta)$ (dimensionless)",
            title="Pore-size distribution", ylim=(0, 1.02))
 
@@ -258,14 +313,23 @@ def make_figures(paths, packing_path=None, slice_voxels=200):
     return figures
 
 
+def legend(ax, most_inside=8):
+    """The axes' legend: inside up to `most_inside` entries, else beside the axes (on the right)
+    where it hides no data."""
+    entries = len(ax.get_legend_handles_labels()[0])
+    if entries > most_inside:
+        ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+    elif entries:
+        ax.legend(fontsize=7)
+
+
 def save(figures, out):
     """Each figure as out/NAME.png and out/NAME.pdf; returns the PNG paths."""
     os.makedirs(out, exist_ok=True)
     written = []
     for name, fig in figures.items():
         for ax in fig.axes:
-            if ax.get_legend_handles_labels()[0]:
-                ax.legend(fontsize=7)
+            legend(ax)
         fig.tight_layout()
         for ext in ("png", "pdf"):
             fig.savefig(os.path.join(out, f"{name}.{ext}"), dpi=130)

@@ -23,11 +23,31 @@ namespace sbpack::python {
 
 namespace {
 
-/// Each line sbanalyze would print as a warning, as a Python RuntimeWarning.
-void reportInPython(const std::string& lines) {
-    std::istringstream in(lines);
-    for (std::string line; std::getline(in, line);)
-        if (PyErr_WarnEx(PyExc_RuntimeWarning, line.c_str(), 1) != 0) throw py::error_already_set();
+/// sbanalyze's report, split into its messages: a line that starts "sbanalyze: " starts one,
+/// the lines after it (a warning's indented detail, e.g. the gaps of unresolved contacts)
+/// continue it; blank lines are dropped.
+std::vector<std::string> reportMessages(const std::string& report) {
+    std::vector<std::string> messages;
+    std::istringstream in(report);
+    for (std::string line; std::getline(in, line);) {
+        if (line.find_first_not_of(" \t") == std::string::npos) continue;
+        if (line.starts_with("sbanalyze: ") || messages.empty())
+            messages.push_back(line);
+        else
+            messages.back() += "\n" + line;
+    }
+    return messages;
+}
+
+/// The report in Python: each warning one RuntimeWarning, raised at the line that called the
+/// sbpack wrapper (stack level 2); stage lines to sys.stderr, as on the command line.
+void reportInPython(const std::string& report) {
+    for (const std::string& message : reportMessages(report)) {
+        if (message.starts_with("sbanalyze: ") && !message.starts_with("sbanalyze: warning: "))
+            py::print(message, py::arg("file") = py::module_::import("sys").attr("stderr"));
+        else if (PyErr_WarnEx(PyExc_RuntimeWarning, message.c_str(), 2) != 0)
+            throw py::error_already_set();
+    }
 }
 
 class Analyzer {

@@ -75,15 +75,16 @@ bool runProtocol(JammingProtocol& protocol, const py::object& progress, double i
 Packing generate(const ProtocolParameters& parameters, const py::object& progress,
                  double interval) {
     validateAsKeywords(parameters);
+    for (const std::string& warning : protocolWarnings(parameters)) // as sbgen's, before the run
+        if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0)
+            throw py::error_already_set();
     JammingProtocol protocol(parameters);
     const bool done = runProtocol(protocol, progress, interval);
     if (PyErr_Occurred() != nullptr) throw py::error_already_set();
     if (!done) throw std::logic_error("sbpack.generate: the protocol stopped without a reason");
     if (!protocol.status().jam->jammed &&
-        PyErr_WarnEx(
-            PyExc_RuntimeWarning,
-            ("not jammed (provenance jammed = 0): " + protocol.status().jam->verdict).c_str(),
-            1) != 0)
+        PyErr_WarnEx(PyExc_RuntimeWarning,
+                     (protocol.status().jam->verdict + " (provenance jammed = 0)").c_str(), 1) != 0)
         throw py::error_already_set();
     return finalPacking(protocol);
 }

@@ -68,6 +68,49 @@ def test_attributes_are_the_groups_values():
         s.chi
 
 
+def test_dir_lists_the_results():
+    """dir() (and so tab completion) lists the results once computed: its own group's names and
+    the other groups' (issue 43); each one it lists is an attribute."""
+    c = sbpack.Contacts(threads=2)
+    assert "compute" in dir(c) and "z_mean" not in dir(c)
+    c.compute(sbpack.Packing.read(os.path.join(DATA, "sc-lattice-p1.5.txt")))
+    names = set(dir(c))
+    assert {"z_mean", "rattler_fraction", "counts", "phi", "mean_width", "groups"} <= names
+    for group in c.groups.values():
+        assert set(group) - {"units"} <= names
+    for name in names - set(dir(sbpack.Contacts)):
+        getattr(c, name)
+    assert c.z_mean == c.groups["contacts"]["z_mean"] == 6
+
+
+def test_a_warning_of_several_lines_is_one_runtime_warning():
+    """Unresolved contacts: the verdict and its gap distribution, one RuntimeWarning (issue 43:
+    it was one per line, a blank one included)."""
+    packing = sbpack.Packing.read(os.path.join(DATA, "stalled-column-p10-200.h5"))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        sbpack.Contacts(threads=2).compute(packing)
+    messages = [str(w.message) for w in caught]
+    assert len(messages) == 1 and all(w.category is RuntimeWarning for w in caught), messages
+    lines = messages[0].splitlines()
+    assert "NOT resolved" in lines[0] and len(lines) > 3
+    assert all(line.startswith("    ") and line.endswith("pairs") for line in lines[1:])
+    assert caught[0].filename == __file__  # raised at the caller's line
+
+
+def test_analyze_warns_once_per_message_and_prints_its_stage_lines(tmp_path, capsys):
+    """sbpack.analyze: the warning is one RuntimeWarning; without quiet, the stage lines go to
+    standard error as sbanalyze's do, not as warnings."""
+    path = os.path.join(DATA, "stalled-column-p10-200.h5")
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        sbpack.analyze([path], tmp_path / "r.h5", compute="contacts", quiet=False, threads=2)
+    assert [str(w.message).count("NOT resolved") for w in caught] == [1]
+    stages = capsys.readouterr().err.splitlines()
+    assert stages and all(line.startswith("sbanalyze: ") for line in stages)
+    assert not any("warning" in line for line in stages)
+
+
 def test_hyperuniformity_skipped_on_a_small_box_warns():
     packing = sbpack.Packing.read(os.path.join(DATA, "dense-p10-200.h5"))
     h = sbpack.Hyperuniformity(voxels=100, **FAST)

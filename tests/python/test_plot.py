@@ -109,3 +109,40 @@ def test_read_results_refuses_a_fifo_at_once(tmp_path):
     os.mkfifo(fifo)
     with pytest.raises(OSError, match="not a regular file"):
         sbpack.read_results(str(fifo))
+
+
+def fake_inputs(ps, per_p):
+    """Results-like inputs: per_p files at each p, N = 100, with S(Q) and E(t)."""
+    t = np.geomspace(1e-3, 10, 20)
+    spread = {"t": t, "excess": np.exp(-t), "local_alpha": np.ones_like(t), "alpha": 1.0,
+              "alpha_stderr": 0.1, "t_fit_min": 0.1, "t_fit_max": 0.5, "t_cutoff": 2.0}
+    return [{"p": p, "n_particles": 100, "input": f"p{p}-s{i}.h5", "mean_width": 1.0,
+             "structure_factor": {"Q_w": np.arange(1.0, 5.0), "S": np.full(4, p + i)},
+             "spreadability": dict(spread, t_fit_min=0.1 * (1 + 1e-4 * i))}
+            for p in ps for i in range(per_p)]
+
+
+def test_many_inputs_one_legend_entry_and_colour_per_series():
+    """Above MANY_INPUTS inputs, one legend entry and colour per (p, N); every input still
+    drawn; the alpha windows that agree to two digits shaded once (issue 43)."""
+    import matplotlib.pyplot as plt
+    runs = [{"files": fake_inputs([1.0, 1.5], 4)}]
+    fig, ax = plt.subplots()
+    plot.structure_factor(runs, ax)
+    labels = ax.get_legend_handles_labels()[1]
+    assert labels == ["p = 1, N = 100 (4 inputs)", "p = 1.5, N = 100 (4 inputs)"]
+    colours = [line.get_color() for line in ax.lines[:8]]
+    assert len(set(colours[:4])) == len(set(colours[4:])) == 1 and colours[0] != colours[4]
+    fig, axes = plt.subplots(2, 1)
+    plot.spreadability(runs, axes)
+    assert len(axes[0].patches) == 1 and len(axes[1].lines) == 8 + 1  # 8 curves, one t_c
+    plt.close("all")
+
+
+def test_few_inputs_keep_their_own_labels():
+    import matplotlib.pyplot as plt
+    files = fake_inputs([1.0], 2)
+    fig, ax = plt.subplots()
+    plot.structure_factor([{"files": files}], ax)
+    assert ax.get_legend_handles_labels()[1] == [plot.label(f) for f in files]
+    plt.close(fig)
