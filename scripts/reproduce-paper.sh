@@ -17,7 +17,11 @@
 # --sbgen-options "--pressure-final 1e8 --gamma-slow 1e-2".
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-command="scripts/reproduce-paper.sh $*"
+# The command as it can be pasted again: arguments other than plain words single-quoted.
+command="scripts/reproduce-paper.sh"
+for arg in "$@"; do
+    if [[ $arg =~ ^[A-Za-z0-9_./=:,+-]+$ ]]; then command+=" $arg"; else command+=" '${arg//\'/\'\\\'\'}'"; fi
+done
 n=1000 count=5 jobs=$(nproc) work=$root/build/reproduce table="" compute=contacts extra="" doc=""
 build=$root/build
 plist="0.85 0.9 0.95 0.975 1 1.025 1.05 1.1 1.2 1.3 1.4 1.5"
@@ -53,8 +57,8 @@ done | SBGEN="$build/generator/sbgen" WORK="$work" N="$n" EXTRA="$extra" \
     xargs -r -P "$jobs" -L 1 bash -c '
         name=p$0-n$N-s$1 out=$WORK/packings/p$0-n$N-s$1.h5 ck=$WORK/packings/p$0-n$N-s$1.checkpoint.h5
         if [ -f "$ck" ]; then set -- --resume "$ck"; else set -- --p "$0" --n "$N" --seed "$1" $EXTRA; fi
-        "$SBGEN" "$@" --checkpoint "$ck" --checkpoint-interval 300 --quiet --out "$out" \
-            2> "$WORK/logs/$name.log"
+        "$SBGEN" "$@" --checkpoint "$ck" --checkpoint-interval 300 --out "$out" \
+            2> "$WORK/logs/$name.log" # its progress lines and warnings
         rc=$?
         [ $rc -eq 0 ] && rm -f "$ck"
         [ $rc -eq 0 ] || [ $rc -eq 3 ] || { echo "sbgen $name: exit $rc (log $WORK/logs/$name.log)" >&2; exit 255; }

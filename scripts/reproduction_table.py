@@ -73,35 +73,44 @@ def structure_row(results, group, paper):
     # as large as the paper's band.
     ok_r_both = None if ok_r is None else abs(r - pr) <= 2 * math.sqrt(pr_sd**2 + r_sd**2 / n)
     cpu_mean, cpu_max = cpu_seconds(results, group)
-    return (f"| {p:g} | {int(group.attrs['n_particles'])} | {n} | {phi:.5f} +- {phi_sd:.5f} | "
-            f"{pphi:.5f} +- {pphi_sd:.5f} | {mark(ok_phi)} | {z:.3f} +- {z_sd:.3f} | {pz:.3f} | "
-            f"{mark(ok_z)} | {r:.2f} +- {r_sd:.2f} | {pr:.2f} +- {pr_sd:.2f} | {mark(ok_r)} | "
+    return (f"| {p:g} | {int(group.attrs['n_particles'])} | {n} | {pm((phi, phi_sd), 1, 5, n)} | "
+            f"{pphi:.5f} +- {pphi_sd:.5f} | {mark(ok_phi)} | {pm((z, z_sd), 1, 3, n)} | {pz:.3f} | "
+            f"{mark(ok_z)} | {pm((r, r_sd), 1, 2, n)} | {pr:.2f} +- {pr_sd:.2f} | {mark(ok_r)} | "
             f"{mark(ok_r_both)} | "
             f"{cpu_mean:.0f} / {cpu_max:.0f} |")
 
 
-def semi_axis(results, group):
-    member = group["members"][0]
-    return float(results["files"][str(member)].attrs["semi_axis"])
+def width_over_axis(results, group):
+    """w / D, the mean width over the major axis D = 2 semi_axis, of each member on its own (each
+    packing has its own grown D; sbanalyze info prints the same ratio): their mean."""
+    ratios = [float(a["mean_width"]) / (2 * float(a["semi_axis"]))
+              for a in (results["files"][str(m)].attrs for m in group["members"][:])]
+    return sum(ratios) / len(ratios)
 
 
-def pm(pair, scale=1.0, digits=3):
+def pm(pair, scale=1.0, digits=3, n=2):
+    """mean +- sd, or the value alone where one packing has no spread (n = 1)."""
     mean, sd = pair
-    return "-" if math.isnan(mean) else f"{mean * scale:.{digits}f} +- {sd * scale:.{digits}f}"
+    if math.isnan(mean):
+        return "-"
+    if n < 2:
+        return f"{mean * scale:.{digits}f} (one packing)"
+    return f"{mean * scale:.{digits}f} +- {sd * scale:.{digits}f}"
 
 
 def transport_row(results, group, paper):
     p = float(group.attrs["p"])
     ref = paper.get(round(p, 4))
-    width = float(group.attrs["mean_width"]) / (2 * semi_axis(results, group))
-    return (f"| {p:g} | {width:.4f} | {pm(attr(group, 'pore_size', 'mean_w'), 1e2)} | "
-            f"{pm(attr(group, 'transport', 'permeability_w2'), 1e4)} | "
-            f"{pm(attr(group, 'transport', 'mean_survival_time_scaled'), 1e3)} | "
-            f"{pm(attr(group, 'transport', 'principal_relaxation_time_scaled'), 1e3)} | "
-            f"{pm(attr(group, 'spreadability', 'alpha'), 1, 2)} | {number(ref, 'alpha'):.2f} | "
-            f"{pm(attr(group, 'hyperuniformity', 'a0'), 1e4, 1)} | {number(ref, 'a0_e-4'):.2f} | "
-            f"{pm(attr(group, 'hyperuniformity', 'a1'), 1e3, 1)} | {number(ref, 'a1_e-3'):.2f} | "
-            f"{pm(attr(group, 'hyperuniformity', 'H'), 1e3, 0)} | {number(ref, 'H_e-3'):.2f} |")
+    n = int(group.attrs["n_files"])
+    width = width_over_axis(results, group)
+    return (f"| {p:g} | {width:.4f} | {pm(attr(group, 'pore_size', 'mean_w'), 1e2, 3, n)} | "
+            f"{pm(attr(group, 'transport', 'permeability_w2'), 1e4, 3, n)} | "
+            f"{pm(attr(group, 'transport', 'mean_survival_time_scaled'), 1e3, 3, n)} | "
+            f"{pm(attr(group, 'transport', 'principal_relaxation_time_scaled'), 1e3, 3, n)} | "
+            f"{pm(attr(group, 'spreadability', 'alpha'), 1, 2, n)} | {number(ref, 'alpha'):.2f} | "
+            f"{pm(attr(group, 'hyperuniformity', 'a0'), 1e4, 1, n)} | {number(ref, 'a0_e-4'):.2f} | "
+            f"{pm(attr(group, 'hyperuniformity', 'a1'), 1e3, 1, n)} | {number(ref, 'a1_e-3'):.2f} | "
+            f"{pm(attr(group, 'hyperuniformity', 'H'), 1e3, 0, n)} | {number(ref, 'H_e-3'):.2f} |")
 
 
 STRUCTURE_HEADER = ("p", "N", "n", "phi (ours)", "phi (paper)", "phi ok", "Z (ours)", "Z (paper)",
@@ -117,7 +126,8 @@ TRANSPORT_HEADER = ("p", "w / D", "<delta> / w (1e-2)", "k / w^2 (1e-4)", "tau D
                     "T1 D / w^2 (1e-3)", "alpha (ours)", "alpha (paper)", "a0 (1e-4 w^3, ours)",
                     "a0 (paper)", "a1 (1e-3, ours)", "a1 (paper)", "H (1e-3, ours)", "H (paper)")
 TRANSPORT_NOTE = (
-    "Mean +- sd over the ensemble's packings. Pore sizes and transport: the voxel method unless "
+    "Mean +- sd over the ensemble's packings (the value alone for one packing); w / D of each "
+    "packing on its own (as sbanalyze info prints it), averaged. Pore sizes and transport: the voxel method unless "
     "sbanalyze was given --pores refined|exact; k, tau and T1 are the paper's bounds (Eqs. "
     "17-20, diffusion-controlled: T1 D / w^2 = <delta^2> / w^2). alpha from the spreadability "
     "fit; a0, a1, H from the chi_V fit (docs/hyperuniformity.md). The paper prints no table of "
