@@ -1,94 +1,311 @@
-"""python3 -m sbpack.plot: the figures a results file supports, as PNG and PDF, and what they draw
-is the results' data (read back from the matplotlib Axes)."""
+"""python3 -m sbpack.plot: the figures a results file supports, as PNG and PDF; what they draw is
+the results' data (read back from the matplotlib Axes): one series per (p, N), its ensemble's
+mean +- std as a band, legends in place, degenerate fits left out, grids named, and the figures
+of make_figures() the command's own."""
+import copy
 import os
+import subprocess
+import sys
 
+import matplotlib
 import numpy as np
 import pytest
 
 import sbpack
 import sbpack.plot as plot
 from sbpack import _sbpack
+from sbpack import figures_results, figures_series, figures_shape, figures_versus_p
 from conftest import DATA, FAST, cli_args, run
 
 INPUTS = [os.path.join(DATA, "mrj-p1.5-1000.h5"), os.path.join(DATA, "mrj-spheres-5000.h5")]
 OPTIONS = dict(FAST, voxels=100, pore_voxels=100, bootstrap=20)
+matplotlib.rcParams["figure.max_open_warning"] = 0  # the module's fixtures hold ~40 figures
+CHEAP = dict(slice_voxels=64, form_factor_voxels=64, threads=2)  # the engine's figures, small
+
+NAMES = ["structure_factor", "spectral_density", "small_q", "major_axis", "spreadability",
+                "pore_size", "versus_p", "phi_vs_width", "mean_width", "form_factor",
+                "packing_slice"]
 
 
-@pytest.fixture(scope="module")
-def results(sbanalyze, tmp_path_factory):
-    out = tmp_path_factory.mktemp("plot") / "r.h5"
-    r = run([sbanalyze, *INPUTS, "--quiet", "--out", str(out), *cli_args(OPTIONS)])
+def analyze(sbanalyze, paths, out):
+    """sbanalyze PATHS with OPTIONS into `out`; its path."""
+    r = run([sbanalyze, *paths, "--quiet", "--out", str(out), *cli_args(OPTIONS)])
     assert r.returncode == 0, r.stderr
     return str(out)
 
 
 @pytest.fixture(scope="module")
+def results(sbanalyze, tmp_path_factory):
+    """Two inputs of two p (two one-input ensembles), every analysis."""
+    return analyze(sbanalyze, INPUTS, tmp_path_factory.mktemp("plot") / "r.h5")
+
+
+@pytest.fixture(scope="module")
 def figures(results):
-    return plot.make_figures([results], slice_voxels=100)
+    """make_figures() of the two one-input series (every figure)."""
+    figures = plot.make_figures([results], slice_voxels=100, form_factor_voxels=64, threads=2)
+    assert list(figures) == NAMES  # two p, one input each: every figure too
+    return figures
 
 
-NAMES = ["structure_factor", "spectral_density", "spreadability", "pore_size", "versus_p",
-         "packing_slice"]
+@pytest.fixture(scope="module")
+def ensemble(sbanalyze, tmp_path_factory):
+    """Two p, three inputs each (each MRJ packing of data/ translated three ways: other voxel
+    grids, the same structure), every analysis: two ensembles of three."""
+    folder = tmp_path_factory.mktemp("ensemble")
+    paths = []
+    for source in INPUTS:
+        packing = sbpack.Packing.read(source)
+        for i, shift in enumerate((0.0, 0.31, 0.57)):
+            path = str(folder / f"{os.path.basename(source)[:-3]}-{i}.h5")
+            positions = (packing.positions + shift * packing.box_length) % packing.box_length
+            sbpack.Packing(positions, packing.orientations, packing.box_length, p=packing.p,
+                           semi_axis=packing.semi_axis).write(path)
+            paths.append(path)
+    return analyze(sbanalyze, paths, folder / "r.h5")
 
 
-def test_command_writes_png_and_pdf(results, tmp_path):
-    import subprocess
-    import sys
-    r = subprocess.run([sys.executable, "-m", "sbpack.plot", results, "--out", str(tmp_path),
-                        "--slice-voxels", "100"], capture_output=True, text=True)
+@pytest.fixture(scope="module")
+def ensemble_figures(ensemble):
+    """make_figures() of the two ensembles of three."""
+    return plot.make_figures([ensemble], **CHEAP)
+
+
+def labelled(ax):
+    """The axes' series lines, by their series' label (their gid)."""
+    return {line.get_gid(): line for line in ax.lines if (line.get_gid() or "").startswith("p = ")}
+
+
+def series_line(ax, f):
+    """The line of the input f's series (one-input series are labelled with the input)."""
+    name = os.path.basename(str(f["input"]))
+    return next(line for label, line in labelled(ax).items() if name in label)
+
+
+@pytest.fixture(scope="module")
+def command(ensemble, tmp_path_factory):
+    """python3 -m sbpack.plot on the ensemble: (its completed run, its output folder)."""
+    out = tmp_path_factory.mktemp("cli")
+    r = subprocess.run([sys.executable, "-m", "sbpack.plot", ensemble, "--out", str(out),
+                        "--slice-voxels", "64", "--form-factor-voxels", "64", "--threads", "2"],
+                       capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
+    return r, out
+
+
+def test_command_writes_png_and_pdf(command):
+    """Two p, three inputs each: every paper figure type, as PNG and PDF."""
+    r, out = command
     for name in NAMES:
         for ext in ("png", "pdf"):
-            assert os.path.getsize(tmp_path / f"{name}.{ext}") > 1000
-    assert r.stdout.split() == [str(tmp_path / f"{n}.png") for n in NAMES]
+            assert os.path.getsize(out / f"{name}.{ext}") > 1000
+    assert r.stdout.split() == [str(out / f"{n}.png") for n in NAMES]
 
 
-def files_of(results):
-    return sbpack.read_results(results)["files"]
+def test_make_figures_are_the_commands(ensemble, ensemble_figures, command, tmp_path):
+    """One code path: make_figures() returns finished figures, and the command saves exactly
+    those (the same PNG bytes, figure by figure)."""
+    assert list(ensemble_figures) == NAMES
+    again = plot.make_figures([ensemble], **CHEAP)
+    for name in plot.save(again, str(tmp_path)):
+        with open(name, "rb") as a, open(command[1] / os.path.basename(name), "rb") as b:
+            assert a.read() == b.read(), name
+
+
+def test_every_figure_has_its_legends(ensemble_figures, figures):
+    """Legends are placed by make_figures itself (not only when saving)."""
+    for fig in list(ensemble_figures.values()) + list(figures.values()):
+        for ax in fig.axes:
+            if any(not label.startswith("_") for label in ax.get_legend_handles_labels()[1]):
+                assert ax.get_legend() is not None, fig.axes[0].get_title()
+
+
+def test_ensemble_is_one_line_and_one_band_per_series(ensemble, ensemble_figures):
+    """Two p x three inputs: one line per (p, N), the ensemble's mean, in a band of +- std;
+    colour keyed to p (spheres black), marker to N."""
+    ensembles = sbpack.read_results(ensemble)["ensembles"]
+    ax = ensemble_figures["structure_factor"].axes[0]
+    lines = labelled(ax)
+    assert len(lines) == 2 and len(ax.collections) == 2
+    for e, band in zip(sorted(ensembles, key=lambda e: e["p"]), ax.collections):
+        line = lines[f"p = {e['p']:g}, N = {e['n_particles']} (mean $\\pm$ std of 3)"]
+        s = e["structure_factor"]
+        assert np.array_equal(line.get_xdata(), s["Q_w"])
+        assert np.array_equal(line.get_ydata(), s["S"])
+        y = band.get_paths()[0].vertices[:, 1]
+        assert np.isclose(y.max(), np.max(s["S"] + s["S_std"]))
+        assert np.isclose(y.min(), np.min(s["S"] - s["S_std"]))
+    sphere, superball = lines.values()
+    assert sphere.get_color() in ("k", (0.0, 0.0, 0.0, 1.0)) and superball.get_color() != "k"
+    assert sphere.get_marker() != superball.get_marker()  # N = 5000 and N = 1000
+
+
+def test_ensemble_pore_sizes_are_the_members_mean(ensemble, ensemble_figures):
+    """F(delta) of an ensemble: the mean and std of its members' steps on one delta / w grid."""
+    r = sbpack.read_results(ensemble)
+    ax = ensemble_figures["pore_size"].axes[0]
+    for e in r["ensembles"]:
+        members = [r["files"][int(m)] for m in e["members"]]
+        grid, mean, std = figures_series.members_mean(members, "pore_size", "delta_w", "F")
+        line = labelled(ax)[f"p = {e['p']:g}, N = {e['n_particles']} (mean $\\pm$ std of 3)"]
+        assert np.array_equal(line.get_ydata(), mean) and np.array_equal(line.get_xdata(), grid)
+        i = np.searchsorted(grid, members[0]["pore_size"]["delta_w"][3])
+        assert mean[i] == pytest.approx(np.mean([
+            m["pore_size"]["F"][np.searchsorted(m["pore_size"]["delta_w"], grid[i], "right") - 1]
+            for m in members]))
+    assert ax.get_yscale() == "log"
+    assert len(ensemble_figures["pore_size"].axes) == 2  # F and P (one side: p >= 1)
+    assert ensemble_figures["pore_size"].axes[1].get_legend() is not None
 
 
 def test_curves_are_the_results(results, figures):
-    files = files_of(results)
+    files = sbpack.read_results(results)["files"]
     sq, chi = figures["structure_factor"].axes[0], figures["spectral_density"].axes[0]
     pores, spread = figures["pore_size"].axes[0], figures["spreadability"].axes[0]
-    spread_lines = [line for line in spread.lines if line.get_linestyle() == "-"]
-    for i, f in enumerate(files):
-        assert np.array_equal(sq.lines[i].get_xdata(), f["structure_factor"]["Q_w"])
-        assert np.array_equal(sq.lines[i].get_ydata(), f["structure_factor"]["S"])
+    for f in files:
+        line = series_line(sq, f)
+        assert np.array_equal(line.get_xdata(), f["structure_factor"]["Q_w"])
+        assert np.array_equal(line.get_ydata(), f["structure_factor"]["S"])
         w = f["mean_width"]
-        assert np.array_equal(chi.lines[i].get_ydata(), f["spectral_density"]["chi"] / w**3)
-        assert np.array_equal(pores.lines[i].get_xdata(), f["pore_size"]["delta_w"])
-        assert np.array_equal(pores.lines[i].get_ydata(), f["pore_size"]["F"])
-        assert np.array_equal(spread_lines[i].get_ydata(), f["spreadability"]["excess"])
-    debye = [line for line in spread.lines if line.get_linestyle() == "--"][0]
-    assert np.array_equal(debye.get_ydata(), files[0]["spreadability_debye"]["excess"])
+        assert np.allclose(series_line(chi, f).get_ydata(), f["spectral_density"]["chi"] / w**3,
+                           rtol=1e-14, atol=0)
+        assert np.array_equal(series_line(pores, f).get_xdata(), f["pore_size"]["delta_w"])
+        assert np.array_equal(series_line(pores, f).get_ydata(), f["pore_size"]["F"])
+        assert np.array_equal(series_line(spread, f).get_ydata(), f["spreadability"]["excess"])
+    debye = [line for line in spread.lines if line.get_linestyle() == "--"]
+    assert len(debye) == 2  # one Debye medium per p: its own phi
+    assert sorted(tuple(d.get_ydata()[:3]) for d in debye) == sorted(
+        tuple(f["spreadability_debye"]["excess"][:3]) for f in files)
 
 
-def test_versus_p_draws_the_ensembles_and_the_paper(results, figures):
-    ensembles = sbpack.read_results(results)["ensembles"]
-    phi_axis, z_axis = figures["versus_p"].axes[:2]
-    drawn = sorted((tuple(c.lines[0].get_xdata()), tuple(c.lines[0].get_ydata()))
-                   for c in phi_axis.containers[:2])
-    assert drawn == sorted(((e["p"],), (e["phi"],)) for e in ensembles)
+def test_versus_p_draws_the_ensembles_and_the_paper(ensemble, ensemble_figures):
+    ensembles = sbpack.read_results(ensemble)["ensembles"]
+    axes = ensemble_figures["versus_p"].axes
+    phi_axis, z_axis = axes[:2]
+    drawn = {(c.lines[0].get_xdata()[0], c.lines[0].get_ydata()[0])
+             for c in phi_axis.containers if c.get_label() != figures_versus_p.PAPER}
+    assert drawn == {(e["p"], e["phi"]) for e in ensembles}
     paper = plot.paper_values()
-    assert np.array_equal(z_axis.containers[-1].lines[0].get_ydata(), paper["Z"][1])
+    paper_z = [c for c in z_axis.containers if c.get_label() == figures_versus_p.PAPER][0]
+    assert np.array_equal(paper_z.lines[0].get_ydata(), paper["Z"][1])
     assert paper["Z"][1][list(paper["Z"][0]).index(1.0)] == 6  # isostatic spheres in the table
+    titles = [ax.get_ylabel() for ax in axes]
+    assert any(t.startswith("$H$") for t in titles)  # H against p (paper Fig. H_Xk)
 
 
-def test_slice_is_the_pore_map(figures):
+def test_versus_p_title_fits_with_hyper_only(ensemble):
+    """Only hyper results (phi, alpha and H: three panels): the note above them is not
+    clipped."""
+    r = sbpack.read_results(ensemble)
+    keep = {"spreadability", "hyperuniformity"}
+    for group in r["files"] + r["ensembles"]:
+        for name in [k for k, v in group.items() if isinstance(v, dict) and k != "units"]:
+            if name not in keep:
+                del group[name]
+    fig = figures_versus_p.versus_p(figures_series.series_of([r]))
+    plot.finish(fig)
+    assert len([ax for ax in fig.axes if ax.axison]) == 3
+    fig.canvas.draw()
+    box, title = fig.bbox, fig._suptitle.get_window_extent()
+    assert box.x0 <= title.x0 and title.x1 <= box.x1 and title.y1 <= box.y1
+
+
+def degenerate_copy(results):
+    """The results with the first input's fit made degenerate (H = 0 +- inf)."""
+    r = sbpack.read_results(results)
+    h = r["files"][0]["hyperuniformity"]
+    h["H"], h["H_stderr"], h["a0_stderr"] = 0.0, np.inf, np.inf
+    return r
+
+
+def test_degenerate_fit_is_not_drawn(results):
+    """A fit with H = 0 +- inf is left out and said to be; the other input's fit is drawn."""
+    r = degenerate_copy(results)
+    fig = figures_results.small_q(figures_series.series_of([r]))
+    labels = [line.get_label() for ax in fig.axes for line in ax.lines]
+    labels += [c.get_label() for ax in fig.axes for c in ax.containers]
+    fits = [label for label in labels if label.startswith("fit:")]
+    assert len(fits) == 1 and "inf" not in fits[0]
+    bad = os.path.basename(str(r["files"][0]["input"]))
+    assert any(bad in label and "degenerate, not drawn" in label for label in labels)
+
+
+def test_small_q_fit_over_its_window_and_its_points(results, figures):
+    files = sbpack.read_results(results)["files"]
+    ax = figures["small_q"].axes[0]
+    fits = [line for line in ax.lines if line.get_label().startswith("fit:")]
+    assert len(fits) == 2
+    for f in files:
+        h = f["hyperuniformity"]
+        fit = next(line for line in fits if f"{h['fit_points']} wave vectors" in line.get_label()
+                   and np.isclose(line.get_xdata()[-1], h["q_fit_max_w"]))
+        x = fit.get_xdata()
+        assert np.allclose(fit.get_ydata(), h["a0"] + h["a1"] * x ** h["alpha"])
+    exact = [line for line in ax.lines if line.get_label().startswith("exact")]
+    assert len(exact) == 1  # the spheres' exact chi_V, at the voxel points' shells
+    assert "not stored in the results" in " ".join(figures["small_q"]._suptitle.get_text().split())
+
+
+def test_mixed_grids_are_named(results):
+    r = sbpack.read_results(results)
+    r["files"][0]["pore_size"]["voxels"], r["files"][1]["pore_size"]["voxels"] = 300, 500
+    fig = figures_results.pore_size(figures_series.series_of([r]))
+    labels = [line.get_label() for ax in fig.axes for line in ax.lines]
+    assert any("on 300³" in label for label in labels)
+    assert any("on 500³" in label for label in labels)
+    assert "grids differ" in " ".join(fig._suptitle.get_text().split())
+
+
+def test_sides_split_at_one():
+    """The paper's split: p <= 1 and p >= 1, the spheres in both."""
+    series = [figures_series.Series(p, 100, 0, "r", [{}]) for p in (0.85, 1.0, 1.5)]
+    (low_title, low), (high_title, high) = figures_series.sides(series)
+    assert [s.p for s in low] == [0.85, 1.0] and [s.p for s in high] == [1.0, 1.5]
+    assert figures_series.sides(series[1:2])[0][1] == series[1:2]
+
+
+def test_slice_is_the_pore_map_on_the_results_grid(results):
+    """The slice on the grid the pores analysis used (100^3 here), one panel per p."""
+    fig = figures_shape.packing_slice(figures_series.series_of([sbpack.read_results(results)]),
+                                      threads=2)
+    ax = next(ax for ax in fig.axes if ax.get_title().startswith("p = 1.5"))
+    assert "100³: the results' pores grid" in ax.get_title()
     packing = sbpack.Packing.read(INPUTS[0])
     solid, pores = _sbpack.voxel_slice(packing, 100, 50)
-    image = figures["packing_slice"].axes[0].images[0].get_array()
+    image = ax.images[0].get_array()
     assert np.array_equal(image.mask, solid != 0)
     assert np.array_equal(image.data[solid == 0], (pores / packing.mean_width)[solid == 0])
     assert (pores[solid != 0] == 0).all() and (pores[solid == 0] > 0).all()
+    assert ax.get_xlabel() == r"$z/\bar w$"
+
+
+def test_form_factor_of_a_sphere():
+    """The engine's form factor of one sphere (its spectral density in a box) against
+    3 (sin x - x cos x) / x^3, x = Q D / 2, up to the first zero."""
+    x, m = figures_shape.form_factor_of(1.0, 128, 2)
+    keep = x < 1.2
+    q = np.pi * x[keep]
+    exact = 3 * (np.sin(q) - q * np.cos(q)) / q**3
+    assert np.max(np.abs(m[keep] - exact)) < 0.02
+
+
+def test_mean_width_is_the_engines(results, figures):
+    assert figures_shape.width_over_major_axis(1.0) == pytest.approx(1.0)
+    assert figures_shape.width_over_major_axis(1000.0) == pytest.approx(1.5, abs=1e-3)
+    ax = figures["mean_width"].axes[0]
+    curve = ax.lines[0]
+    assert curve.get_xdata()[0] == 0.5 and curve.get_xdata()[-1] == 1000.0
+    f = sbpack.read_results(results)["files"][0]
+    assert f["mean_width"] / (2 * f["semi_axis"]) == pytest.approx(
+        figures_shape.width_over_major_axis(f["p"]), rel=1e-9)
 
 
 def test_one_p_has_no_versus_p(sbanalyze, tmp_path):
     out = tmp_path / "sq.h5"
     assert run([sbanalyze, INPUTS[0], "--compute", "sq", "--quiet", "--out", str(out)]
                ).returncode == 0
-    assert list(plot.make_figures([str(out)], slice_voxels=0)) == ["structure_factor"]
+    names = plot.make_figures([str(out)], slice_voxels=0, form_factor_voxels=0)
+    assert list(names) == ["structure_factor", "major_axis", "mean_width"]
 
 
 def test_read_results_is_the_file(results):
@@ -111,38 +328,21 @@ def test_read_results_refuses_a_fifo_at_once(tmp_path):
         sbpack.read_results(str(fifo))
 
 
-def fake_inputs(ps, per_p):
-    """Results-like inputs: per_p files at each p, N = 100, with S(Q) and E(t)."""
-    t = np.geomspace(1e-3, 10, 20)
-    spread = {"t": t, "excess": np.exp(-t), "local_alpha": np.ones_like(t), "alpha": 1.0,
-              "alpha_stderr": 0.1, "t_fit_min": 0.1, "t_fit_max": 0.5, "t_cutoff": 2.0}
-    return [{"p": p, "n_particles": 100, "input": f"p{p}-s{i}.h5", "mean_width": 1.0,
-             "structure_factor": {"Q_w": np.arange(1.0, 5.0), "S": np.full(4, p + i)},
-             "spreadability": dict(spread, t_fit_min=0.1 * (1 + 1e-4 * i))}
-            for p in ps for i in range(per_p)]
+def test_two_results_files_are_told_apart(results):
+    """The same (p, N) in two results files: two series, one line style each, named."""
+    r = sbpack.read_results(results)
+    series = figures_series.series_of([r, copy.deepcopy(r)], ["a.h5", "b.h5"])
+    assert len(series) == 4
+    assert {s.style["ls"] for s in series} == {"-", "--"}
+    assert all(s.label.endswith(f"[{s.run_name}]") for s in series)
 
 
-def test_many_inputs_one_legend_entry_and_colour_per_series():
-    """Above MANY_INPUTS inputs, one legend entry and colour per (p, N); every input still
-    drawn; the alpha windows that agree to two digits shaded once (issue 43)."""
-    import matplotlib.pyplot as plt
-    runs = [{"files": fake_inputs([1.0, 1.5], 4)}]
-    fig, ax = plt.subplots()
-    plot.structure_factor(runs, ax)
-    labels = ax.get_legend_handles_labels()[1]
-    assert labels == ["p = 1, N = 100 (4 inputs)", "p = 1.5, N = 100 (4 inputs)"]
-    colours = [line.get_color() for line in ax.lines[:8]]
-    assert len(set(colours[:4])) == len(set(colours[4:])) == 1 and colours[0] != colours[4]
-    fig, axes = plt.subplots(2, 1)
-    plot.spreadability(runs, axes)
-    assert len(axes[0].patches) == 1 and len(axes[1].lines) == 8 + 1  # 8 curves, one t_c
-    plt.close("all")
-
-
-def test_few_inputs_keep_their_own_labels():
-    import matplotlib.pyplot as plt
-    files = fake_inputs([1.0], 2)
-    fig, ax = plt.subplots()
-    plot.structure_factor([{"files": files}], ax)
-    assert ax.get_legend_handles_labels()[1] == [plot.label(f) for f in files]
-    plt.close(fig)
+def test_a_label_says_how_many_members_have_the_analysis():
+    """An ensemble of three where hyper was skipped on one: its E(t) is the mean of two."""
+    files = [{"input": f"s{i}.h5", "structure_factor": {}, "spreadability": {}}
+             for i in range(2)] + [{"input": "s2.h5", "structure_factor": {}}]
+    s = figures_series.Series(1.5, 250, 0, "r", files)
+    s.label = figures_series.series_label(s)
+    assert figures_series.group_label(s, "spreadability") == \
+        "p = 1.5, N = 250 (mean $\\pm$ std of the 2 of 3 with spreadability)"
+    assert figures_series.group_label(s, "structure_factor") == s.label

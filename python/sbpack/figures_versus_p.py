@@ -1,0 +1,154 @@
+"""sbpack.plot's figures against p: phi, Z, phi_R, alpha, H, k, tau, T1 (paper Figs. 4, 5, 7, 13,
+15, 17), and phi against the mean width over the major axis (paper Fig. 6), each series' mean +-
+std (or its one input's value) coloured by p, marked by N, beside the paper's values
+(data/mst-reference-values.csv)."""
+import csv
+import os
+
+import matplotlib.ticker as ticker
+import numpy as np
+
+from .figures_results import new_figure, note
+from .figures_series import scalar
+
+REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "mst-reference-values.csv")
+PAPER = "paper (Maher et al.)"
+
+# (results group, value, axis label, the paper's column, its scale to the value's units)
+PANELS = [
+    (None, "phi", r"$\phi$", "phi", 1.0),
+    ("contacts", "z_mean", r"$Z$ (over non-rattlers)", "Z", 1.0),
+    ("contacts", "rattler_fraction", r"$\phi_R$ (rattler fraction)", "phi_R_percent", 0.01),
+    ("spreadability", "alpha", r"$\alpha$ (from $E(t)$)", "alpha", 1.0),
+    ("hyperuniformity", "H", r"$H$ (from the $\tilde\chi_V$ fit)", "H_e-3", 1e-3),
+    ("transport", "permeability_w2", r"$k/\bar w^2$", None, 1.0),
+    ("transport", "mean_survival_time_scaled", r"$\tau\mathcal{D}/\bar w^2$ (bound)", None, 1.0),
+    ("transport", "principal_relaxation_time_scaled", r"$T_1\mathcal{D}/\bar w^2$ (bound)", None,
+     1.0),
+]
+
+
+def paper_values(path=REFERENCE):
+    """The paper's table (data/mst-reference-values.csv): column -> (p, value) arrays."""
+    with open(path) as f:
+        rows = list(csv.DictReader(line for line in f if not line.startswith("#")))
+    table = {}
+    for column in rows[0]:
+        pairs = [(float(r["p"]), float(r[column])) for r in rows if r[column]]
+        table[column] = tuple(np.array(v) for v in zip(*pairs))
+    return table
+
+
+def points(series, group, name):
+    """N -> [(p, mean, std, series)] sorted by p, over the series that have group/name."""
+    out = {}
+    for s in series:
+        value = scalar(s, group, name)
+        if value is not None:
+            out.setdefault(s.n, []).append((s.p, value[0], value[1], s))
+    return {n: sorted(rows, key=lambda r: r[0]) for n, rows in sorted(out.items())}
+
+
+def paper_markers(ax, paper, column, scale, x=None):
+    """The paper's values (black open squares, with its sd where it gives one); at x (e.g.
+    w / A) instead of p where given."""
+    p, v = paper[column]
+    sd_column = (column[: -len("_percent")] + "_sd_percent" if column.endswith("_percent")
+                 else column + "_sd")
+    sd = paper.get(sd_column)
+    yerr = sd[1] * scale if sd is not None and len(sd[1]) == len(v) else None
+    ax.errorbar(p if x is None else x(p), v * scale, yerr=yerr, fmt="s", mfc="none", color="k",
+                ms=6, capsize=2, label=PAPER, zorder=1.5)  # behind the results' points
+
+
+def draw_points(ax, rows, x_of=lambda s: s.p, label=""):
+    """One (p, N) series per point: coloured by p, marked by N, error bar its std; a grey line
+    joins the points of one N on each side of the sphere (p <= 1, p >= 1: the cusp at p = 1 is
+    not bridged) where a side has three points or more."""
+    xs = np.array([x_of(r[3]) for r in rows])
+    ys = np.array([r[1] for r in rows])
+    ps = np.array([r[0] for r in rows])
+    for side in (ps <= 1, ps >= 1):
+        if side.sum() >= 3:
+            ax.plot(xs[side], ys[side], "-", color="0.6", lw=0.8, zorder=1)
+    for x, (p, mean, std, s) in zip(xs, rows):
+        ax.errorbar([x], [mean], yerr=[std], fmt=s.style["marker"], color=s.style["color"],
+                    ms=5, capsize=3, zorder=3)
+    ax.plot([], [], rows[0][3].style["marker"], ls="none", color="0.4", label=label)
+
+
+def several_p(series):
+    """True with two values of p or more (the figures against p need them)."""
+    return len({s.p for s in series}) >= 2
+
+
+def panels_with_data(series):
+    """The PANELS the series have values for."""
+    return [panel for panel in PANELS if points(series, panel[0], panel[1])]
+
+
+def n_label(rows):
+    """'N = 250 (mean +- std of 3 inputs)', or '... (one input per p)'."""
+    counts = sorted({len(r[3].files) for r in rows})
+    if counts == [1]:
+        return f"N = {rows[0][3].n} (one input per p)"
+    return f"N = {rows[0][3].n} (mean $\\pm$ std of {'/'.join(map(str, counts))} inputs)"
+
+
+def versus_p(series):
+    """Every PANELS quantity the results have against p, with two or more p."""
+    panels = panels_with_data(series) if several_p(series) else []
+    if not panels:
+        return None
+    paper = paper_values()
+    rows, columns = (len(panels) + 3) // 4, min(4, len(panels))
+    fig, axes = new_figure(columns, rows, width=3.9, height=3.3)
+    for ax, (group, name, ylabel, column, scale) in zip(axes.ravel(), panels):
+        for n, rows_n in points(series, group, name).items():
+            draw_points(ax, rows_n, label=n_label(rows_n))
+        ps = [s.p for s in series]
+        if column is not None:
+            paper_markers(ax, paper, column, scale)
+            ps += list(paper[column][0])
+        else:
+            ax.set_title("paper: a figure only, no table", fontsize=8)
+        p_axis(ax, ps)
+        ax.set(xlabel=r"$p$", ylabel=ylabel)
+    for ax in axes.ravel()[len(panels):]:
+        ax.set_axis_off()
+    note(fig, "Against the superball exponent p (every quantity dimensionless): points coloured "
+              "by p as in the other figures, marked by N, error bars the ensemble's std, grey "
+              "lines joining three points or more on one side of p = 1; squares: the paper "
+              "(Maher et al.)")
+    return fig
+
+
+def p_axis(ax, ps):
+    """A log p axis where p spans more than a factor 3, labelled in plain numbers."""
+    if max(ps) / min(ps) > 3.0:
+        ax.set_xscale("log")
+        ax.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
+        ax.xaxis.set_minor_formatter(ticker.NullFormatter())
+
+
+def phi_vs_width(series):
+    """phi against w / A, the mean width over the major axis A = 2R (paper Fig. 6, superballs;
+    the paper's spheroids are Donev et al.'s data, not in this project)."""
+    from .figures_shape import width_over_major_axis
+    rows = points(series, None, "phi")
+    if not several_p(series) or not rows:
+        return None
+    fig, axes = new_figure(1, width=6.0, height=4.2)
+    ax = axes[0, 0]
+    for n, rows_n in rows.items():
+        draw_points(ax, rows_n, x_of=lambda s: 1.0 / s.major_axis_over_width(),
+                    label=n_label(rows_n))
+    paper_markers(ax, paper_values(), "phi", 1.0,
+                  x=lambda p: np.array([width_over_major_axis(q) for q in p]))
+    ax.set(xlabel=r"$\bar w/A$ ($A = 2R$)", ylabel=r"$\phi$")
+    note(fig, "Packing fraction against the mean width over A = 2R (the paper's major axis), "
+              "lines joining p ≤ 1 and p ≥ 1 separately (three points or more); the "
+              "paper's points at the w/A of their p (sbpack's mean width). The paper's oblate "
+              "and prolate spheroids are not drawn (their data, Donev et al., are not in this "
+              "project)")
+    return fig
