@@ -103,6 +103,7 @@ class CommandLine {
     CLI::App* schema_ = nullptr;
     bool schemaMarkdown_ = false;
     bool schemaJson_ = false;
+    bool schemaPacking_ = false;
 };
 
 CommandLine::CommandLine(const Communicator& communicator) : communicator_(communicator) {
@@ -374,10 +375,14 @@ void CommandLine::addSubcommands() {
     convert_->add_option("IN", convertIn_, "packing to read (.h5 or .txt)")->required();
     convert_->add_option("OUT", convertOut_, "packing to write (.h5, .txt or .xyz)")->required();
     schema_ = app_.add_subcommand(
-        "schema", "print the results file's schema: groups, names, units (docs/results-schema.md)");
+        "schema",
+        "print the results file's schema: groups, names, units (docs/results-schema.md);\n"
+        "with --packing, the packing file's (docs/packing-schema.md)");
     CLI::Option* markdown = schema_->add_flag("--markdown", schemaMarkdown_,
                                               "Markdown, as docs/results-schema.md (the default)");
     schema_->add_flag("--json", schemaJson_, "JSON, for programs")->excludes(markdown);
+    schema_->add_flag("--packing", schemaPacking_,
+                      "the packing file's schema instead (docs/packing-schema.md)");
 }
 
 /// What the options imply together, checked once all are read.
@@ -423,7 +428,7 @@ void CommandLine::parse(int argc, const char* const* argv) {
 int CommandLine::run(std::ostream& out, std::ostream& err) {
     if (info_->parsed()) return infoCommand(infoFiles_, infoContacts_, out, err);
     if (convert_->parsed()) return convertCommand(convertIn_, convertOut_, err);
-    if (schema_->parsed()) return schemaCommand(schemaJson_, out);
+    if (schema_->parsed()) return schemaCommand(schemaJson_, schemaPacking_, out);
     return analyzeCommand(settings_, communicator_);
 }
 

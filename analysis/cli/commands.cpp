@@ -6,6 +6,7 @@
 #include "io/text_io.hpp"
 #include "pipeline/run.hpp"
 #include "progress/progress.hpp"
+#include "schema/packing_schema_docs.hpp"
 #include "schema/results_schema.hpp"
 
 #include <cstdlib>
@@ -63,8 +64,11 @@ int convertCommand(const std::string& input, const std::string& output, std::ost
     return EXIT_SUCCESS;
 }
 
-int schemaCommand(bool json, std::ostream& out) {
-    out << (json ? schema::schemaJson() : schema::schemaMarkdown());
+int schemaCommand(bool json, bool packing, std::ostream& out) {
+    if (packing)
+        out << (json ? schema::packingSchemaJson() : schema::packingSchemaMarkdown());
+    else
+        out << (json ? schema::schemaJson() : schema::schemaMarkdown());
     return EXIT_SUCCESS;
 }
 

@@ -18,7 +18,8 @@ int analyzeCommand(const RunSettings& settings, const Communicator& communicator
 int infoCommand(const std::vector<std::string>& files, const ContactParameters& parameters,
                 std::ostream& out, std::ostream& err);
 int convertCommand(const std::string& input, const std::string& output, std::ostream& err);
-/// The results schema as Markdown (docs/results-schema.md) or, with `json`, as JSON.
-int schemaCommand(bool json, std::ostream& out);
+/// The results schema as Markdown (docs/results-schema.md) or, with `json`, as JSON; with
+/// `packing`, the packing file's (docs/packing-schema.md).
+int schemaCommand(bool json, bool packing, std::ostream& out);
 
 } // namespace sbpack

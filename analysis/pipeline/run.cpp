@@ -220,8 +220,11 @@ std::vector<FileResults> gatherFiles(IndexedFiles mine, const RunSettings& setti
     if (comm.size() == 1 || settings.distribute == Distribution::Grids) {
         parts.push_back(std::move(mine));
     } else {
-        // allGather: every rank takes part in the same collective; only rank 0 decodes.
-        const std::vector<std::string> bytes = comm.allGather(encodeFiles(mine));
+        // allGather: every rank takes part in the same collective; only rank 0 decodes. A record
+        // refused as incomplete (schema/record.hpp) stops every rank, so that none waits here.
+        std::string encoded;
+        collectively(comm, [&] { encoded = encodeFiles(mine); });
+        const std::vector<std::string> bytes = comm.allGather(encoded);
         if (comm.rank() == 0)
             for (const std::string& b : bytes)
                 parts.push_back(decodeFiles(b));

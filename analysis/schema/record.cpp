@@ -17,7 +17,29 @@ std::size_t valueIndex(const Field& f) {
     return f.type == Type::Float ? 3 : 4;
 }
 
+/// The required fields of `group` that `entries` (in the schema's order) lack.
+std::string missingFields(const Group& group, const std::vector<Entry>& entries) {
+    std::string missing;
+    auto set = entries.begin();
+    for (const Field& f : group.fields) {
+        if (set != entries.end() && set->field == &f) {
+            ++set;
+            continue;
+        }
+        if (!f.optional) missing += (missing.empty() ? "" : ", ") + std::string(f.name);
+    }
+    return missing;
+}
+
 } // namespace
+
+const std::vector<Entry>& Record::entries() const {
+    const std::string missing = missingFields(*group_, entries_);
+    if (!missing.empty())
+        throw std::logic_error("results schema: " + std::string(group_->path) +
+                               ": required fields not set: " + missing);
+    return entries_;
+}
 
 const Field& Record::field(std::string_view name) const {
     const Field* f = findField(*group_, name);

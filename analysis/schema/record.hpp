@@ -1,7 +1,8 @@
 #pragma once
 // One group's values, filled by name against the results schema (schema/results_schema.hpp):
 // a name the schema does not declare for the group, or a value of the wrong kind or type, is a
-// std::logic_error, so the writers can trust every record they are given.
+// std::logic_error, and so is reading the entries of a record that lacks a required field
+// (Field::optional false), so the writers can trust every record they are given.
 
 #include "schema/results_schema.hpp"
 
@@ -28,8 +29,10 @@ class Record {
     explicit Record(const Group& group) : group_(&group) {}
 
     const Group& group() const { return *group_; }
-    /// Entries in the schema's order.
-    const std::vector<Entry>& entries() const { return entries_; }
+    /// Entries in the schema's order: what every writer (the HDF5 file, the JSON summary, the
+    /// MPI gather, Python) reads. std::logic_error naming the group and each required field
+    /// (Field::optional false) that was not set: a stage must fill what the schema requires.
+    const std::vector<Entry>& entries() const;
 
     /// Sets field `name` (replacing an earlier value); numbers are stored as the schema's type
     /// (an Int field takes integers and bools only).

@@ -211,7 +211,7 @@ constexpr Field kSpreadability[] = {
     {"alpha_window_high", A, F, "1", "largest alpha over those windows"},
     {"alpha_pooled", A, F, "1",
      "ensembles only: alpha of the mean E(t) over the mean window (ln E interpolated in ln t)",
-     Pooled},
+     Pooled, true},
     {"t_fit_min", A, F, "w^2/D",
      "start of the alpha window: 10 / (Q_peak w)^2, the chi_V peak decayed (or --alpha-window)",
      Mean},
@@ -329,6 +329,11 @@ class EnsembleSchemas {
                             " over the files (n - 1; 0 for one file)"),
                        No, f.optional});
     }
+    /// A file never has it (optional there); every ensemble with the group does.
+    static void addPooled(std::vector<Field>& out, const Field& f) {
+        out.push_back(f);
+        out.back().optional = false;
+    }
     void addCurve(std::vector<Field>& out, const Field& f) {
         const std::string v(f.name);
         out.push_back({"bin_width_Q_w", A, F, "1",
@@ -350,7 +355,8 @@ class EnsembleSchemas {
             if (f.reduce == Reduce::MeanStd) addStatistics(o.fields, f);
             if (f.reduce == Reduce::Curve) addCurve(o.fields, f);
             if (f.reduce == Reduce::Pointwise) addStatistics(o.fields, f);
-            if (f.reduce == Reduce::Same || f.reduce == Reduce::Pooled) o.fields.push_back(f);
+            if (f.reduce == Reduce::Same) o.fields.push_back(f);
+            if (f.reduce == Reduce::Pooled) addPooled(o.fields, f);
         }
         o.group = {name, keep(std::move(path)), keep(std::move(title)), o.fields};
     }

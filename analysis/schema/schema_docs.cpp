@@ -30,7 +30,9 @@ One input or many: the same layout (one input makes `files/0` and `ensembles/0`)
 differ in `p` or `N` are never averaged together: each (p, N) is its own ensemble, numbered in the
 order of its first input, and sbanalyze warns when there is more than one. A group is present
 only when its analysis ran (`transport` is skipped, with a warning, where the paper's `zeta_2`
-interpolation leaves (0, 1]); a field marked *optional* only in the case its description gives.
+interpolation leaves (0, 1]); a field marked *optional* only in the case its description gives,
+every other field always (sbanalyze refuses to write a group that lacks one). The packing file's
+schema is docs/packing-schema.md.
 
 ## Units
 

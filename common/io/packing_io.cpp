@@ -8,7 +8,10 @@
 #include <charconv>
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <type_traits>
 
 namespace sbpack {
@@ -16,6 +19,8 @@ namespace sbpack {
 namespace fs = std::filesystem;
 
 namespace {
+
+using namespace packing_file;
 
 /// Relative tolerance between the stored phi and N v1 / L^3 recomputed on reading.
 constexpr double kPhiTolerance = 1e-9;
@@ -87,26 +92,37 @@ std::map<std::string, ProvenanceValue> readAttributeGroup(hid_t root, const std:
 /// it), at most 1000 a particle.
 std::vector<double> readPairRecords(hid_t root, const std::map<std::string, ProvenanceValue>& state,
                                     std::size_t particles, const std::string& file) {
-    const auto count = state.find("pair_records");
+    const auto count = state.find(kPairRecords);
     if (count == state.end()) return {};
     const auto* rows = std::get_if<std::int64_t>(&count->second);
     if (rows == nullptr || *rows < 0 || *rows > 1000 * static_cast<std::int64_t>(particles))
-        throw PackingFileError("'" + file + "': resume_state attribute 'pair_records' must be " +
-                               "an integer in [0, 1000 n_particles]");
+        throw PackingFileError("'" + file + "': " + kResumeState + " attribute '" + kPairRecords +
+                               "' must be an integer in [0, 1000 n_particles]");
     if (*rows == 0) return {};
-    return readMatrixDataset(openGroup(root, "resume_state").get(), "pair_records",
+    return readMatrixDataset(openGroup(root, kResumeState).get(), kPairRecords,
                              static_cast<std::size_t>(*rows), kPairRecordColumns);
 }
 
-/// Files written before `resume_state` kept it in the provenance as `state_*`: moved there.
-void moveEarlierResumeState(Packing& packing) {
-    const std::string prefix = "state_";
-    for (auto entry = packing.provenance.begin(); entry != packing.provenance.end();) {
-        if (entry->first.starts_with(prefix)) {
-            packing.resumeState[entry->first.substr(prefix.size())] = entry->second;
-            entry = packing.provenance.erase(entry);
-        } else {
-            ++entry;
+/// The attribute group `group` of `packing` (provenance or resume_state).
+std::map<std::string, ProvenanceValue>& attributeGroup(Packing& packing, std::string_view group) {
+    if (group == kProvenance) return packing.provenance;
+    if (group == kResumeState) return packing.resumeState;
+    throw std::logic_error("packing file: no attribute group '" + std::string(group) + "'");
+}
+
+/// The migration rows (io/packing_schema.hpp) of a file of `version` that lacks their group.
+void migrate(hid_t root, std::int64_t version, Packing& packing) {
+    for (const PackingMigration& m : packingMigrations()) {
+        if (m.version != version || hasLink(root, std::string(m.toGroup))) continue;
+        auto& from = attributeGroup(packing, m.fromGroup);
+        auto& to = attributeGroup(packing, m.toGroup);
+        for (auto entry = from.begin(); entry != from.end();) {
+            if (entry->first.starts_with(m.fromPrefix)) {
+                to[entry->first.substr(m.fromPrefix.size())] = entry->second;
+                entry = from.erase(entry);
+            } else {
+                ++entry;
+            }
         }
     }
 }
@@ -115,85 +131,83 @@ void moveEarlierResumeState(Packing& packing) {
 std::string fileContents(const Packing& packing, const std::string& name) {
     Hdf5Handle file = createFile(name);
     const hid_t root = file.get();
-    writeStringAttribute(root, "format", kPackingFormat);
-    writeInt64Attribute(root, "format_version", kPackingFormatVersion);
-    writeDoubleAttribute(root, "p", packing.p);
-    writeDoubleAttribute(root, "box_length", packing.boxLength);
-    writeDoubleAttribute(root, "semi_axis", packing.semiAxis);
-    writeInt64Attribute(root, "n_particles", static_cast<std::int64_t>(packing.size()));
-    writeDoubleAttribute(root, "phi", packing.packingFraction());
+    writeStringAttribute(root, kFormat, kPackingFormat);
+    writeInt64Attribute(root, kFormatVersion, kPackingFormatVersion);
+    writeDoubleAttribute(root, kP, packing.p);
+    writeDoubleAttribute(root, kBoxLength, packing.boxLength);
+    writeDoubleAttribute(root, kSemiAxis, packing.semiAxis);
+    writeInt64Attribute(root, kParticles, static_cast<std::int64_t>(packing.size()));
+    writeDoubleAttribute(root, kPhi, packing.packingFraction());
     if (packing.reducedPressure)
-        writeDoubleAttribute(root, "reduced_pressure", *packing.reducedPressure);
-    if (packing.seed) writeUint64Attribute(root, "seed", *packing.seed);
+        writeDoubleAttribute(root, kReducedPressure, *packing.reducedPressure);
+    if (packing.seed) writeUint64Attribute(root, kSeed, *packing.seed);
     if (!packing.generatorVersion.empty())
-        writeStringAttribute(root, "generator_version", packing.generatorVersion);
+        writeStringAttribute(root, kGeneratorVersion, packing.generatorVersion);
 
     std::vector<Vector3d> wrapped(packing.positions);
     for (Vector3d& r : wrapped)
         r = wrapIntoBox(r, packing.boxLength);
-    writeMatrixDataset(root, "positions", flatten(wrapped), 3);
+    writeMatrixDataset(root, kPositions, flatten(wrapped), 3);
     std::vector<double> quaternions;
     quaternions.reserve(4 * packing.size());
     for (const Quaterniond& q : packing.orientations)
         quaternions.insert(quaternions.end(), {q.w(), q.x(), q.y(), q.z()});
-    writeMatrixDataset(root, "orientations", quaternions, 4);
+    writeMatrixDataset(root, kOrientations, quaternions, 4);
     if (!packing.velocities.empty())
-        writeMatrixDataset(root, "velocities", flatten(packing.velocities), 3);
+        writeMatrixDataset(root, kVelocities, flatten(packing.velocities), 3);
     if (!packing.angularVelocities.empty())
-        writeMatrixDataset(root, "angular_velocities", flatten(packing.angularVelocities), 3);
-    if (!packing.provenance.empty()) writeAttributeGroup(root, "provenance", packing.provenance);
-    if (!packing.resumeState.empty())
-        writeAttributeGroup(root, "resume_state", packing.resumeState);
+        writeMatrixDataset(root, kAngularVelocities, flatten(packing.angularVelocities), 3);
+    if (!packing.provenance.empty()) writeAttributeGroup(root, kProvenance, packing.provenance);
+    if (!packing.resumeState.empty()) writeAttributeGroup(root, kResumeState, packing.resumeState);
     if (!packing.pairRecords.empty())
-        writeMatrixDataset(openGroup(root, "resume_state").get(), "pair_records",
-                           packing.pairRecords, kPairRecordColumns);
+        writeMatrixDataset(openGroup(root, kResumeState).get(), kPairRecords, packing.pairRecords,
+                           kPairRecordColumns);
     return fileImage(file, name);
 }
 
 Packing readContents(hid_t root, const std::string& file) {
-    const std::string format = readStringAttribute(root, "format");
+    const std::string format = readStringAttribute(root, kFormat);
     if (format != kPackingFormat)
         throw PackingFileError("'" + file + "': format is '" + format + "', expected '" +
                                kPackingFormat + "' (not an sbpack packing file)");
-    const std::int64_t version = readInt64Attribute(root, "format_version");
+    const std::int64_t version = readInt64Attribute(root, kFormatVersion);
     if (version != kPackingFormatVersion)
         throw PackingFileError("'" + file + "': format_version " + std::to_string(version) +
                                " is not supported (this build reads version " +
                                std::to_string(kPackingFormatVersion) + ")");
 
     Packing packing;
-    packing.p = readDoubleAttribute(root, "p");
-    packing.boxLength = readDoubleAttribute(root, "box_length");
-    packing.semiAxis = readDoubleAttribute(root, "semi_axis");
-    const std::int64_t n = readInt64Attribute(root, "n_particles");
+    packing.p = readDoubleAttribute(root, kP);
+    packing.boxLength = readDoubleAttribute(root, kBoxLength);
+    packing.semiAxis = readDoubleAttribute(root, kSemiAxis);
+    const std::int64_t n = readInt64Attribute(root, kParticles);
     if (n <= 0)
         throw InvalidPacking("'" + file + "': invalid packing: n_particles = " + std::to_string(n) +
                              " (no particles)");
-    const double phi = readDoubleAttribute(root, "phi");
-    if (hasAttribute(root, "reduced_pressure"))
-        packing.reducedPressure = readDoubleAttribute(root, "reduced_pressure");
-    if (hasAttribute(root, "seed")) packing.seed = readUint64Attribute(root, "seed");
-    if (hasAttribute(root, "generator_version"))
-        packing.generatorVersion = readStringAttribute(root, "generator_version");
+    const double phi = readDoubleAttribute(root, kPhi);
+    if (hasAttribute(root, kReducedPressure))
+        packing.reducedPressure = readDoubleAttribute(root, kReducedPressure);
+    if (hasAttribute(root, kSeed)) packing.seed = readUint64Attribute(root, kSeed);
+    if (hasAttribute(root, kGeneratorVersion))
+        packing.generatorVersion = readStringAttribute(root, kGeneratorVersion);
 
     const auto rows = static_cast<std::size_t>(n);
-    packing.positions = unflatten(readMatrixDataset(root, "positions", rows, 3));
-    const std::vector<double> q = readMatrixDataset(root, "orientations", rows, 4);
+    packing.positions = unflatten(readMatrixDataset(root, kPositions, rows, 3));
+    const std::vector<double> q = readMatrixDataset(root, kOrientations, rows, 4);
     packing.orientations.resize(rows);
     for (std::size_t i = 0; i < rows; ++i)
         packing.orientations[i] = Quaterniond(q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]);
-    if (hasLink(root, "velocities"))
-        packing.velocities = unflatten(readMatrixDataset(root, "velocities", rows, 3));
-    if (hasLink(root, "angular_velocities"))
-        packing.angularVelocities =
-            unflatten(readMatrixDataset(root, "angular_velocities", rows, 3));
-    if (hasLink(root, "provenance"))
-        packing.provenance = readAttributeGroup(root, "provenance", file);
-    if (hasLink(root, "resume_state")) {
-        packing.resumeState = readAttributeGroup(root, "resume_state", file);
+    if (hasLink(root, kVelocities))
+        packing.velocities = unflatten(readMatrixDataset(root, kVelocities, rows, 3));
+    if (hasLink(root, kAngularVelocities))
+        packing.angularVelocities = unflatten(readMatrixDataset(root, kAngularVelocities, rows, 3));
+    if (hasLink(root, kProvenance))
+        packing.provenance = readAttributeGroup(root, kProvenance, file);
+    if (hasLink(root, kResumeState)) {
+        packing.resumeState = readAttributeGroup(root, kResumeState, file);
         packing.pairRecords = readPairRecords(root, packing.resumeState, rows, file);
-    } else
-        moveEarlierResumeState(packing);
+    }
+    migrate(root, version, packing);
 
     validatePacking(packing, file);
     const double expectedPhi = packing.packingFraction();

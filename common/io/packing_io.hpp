@@ -1,9 +1,10 @@
 #pragma once
-// The HDF5 packing file shared by every tool (docs/design.md §4).
+// The HDF5 packing file shared by every tool (docs/design.md §4; its entries declared in
+// io/packing_schema.hpp).
 
+#include "io/packing_schema.hpp"
 #include "packing/packing.hpp"
 
-#include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 
@@ -20,9 +21,6 @@ class PackingFileError : public std::runtime_error {
 /// Throws PackingFileError unless `file` is an existing regular file (after symlinks): a
 /// directory, FIFO, device or socket is refused before it is opened, so that no reader blocks.
 void checkInputFile(const std::filesystem::path& file);
-
-inline constexpr const char* kPackingFormat = "sbpack.packing";
-inline constexpr std::int64_t kPackingFormatVersion = 1;
 
 /// Reads and validates a packing file; normalises the quaternions and wraps positions into
 /// [0, L). Throws PackingFileError or InvalidPacking.

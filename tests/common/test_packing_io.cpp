@@ -4,6 +4,7 @@
 #include "io/atomic_file.hpp"
 #include "io/hdf5_handles.hpp"
 #include "io/packing_io.hpp"
+#include "io/packing_schema.hpp"
 #include "io/text_io.hpp"
 #include "packing/validation.hpp"
 
@@ -149,15 +150,21 @@ TEST_F(PackingIo, AnEarlierFilesResumeStateInTheProvenanceIsMovedToItsGroup) {
     EXPECT_EQ(read.provenance.at("gamma"), ProvenanceValue(0.001));
 }
 
+/// makePacking() without any of the file's optional entries.
+Packing minimalPacking() {
+    Packing packing = makePacking();
+    packing.velocities.clear();
+    packing.angularVelocities.clear();
+    packing.reducedPressure.reset();
+    packing.seed.reset();
+    packing.generatorVersion.clear();
+    packing.provenance.clear();
+    packing.resumeState.clear();
+    return packing;
+}
+
 TEST_F(PackingIo, OptionalFieldsStayAbsent) {
-    Packing original = makePacking();
-    original.velocities.clear();
-    original.angularVelocities.clear();
-    original.reducedPressure.reset();
-    original.seed.reset();
-    original.generatorVersion.clear();
-    original.provenance.clear();
-    original.resumeState.clear();
+    const Packing original = minimalPacking();
     const fs::path path = file("minimal.h5");
     writePacking(original, path);
     const Packing read = readPacking(path);
@@ -169,6 +176,43 @@ TEST_F(PackingIo, OptionalFieldsStayAbsent) {
     EXPECT_TRUE(read.resumeState.empty());
     EXPECT_FALSE(hasLink(openFileReadOnly(path).get(), "velocities"));
     EXPECT_FALSE(hasLink(openFileReadOnly(path).get(), "resume_state"));
+}
+
+/// Whether the file `root` holds `e` (io/packing_schema.hpp).
+bool holds(hid_t root, const PackingEntry& e) {
+    const std::string name(e.name), group(e.group);
+    const auto in = [&](hid_t where) {
+        return e.kind == PackingKind::Attribute ? hasAttribute(where, name) : hasLink(where, name);
+    };
+    if (group.empty()) return in(root);
+    return hasLink(root, group) && in(openGroup(root, group).get());
+}
+
+/// The file at `path` holds the table's entries (every one, or the required ones only) and, at
+/// its root, nothing else.
+void expectTheTableEntries(const fs::path& path, bool optionalToo) {
+    const Hdf5Handle h5 = openFileReadOnly(path);
+    std::size_t attributes = 0, links = 0;
+    for (const PackingEntry& e : packingEntries()) {
+        const bool expected = optionalToo || !e.optional;
+        EXPECT_EQ(holds(h5.get(), e), expected) << e.group << "/" << e.name;
+        if (expected && e.group.empty()) ++(e.kind == PackingKind::Attribute ? attributes : links);
+    }
+    EXPECT_EQ(attributeNames(h5.get()).size(), attributes);
+    H5G_info_t info;
+    ASSERT_GE(H5Gget_info(h5.get(), &info), 0);
+    EXPECT_EQ(info.nlinks, links);
+}
+
+TEST_F(PackingIo, TheWriterWritesTheDeclaredEntriesAndNoOthers) { // issue 45
+    Packing full = makePacking();
+    full.resumeState[packing_file::kPairRecords] = std::int64_t{1};
+    full.pairRecords.assign(kPairRecordColumns, 0.5);
+    writePacking(full, file("full.h5"));
+    expectTheTableEntries(file("full.h5"), true);
+    EXPECT_EQ(readPacking(file("full.h5")).pairRecords, full.pairRecords);
+    writePacking(minimalPacking(), file("minimal.h5"));
+    expectTheTableEntries(file("minimal.h5"), false);
 }
 
 TEST_F(PackingIo, WritesTheSchemaAttributes) {

@@ -1,0 +1,149 @@
+#include "io/packing_schema.hpp"
+
+#include "packing/packing.hpp"
+
+namespace sbpack {
+
+namespace {
+
+using namespace packing_file;
+
+constexpr PackingKind A = PackingKind::Attribute;
+constexpr PackingKind D = PackingKind::Dataset;
+constexpr PackingKind G = PackingKind::Group;
+constexpr PackingType F = PackingType::Float64;
+constexpr PackingType I = PackingType::Int64;
+constexpr PackingType U = PackingType::UInt64;
+constexpr PackingType S = PackingType::String;
+
+// The root's attributes, its datasets, then the groups (docs/design.md §4).
+constexpr PackingEntry kEntries[] = {
+    {.name = kFormat, .kind = A, .type = S, .description = "\"sbpack.packing\""},
+    {.name = kFormatVersion,
+     .kind = A,
+     .type = I,
+     .units = "1",
+     .description = "1 (this layout); a reader refuses any other"},
+    {.name = kP, .kind = A, .type = F, .units = "1", .description = "superball exponent, >= 0.5"},
+    {.name = kBoxLength,
+     .kind = A,
+     .type = F,
+     .units = "length",
+     .description = "cubic box edge L"},
+    {.name = kSemiAxis,
+     .kind = A,
+     .type = F,
+     .units = "length",
+     .description = "semi-axis R of every particle (major-axis length D = 2 R <= L)"},
+    {.name = kParticles,
+     .kind = A,
+     .type = I,
+     .units = "1",
+     .description = "N > 0, the rows of each per-particle dataset"},
+    {.name = kPhi,
+     .kind = A,
+     .type = F,
+     .units = "1",
+     .description =
+         "packing fraction N v1 / L^3; a reader refuses one off by more than 1e-9 of it"},
+    {.name = kReducedPressure,
+     .kind = A,
+     .type = F,
+     .units = "1",
+     .description = "P = PV / (N kT) when the packing was written (sbgen; docs/design.md §3), > "
+                    "0; the contact tolerance that resolves the network follows it",
+     .optional = true},
+    {.name = kSeed,
+     .kind = A,
+     .type = U,
+     .units = "1",
+     .description = "sbgen: the run's random seed (--seed)",
+     .optional = true},
+    {.name = kGeneratorVersion,
+     .kind = A,
+     .type = S,
+     .description = "sbgen: the version of the program that wrote the packing",
+     .optional = true},
+    {.name = kPositions,
+     .kind = D,
+     .type = F,
+     .units = "length",
+     .description = "centroids r, wrapped into [0, L) on writing and on reading",
+     .rows = "N",
+     .columns = 3},
+    {.name = kOrientations,
+     .kind = D,
+     .type = F,
+     .units = "1",
+     .description = "unit quaternions (w, x, y, z) rotating body to lab frame, x_lab = r + R_b(q) "
+                    "x_body; normalised on reading",
+     .rows = "N",
+     .columns = 4},
+    {.name = kVelocities,
+     .kind = D,
+     .type = F,
+     .units = "length/time",
+     .description = "sbgen: velocities (m = kT = 1)",
+     .optional = true,
+     .rows = "N",
+     .columns = 3},
+    {.name = kAngularVelocities,
+     .kind = D,
+     .type = F,
+     .units = "1/time",
+     .description = "sbgen, p != 1: angular velocities in the lab frame",
+     .optional = true,
+     .rows = "N",
+     .columns = 3},
+    {.name = kProvenance,
+     .kind = G,
+     .description = "scalar attributes (int64, float64 or string): the generator's parameters and "
+                    "run log; sbgen's are declared in generator/protocol/checkpoint_entries",
+     .optional = true},
+    {.name = kResumeState,
+     .kind = G,
+     .description = "what sbgen --resume needs beyond the particles, none of it provenance: scalar "
+                    "attributes as provenance's (the format \"sbgen.state/1\", the phase, the jam "
+                    "watches and the growth clock; declared in generator/protocol/"
+                    "checkpoint_entries)",
+     .optional = true},
+    {.group = kResumeState,
+     .name = kPairRecords,
+     .kind = A,
+     .type = I,
+     .units = "1",
+     .description = "a superball run's checkpoint: the rows of the dataset pair_records, at most "
+                    "1000 N (none without it)",
+     .optional = true},
+    {.group = kResumeState,
+     .name = kPairRecords,
+     .kind = D,
+     .type = F,
+     .units = "1",
+     .description = "the predictor's pair records (docs/design.md §3, \"Witness-point "
+                    "certificates\"), ascending pairs: i, j (particle indices, i < j), the last "
+                    "normal from i to j (unit, or zero where none), the witness points in i's and "
+                    "j's body frames at semi-axis 1, the bodies' accumulated rotation angles since "
+                    "the checkpoint's state (negative, or NaN where the record has no witness)",
+     .optional = true,
+     .rows = kPairRecords,
+     .columns = kPairRecordColumns},
+};
+
+constexpr PackingMigration kMigrations[] = {
+    {1, kProvenance, "state_", kResumeState,
+     "files written before the group resume_state (issue 17) kept its attributes in provenance "
+     "as state_*"},
+};
+
+} // namespace
+
+std::span<const PackingEntry> packingEntries() {
+    return kEntries;
+}
+
+std::span<const PackingMigration> packingMigrations() {
+    return kMigrations;
+}
+
+} // namespace sbpack
