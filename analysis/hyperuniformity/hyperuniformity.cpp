@@ -82,6 +82,13 @@ HyperuniformityResult Hyperuniformity::compute(std::span<const DiscreteSpectrum>
     for (const DiscreteSpectrum& s : members)
         phi += s.phi / static_cast<double>(members.size());
     fillCurves(r, curve, phi);
+    if (parameters_.window && parameters_.window->tMax > r.cutoffTime)
+        throw std::domain_error(
+            "alpha window: --alpha-window ends at t D / w^2 = " +
+            std::to_string(parameters_.window->tMax) + ", past the box's cutoff time " +
+            std::to_string(r.cutoffTime) +
+            " (beyond it E(t) is the smallest wave vectors' decay, not the packing's): end it "
+            "there or analyse a larger box");
     r.window = parameters_.window ? *parameters_.window : findExponentWindow(curve, peak.qw);
     r.alpha = estimateExponent(curve, members, r.window, parameters_.replicas, parameters_.seed);
     fitSmallQ(r, members);

@@ -63,8 +63,9 @@ class Hyperuniformity {
 
     /// The analysis of `members` pooled (one member: one box): E(t) is their mean, and the fits
     /// of chi_V take the wave vectors of every member together. Throws std::domain_error when
-    /// there is no alpha window or too few wave vectors to fit (the box or the grid is too
-    /// small; the message names the option to change).
+    /// there is no alpha window, a given one ends past the box's cutoff time, or the fit window
+    /// holds wave vectors at one |Q| only (the box or the grid is too small; the message names
+    /// the option to change).
     HyperuniformityResult compute(std::span<const DiscreteSpectrum> members,
                                   const SpectralPeak& peak) const;
 

@@ -29,12 +29,30 @@ SmallQPoints smallQPoints(const DiscreteSpectrum& spectrum, double qMaxW) {
     return p;
 }
 
+namespace {
+
+/// The distinct |Q| among the points: values within 1e-3 of each other are one (the same shell
+/// |n|^2 of the members of an ensemble, whose boxes differ by their phi; shells of |n|^2 <= 500
+/// lie further apart).
+int distinctMagnitudes(std::vector<double> qw) {
+    std::sort(qw.begin(), qw.end());
+    int distinct = 0;
+    for (std::size_t i = 0; i < qw.size(); ++i)
+        if (i == 0 || qw[i] > qw[i - 1] * (1.0 + 1e-3)) ++distinct;
+    return distinct;
+}
+
+} // namespace
+
 PowerLawFit fitFixedExponent(const SmallQPoints& points, double alpha) {
     const int n = static_cast<int>(points.qw.size());
-    if (n < 3)
+    const int magnitudes = distinctMagnitudes(points.qw);
+    if (magnitudes < 2 || n < 3) // a0 and a1 through one |Q| are not determined
         throw std::domain_error(
-            "small-Q fit: " + std::to_string(n) +
-            " wave vectors in the fit window; raise --fit-qmax or analyse a larger box");
+            "small-Q fit: the " + std::to_string(n) + " wave vectors in the fit window lie at " +
+            std::to_string(magnitudes) +
+            " distinct |Q| (a0 + a1 Q^alpha at the spreadability's alpha needs 2, and 3 wave "
+            "vectors); raise --fit-qmax or analyse a larger box");
     Eigen::MatrixXd x(n, 2);
     Eigen::VectorXd y(n);
     for (int i = 0; i < n; ++i) {

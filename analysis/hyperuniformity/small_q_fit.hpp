@@ -31,8 +31,8 @@ struct PowerLawFit {
     int points = 0;
 };
 
-/// a0, a1 at fixed alpha (linear least squares). Throws std::domain_error with fewer than 3
-/// points (the message names --fit-qmax).
+/// a0, a1 at fixed alpha (linear least squares). Throws std::domain_error where the points lie at
+/// one |Q| (a0 and a1 not determined) or are fewer than 3 (the message names --fit-qmax).
 PowerLawFit fitFixedExponent(const SmallQPoints& points, double alpha);
 
 /// The free three-parameter fit: alpha scanned over [0, 4] by 0.005, a0 and a1 linear at each.

@@ -24,7 +24,9 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 #include <random>
+#include <string>
 
 namespace sbpack {
 namespace {
@@ -206,8 +208,10 @@ TEST(ExactSpectralDensity, VoxelsConvergeToIt) {
     EXPECT_LT(error[1], 0.5 * error[0]);
 }
 
-/// alpha of an exact spectrum through the whole chain (the window found from the chi peak).
-HyperuniformityResult exactChain(const Packing& packing, double maxQw) {
+/// alpha of an exact spectrum through the whole chain (the window found from the chi peak, or
+/// `window` where given).
+HyperuniformityResult exactChain(const Packing& packing, double maxQw,
+                                 std::optional<ExponentWindow> window = std::nullopt) {
     ExactSpectralDensityParameters parameters;
     parameters.maxQw = maxQw;
     const ExactSpectralDensityResult exact =
@@ -217,6 +221,7 @@ HyperuniformityResult exactChain(const Packing& packing, double maxQw) {
     const ShellAverage chi = shellAverage(exact.modes, shells - 1);
     HyperuniformityParameters hp;
     hp.replicas = 40;
+    hp.window = window;
     return Hyperuniformity(hp).compute(std::span(&s, 1),
                                        spectralPeak(chi.q, chi.value, exact.meanWidth));
 }
@@ -233,6 +238,23 @@ TEST(Hyperuniformity, PerturbedLatticeHasAlphaNearTwo) {
     EXPECT_LT(r.alpha.alpha, 2.3);
     EXPECT_GT(r.alpha.standardError, 0.0);
     EXPECT_LT(r.window.tMin, r.window.tMax);
+}
+
+TEST(Hyperuniformity, AWindowPastTheCutoffTimeIsRefused) {
+    // The perturbed lattice's box of 16: t_c = (L / (2 pi w))^2 with w = 0.3. A window ending
+    // there is taken; one ending past it is refused, not fitted to the smallest wave vectors'
+    // decay (issue 42: alpha_window=(1, 5.8) on N = 200, t_c = 0.68, returned 5.02).
+    Packing packing = testing::latticePacking(1.0, 16, 1.0, 0.5, 31, true);
+    packing.semiAxis = 0.15;
+    const double cutoff = std::pow(16.0 / (2 * kPi * 0.3), 2);
+    const HyperuniformityResult r = exactChain(packing, 3.0, ExponentWindow{1.0, 0.999 * cutoff});
+    EXPECT_NEAR(r.cutoffTime, cutoff, 1e-9 * cutoff);
+    try {
+        exactChain(packing, 3.0, ExponentWindow{1.0, 1.001 * cutoff});
+        ADD_FAILURE() << "a window past the cutoff time was fitted";
+    } catch (const std::domain_error& e) {
+        EXPECT_NE(std::string(e.what()).find("past the box's cutoff time"), std::string::npos);
+    }
 }
 
 TEST(Hyperuniformity, RandomSequentialAdditionIsNotHyperuniform) {
@@ -284,6 +306,31 @@ TEST(SmallQFit, RecoversAnExactPowerLaw) {
     EXPECT_NEAR(spread.hMin, 0.01, 1e-10);
     EXPECT_NEAR(spread.hMax, 0.01, 1e-10);
     EXPECT_THROW(fitFixedExponent(points.upTo(0.1), 0.5), std::domain_error);
+}
+
+TEST(SmallQFit, OneDistinctMagnitudeIsRefused) {
+    // Three members' wave vectors at one shell (their boxes 3e-4 apart): a0 + a1 Q^alpha through
+    // one |Q| is not determined, however many wave vectors (issue 42: N = 300 printed
+    // H = 0 +- 1.5e6); a second shell determines it exactly.
+    SmallQPoints points;
+    const auto add = [&](double q) {
+        for (const double member : {1.0, 1.0003, 0.9997})
+            for (int k = 0; k < 3; ++k) {
+                points.qw.push_back(q * member);
+                points.chi.push_back(2e-4 + 1e-3 * std::pow(q * member, 0.55));
+            }
+    };
+    add(1.0);
+    try {
+        fitFixedExponent(points, 0.55);
+        ADD_FAILURE() << "one shell was fitted";
+    } catch (const std::domain_error& e) {
+        EXPECT_NE(std::string(e.what()).find("1 distinct |Q|"), std::string::npos) << e.what();
+    }
+    add(std::sqrt(2.0));
+    const PowerLawFit fit = fitFixedExponent(points, 0.55);
+    EXPECT_NEAR(fit.a0, 2e-4, 1e-14);
+    EXPECT_NEAR(fit.a1, 1e-3, 1e-14);
 }
 
 } // namespace
