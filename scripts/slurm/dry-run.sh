@@ -8,7 +8,7 @@ count=$1 work=$2 sbgen=$3 sbanalyze=$4 mpirun=${5:-}
 here=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work" && mkdir -p "$work"
 export SBPACK_OUT=$work/out SBPACK_SCRATCH=$work/scratch SBPACK_SBGEN=$sbgen
-export SBPACK_SBANALYZE=$sbanalyze SLURM_ARRAY_JOB_ID=dry SBPACK_REQUEUE=echo
+export SBPACK_SBANALYZE=$sbanalyze SLURM_ARRAY_JOB_ID=dry SBPACK_REQUEUE=echo SBPACK_COUNT=$count
 mkdir -p "$SBPACK_OUT"
 for ((task = 1; task <= count; ++task)); do
     SLURM_ARRAY_TASK_ID=$task bash "$here/sbgen-array.sbatch"
