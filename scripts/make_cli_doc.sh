@@ -135,14 +135,14 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   twice is refused, and an error names the file it came from. The results
   file, the JSON summary and the `.vdb` files are written to temporaries and renamed together at
   the end.
-- **`hyper` skipped**: a box too small for a long-time window, or a fit window with too few wave
-  vectors, skips `hyper` for that file; the warning names the option to change
-  (`--alpha-window`, `--fit-qmax`, `--voxels`).
+- **`hyper` skipped**: a box too small for a long-time window, a given `--alpha-window` that ends
+  past the box's cutoff time, or a fit window whose wave vectors lie at one `|Q|`, skips `hyper`
+  for that file; the warning names the option to change (`--alpha-window`, `--fit-qmax`,
+  `--voxels`).
 - **Under `mpirun`** (builds with `-DSBPACK_WITH_MPI=ON`; docs/scale-out.md): `--distribute
-  grids` also refuses `--pores refined|exact`. The test `slurm_preemption`
-  (`tests/slurm_preemption.sh`) sends SIGTERM to a running Slurm array task, as `--signal=B:TERM`
-  does; the task saves its checkpoint and requeues itself, and the requeued task resumes to the
-  uninterrupted task's packing, bit for bit.
+  grids` also refuses `--pores refined|exact`. Under Slurm (scripts/slurm/, docs/scale-out.md),
+  preemption, `scontrol requeue` and the time-limit warning resume bit for bit (tests
+  `slurm_preemption` and, against a real Slurm, `slurm_real`).
 
 ### Files
 

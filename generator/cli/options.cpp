@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 
 #include <map>
+#include <memory>
 #include <set>
 #include <stdexcept>
 
@@ -36,13 +37,24 @@ SIGINT or SIGTERM wrote a checkpoint (to --checkpoint, else OUT with .checkpoint
 stops the run at the end of its window, so the checkpoint resumes bit for bit; a second one
 stops it at once (that checkpoint resumes the run, not bit for bit).)";
 
+/// CLI11's help without its generic "Usage: sbgen [OPTIONS]" line: the description carries
+/// sbgen's own two usage lines.
+class HelpFormatter : public CLI::Formatter {
+  public:
+    std::string make_usage(const CLI::App* /*app*/, std::string /*name*/) const override {
+        return "";
+    }
+};
+
 /// sbgen's options, each defined once (CLI11); values are parsed by common/cli/option_values so
 /// every message names the option.
 class GeneratorCommandLine {
   public:
     GeneratorCommandLine() {
         app_.footer(kFooter);
-        app_.get_formatter()->column_width(26);
+        auto help = std::make_shared<HelpFormatter>();
+        help->column_width(26);
+        app_.formatter(help);
         app_.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
         app_.add_flag("--version", options_.version, "print the version and exit");
         app_.add_flag("--quiet", options_.quiet, "no progress lines on stderr");
@@ -55,8 +67,10 @@ class GeneratorCommandLine {
     const std::set<std::string>& protocolOptions() const { return protocolOptions_; }
 
   private:
-    /// A protocol option: `set` parses its value; noted, since --resume refuses them.
-    template <class Set> void protocol(const char* name, Set set, const char* help) {
+    /// A protocol option, its value named `placeholder` in the help: `set` parses it; noted, since
+    /// --resume refuses them.
+    template <class Set>
+    void protocol(const char* name, const char* placeholder, Set set, const char* help) {
         app_.add_option_function<std::string>(
                 name,
                 [this, name, set](const std::string& v) {
@@ -64,7 +78,7 @@ class GeneratorCommandLine {
                     set(name, v);
                 },
                 help)
-            ->type_name("X");
+            ->type_name(placeholder);
     }
     void addProtocolOptions();
     void addFileOptions();
@@ -77,40 +91,40 @@ class GeneratorCommandLine {
 void GeneratorCommandLine::addProtocolOptions() {
     ProtocolParameters& p = options_.protocol;
     protocol(
-        "--p", [&p](auto n, auto v) { p.p = parseNumber(n, v); },
+        "--p", "P", [&p](auto n, auto v) { p.p = parseNumber(n, v); },
         "superball exponent in (0.5, 1000] (default 1: spheres, exact fast path;\n"
         "otherwise rotating superballs); practical up to 10, above it a warning");
     protocol(
-        "--n",
+        "--n", "N",
         [&p](auto n, auto v) {
             p.particles = static_cast<int>(parseInteger(n, v, ProtocolParameters::kFewestParticles,
                                                         ProtocolParameters::kMostParticles));
         },
         "number of particles (default 1000)");
     protocol(
-        "--seed",
+        "--seed", "S",
         [&p](auto n, auto v) {
             p.seed = static_cast<std::uint64_t>(parseInteger(n, v, 0, std::int64_t(1) << 53));
         },
         "random seed (default 1); same seed and options: identical packing");
     protocol(
-        "--phi-init", [&p](auto n, auto v) { p.phiInit = parseNumber(n, v); },
+        "--phi-init", "PHI", [&p](auto n, auto v) { p.phiInit = parseNumber(n, v); },
         "initial packing fraction in (0, 0.5) (default 0.2, as the paper)");
     protocol(
-        "--gamma-fast", [&p](auto n, auto v) { p.gammaFast = parseNumber(n, v); },
+        "--gamma-fast", "GAMMA", [&p](auto n, auto v) { p.gammaFast = parseNumber(n, v); },
         "growth rate until --pressure-switch (default: the paper's protocol at --p,\n"
         "0.0112 for spheres, 0.016-0.033 for superballs: the rate that gives the\n"
         "paper's phi, bench/RESULTS.md, \"Fidelity\", E8)");
     protocol(
-        "--gamma-slow", [&p](auto n, auto v) { p.gammaSlow = parseNumber(n, v); },
+        "--gamma-slow", "GAMMA", [&p](auto n, auto v) { p.gammaSlow = parseNumber(n, v); },
         "growth rate from there to --pressure-final (default 1e-4 for spheres and, for\n"
         "superballs, the paper's protocol at --p, 4.4e-3 to 1e-2: the rate that gives\n"
         "the paper's Z, bench/RESULTS.md, \"Fidelity\", E11)");
     protocol(
-        "--pressure-switch", [&p](auto n, auto v) { p.pressureSwitch = parseNumber(n, v); },
+        "--pressure-switch", "P", [&p](auto n, auto v) { p.pressureSwitch = parseNumber(n, v); },
         "reduced pressure at which growth slows (default 1e6)");
     protocol(
-        "--window", [&p](auto n, auto v) { p.collisionsPerWindow = parseNumber(n, v); },
+        "--window", "W", [&p](auto n, auto v) { p.collisionsPerWindow = parseNumber(n, v); },
         "collisions per particle between thermostat rescalings and pressure\n"
         "estimates (default 10)");
 }
