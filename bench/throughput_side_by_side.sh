@@ -4,20 +4,21 @@
 # just past the switch pressure (the fast phase: --pressure-final must exceed the switch), then
 # to the default final pressure. Prints, per run, collisions, CPU seconds and collisions per CPU
 # second of each build and NEW over BASE (bench/RESULTS.md, "Witness-point certificates").
-# usage: bench/throughput_side_by_side.sh BASE_SBGEN NEW_SBGEN "P..." "SEED..." [N] [SECONDS_CAP]
+# PHASES (default "fast whole"): "fast" alone for exponents whose whole runs take hours.
+# usage: bench/throughput_side_by_side.sh BASE_SBGEN NEW_SBGEN "P..." "SEED..." [N] [SECONDS_CAP] [PHASES]
 set -euo pipefail
 if [ $# -lt 4 ]; then
-    echo "usage: $0 BASE_SBGEN NEW_SBGEN \"P...\" \"SEED...\" [N] [SECONDS_CAP]" >&2
+    echo "usage: $0 BASE_SBGEN NEW_SBGEN \"P...\" \"SEED...\" [N] [SECONDS_CAP] [PHASES]" >&2
     exit 1
 fi
-base=$1 new=$2 exponents=$3 seeds=$4 n=${5:-1000} cap=${6:-36000}
+base=$1 new=$2 exponents=$3 seeds=$4 n=${5:-1000} cap=${6:-36000} phases=${7:-fast whole}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 echo "| p | seed | phase | base collisions | base CPU s | base rate | new collisions | new CPU s | new rate | new / base |"
 echo "|---|---|---|---:|---:|---:|---:|---:|---:|---:|"
 for p in $exponents; do
     for seed in $seeds; do
-        for phase in fast whole; do
+        for phase in $phases; do
             extra=()
             [ "$phase" = fast ] && extra=(--pressure-final 1.01e6) # just past the switch at 1e6
             for build in base new; do
