@@ -378,11 +378,17 @@ void CommandLine::addSubcommands() {
         "schema",
         "print the results file's schema: groups, names, units (docs/results-schema.md);\n"
         "with --packing, the packing file's (docs/packing-schema.md)");
-    CLI::Option* markdown = schema_->add_flag("--markdown", schemaMarkdown_,
-                                              "Markdown, as docs/results-schema.md (the default)");
-    schema_->add_flag("--json", schemaJson_, "JSON, for programs")->excludes(markdown);
+    schema_->add_flag("--markdown", schemaMarkdown_,
+                      "Markdown, as docs/results-schema.md (the default)");
+    schema_->add_flag("--json", schemaJson_, "JSON, for programs (not with --markdown)");
     schema_->add_flag("--packing", schemaPacking_,
                       "the packing file's schema instead (docs/packing-schema.md)");
+    for (CLI::App* sub : {info_, convert_, schema_}) {
+        sub->footer(""); // the analysis's footer is not theirs
+        for (CLI::Option* positional : sub->get_options())
+            if (positional->get_positional()) positional->type_name("");
+    }
+    app_.get_option("FILE")->type_name("");
 }
 
 /// What the options imply together, checked once all are read.
@@ -422,6 +428,8 @@ void CommandLine::parse(int argc, const char* const* argv) {
     app_.parse(argc, argv);
     for (const CLI::App* sub : app_.get_subcommands())
         refuseAnalysisOptionsWith(*sub);
+    if (schemaMarkdown_ && schemaJson_)
+        throw std::invalid_argument("schema: --markdown and --json exclude each other");
     finishAnalysis();
 }
 
