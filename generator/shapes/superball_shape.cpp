@@ -16,7 +16,6 @@ namespace sbpack {
 using superball::atNormal;
 using superball::circumscribedWindow;
 using superball::exactSignedDistance;
-using superball::kNever;
 using superball::SphereWindow;
 using superball::SuperballPairGap;
 
@@ -39,9 +38,9 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Pa
     ++stats.calls;
     Vector3d& normal = memory.normal;
     const double remembered = memory.gap;
-    memory.gap = -kNever; // unless a bound on this normal's gap now is known below
+    memory.gap = -kNoContact; // unless a bound on this normal's gap now is known below
     memory.atContact = false;
-    const Prediction none{kNever};
+    const Prediction none{kNoContact};
     if (!(horizon > 0.0)) return none;
     const std::optional<SphereWindow> window = circumscribedWindow(m, c_, horizon);
     if (!window) {
@@ -56,12 +55,12 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Pa
     FirstContactSearch search(gap, window->end, m.diameter, limits, stats);
     const Found found = search.advance(window->enter, normal, *cached, resolved,
                                        resolved ? resolvedContactSeenFrom(m) : std::nullopt);
-    if (found.sampled) memory.gap = -kNever; // the samples moved the normal on
+    if (found.sampled) memory.gap = -kNoContact; // the samples moved the normal on
     if (normal != recorded) memory.witness = {};
-    if (found.contact && found.time < kNever) {
+    if (found.contact && found.time < kNoContact) {
         normal = found.normal;
         memory.witness = {};
-        memory.gap = -kNever;
+        memory.gap = -kNoContact;
         memory.atContact = true;
     }
     return {found.time, found.contact};
@@ -98,7 +97,7 @@ std::optional<PlaneGap> SuperballShape::separatingPlane(const PairMotion& m,
     bound(cached.gap);
     const double semiAxis = 0.5 * m.diameter; // the record's points are at semi-axis 1
     memory.witness = {cached.pointI / semiAxis, cached.pointJ / semiAxis, m.turnedI, m.turnedJ};
-    if (separatedToEnd(cached.gap) || (cached.gap > 0.0 && end < kNever &&
+    if (separatedToEnd(cached.gap) || (cached.gap > 0.0 && end < kNoContact &&
                                        std::min(cached.gap, gap.planeGap(normal, end).gap) >
                                            0.125 * gap.planeCurvature(normal) * end * end)) {
         ++stats.planeRejections;
@@ -132,12 +131,12 @@ PairContact SuperballShape::contact(const PairMotion& m, PairMemory& memory) {
     SignedDistanceResult r;
     if (memory.atContact) r = atNormal(pair, normal);
     if (!memory.atContact || !(std::abs(r.signedDistance) <= 2.0 * limits.contactGap * m.diameter))
-        r = exactSignedDistance(pair, normal, kNever, limits, stats).result;
+        r = exactSignedDistance(pair, normal, kNoContact, limits, stats).result;
     else
         ++stats.predictedContacts;
     if (normal != r.normal) memory.witness = {};
     normal = r.normal;
-    memory.gap = -kNever; // a new normal: its gap bound is unknown
+    memory.gap = -kNoContact; // a new normal: its gap bound is unknown
     memory.atContact = false;
     resolved_ = {m.displacement, m.diameter, r};
     const Vector3d armI = 0.5 * (r.contactA + r.contactB);

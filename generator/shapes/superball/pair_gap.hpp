@@ -20,7 +20,7 @@ namespace sbpack::superball {
 /// meet before the horizon.
 struct SphereWindow {
     double enter = 0.0;
-    double end = kNever;
+    double end = kNoContact;
 };
 std::optional<SphereWindow> circumscribedWindow(const PairMotion& m, double c, double horizon);
 

@@ -32,9 +32,4 @@ struct SuperballPredictorLimits : FirstContactLimits {
     double localSearchResolution = 1e-16;
 };
 
-namespace superball {
-/// "No contact": a time beyond every horizon.
-inline constexpr double kNever = kNoContact;
-} // namespace superball
-
 } // namespace sbpack

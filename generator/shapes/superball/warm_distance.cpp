@@ -95,7 +95,7 @@ bool backtrack(const SuperballPair& pair, NormalPoint& now,
 /// (limits.boundAscentRatio).
 WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n,
                                 const SuperballPredictorLimits& limits,
-                                const PairRates* rates = nullptr, double enough = kNever) {
+                                const PairRates* rates = nullptr, double enough = kNoContact) {
     const Matrix3d& qi = pair.rotationA;
     const Matrix3d& qj = pair.rotationB;
     const Vector3d& d = pair.displacement;
