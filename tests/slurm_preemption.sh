@@ -46,7 +46,9 @@ for how in usr1 term; do
     else # Slurm signals the job's processes in no set order: sbgen first here
         kill -TERM "$sbgen_pid"
         sleep 0.1
-        kill -TERM "$pid"
+        # The shell may have copied the checkpoint and exited within those 0.1 s (sbgen stopped
+        # near the end of its window); Slurm's signal to a finished job step does nothing either.
+        kill -TERM "$pid" 2>/dev/null || true
     fi
     status=0
     wait "$pid" || status=$?
