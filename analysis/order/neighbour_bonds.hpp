@@ -1,0 +1,37 @@
+#pragma once
+// The neighbour bonds of a packing, the input of the bond-orientational order
+// (docs/order-metrics.md §2): the contact network's pairs, or the pairs within a distance cutoff.
+
+#include "packing/packing.hpp"
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace sbpack {
+
+/// One bond: particles i < j and the minimum-image bond vector r_j - r_i (length units).
+struct Bond {
+    int i = 0;
+    int j = 0;
+    Vector3d vector = Vector3d::Zero();
+};
+
+/// The bonds of a packing of particleCount particles; a pair listed twice counts twice.
+struct NeighbourBonds {
+    std::size_t particleCount = 0;
+    std::vector<Bond> bonds;
+};
+
+/// The bonds of the given pairs, e.g. ContactResult::contacts (common/contacts/
+/// contact_network.hpp): the contact network as neighbour definition. Rattlers are kept or left
+/// out by the caller's choice of pairs. Throws std::invalid_argument for a pair whose index is
+/// out of range or that joins a particle to itself.
+NeighbourBonds contactBonds(const Packing& packing, const std::vector<std::pair<int, int>>& pairs);
+
+/// The bonds of all pairs whose centres are closer than `cutoff` mean widths w (e.g. the first
+/// minimum of g2: order/pair_correlation.hpp). Throws std::invalid_argument unless
+/// 0 < cutoff w <= L / 2.
+NeighbourBonds distanceBonds(const Packing& packing, double cutoff);
+
+} // namespace sbpack
