@@ -1,4 +1,4 @@
-// The order metrics of analysis/order/ against lattice and ideal-gas truths
+// The order metrics of common/order/ against lattice and ideal-gas truths
 // (docs/order-metrics.md).
 
 #include "order/bond_orientational_order.hpp"
