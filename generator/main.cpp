@@ -3,6 +3,7 @@
 #include "io/atomic_file.hpp"
 #include "io/packing_io.hpp"
 #include "io/read_guard.hpp"
+#include "order/order_metrics.hpp"
 #include "protocol/final_packing.hpp"
 #include "protocol/jamming_protocol.hpp"
 #include "protocol/protocol_advice.hpp"
@@ -124,6 +125,10 @@ int generate(const sbpack::GeneratorOptions& o) {
                      std::get<double>(packing.provenance.at("z_mean")),
                      std::get<double>(packing.provenance.at("rattler_fraction")),
                      std::get<double>(packing.provenance.at("contact_tolerance")));
+    if (const sbpack::OrderVerdict order = sbpack::orderVerdict(sbpack::measureOrder(packing));
+        order.ordered)
+        std::cerr << "sbgen: warning: " << o.out.string() << " has ordered (" << order.reason
+                  << "; docs/order-metrics.md §5): jammed or not, it is not MRJ\n";
     const sbpack::JamCheck& jam = *protocol.status().jam;
     if (jam.jammed) return EXIT_SUCCESS;
     std::cerr << "sbgen: " << o.out.string() << " (written, marked jammed = 0): " << jam.verdict

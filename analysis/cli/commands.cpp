@@ -4,6 +4,7 @@
 #include "io/atomic_file.hpp"
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
+#include "pipeline/analysis_registry.hpp"
 #include "pipeline/run.hpp"
 #include "progress/progress.hpp"
 #include "schema/packing_schema_docs.hpp"
@@ -68,7 +69,7 @@ int schemaCommand(bool json, bool packing, std::ostream& out) {
     if (packing)
         out << (json ? schema::packingSchemaJson() : schema::packingSchemaMarkdown());
     else
-        out << (json ? schema::schemaJson() : schema::schemaMarkdown());
+        out << (json ? schema::schemaJson(resultGroups()) : schema::schemaMarkdown(resultGroups()));
     return EXIT_SUCCESS;
 }
 

@@ -6,6 +6,7 @@
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
 #include "voxels/voxelization.hpp"
+#include "voxels/voxelization_fields.hpp"
 
 #include <fmt/format.h>
 
@@ -46,12 +47,18 @@ bool runCudaVoxels(FileContext& context, schema::Record& record) {
                                  fmt::format("{}^3, phi_voxel = {} (phi = {}), GPU bits {}", m,
                                              describe(grid.phiVoxel()), describe(phiExact),
                                              formatBytes(static_cast<double>(grid.deviceBytes()))));
-    setVoxelFigures(record, {m, grid.phiVoxel(), phiExact, grid.voxelSize(), grid.solidCount(),
-                             static_cast<double>(grid.deviceBytes()), grid.runtimeSeconds()});
+    VoxelFigures figures{.voxels = m,
+                         .phiVoxel = grid.phiVoxel(),
+                         .phiExact = phiExact,
+                         .voxelSize = grid.voxelSize(),
+                         .solidVoxels = grid.solidCount(),
+                         .memoryBytes = static_cast<std::int64_t>(grid.deviceBytes()),
+                         .runtimeSeconds = grid.runtimeSeconds()};
     if (context.vdbExport(Analysis::Voxels) != nullptr) // OpenVDB on the host, from the GPU's bits
-        exportVoxels(
-            context, record,
-            Voxelizer::fromRowBits(grid.rowBits(), context.packing(), m, grid.runtimeSeconds()));
+        figures.vdbFile =
+            exportVoxels(context, Voxelizer::fromRowBits(grid.rowBits(), context.packing(), m,
+                                                         grid.runtimeSeconds()));
+    voxelization_fields::kTable.fill(record, figures, context.scales());
     context.keep(Analysis::Voxels, std::move(grid));
     return true;
 }

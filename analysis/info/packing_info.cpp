@@ -16,9 +16,31 @@ PackingInfo packingInfo(const std::filesystem::path& file, const ContactParamete
     std::optional<JamCheck> jam;
     if (packing.reducedPressure && *packing.reducedPressure > 0.0)
         jam = checkJam(packing, *packing.reducedPressure);
-    return {std::move(packing), meanWidth, std::move(contacts), std::move(resolution),
-            std::move(jam)};
+    OrderMetrics order = measureOrder(packing, &contacts.contacts);
+    OrderVerdict verdict = orderVerdict(order);
+    return {std::move(packing), meanWidth,        std::move(contacts), std::move(resolution),
+            std::move(jam),     std::move(order), std::move(verdict)};
 }
+
+namespace {
+
+/// "  order  mean local q6 = ..., T = ..., P4 = ...: disordered" and the warning when ordered.
+void printOrder(const PackingInfo& info, std::ostream& out) {
+    const OrderMetrics& m = info.order;
+    out << "  order                ";
+    if (m.cutoffBonds) out << "mean local q6 = " << m.cutoffBonds->q6.meanLocalOrder << ", ";
+    if (m.translational)
+        out << "T = " << m.translational->order << " (" << m.translational->parameters.shellCount
+            << " fcc shells), ";
+    if (m.cubatic) out << "P4 = " << m.cubatic->order << ", ";
+    out << (info.verdict.ordered ? "ORDERED" : "no sign of order")
+        << "  (docs/order-metrics.md §5)\n";
+    if (info.verdict.ordered)
+        out << "  warning: this packing has ordered (" << info.verdict.reason
+            << "): it is not MRJ, whatever the jam check says\n";
+}
+
+} // namespace
 
 void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info,
                       std::ostream& out) {
@@ -54,6 +76,7 @@ void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info
         out << "  jam check            " << info.jam->verdict << '\n';
     else
         out << "  jam check            none: the file has no reduced pressure\n";
+    printOrder(info, out);
     if (c.overlappingPairs > 0) out << "  warning: " << describeOverlaps(c, diameter) << '\n';
 }
 

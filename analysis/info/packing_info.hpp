@@ -4,6 +4,7 @@
 #include "contacts/contact_network.hpp"
 #include "contacts/contact_resolution.hpp"
 #include "contacts/jam_check.hpp"
+#include "order/order_metrics.hpp"
 #include "packing/packing.hpp"
 
 #include <filesystem>
@@ -21,6 +22,10 @@ struct PackingInfo {
     /// sbgen's jam check at the file's reduced pressure (docs/design.md §3, "Jam check");
     /// absent when the file has no reduced pressure.
     std::optional<JamCheck> jam;
+    /// The order metrics over the contact network and whether the packing has ordered
+    /// (docs/order-metrics.md §5).
+    OrderMetrics order;
+    OrderVerdict verdict;
 };
 
 /// Reads and validates FILE (throws with its name on bad input), then analyses contacts.

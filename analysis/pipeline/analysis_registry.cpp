@@ -1,9 +1,18 @@
 #include "pipeline/analysis_registry.hpp"
 
+#include "contacts/contacts_fields.hpp"
+#include "hyperuniformity/hyperuniformity_fields.hpp"
+#include "order/order_fields.hpp"
 #include "pipeline/stages/stages.hpp"
+#include "pores/pore_size_fields.hpp"
+#include "spectral/spectral_density_fields.hpp"
+#include "structure/structure_factor_fields.hpp"
+#include "transport/transport_fields.hpp"
+#include "voxels/voxelization_fields.hpp"
 
 #include <array>
 #include <stdexcept>
+#include <vector>
 
 namespace sbpack {
 
@@ -12,66 +21,110 @@ namespace {
 constexpr std::array<Analysis, 1> kSpectralNeeds{Analysis::Voxels};
 constexpr std::array<Analysis, 1> kTransportNeeds{Analysis::PoreSizes};
 constexpr std::array<Analysis, 1> kHyperuniformityNeeds{Analysis::SpectralDensity};
+constexpr std::array<Analysis, 1> kOrderNeeds{Analysis::Contacts};
 
-// One row per analysis (docs/architecture.md, "Add an analysis"); its results group is declared
-// in schema/results_schema.cpp, its stage in pipeline/stages/.
-constexpr std::array<AnalysisInfo, 7> kRegistry{{
-    {Analysis::Contacts,
-     "contacts",
-     "contacts",
-     "contact network: mean contact number Z, rattler fraction, contacts per particle",
-     VoxelGrid::None,
-     {},
-     "",
-     stages::runContacts,
-     nullptr},
-    {Analysis::StructureFactor,
-     "sq",
-     "structure_factor",
-     "structure factor S(Q) of the centroids (Eq. 4)",
-     VoxelGrid::None,
-     {},
-     "",
-     stages::runStructureFactor,
-     stages::structureFactorMemory},
-    {Analysis::SpectralDensity, "chi", "spectral_density",
-     "spectral density chi_V(Q) from the voxels by FFT (Eq. 12); exact too for spheres",
-     VoxelGrid::Spectral, kSpectralNeeds, "", stages::runSpectralDensity,
-     stages::spectralDensityMemory},
-    {Analysis::Voxels,
-     "voxels",
-     "voxelization",
-     "voxelization on the --voxels grid: phi_voxel against phi",
-     VoxelGrid::Spectral,
-     {},
-     ".vdb",
-     stages::runVoxels,
-     stages::voxelsMemory},
-    {Analysis::PoreSizes,
-     "pores",
-     "pore_size",
-     "pore sizes F(delta), <delta>, <delta^2> (Eqs. 13-15) by --pores: on the --pore-voxels "
-     "grid by exact periodic distance transform (voxel), refined to the surfaces, or exact",
-     VoxelGrid::Pore,
-     {},
-     "-pore-size.vdb",
-     stages::runPoreSizes,
-     stages::poreSizesMemory},
-    {Analysis::Transport, "transport", "transport",
-     "permeability k, survival time tau, relaxation time T1 from the pore sizes (Eqs. 16-20)",
-     VoxelGrid::None, kTransportNeeds, "", stages::runTransport, nullptr},
-    {Analysis::Hyperuniformity, "hyper", "spreadability",
-     "excess spreadability E(t), alpha from its long-time decay, the fit a0 + a1 Q^alpha and H "
-     "(Eqs. 21-23, fit, HX), the Debye medium; chi_V exact at Q w <= --chi-exact-qmax",
-     VoxelGrid::Spectral, kHyperuniformityNeeds, "", stages::runHyperuniformity, nullptr,
-     stages::poolSpreadability},
+constexpr std::array<const schema::Group*, 1> kContactsGroups{&kContactsGroup};
+constexpr std::array<const schema::Group*, 1> kStructureFactorGroups{&kStructureFactorGroup};
+constexpr std::array<const schema::Group*, 1> kSpectralDensityGroups{&kSpectralDensityGroup};
+constexpr std::array<const schema::Group*, 1> kVoxelizationGroups{&kVoxelizationGroup};
+constexpr std::array<const schema::Group*, 1> kPoreSizeGroups{&kPoreSizeGroup};
+constexpr std::array<const schema::Group*, 1> kTransportGroups{&kTransportGroup};
+constexpr std::array<const schema::Group*, 1> kOrderGroups{&kOrderGroup};
+constexpr std::array<const schema::Group*, 3> kHyperuniformityGroups{
+    &kSpreadabilityGroup, &kHyperuniformityGroup, &kSpreadabilityDebyeGroup};
+
+// One row per analysis (docs/architecture.md, "Add an analysis"): its results groups are
+// declared beside its result, its stage in pipeline/stages/.
+constexpr std::array<AnalysisInfo, 8> kRegistry{{
+    {.analysis = Analysis::Contacts,
+     .name = "contacts",
+     .groups = kContactsGroups,
+     .description = "contact network: mean contact number Z, rattler fraction, contacts per "
+                    "particle",
+     .run = stages::runContacts},
+    {.analysis = Analysis::StructureFactor,
+     .name = "sq",
+     .groups = kStructureFactorGroups,
+     .description = "structure factor S(Q) of the centroids (Eq. 4)",
+     .run = stages::runStructureFactor,
+     .memory = stages::structureFactorMemory},
+    {.analysis = Analysis::SpectralDensity,
+     .name = "chi",
+     .groups = kSpectralDensityGroups,
+     .description =
+         "spectral density chi_V(Q) from the voxels by FFT (Eq. 12); exact too for spheres",
+     .grid = VoxelGrid::Spectral,
+     .needs = kSpectralNeeds,
+     .run = stages::runSpectralDensity,
+     .memory = stages::spectralDensityMemory},
+    {.analysis = Analysis::Voxels,
+     .name = "voxels",
+     .groups = kVoxelizationGroups,
+     .description = "voxelization on the --voxels grid: phi_voxel against phi",
+     .grid = VoxelGrid::Spectral,
+     .vdbSuffix = ".vdb",
+     .run = stages::runVoxels,
+     .memory = stages::voxelsMemory},
+    {.analysis = Analysis::PoreSizes,
+     .name = "pores",
+     .groups = kPoreSizeGroups,
+     .description =
+         "pore sizes F(delta), <delta>, <delta^2> (Eqs. 13-15) by --pores: on the --pore-voxels "
+         "grid by exact periodic distance transform (voxel), refined to the surfaces, or exact",
+     .grid = VoxelGrid::Pore,
+     .vdbSuffix = "-pore-size.vdb",
+     .run = stages::runPoreSizes,
+     .memory = stages::poreSizesMemory},
+    {.analysis = Analysis::Transport,
+     .name = "transport",
+     .groups = kTransportGroups,
+     .description = "permeability k, survival time tau, relaxation time T1 from the pore sizes "
+                    "(Eqs. 16-20)",
+     .needs = kTransportNeeds,
+     .run = stages::runTransport},
+    {.analysis = Analysis::Hyperuniformity,
+     .name = "hyper",
+     .groups = kHyperuniformityGroups,
+     .description =
+         "excess spreadability E(t), alpha from its long-time decay, the fit a0 + a1 Q^alpha and "
+         "H (Eqs. 21-23, fit, HX), the Debye medium; chi_V exact at Q w <= --chi-exact-qmax",
+     .grid = VoxelGrid::Spectral,
+     .needs = kHyperuniformityNeeds,
+     .run = stages::runHyperuniformity,
+     .finishEnsemble = stages::poolSpreadability},
+    {.analysis = Analysis::Order,
+     .name = "order",
+     .groups = kOrderGroups,
+     .description = "order metrics: g2(r), Q4 and Q6 (cutoff and contact bonds), the "
+                    "translational order T, the cubatic P4 of the axes; warns when ordered",
+     .needs = kOrderNeeds,
+     .run = stages::runOrder},
 }};
+
+/// The results groups of the registry's rows, in order.
+std::vector<const schema::Group*> collectGroups() {
+    std::vector<const schema::Group*> groups;
+    for (const AnalysisInfo& info : kRegistry)
+        groups.insert(groups.end(), info.groups.begin(), info.groups.end());
+    return groups;
+}
 
 } // namespace
 
 const AnalysisInfo* analysisOfGroup(std::string_view group) {
     for (const AnalysisInfo& info : kRegistry)
-        if (info.group == group) return &info;
+        if (info.group().name == group) return &info;
+    return nullptr;
+}
+
+std::span<const schema::Group* const> resultGroups() {
+    static const std::vector<const schema::Group*> groups = collectGroups();
+    return groups;
+}
+
+const schema::Group* findResultGroup(std::string_view name) {
+    for (const schema::Group* g : resultGroups())
+        if (g->name == name) return g;
     return nullptr;
 }
 

@@ -16,7 +16,8 @@ struct RunSettings;
 struct Packing;
 namespace schema {
 class Record;
-}
+struct Group;
+} // namespace schema
 
 enum class Analysis {
     Contacts,        ///< contact network, Z and rattlers (common/contacts)
@@ -26,6 +27,7 @@ enum class Analysis {
     PoreSizes,       ///< pore-size distribution F(delta) from the periodic distance transform
     Transport,       ///< k, tau, T1 from the pore-size moments (diffusion-controlled limit)
     Hyperuniformity, ///< excess spreadability, alpha, the small-Q fit and H (hyperuniformity/)
+    Order,           ///< g2, Q4 and Q6, T, the cubatic P4 (common/order)
 };
 
 /// Which voxel grid an analysis works on: none, the spectral grid (--voxels, default 300 as the
@@ -50,20 +52,29 @@ using EnsembleFinish = void (*)(schema::Record& ensembleGroup);
 
 struct AnalysisInfo {
     Analysis analysis;
-    std::string_view name;        ///< as in --compute
-    std::string_view group;       ///< its results group (schema::analysisGroups())
+    std::string_view name; ///< as in --compute
+    /// Its results groups, its own (the one its StageRun fills) first; each is declared beside
+    /// the result it is read from (schema/field_table.hpp).
+    std::span<const schema::Group* const> groups;
     std::string_view description; ///< one line for --help
-    VoxelGrid grid;
-    std::span<const Analysis> needs; ///< analyses whose results it uses (they run first)
-    std::string_view vdbSuffix;      ///< with --vdb: exports DIR/<input stem><suffix>; "": none
-    StageRun run;
-    StageMemoryEstimate memory;
+    VoxelGrid grid = VoxelGrid::None;
+    std::span<const Analysis> needs = {}; ///< analyses whose results it uses (they run first)
+    std::string_view vdbSuffix = "";      ///< with --vdb: exports DIR/<input stem><suffix>
+    StageRun run = nullptr;
+    StageMemoryEstimate memory = nullptr;
     EnsembleFinish finishEnsemble = nullptr;
+
+    const schema::Group& group() const { return *groups.front(); }
 };
 
-/// The analysis whose results group is `group`; nullptr for groups an analysis adds beside its
-/// own (e.g. hyper's hyperuniformity).
+/// The analysis whose own results group is called `group`; nullptr for groups an analysis adds
+/// beside its own (e.g. hyper's hyperuniformity).
 const AnalysisInfo* analysisOfGroup(std::string_view group);
+
+/// The results groups of every analysis, in registry order (docs/results-schema.md's order).
+std::span<const schema::Group* const> resultGroups();
+/// The results group called `name`; nullptr if there is none.
+const schema::Group* findResultGroup(std::string_view name);
 
 /// Every analysis, in the order they are listed (they run in this order, needs first).
 std::span<const AnalysisInfo> analysisRegistry();

@@ -5,6 +5,7 @@
 // transform with one distributed transpose. The interface is here, so that the pipeline's stages
 // are one code with and without MPI; the implementation is analysis/mpi/ (SBPACK_WITH_MPI).
 
+#include "parallel/distribution_figures.hpp"
 #include "pores/pore_size_distribution.hpp"
 #include "spectral/spectral_density.hpp"
 #include "voxels/voxelization.hpp"
@@ -12,15 +13,6 @@
 #include <cstdint>
 
 namespace sbpack {
-
-/// What a distributed grid computation costs per rank: the figures that transfer from one
-/// machine to a cluster (docs/scale-out.md, "Plan"); wall times do not.
-struct DistributionFigures {
-    int ranks = 1;
-    int slab = 0;                    ///< x-planes of the largest rank's slab
-    double memoryPerRankBytes = 0.0; ///< the largest rank's grid memory (measured allocations)
-    double communicationBytes = 0.0; ///< sent from one rank to another, all ranks together
-};
 
 /// One rank's slab of a distributed voxelization and the whole grid's figures.
 struct SlabVoxels {

@@ -1,5 +1,7 @@
 #include "pipeline/ensemble.hpp"
 
+#include "pipeline/analysis_registry.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -217,7 +219,8 @@ EnsembleResults computeEnsemble(std::span<const FileResults> files,
         .set("n_particles", files[members.front()].particles())
         .set("n_files", members.size())
         .set("members", std::vector<std::int64_t>(members.begin(), members.end()));
-    for (const schema::Group& g : schema::analysisGroups()) {
+    for (const schema::Group* group : resultGroups()) {
+        const schema::Group& g = *group;
         Sources in;
         for (std::size_t m : members)
             if (const schema::Record* r = files[m].group(g.name)) {
@@ -225,7 +228,7 @@ EnsembleResults computeEnsemble(std::span<const FileResults> files,
                 in.files.push_back(&files[m].root);
             }
         if (in.records.empty()) continue;
-        e.groups.push_back(reduce(g, schema::ensembleGroup(g.name), in));
+        e.groups.push_back(reduce(g, schema::ensembleGroup(g), in));
         e.groups.back().set("n_files", in.records.size());
         if (const AnalysisInfo* info = analysisOfGroup(g.name); info && info->finishEnsemble)
             info->finishEnsemble(e.groups.back());

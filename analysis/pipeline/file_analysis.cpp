@@ -59,10 +59,7 @@ FileResults analyzeFile(const Packing& packing, const std::filesystem::path& inp
     const std::vector<Analysis> order = runOrder(settings.analyses);
     for (std::size_t i = 0; i < order.size(); ++i) {
         const AnalysisInfo& info = analysisInfo(order[i]);
-        const schema::Group* group = schema::findAnalysisGroup(info.group);
-        if (group == nullptr)
-            throw std::logic_error("results schema: no group '" + std::string(info.group) + "'");
-        schema::Record record(*group);
+        schema::Record record(info.group());
         if (info.run(context, record)) results.groups.push_back(std::move(record));
         for (schema::Record& extra : context.takeGroups())
             results.groups.push_back(std::move(extra));

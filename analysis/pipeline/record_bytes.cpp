@@ -1,5 +1,7 @@
 #include "pipeline/record_bytes.hpp"
 
+#include "pipeline/analysis_registry.hpp"
+
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
@@ -99,7 +101,7 @@ schema::Record getRecord(Reader& in, const schema::Group& group) {
 }
 
 const schema::Group& analysisGroup(const std::string& name) {
-    const schema::Group* group = schema::findAnalysisGroup(name);
+    const schema::Group* group = findResultGroup(name);
     if (group == nullptr) throw std::logic_error("results bytes: no group '" + name + "'");
     return *group;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The results file of sbanalyze (HDF5; layout and names in docs/results-schema.md, generated
-// from schema/results_schema.cpp).
+// from the schema's tables: schema/field_table.hpp).
 
 #include "pipeline/ensemble.hpp"
 #include "pipeline/file_analysis.hpp"

@@ -7,6 +7,7 @@
 #include "pipeline/analysis_registry.hpp"
 #include "pipeline/run_settings.hpp"
 #include "progress/progress.hpp"
+#include "schema/field_table.hpp"
 #include "schema/record.hpp"
 
 #include <filesystem>
@@ -39,6 +40,8 @@ class FileContext {
     const RunSettings& settings() const { return settings_; }
     const Progress& progress() const { return progress_; }
     double meanWidth() const { return meanWidth_; }
+    /// What the results tables scale by (schema/field_table.hpp).
+    schema::Scales scales() const { return {meanWidth_}; }
     /// Where `analysis` exports its grid (--vdb); nullptr when it does not.
     const VdbExport* vdbExport(Analysis analysis) const {
         const auto it = exports_.find(analysis);

@@ -1,5 +1,6 @@
 #include "schema/record.hpp"
 
+#include <functional>
 #include <stdexcept>
 
 namespace sbpack::schema {
@@ -59,6 +60,16 @@ Record& Record::store(const Field& field, Value value) {
     else
         entries_.insert(at, Entry{&field, std::move(value)});
     return *this;
+}
+
+Record& Record::set(const Field& field, Value value) {
+    const std::span<const Field> own = group_->fields;
+    const std::less<const Field*> before;
+    if (own.empty() || before(&field, own.data()) || !before(&field, own.data() + own.size()))
+        throw std::logic_error(where(*group_, field.name) + " is not one of the group's fields");
+    if (field.type == Type::Float && std::holds_alternative<std::int64_t>(value))
+        value = static_cast<double>(std::get<std::int64_t>(value));
+    return store(field, std::move(value));
 }
 
 const Value* Record::find(std::string_view name) const {

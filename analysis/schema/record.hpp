@@ -50,6 +50,10 @@ class Record {
         }
     }
 
+    /// Sets `field`, one of the group's own Fields (a FieldTable's column: schema/field_table.hpp);
+    /// an Int value for a Float field is converted.
+    Record& set(const Field& field, Value value);
+
     bool has(std::string_view name) const { return find(name) != nullptr; }
     /// The value of `name`; nullptr if it was not set.
     const Value* find(std::string_view name) const;

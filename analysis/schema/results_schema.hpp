@@ -59,14 +59,12 @@ struct Group {
 const Group& runGroup();
 /// files/<i>: one input's attributes (its analyses are subgroups).
 const Group& fileGroup();
-/// files/<i>/<name>: one group per analysis, in the order they are documented.
-std::span<const Group> analysisGroups();
-/// The analysis group called `name`; nullptr if there is none.
-const Group* findAnalysisGroup(std::string_view name);
 /// ensembles/<k>: the ensemble's own attributes and the statistics of fileGroup()'s fields.
 const Group& ensembleRootGroup();
-/// ensembles/<k>/<name>: the statistics of analysis group `name` (derived from its fields).
-const Group& ensembleGroup(std::string_view name);
+/// ensembles/<k>/<name>: the statistics of the analysis group `source` (files/<i>/<name>; the
+/// analyses' groups are declared beside their results, schema/field_table.hpp), derived from its
+/// fields' Reduce.
+const Group& ensembleGroup(const Group& source);
 
 /// The field called `name` in `group`; nullptr if there is none.
 const Field* findField(const Group& group, std::string_view name);
@@ -75,9 +73,10 @@ const Field* findField(const Group& group, std::string_view name);
 inline constexpr std::string_view kDatasetUnits = "units";
 std::string unitsAttributeName(std::string_view attribute);
 
-/// docs/results-schema.md (`sbanalyze schema --markdown`).
-std::string schemaMarkdown();
+/// docs/results-schema.md (`sbanalyze schema --markdown`): the run, the file, the analyses'
+/// groups `analyses` (pipeline's resultGroups()) and their ensembles.
+std::string schemaMarkdown(std::span<const Group* const> analyses);
 /// The same table as JSON (`sbanalyze schema --json`), for readers in other languages.
-std::string schemaJson();
+std::string schemaJson(std::span<const Group* const> analyses);
 
 } // namespace sbpack::schema

@@ -103,6 +103,21 @@ std::vector<FccShell> fccShells(int count) {
     }
 }
 
+double fccNeighbourDistance(const Packing& packing) {
+    const double rho = static_cast<double>(packing.size()) / std::pow(packing.boxLength, 3);
+    return std::cbrt(std::numbers::sqrt2 / rho); // fcc: 4 points per a^3, d = a / sqrt 2
+}
+
+int fccShellsThatFit(const Packing& packing, const TranslationalOrderParameters& parameters) {
+    const double d = fccNeighbourDistance(packing);
+    const std::vector<FccShell> shells = fccShells(parameters.shellCount);
+    int fit = 0;
+    while (fit < parameters.shellCount &&
+           (shells[fit].distance + 0.5 * parameters.shellWidth) * d <= 0.5 * packing.boxLength)
+        ++fit;
+    return fit;
+}
+
 TranslationalOrder::TranslationalOrder(TranslationalOrderParameters parameters)
     : parameters_(parameters) {
     shells_ = fccShells(parameters.shellCount);
@@ -122,20 +137,14 @@ TranslationalOrder::TranslationalOrder(TranslationalOrderParameters parameters)
 TranslationalOrderResult TranslationalOrder::compute(const Packing& packing) const {
     if (packing.size() < 2)
         throw std::invalid_argument("translational order: needs at least 2 particles");
-    const double rho = static_cast<double>(packing.size()) / std::pow(packing.boxLength, 3);
-    const double d = std::cbrt(std::numbers::sqrt2 / rho); // fcc: 4 points per a^3, d = a / sqrt 2
-    const double width = parameters_.shellWidth * d;
-    const double reach = shells_.back().distance * d + 0.5 * width;
-    if (reach > 0.5 * packing.boxLength) {
-        int fit = 0;
-        while (fit < parameters_.shellCount &&
-               shells_[fit].distance * d + 0.5 * width <= 0.5 * packing.boxLength)
-            ++fit;
+    const double d = fccNeighbourDistance(packing);
+    const double reach = shells_.back().distance * d + 0.5 * parameters_.shellWidth * d;
+    if (reach > 0.5 * packing.boxLength)
         throw std::invalid_argument(fmt::format(
             "translational order: the outermost of {} fcc shells reaches {:g} d, beyond L / 2 = "
             "{:g} d; {} shells fit this box",
-            parameters_.shellCount, reach / d, 0.5 * packing.boxLength / d, fit));
-    }
+            parameters_.shellCount, reach / d, 0.5 * packing.boxLength / d,
+            fccShellsThatFit(packing, parameters_)));
     return tabulate(packing, shells_, parameters_, d);
 }
 

@@ -44,6 +44,12 @@ struct TranslationalOrderResult {
     double idealGasError = 0.0;
 };
 
+/// d, the nearest-neighbour distance of the fcc lattice at the packing's number density (length
+/// units).
+double fccNeighbourDistance(const Packing& packing);
+/// How many of the first parameters.shellCount fcc shells (with their width) lie within L / 2.
+int fccShellsThatFit(const Packing& packing, const TranslationalOrderParameters& parameters);
+
 /// Compute object (docs/design.md §7): parameters validated at construction.
 class TranslationalOrder {
   public:

@@ -4,10 +4,10 @@ The C++ core (the libraries of sbgen and sbanalyze) is the extension ``sbpack._s
 package adds the analyses as objects, a reader of results files and the figures (``sbpack.plot``).
 """
 from ._sbpack import Packing, __version__, expected_collisions, generate
-from .analyses import (Contacts, Hyperuniformity, PoreSizes, SpectralDensity, StructureFactor,
-                       Transport, analyze)
+from .analyses import (Contacts, Hyperuniformity, Order, PoreSizes, SpectralDensity,
+                       StructureFactor, Transport, analyze)
 from .results import read_results
 
 __all__ = ["Packing", "generate", "expected_collisions", "Contacts", "StructureFactor",
-           "SpectralDensity", "PoreSizes", "Transport", "Hyperuniformity", "analyze",
+           "SpectralDensity", "PoreSizes", "Transport", "Hyperuniformity", "Order", "analyze",
            "read_results", "__version__"]

@@ -86,6 +86,13 @@ class Contacts(_Analysis):
     _options = _COMMON + ("tolerance", "rattler_threshold")
 
 
+class Order(_Analysis):
+    """Order metrics: g2 (r_w, g2), Q4, Q6, q6_local_mean, T, P4 and the verdict ordered
+    (--compute order; the contacts come with it; docs/order-metrics.md)."""
+    _compute, _group = "order", "order"
+    _options = _COMMON + ("tolerance", "rattler_threshold")
+
+
 class StructureFactor(_Analysis):
     """S(Q) of the centroids: Q, S, count, Q_w (--compute sq)."""
     _compute, _group = "sq", "structure_factor"

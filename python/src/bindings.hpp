@@ -17,7 +17,7 @@ void registerGenerator(py::module_& m);
 void registerResults(py::module_& m);
 
 /// A results group as a dict: numbers as float or int, strings as str, datasets as numpy arrays
-/// (the schema's names, schema/results_schema.cpp).
+/// (the schema's names, docs/results-schema.md).
 py::dict recordToDict(const schema::Record& record);
 
 /// Runs `work` with the GIL released on a worker thread while this (the calling) thread polls

@@ -2,6 +2,7 @@
 // arrays; and sbpack._sbpack.schema_json() for readers.
 #include "bindings.hpp"
 
+#include "pipeline/analysis_registry.hpp"
 #include "schema/results_schema.hpp"
 
 #include <pybind11/numpy.h>
@@ -41,8 +42,9 @@ py::dict recordToDict(const schema::Record& record) {
 }
 
 void registerResults(py::module_& m) {
-    m.def("schema_json", &schema::schemaJson,
-          "The results schema (groups, names, units) as JSON, as `sbanalyze schema --json`");
+    m.def(
+        "schema_json", [] { return schema::schemaJson(resultGroups()); },
+        "The results schema (groups, names, units) as JSON, as `sbanalyze schema --json`");
 }
 
 } // namespace sbpack::python

@@ -1,6 +1,7 @@
 // Records checked complete before they are written (schema/record.hpp; issue 45): a record
 // without a field the results schema requires is refused, by the group's path and the fields'
 // names, by every writer; one with every required field and no optional one is written.
+#include "pipeline/analysis_registry.hpp"
 #include "pipeline/results_file.hpp"
 #include "pipeline/summary_json.hpp"
 #include "schema/record.hpp"
@@ -64,7 +65,7 @@ const std::string kRefusal = "results schema: files/<i>/structure_factor: requir
                              "set: max_shell, Q_w";
 
 TEST(Record, AnIncompleteRecordIsRefusedByItsGroupAndTheMissingFields) {
-    const schema::Group& group = *schema::findAnalysisGroup("structure_factor");
+    const schema::Group& group = *findResultGroup("structure_factor");
     const schema::Record record = required(group, {"max_shell", "Q_w"});
     EXPECT_TRUE(record.has("qmax"));
     EXPECT_EQ(refusal([&] { record.entries(); }), kRefusal);
@@ -78,7 +79,7 @@ TEST(Record, AnIncompleteRecordIsRefusedByItsGroupAndTheMissingFields) {
 }
 
 TEST(Record, ACompleteRecordWithoutItsOptionalFieldsIsWritten) {
-    const schema::Group& group = *schema::findAnalysisGroup("spectral_density");
+    const schema::Group& group = *findResultGroup("spectral_density");
     const schema::Record record = required(group, {});
     std::size_t requiredFields = 0;
     for (const schema::Field& f : group.fields)

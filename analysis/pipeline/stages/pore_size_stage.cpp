@@ -6,7 +6,7 @@
 #include "pipeline/stages/stages.hpp"
 #include "pores/distance_transform.hpp"
 #include "pores/exact_pore_size.hpp"
-#include "pores/pore_size_distribution.hpp"
+#include "pores/pore_size_fields.hpp"
 #include "pores/refined_pore_size.hpp"
 #include "voxels/voxelization.hpp"
 
@@ -102,39 +102,6 @@ std::string poreDetail(const PoreSizeDistributionResult& pores) {
     return detail;
 }
 
-/// Sets a field that only some methods fill (NaN: not written).
-void setIfFinite(schema::Record& record, std::string_view name, double value) {
-    if (std::isfinite(value)) record.set(name, value);
-}
-
-void setPoreSizes(schema::Record& record, const PoreSizeDistributionResult& s) {
-    record.set("mean", s.mean)
-        .set("second_moment", s.secondMoment)
-        .set("max", s.max)
-        .set("mean_w", s.meanOverWidth())
-        .set("second_moment_w2", s.secondMomentOverWidth2())
-        .set("max_w", s.maxOverWidth())
-        .set("saturated", s.saturated)
-        .set("voxels", s.voxels)
-        .set("voxel_size", s.voxelSize)
-        .set("samples", s.samples)
-        .set("method", s.method)
-        .set("runtime_s", s.runtimeSeconds)
-        .set("delta", s.delta)
-        .set("F", s.F)
-        .set("delta_w", s.deltaOverWidth())
-        .set("P_delta", s.densityDelta)
-        .set("P", s.density)
-        .set("P_delta_w", s.densityDeltaOverWidth())
-        .set("P_w", s.densityTimesWidth());
-    setIfFinite(record, "max_sampled", s.maxSampled);
-    setIfFinite(record, "max_upper_bound", s.maxUpperBound);
-    setIfFinite(record, "error_bound", s.errorBound);
-    setIfFinite(record, "mean_stderr", s.meanStandardError);
-    setIfFinite(record, "second_moment_stderr", s.secondMomentStandardError);
-    setIfFinite(record, "bin_width", s.binWidth);
-}
-
 /// --distribute grids: F(delta) of the slabs' distance transform (pipeline/distributed_grids.hpp).
 bool runDistributedPoreSizes(FileContext& context, schema::Record& record) {
     DistributionFigures figures;
@@ -145,9 +112,9 @@ bool runDistributedPoreSizes(FileContext& context, schema::Record& record) {
                                  fmt::format("{} ranks, <delta>/w = {}, max/w = {}", figures.ranks,
                                              describe(pores.meanOverWidth()),
                                              describe(pores.maxOverWidth())));
-    setPoreSizes(record, pores);
-    setDistribution(record, figures);
-    context.keep(Analysis::PoreSizes, std::move(pores));
+    PoreSizeFigures recorded{std::move(pores), std::nullopt, figures};
+    pore_size_fields::kTable.fill(record, recorded, context.scales());
+    context.keep(Analysis::PoreSizes, std::move(recorded.pores));
     return true;
 }
 
@@ -166,9 +133,10 @@ bool runPoreSizes(FileContext& context, schema::Record& record) {
         vdb->output->write(map->vdbImage());
         context.progress().stageDone("pore vdb export", clock.seconds(), vdb->destination.string());
     }
-    setPoreSizes(record, pores);
-    if (map) record.set("map_s", mapSeconds);
-    context.keep(Analysis::PoreSizes, std::move(pores));
+    PoreSizeFigures recorded{std::move(pores), map ? std::optional(mapSeconds) : std::nullopt,
+                             std::nullopt};
+    pore_size_fields::kTable.fill(record, recorded, context.scales());
+    context.keep(Analysis::PoreSizes, std::move(recorded.pores));
     return true;
 }
 

@@ -2,7 +2,7 @@
 #include "hyperuniformity/discrete_spectrum.hpp"
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
-#include "spectral/spectral_density.hpp"
+#include "spectral/spectral_density_fields.hpp"
 #include "spectral/voxel_fourier_transform.hpp"
 #include "voxels/voxelization.hpp"
 
@@ -84,25 +84,10 @@ bool runSpectralDensity(FileContext& context, schema::Record& record) {
     else
         s = wholeGrid(context, parameters);
     report(context.progress(), s);
-    if (context.grids() != nullptr) setDistribution(record, figures);
-    record.set("voxels", s.voxels)
-        .set("phi_voxel", s.phiVoxel)
-        .set("voxel_size", s.voxelSize)
-        .set("qmax", s.parameters.maxQw)
-        .set("max_shell", s.maxShell)
-        .set("fft_planning", fftPlanningName(s.parameters.fft.planning))
-        .set("fft_plan_s", s.planSeconds)
-        .set("fft_plan_source", std::string(fftPlanSourceName(s.planSource)))
-        .set("fft_planning_budget_s", s.parameters.fft.planningBudget)
-        .set("fft_s", s.fillSeconds + s.transformSeconds)
-        .set("fft_precision", context.settings().fftSingle ? "single" : "double")
-        .set("shell_average_s", s.shellSeconds)
-        .set("runtime_s", s.runtimeSeconds);
-    setShells(record, s.shells, "chi", context.meanWidth());
-    if (s.exactSphere)
-        record.set("exact_s", s.exactSeconds)
-            .set("exact_error", s.exactSphere->maxErrorOverPeak)
-            .set("chi_exact", s.exactSphere->exact.value);
+    const SpectralDensityFigures recorded{
+        std::move(s), context.settings().fftSingle ? "single" : "double",
+        context.grids() != nullptr ? std::optional(figures) : std::nullopt};
+    spectral_density_fields::kTable.fill(record, recorded, context.scales());
     return true;
 }
 

@@ -9,13 +9,19 @@
 #include "shells/shell_average.hpp"
 #include "spectral/spectral_density.hpp"
 
-#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace sbpack::stages {
 
+/// What contacts keeps for order: the contact network's pairs (i, j), i < j.
+using ContactPairs = std::vector<std::pair<int, int>>;
 bool runContacts(FileContext& context, schema::Record& record);
+
+bool runOrder(FileContext& context, schema::Record& record);
 
 bool runStructureFactor(FileContext& context, schema::Record& record);
 StageMemory structureFactorMemory(const Packing& packing, const RunSettings& settings);
@@ -40,16 +46,8 @@ bool runHyperuniformity(FileContext& context, schema::Record& record);
 /// alpha_pooled of an ensemble from its mean E(t) over the mean window.
 void poolSpreadability(schema::Record& ensembleGroup);
 
-/// The voxel figures every voxelization records (the voxels group of the results schema).
-struct VoxelFigures {
-    int voxels;
-    double phiVoxel, phiExact, voxelSize;
-    std::int64_t solidVoxels;
-    double memoryBytes, runtimeSeconds;
-};
-void setVoxelFigures(schema::Record& record, const VoxelFigures& figures);
-/// Writes `voxels` where --vdb exports them (nothing without --vdb), noting the file.
-void exportVoxels(const FileContext& context, schema::Record& record, const Voxelization& voxels);
+/// Writes `voxels` where --vdb exports them; the file written, nothing without --vdb.
+std::optional<std::string> exportVoxels(const FileContext& context, const Voxelization& voxels);
 
 #ifdef SBPACK_WITH_CUDA
 // --device cuda (gpu/cuda_stages.cpp, docs/gpu.md): the grids on the GPU.
@@ -64,14 +62,8 @@ SpectralDensityResult cudaSpectralDensity(FileContext& context,
 PoreSizeMap cudaPoreSizeMap(const FileContext& context, int voxels);
 #endif
 
-/// The figures of a distributed grid (ranks, slab, memory per rank, communication).
-void setDistribution(schema::Record& record, const DistributionFigures& figures);
-
 /// "6.12345": a number for progress lines (6 significant digits unless `digits`).
 std::string describe(double value, int digits = 6);
-/// Sets the datasets Q, `valueName`, count and Q_w (Q times the mean width) of a curve.
-void setShells(schema::Record& record, const ShellAverage& shells, std::string_view valueName,
-               double meanWidth);
 /// Bytes of the collective-density tables of S(Q) (and the exact sphere chi) up to shell s.
 double collectiveDensityBytes(const Packing& packing, int maxShell);
 

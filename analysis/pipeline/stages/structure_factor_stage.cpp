@@ -1,7 +1,7 @@
 // sq: the structure factor S(Q) of the centroids.
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
-#include "structure/structure_factor.hpp"
+#include "structure/structure_factor_fields.hpp"
 
 #include <fmt/format.h>
 
@@ -22,10 +22,7 @@ bool runStructureFactor(FileContext& context, schema::Record& record) {
     context.progress().stageDone(
         "structure factor", s.runtimeSeconds,
         fmt::format("{} shells up to Q w = {}", s.maxShell, describe(maxQw)));
-    record.set("qmax", s.parameters.maxQw)
-        .set("max_shell", s.maxShell)
-        .set("runtime_s", s.runtimeSeconds);
-    setShells(record, s.shells, "S", context.meanWidth());
+    structure_factor_fields::kTable.fill(record, s, context.scales());
     return true;
 }
 

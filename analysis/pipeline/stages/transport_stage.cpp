@@ -2,7 +2,7 @@
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
 #include "pores/pore_size_distribution.hpp"
-#include "transport/transport.hpp"
+#include "transport/transport_fields.hpp"
 
 #include <stdexcept>
 
@@ -21,16 +21,7 @@ bool runTransport(FileContext& context, schema::Record& record) {
     }
     context.progress().stageDone("transport", t.runtimeSeconds,
                                  "k/w^2 = " + describe(t.permeabilityOverWidth2()));
-    record.set("zeta2", t.zeta2)
-        .set("formation_factor", t.formationFactor)
-        .set("permeability", t.permeability)
-        .set("permeability_w2", t.permeabilityOverWidth2())
-        .set("mean_survival_time", t.meanSurvivalTime)
-        .set("mean_survival_time_scaled", t.meanSurvivalTimeScaled())
-        .set("principal_relaxation_time", t.principalRelaxationTime)
-        .set("principal_relaxation_time_scaled", t.principalRelaxationTimeScaled())
-        .set("diffusion_coefficient", t.parameters.diffusionCoefficient)
-        .set("runtime_s", t.runtimeSeconds);
+    transport_fields::kTable.fill(record, t, context.scales());
     return true;
 }
 

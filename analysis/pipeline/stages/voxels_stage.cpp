@@ -3,6 +3,7 @@
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
 #include "voxels/voxelization.hpp"
+#include "voxels/voxelization_fields.hpp"
 
 #include <fmt/format.h>
 
@@ -28,33 +29,28 @@ bool runSlabVoxels(FileContext& context, schema::Record& record) {
         fmt::format("{}^3 over {} ranks, slab [{}, {}), phi_voxel = {} (phi = {})", m,
                     voxels.figures.ranks, voxels.slab.slabBegin(), voxels.slab.slabEnd(),
                     describe(voxels.phiVoxel()), describe(voxels.slab.phiExact())));
-    setVoxelFigures(record, {m, voxels.phiVoxel(), voxels.slab.phiExact(), voxels.slab.voxelSize(),
-                             voxels.solidCount, static_cast<double>(voxels.slab.memoryBytes()),
-                             voxels.slab.runtimeSeconds()});
-    setDistribution(record, voxels.figures);
+    const VoxelFigures figures{.voxels = m,
+                               .phiVoxel = voxels.phiVoxel(),
+                               .phiExact = voxels.slab.phiExact(),
+                               .voxelSize = voxels.slab.voxelSize(),
+                               .solidVoxels = voxels.solidCount,
+                               .memoryBytes = static_cast<std::int64_t>(voxels.slab.memoryBytes()),
+                               .runtimeSeconds = voxels.slab.runtimeSeconds(),
+                               .distribution = voxels.figures};
+    voxelization_fields::kTable.fill(record, figures, context.scales());
     context.keep(Analysis::Voxels, std::move(voxels));
     return true;
 }
 
 } // namespace
 
-void exportVoxels(const FileContext& context, schema::Record& record, const Voxelization& voxels) {
+std::optional<std::string> exportVoxels(const FileContext& context, const Voxelization& voxels) {
     const VdbExport* vdb = context.vdbExport(Analysis::Voxels);
-    if (vdb == nullptr) return;
+    if (vdb == nullptr) return std::nullopt;
     const Stopwatch clock;
     vdb->output->write(voxels.vdbImage());
-    record.set("vdb_file", vdb->destination.string());
     context.progress().stageDone("vdb export", clock.seconds(), vdb->destination.string());
-}
-
-void setVoxelFigures(schema::Record& record, const VoxelFigures& figures) {
-    record.set("voxels", figures.voxels)
-        .set("phi_voxel", figures.phiVoxel)
-        .set("phi_exact", figures.phiExact)
-        .set("voxel_size", figures.voxelSize)
-        .set("solid_voxels", figures.solidVoxels)
-        .set("memory_bytes", static_cast<std::int64_t>(figures.memoryBytes))
-        .set("runtime_s", figures.runtimeSeconds);
+    return vdb->destination.string();
 }
 
 bool runVoxels(FileContext& context, schema::Record& record) {
@@ -70,10 +66,15 @@ bool runVoxels(FileContext& context, schema::Record& record) {
         fmt::format("{}^3, phi_voxel = {} (phi = {}), OpenVDB tree {}", m,
                     describe(voxels.phiVoxel()), describe(voxels.phiExact()),
                     formatBytes(static_cast<double>(voxels.memoryBytes()))));
-    setVoxelFigures(record, {m, voxels.phiVoxel(), voxels.phiExact(), voxels.voxelSize(),
-                             voxels.solidCount(), static_cast<double>(voxels.memoryBytes()),
-                             voxels.runtimeSeconds()});
-    exportVoxels(context, record, voxels);
+    const VoxelFigures figures{.voxels = m,
+                               .phiVoxel = voxels.phiVoxel(),
+                               .phiExact = voxels.phiExact(),
+                               .voxelSize = voxels.voxelSize(),
+                               .solidVoxels = voxels.solidCount(),
+                               .memoryBytes = static_cast<std::int64_t>(voxels.memoryBytes()),
+                               .runtimeSeconds = voxels.runtimeSeconds(),
+                               .vdbFile = exportVoxels(context, voxels)};
+    voxelization_fields::kTable.fill(record, figures, context.scales());
     context.keep(Analysis::Voxels, std::move(voxels));
     return true;
 }

@@ -1,0 +1,38 @@
+#pragma once
+// The results group of transport, declared once (schema/field_table.hpp, docs/results-schema.md).
+
+#include "schema/field_table.hpp"
+#include "transport/transport.hpp"
+
+namespace sbpack {
+
+namespace transport_fields {
+using namespace schema::columns;
+using R = TransportResult;
+inline constexpr schema::FieldTable kTable{std::array<schema::Column<R>, 10>{{
+    {{"zeta2", A, F, "1", "three-point parameter zeta_2 (Sec. V A interpolation)"},
+     member<&R::zeta2>},
+    {{"formation_factor", A, F, "1", "formation factor F (Eq. 18)"}, member<&R::formationFactor>},
+    {{"permeability", A, F, "length^2", "k ~ <delta^2> / F (Eq. 17)"}, member<&R::permeability>},
+    {{"permeability_w2", A, F, "1", "k / w^2", Mean}, member<&R::permeabilityOverWidth2>},
+    {{"mean_survival_time", A, F, "time", "bound tau <= <delta>^2 / D (Eq. 19)"},
+     member<&R::meanSurvivalTime>},
+    {{"mean_survival_time_scaled", A, F, "1", "tau D / w^2", Mean},
+     member<&R::meanSurvivalTimeScaled>},
+    {{"principal_relaxation_time", A, F, "time", "bound T1 <= <delta^2> / D (Eq. 20)"},
+     member<&R::principalRelaxationTime>},
+    {{"principal_relaxation_time_scaled", A, F, "1", "T1 D / w^2", Mean},
+     member<&R::principalRelaxationTimeScaled>},
+    {{"diffusion_coefficient", A, F, "length^2/time", "D"},
+     member<&R::parameters, &TransportParameters::diffusionCoefficient>},
+    {{"runtime_s", A, F, "s", kRuntime}, member<&R::runtimeSeconds>},
+}}};
+} // namespace transport_fields
+
+inline constexpr schema::Group kTransportGroup{
+    "transport", "files/<i>/transport",
+    "transport estimates, diffusion-controlled limit (transport); absent where zeta_2 leaves "
+    "(0, 1]",
+    transport_fields::kTable.fields()};
+
+} // namespace sbpack

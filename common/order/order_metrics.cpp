@@ -1,0 +1,70 @@
+#include "order/order_metrics.hpp"
+
+#include "order/neighbour_bonds.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace sbpack {
+
+namespace {
+
+BondOrder bondOrder(const NeighbourBonds& bonds) {
+    return {steinhardtOrder(bonds, 4), steinhardtOrder(bonds, 6)};
+}
+
+/// g2 up to 3 w or the largest whole number of bins within L / 2.
+PairCorrelationResult pairCorrelation(const Packing& packing) {
+    PairCorrelationParameters parameters;
+    const double half = 0.5 * packing.boxLength / packing.shape().meanWidth();
+    const double bins = std::floor(std::min(parameters.maxDistance, half) / parameters.binWidth);
+    parameters.maxDistance = bins * parameters.binWidth;
+    return PairCorrelation(parameters).compute(packing);
+}
+
+std::optional<double> firstMinimumOf(const PairCorrelationResult& g2) {
+    try {
+        return firstMinimum(g2);
+    } catch (const std::runtime_error&) {
+        return std::nullopt; // no minimum below 1 within the box
+    }
+}
+
+} // namespace
+
+OrderMetrics measureOrder(const Packing& packing,
+                          const std::vector<std::pair<int, int>>* contacts) {
+    OrderMetrics m;
+    m.pairCorrelation = pairCorrelation(packing);
+    m.cutoff = firstMinimumOf(m.pairCorrelation);
+    if (m.cutoff) {
+        const NeighbourBonds bonds = distanceBonds(packing, *m.cutoff);
+        if (!bonds.bonds.empty()) m.cutoffBonds = bondOrder(bonds);
+    }
+    if (contacts != nullptr && !contacts->empty())
+        m.contactBonds = bondOrder(contactBonds(packing, *contacts));
+    TranslationalOrderParameters t;
+    t.shellCount = fccShellsThatFit(packing, t);
+    if (t.shellCount > 0) m.translational = TranslationalOrder(t).compute(packing);
+    if (!packing.shape().isSphere()) m.cubatic = cubaticOrder(packing.orientations);
+    return m;
+}
+
+OrderVerdict orderVerdict(const OrderMetrics& metrics) {
+    std::string reason;
+    if (metrics.cutoffBonds && metrics.cutoffBonds->q6.meanLocalOrder >= kOrderedLocalQ6)
+        reason = fmt::format("mean local q6 = {:.3f} >= {} (fcc 0.575, MRJ 0.39-0.44)",
+                             metrics.cutoffBonds->q6.meanLocalOrder, kOrderedLocalQ6);
+    if (metrics.translational && metrics.translational->order >= kOrderedT)
+        reason += fmt::format("{}T = {:.3f} >= {} (fcc 1, MRJ 0.04-0.09)",
+                              reason.empty() ? "" : "; ", metrics.translational->order, kOrderedT);
+    if (metrics.cubatic && metrics.cubatic->order >= kOrderedP4)
+        reason += fmt::format("{}P4 = {:.3f} >= {} (aligned axes 1, MRJ 0.00-0.06)",
+                              reason.empty() ? "" : "; ", metrics.cubatic->order, kOrderedP4);
+    return {!reason.empty(), reason};
+}
+
+} // namespace sbpack
