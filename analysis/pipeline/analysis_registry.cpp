@@ -10,6 +10,7 @@
 #include "transport/transport_fields.hpp"
 #include "voxels/voxelization_fields.hpp"
 
+#include <algorithm>
 #include <array>
 #include <stdexcept>
 #include <vector>
@@ -33,6 +34,16 @@ constexpr std::array<const schema::Group*, 1> kOrderGroups{&kOrderGroup};
 constexpr std::array<const schema::Group*, 3> kHyperuniformityGroups{
     &kSpreadabilityGroup, &kHyperuniformityGroup, &kSpreadabilityDebyeGroup};
 
+using Options = std::string_view;
+constexpr std::array<Options, 2> kContactOptions{"tolerance", "rattler-threshold"};
+constexpr std::array<Options, 1> kStructureFactorOptions{"qmax"};
+constexpr std::array<Options, 4> kSpectralOptions{"qmax", "fft-plan", "fft-planning-budget",
+                                                  "fft-wisdom"};
+constexpr std::array<Options, 1> kVoxelOptions{"voxels"};
+constexpr std::array<Options, 4> kPoreOptions{"pore-voxels", "pores", "pore-points", "pore-seed"};
+constexpr std::array<Options, 5> kHyperuniformityOptions{
+    "chi-exact-qmax", "fit-qmax", "alpha-window", "bootstrap", "spread-times"};
+
 // One row per analysis (docs/architecture.md, "Add an analysis"): its results groups are
 // declared beside its result, its stage in pipeline/stages/.
 constexpr std::array<AnalysisInfo, 8> kRegistry{{
@@ -41,13 +52,17 @@ constexpr std::array<AnalysisInfo, 8> kRegistry{{
      .groups = kContactsGroups,
      .description = "contact network: mean contact number Z, rattler fraction, contacts per "
                     "particle",
-     .run = stages::runContacts},
+     .run = stages::runContacts,
+     .options = kContactOptions,
+     .pythonClass = "Contacts"},
     {.analysis = Analysis::StructureFactor,
      .name = "sq",
      .groups = kStructureFactorGroups,
      .description = "structure factor S(Q) of the centroids (Eq. 4)",
      .run = stages::runStructureFactor,
-     .memory = stages::structureFactorMemory},
+     .memory = stages::structureFactorMemory,
+     .options = kStructureFactorOptions,
+     .pythonClass = "StructureFactor"},
     {.analysis = Analysis::SpectralDensity,
      .name = "chi",
      .groups = kSpectralDensityGroups,
@@ -56,7 +71,9 @@ constexpr std::array<AnalysisInfo, 8> kRegistry{{
      .grid = VoxelGrid::Spectral,
      .needs = kSpectralNeeds,
      .run = stages::runSpectralDensity,
-     .memory = stages::spectralDensityMemory},
+     .memory = stages::spectralDensityMemory,
+     .options = kSpectralOptions,
+     .pythonClass = "SpectralDensity"},
     {.analysis = Analysis::Voxels,
      .name = "voxels",
      .groups = kVoxelizationGroups,
@@ -64,7 +81,9 @@ constexpr std::array<AnalysisInfo, 8> kRegistry{{
      .grid = VoxelGrid::Spectral,
      .vdbSuffix = ".vdb",
      .run = stages::runVoxels,
-     .memory = stages::voxelsMemory},
+     .memory = stages::voxelsMemory,
+     .options = kVoxelOptions,
+     .pythonClass = "Voxelization"},
     {.analysis = Analysis::PoreSizes,
      .name = "pores",
      .groups = kPoreSizeGroups,
@@ -74,14 +93,17 @@ constexpr std::array<AnalysisInfo, 8> kRegistry{{
      .grid = VoxelGrid::Pore,
      .vdbSuffix = "-pore-size.vdb",
      .run = stages::runPoreSizes,
-     .memory = stages::poreSizesMemory},
+     .memory = stages::poreSizesMemory,
+     .options = kPoreOptions,
+     .pythonClass = "PoreSizes"},
     {.analysis = Analysis::Transport,
      .name = "transport",
      .groups = kTransportGroups,
      .description = "permeability k, survival time tau, relaxation time T1 from the pore sizes "
                     "(Eqs. 16-20)",
      .needs = kTransportNeeds,
-     .run = stages::runTransport},
+     .run = stages::runTransport,
+     .pythonClass = "Transport"},
     {.analysis = Analysis::Hyperuniformity,
      .name = "hyper",
      .groups = kHyperuniformityGroups,
@@ -91,14 +113,17 @@ constexpr std::array<AnalysisInfo, 8> kRegistry{{
      .grid = VoxelGrid::Spectral,
      .needs = kHyperuniformityNeeds,
      .run = stages::runHyperuniformity,
-     .finishEnsemble = stages::poolSpreadability},
+     .finishEnsemble = stages::poolSpreadability,
+     .options = kHyperuniformityOptions,
+     .pythonClass = "Hyperuniformity"},
     {.analysis = Analysis::Order,
      .name = "order",
      .groups = kOrderGroups,
      .description = "order metrics: g2(r), Q4 and Q6 (cutoff and contact bonds), the "
                     "translational order T, the cubatic P4 of the axes; warns when ordered",
      .needs = kOrderNeeds,
-     .run = stages::runOrder},
+     .run = stages::runOrder,
+     .pythonClass = "Order"},
 }};
 
 /// The results groups of the registry's rows, in order.
@@ -115,6 +140,15 @@ const AnalysisInfo* analysisOfGroup(std::string_view group) {
     for (const AnalysisInfo& info : kRegistry)
         if (info.group().name == group) return &info;
     return nullptr;
+}
+
+std::vector<std::string_view> analysisOptions(const AnalysisInfo& info) {
+    std::vector<std::string_view> options(info.options.begin(), info.options.end());
+    for (Analysis need : info.needs)
+        for (std::string_view option : analysisOptions(analysisInfo(need)))
+            if (std::find(options.begin(), options.end(), option) == options.end())
+                options.push_back(option);
+    return options;
 }
 
 std::span<const schema::Group* const> resultGroups() {

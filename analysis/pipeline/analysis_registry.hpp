@@ -63,9 +63,17 @@ struct AnalysisInfo {
     StageRun run = nullptr;
     StageMemoryEstimate memory = nullptr;
     EnsembleFinish finishEnsemble = nullptr;
+    /// The command-line options (without "--") that change its results, besides --threads;
+    /// those of its needs add to them (analysisOptions).
+    std::span<const std::string_view> options = {};
+    /// Its class in Python's sbpack (python/sbpack/analyses.py makes it from this row).
+    std::string_view pythonClass = "";
 
     const schema::Group& group() const { return *groups.front(); }
 };
+
+/// The options of `info` and of what it needs, recursively, each once, its own first.
+std::vector<std::string_view> analysisOptions(const AnalysisInfo& info);
 
 /// The analysis whose own results group is called `group`; nullptr for groups an analysis adds
 /// beside its own (e.g. hyper's hyperuniformity).

@@ -6,7 +6,9 @@ defaults and the messages (``ValueError``) are the command line's. ``compute(pac
 same stages as ``sbanalyze --compute NAME`` on that packing and returns the object; the results
 are attributes named as in the results file (docs/results-schema.md), e.g. ``StructureFactor().
 compute(p).S``; ``groups`` holds every group the run filled, as dicts of numpy arrays and numbers;
-``dir()`` (and so tab completion) lists the results' names once computed.
+``dir()`` (and so tab completion) lists the results' names once computed. The classes are made
+from sbanalyze's registry of analyses (``_sbpack.analysis_registry()``; ``ANALYSES`` lists
+them): a new analysis there is a new class here, with its options.
 
 What sbanalyze prints as a warning is one RuntimeWarning per message, its continuation lines (the
 gap distribution of unresolved contacts, ...) included, raised at the caller's line; stage lines
@@ -75,55 +77,26 @@ class _Analysis:
         return f"<sbpack.{type(self).__name__} ({state})>"
 
 
-_COMMON = ("threads",)
-_FFT = ("voxels", "qmax", "fft_plan", "fft_planning_budget", "fft_wisdom")
-_PORES = ("pore_voxels", "pores", "pore_points", "pore_seed")
+def _analysis_class(row):
+    """The class of one registry row (pipeline/analysis_registry.cpp): its --compute name, its
+    own results group and its options (the command line's, dashes as underscores)."""
+    description = row["description"][0].upper() + row["description"][1:]
+    doc = (f"{description} (--compute {row['name']}; results groups: "
+           f"{', '.join(row['groups'])}). Keywords: threads, "
+           f"{', '.join(o.replace('-', '_') for o in row['options'])}.")
+    return type(row["python_class"], (_Analysis,), {
+        "__doc__": doc,
+        "__module__": __name__,
+        "_compute": row["name"],
+        "_group": row["groups"][0],
+        "_options": ("threads",) + tuple(o.replace("-", "_") for o in row["options"]),
+    })
 
 
-class Contacts(_Analysis):
-    """Contact network: z_mean, rattler_fraction, contacts per particle (--compute contacts)."""
-    _compute, _group = "contacts", "contacts"
-    _options = _COMMON + ("tolerance", "rattler_threshold")
-
-
-class Order(_Analysis):
-    """Order metrics: g2 (r_w, g2), Q4, Q6, q6_local_mean, T, P4 and the verdict ordered
-    (--compute order; the contacts come with it; docs/order-metrics.md)."""
-    _compute, _group = "order", "order"
-    _options = _COMMON + ("tolerance", "rattler_threshold")
-
-
-class StructureFactor(_Analysis):
-    """S(Q) of the centroids: Q, S, count, Q_w (--compute sq)."""
-    _compute, _group = "sq", "structure_factor"
-    _options = _COMMON + ("qmax",)
-
-
-class SpectralDensity(_Analysis):
-    """chi_V(Q) from the voxels (and exactly, for spheres): Q, chi, Q_w, ... (--compute chi)."""
-    _compute, _group = "chi", "spectral_density"
-    _options = _COMMON + _FFT
-
-
-class PoreSizes(_Analysis):
-    """F(delta), P(delta), <delta>, <delta^2> by pores="voxel", "refined" or "exact"
-    (--compute pores --pores ...)."""
-    _compute, _group = "pores", "pore_size"
-    _options = _COMMON + _PORES
-
-
-class Transport(_Analysis):
-    """k, tau, T1 from the pore sizes (--compute transport; the pore sizes come with it)."""
-    _compute, _group = "transport", "transport"
-    _options = _COMMON + _PORES
-
-
-class Hyperuniformity(_Analysis):
-    """Excess spreadability, alpha, the fit a0 + a1 Q^alpha, H (--compute hyper; chi with it):
-    attributes from the groups spreadability, hyperuniformity, spreadability_debye, ..."""
-    _compute, _group = "hyper", "spreadability"
-    _options = _COMMON + _FFT + ("chi_exact_qmax", "fit_qmax", "alpha_window", "bootstrap",
-                                 "spread_times")
+# One class per analysis of sbanalyze's registry: Contacts, StructureFactor, SpectralDensity,
+# Voxelization, PoreSizes, Transport, Hyperuniformity, Order, ...
+ANALYSES = tuple(_analysis_class(row) for row in _sbpack.analysis_registry())
+globals().update({cls.__name__: cls for cls in ANALYSES})
 
 
 def analyze(paths, out, compute="all", quiet=True, **options):

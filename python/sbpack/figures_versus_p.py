@@ -1,7 +1,8 @@
 """sbpack.plot's figures against p: phi, Z, phi_R, alpha, H, k, tau, T1 (paper Figs. 4, 5, 7, 13,
-15, 17), and phi against the mean width over the major axis (paper Fig. 6), each series' mean +-
+15, 17), with order results Q6, the mean local q6, T and P4 (docs/order-metrics.md; not in the
+paper), and phi against the mean width over the major axis (paper Fig. 6), each series' mean +-
 std (or its one input's value) coloured by p, marked by N, beside the paper's values
-(data/mst-reference-values.csv)."""
+(data/mst-reference-values.csv) where it tabulates them."""
 import csv
 import os
 
@@ -14,7 +15,8 @@ from .figures_series import scalar
 REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "mst-reference-values.csv")
 PAPER = "paper (Maher et al.)"
 
-# (results group, value, axis label, the paper's column, its scale to the value's units)
+# (results group, value, axis label, the paper's column (None: not tabulated, NO_TABLE says
+# why), its scale to the value's units)
 PANELS = [
     (None, "phi", r"$\phi$", "phi", 1.0),
     ("contacts", "z_mean", r"$Z$ (over non-rattlers)", "Z", 1.0),
@@ -25,7 +27,24 @@ PANELS = [
     ("transport", "mean_survival_time_scaled", r"$\tau\mathcal{D}/\bar w^2$ (bound)", None, 1.0),
     ("transport", "principal_relaxation_time_scaled", r"$T_1\mathcal{D}/\bar w^2$ (bound)", None,
      1.0),
+    ("order", "Q6", r"$Q_6$ (global, bonds $< r_c$)", None, 1.0),
+    ("order", "q6_local_mean", r"mean local $q_6$ (bonds $< r_c$)", None, 1.0),
+    ("order", "T", r"$T$ (translational order)", None, 1.0),
+    ("order", "P4", r"$P_4$ (cubatic order of the axes)", None, 1.0),
 ]
+
+# The title of a panel without the paper's values: by its value, else by its results group (the
+# order metrics' references, fcc's values and the verdict's thresholds: docs/order-metrics.md).
+NO_TABLE = {
+    "transport": "paper: a figure only, no table",
+    "order": "not in the paper",
+}
+NO_TABLE_VALUE = {
+    "Q6": "not in the paper; fcc 0.575; disordered: shrinks with N",
+    "q6_local_mean": r"not in the paper; fcc 0.575, ordered $\geq 0.5$",
+    "T": r"not in the paper; fcc 1, ordered $\geq 0.3$",
+    "P4": r"not in the paper; aligned 1, random 0, ordered $\geq 0.5$",
+}
 
 
 def paper_values(path=REFERENCE):
@@ -106,12 +125,14 @@ def versus_p(series):
     for ax, (group, name, ylabel, column, scale) in zip(axes.ravel(), panels):
         for n, rows_n in points(series, group, name).items():
             draw_points(ax, rows_n, label=n_label(rows_n))
+            if group == "order":
+                mark_ordered(ax, rows_n)
         ps = [s.p for s in series]
         if column is not None:
             paper_markers(ax, paper, column, scale)
             ps += list(paper[column][0])
         else:
-            ax.set_title("paper: a figure only, no table", fontsize=8)
+            ax.set_title(NO_TABLE_VALUE.get(name, NO_TABLE.get(group, "")), fontsize=8)
         p_axis(ax, ps)
         ax.set(xlabel=r"$p$", ylabel=ylabel)
     for ax in axes.ravel()[len(panels):]:
@@ -119,8 +140,22 @@ def versus_p(series):
     note(fig, "Against the superball exponent p (every quantity dimensionless): points coloured "
               "by p as in the other figures, marked by N, error bars the ensemble's std, grey "
               "lines joining three points or more on one side of p = 1; squares: the paper "
-              "(Maher et al.)")
+              "(Maher et al.)" + ("; the order metrics (cutoff bonds: shorter than the first "
+                                  "minimum of g₂) are not in the paper, and Q₆ and T depend "
+                                  "on N (compare one N)" if any(p[0] == "order" for p in panels)
+                                  else ""))
     return fig
+
+
+def mark_ordered(ax, rows):
+    """'ordered' beside the points of the series whose members sbanalyze calls ordered (all,
+    or 'k of n')."""
+    from .figures_order import verdict_text
+    for p, mean, _, s in rows:
+        verdict = verdict_text(s)
+        if verdict:
+            ax.annotate(verdict.lower(), (p, mean), xytext=(6, -3), textcoords="offset points",
+                        fontsize=7, color=s.style["color"])
 
 
 def p_axis(ax, ps):

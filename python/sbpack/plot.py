@@ -15,15 +15,20 @@ splits them, p <= 1 | p >= 1.
   major_axis         S(Q) and chi_V / A^3 against Q A, A = 2R             (Figs. S3-S6)
   spreadability      E(t) with the Debye media, and the local and fitted alpha (Figs. 16, 17)
   pore_size          F(delta) (log axis) and P(delta) against delta / w   (Figs. 12, 13)
+  order              g2(r) against r / w with the ideal-gas error and the neighbour cutoff, and
+                     the density of the local q6 beside fcc, the verdict's threshold and the MRJ
+                     range (sbanalyze --compute order; docs/order-metrics.md; not in the paper)
   versus_p           with two or more p: phi, Z, phi_R, alpha, H, k, tau, T1 against p, the
-                     paper's values as markers                            (Figs. 4, 5, 7, 13-15, 17)
+                     paper's values as markers, and with order results Q6, the mean local q6,
+                     T and P4 (not in the paper)                          (Figs. 4, 5, 7, 13-15, 17)
   phi_vs_width       with two or more p: phi against w / A                (Fig. 6, superballs)
   mean_width         w / A against p over [0.5, 1000]                     (Fig. 3)
   form_factor        the form factor of one superball at each p, linear and log-log (Figs. S1, S2)
   packing_slice      a section of a packing per p, the void coloured by pore size  (Fig. 2's)
 Every number drawn is sbanalyze's or sbpack's: read from the results, or (mean_width,
-form_factor, packing_slice) computed by the module's own engine (figures_shape). One statistic is
-taken here: the mean +- std of an ensemble's F(delta) and P(delta), which the results do not keep.
+form_factor, packing_slice) computed by the module's own engine (figures_shape). Two statistics
+are taken here: the mean +- std of an ensemble's F(delta) and P(delta), which the results do not
+keep, and the histogram of the per-particle local q6 (an ensemble's members pooled).
 make_figures() returns the finished figures (legends, layout); the command saves exactly those.
 """
 import argparse
@@ -34,6 +39,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from . import figures_order as order_figures  # noqa: E402
 from . import figures_results as results_figures  # noqa: E402
 from . import figures_shape as shape_figures  # noqa: E402
 from . import figures_versus_p as versus  # noqa: E402
@@ -54,6 +60,7 @@ FIGURES = {
     "major_axis": results_figures.major_axis,
     "spreadability": results_figures.spreadability,
     "pore_size": results_figures.pore_size,
+    "order": order_figures.order,
     "versus_p": versus.versus_p,
     "phi_vs_width": versus.phi_vs_width,
     "mean_width": shape_figures.mean_width,

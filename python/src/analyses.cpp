@@ -5,6 +5,7 @@
 
 #include "cli/command_line.hpp"
 #include "parallel/parallel.hpp"
+#include "pipeline/analysis_registry.hpp"
 #include "pipeline/file_analysis.hpp"
 #include "pipeline/run.hpp"
 #include "pores/distance_transform.hpp"
@@ -130,6 +131,28 @@ py::tuple voxelSlice(const Packing& packing, int voxels, int plane, int threads)
     return py::make_tuple(solid, pores);
 }
 
+/// The registry's rows (pipeline/analysis_registry.hpp), from which sbpack's analysis classes
+/// are made (python/sbpack/analyses.py).
+py::list registryRows() {
+    py::list rows;
+    for (const AnalysisInfo& info : analysisRegistry()) {
+        if (info.pythonClass.empty()) continue;
+        py::list groups, options;
+        for (const schema::Group* g : info.groups)
+            groups.append(std::string(g->name));
+        for (std::string_view option : analysisOptions(info))
+            options.append(std::string(option));
+        py::dict row;
+        row["name"] = std::string(info.name);
+        row["python_class"] = std::string(info.pythonClass);
+        row["description"] = std::string(info.description);
+        row["groups"] = groups;
+        row["options"] = options;
+        rows.append(row);
+    }
+    return rows;
+}
+
 } // namespace
 
 void registerAnalyses(py::module_& m) {
@@ -140,6 +163,9 @@ void registerAnalyses(py::module_& m) {
         .def("compute", &Analyzer::compute, py::arg("packing"), py::arg("input") = "<python>")
         .def_property_readonly("analyses", &Analyzer::analyses)
         .def_property_readonly("threads", &Analyzer::threads);
+    m.def("analysis_registry", &registryRows,
+          "sbanalyze's analyses: name (--compute), python_class, description, groups (its own "
+          "first) and options (the command line's, without --, besides threads)");
     m.def("analyze", &analyzeFiles, py::arg("args"),
           "sbanalyze FILE... [options] in-process (args without the program name)");
     m.def("voxel_slice", &voxelSlice, py::arg("packing"), py::arg("voxels"), py::arg("plane"),

@@ -9,21 +9,23 @@ import sys
 
 import matplotlib
 import numpy as np
+from matplotlib.patches import StepPatch
 import pytest
 
 import sbpack
 import sbpack.plot as plot
 from sbpack import _sbpack
-from sbpack import figures_results, figures_series, figures_shape, figures_versus_p
+from sbpack import figures_order, figures_results, figures_series, figures_shape, figures_versus_p
 from conftest import DATA, FAST, cli_args, run
 
 INPUTS = [os.path.join(DATA, "mrj-p1.5-1000.h5"), os.path.join(DATA, "mrj-spheres-5000.h5")]
+ORDERED = os.path.join(DATA, "ordered-p1.2-40.h5")  # N = 40, p = 1.2: sbanalyze calls it ordered
 OPTIONS = dict(FAST, voxels=100, pore_voxels=100, bootstrap=20)
 matplotlib.rcParams["figure.max_open_warning"] = 0  # the module's fixtures hold ~40 figures
 CHEAP = dict(slice_voxels=64, form_factor_voxels=64, threads=2)  # the engine's figures, small
 
 NAMES = ["structure_factor", "spectral_density", "small_q", "major_axis", "spreadability",
-                "pore_size", "versus_p", "phi_vs_width", "mean_width", "form_factor",
+                "pore_size", "order", "versus_p", "phi_vs_width", "mean_width", "form_factor",
                 "packing_slice"]
 
 
@@ -346,3 +348,117 @@ def test_a_label_says_how_many_members_have_the_analysis():
     assert figures_series.group_label(s, "spreadability") == \
         "p = 1.5, N = 250 (mean $\\pm$ std of the 2 of 3 with spreadability)"
     assert figures_series.group_label(s, "structure_factor") == s.label
+
+
+def steps_of(ax, f):
+    """The q6 histogram (StepPatch) of the input f's series."""
+    name = os.path.basename(str(f["input"]))
+    return next(p for p in ax.patches if name in (p.get_gid() or ""))
+
+
+def finite_q6(files):
+    """The local q6 of every particle with bonds of `files`, pooled."""
+    q = np.concatenate([f["order"]["q6_local"] for f in files])
+    return q[np.isfinite(q)]
+
+
+def test_order_is_the_results(results, figures):
+    """g2 against r / w with its cutoff (dotted) and its ideal-gas band around 1; the density of
+    the local q6 (particles without bonds left out) in bins of 0.01, beside fcc's 0.575, the
+    verdict's 0.5 and the MRJ range; the legend names each input's values, no P4 for spheres."""
+    files = sbpack.read_results(results)["files"]
+    g2_axis, q6_axis = figures["order"].axes[:2]  # one side, p >= 1: g2 and q6
+    assert g2_axis.get_xlabel() == r"$r/\bar w$" and q6_axis.get_xlabel() == r"local $q_6$"
+    assert q6_axis.get_ylabel() == "probability density"
+    for f in files:
+        o = f["order"]
+        line = series_line(g2_axis, f)
+        assert np.array_equal(line.get_xdata(), o["r_w"])
+        assert np.array_equal(line.get_ydata(), o["g2"])
+        assert any(list(c.get_xdata()) == [o["cutoff_w"]] * 2 and c.get_linestyle() == ":"
+                   and c.get_color() == line.get_color() for c in g2_axis.lines)
+        density, edges, _ = steps_of(q6_axis, f).get_data()
+        assert np.allclose(edges, np.linspace(0.0, 1.0, 101))
+        assert np.array_equal(density, np.histogram(finite_q6([f]), edges, density=True)[0])
+        entry = next(t.get_text() for t in q6_axis.get_legend().get_texts()
+                     if os.path.basename(str(f["input"])) in t.get_text())
+        assert f"{o['q6_local_mean']:.3f}" in entry and f"{o['T']:.3f}" in entry
+        assert ("P_4" in entry) == (f["p"] != 1.0) and "ORDERED" not in entry
+    band = np.concatenate([path.vertices[:, 1] for c in g2_axis.collections
+                           for path in c.get_paths()])  # every input's 1 +- sigma
+    assert band.min() >= 0.0 and band.max() <= 2.0 and band.max() > 1.0  # 1 +- sigma, sigma <= 1
+    verticals = {c.get_xdata()[0] for c in q6_axis.lines if len(set(c.get_xdata())) == 1}
+    assert {figures_order.Q6_ORDERED, figures_order.FCC_Q6} <= verticals
+    assert any("MRJ" in t.get_text() and "0.39-0.44" in t.get_text()
+               for t in q6_axis.get_legend().get_texts())
+
+
+def test_order_of_an_ensemble_draws_each_member(ensemble, ensemble_figures):
+    """An ensemble's g2: each member's own curve (the results keep no ensemble g2); its q6
+    histogram: every member's particles pooled; its legend: the ensemble's mean +- std."""
+    r = sbpack.read_results(ensemble)
+    g2_axis, q6_axis = ensemble_figures["order"].axes[:2]
+    assert "each member's g₂ thin" in " ".join(ensemble_figures["order"]._suptitle.get_text()
+                                              .split())
+    for e in r["ensembles"]:
+        members = [r["files"][int(m)] for m in e["members"]]
+        label = f"p = {e['p']:g}, N = {e['n_particles']} (mean $\\pm$ std of 3)"
+        line = labelled(g2_axis)[label]
+        drawn = [c for c in g2_axis.lines if c.get_color() == line.get_color()
+                 and len(c.get_xdata()) > 2]
+        assert len(drawn) == 3
+        for c, f in zip(drawn, members):
+            assert np.array_equal(c.get_ydata(), f["order"]["g2"])
+        patch = next(p for p in q6_axis.patches if p.get_gid() == label)
+        density, edges, _ = patch.get_data()
+        assert np.array_equal(density, np.histogram(finite_q6(members), edges, density=True)[0])
+        entry = next(t.get_text() for t in q6_axis.get_legend().get_texts()
+                     if t.get_text().startswith(label))
+        mean, std = e["order"]["q6_local_mean"], e["order"]["q6_local_mean_std"]
+        assert f"{mean:.3f} \\pm {std:.3f}" in entry
+
+
+def test_versus_p_has_the_order_metrics(ensemble, ensemble_figures):
+    """With order results: Q6, the mean local q6, T and P4 against p, the ensembles' mean and
+    std, no paper values (it has none), P4 only for p != 1."""
+    ensembles = sbpack.read_results(ensemble)["ensembles"]
+    axes = {ax.get_ylabel(): ax for ax in ensemble_figures["versus_p"].axes if ax.axison}
+    for _, name, ylabel, column, _ in [p for p in plot.PANELS if p[0] == "order"]:
+        assert column is None
+        ax = axes[ylabel]
+        assert ax.get_title().startswith("not in the paper")
+        assert not [c for c in ax.containers if c.get_label() == figures_versus_p.PAPER]
+        drawn = {(c.lines[0].get_xdata()[0], c.lines[0].get_ydata()[0]) for c in ax.containers}
+        assert drawn == {(e["p"], e["order"][name]) for e in ensembles if name in e["order"]}
+    assert {e["p"] for e in ensembles if "P4" in e["order"]} == {1.5}
+
+
+def test_an_ordered_box_stands_out(sbanalyze, tmp_path):
+    """The ordered N = 40 box beside MRJ: called ORDERED in the legend, its q6 filled and its
+    narrow spike clipped (the axis is the MRJ histogram's, and the legend names the height),
+    'ordered' beside its points against p."""
+    out = tmp_path / "order.h5"
+    assert run([sbanalyze, ORDERED, INPUTS[0], "--compute", "order", "--quiet", "--out",
+                str(out), "--threads", "1"]).returncode == 0
+    r = sbpack.read_results(str(out))
+    ordered, mrj = r["files"]
+    assert ordered["order"]["ordered"] == 1 and mrj["order"]["ordered"] == 0
+    series = figures_series.series_of([r])
+    fig = figures_order.order(series)
+    plot.finish(fig)
+    q6_axis = fig.axes[1]
+    texts = {os.path.basename(str(f["input"])): next(
+        t.get_text() for t in q6_axis.get_legend().get_texts()
+        if os.path.basename(str(f["input"])) in t.get_text()) for f in r["files"]}
+    assert "ORDERED" in texts["ordered-p1.2-40.h5"] and "clipped" in texts["ordered-p1.2-40.h5"]
+    assert "ORDERED" not in texts["mrj-p1.5-1000.h5"]
+    spike = steps_of(q6_axis, ordered).get_data()[0].max()
+    mrj_peak = steps_of(q6_axis, mrj).get_data()[0].max()
+    assert q6_axis.get_ylim()[1] == pytest.approx(figures_order.HEADROOM * mrj_peak)
+    assert q6_axis.get_ylim()[1] < spike
+    filled = [p for p in q6_axis.patches if isinstance(p, StepPatch) and p.get_fill()]
+    assert len(filled) == 1 and filled[0].get_facecolor()[:3] == \
+        steps_of(q6_axis, ordered).get_edgecolor()[:3]
+    versus = figures_versus_p.versus_p(series)
+    marks = [t for ax in versus.axes for t in ax.texts if t.get_text() == "ordered"]
+    assert len(marks) == 4 and all(t.xy[0] == 1.2 for t in marks)  # Q6, q6, T, P4

@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Cross-checks sbanalyze --compute order against the peer freud (freud.order.Steinhardt,
+# freud.density.RDF) on one packing and times both on one thread (issue 44; bench/RESULTS.md,
+# "Order metrics against freud"). Exits non-zero when q_l(i), Q_l or g2 disagree beyond the
+# tolerances stated in bench/order_vs_freud.py.
+# usage: bash bench/order_vs_freud.sh [SBANALYZE] [PACKING]
+#   SBANALYZE  default build/analysis/sbanalyze; PACKING  default data/mrj-spheres-5000.h5
+# environment:
+#   SBPACK_FREUD_VENV  virtual environment with freud, h5py and numpy; created with the python3
+#                      on PATH and pip when missing
+#                      (default ${XDG_CACHE_HOME:-$HOME/.cache}/sbpack/freud-venv)
+#   REPEATS            timed runs of each side, median reported (default 5)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+sbanalyze=${1:-$root/build/analysis/sbanalyze}
+packing=${2:-$root/data/mrj-spheres-5000.h5}
+venv=${SBPACK_FREUD_VENV:-${XDG_CACHE_HOME:-$HOME/.cache}/sbpack/freud-venv}
+
+if ! "$venv/bin/python" -c 'import freud, h5py, numpy' 2> /dev/null; then
+    echo "creating $venv: pip install freud-analysis h5py numpy" >&2
+    python3 -m venv "$venv"
+    "$venv/bin/python" -m pip install --quiet 'freud-analysis>=3,<4' h5py numpy
+fi
+
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+"$venv/bin/python" "$root/bench/order_vs_freud.py" "$sbanalyze" "$packing" \
+    --repeats "${REPEATS:-5}" --work "$work"

@@ -1,0 +1,212 @@
+"""sbpack.plot's figure of the order metrics (sbanalyze --compute order, group `order`;
+docs/order-metrics.md): the pair correlation g2(r) of the centroids against r / w, with the
+ideal-gas error of each bin and the neighbour cutoff, and the density of the per-particle local
+q6 beside fcc's value, the verdict's threshold and the MRJ range, split as the paper splits its
+curves (p <= 1 | p >= 1), one series per (p, N) in the style of every other figure.
+
+Every value drawn is the results'; the histogram of q6 is taken here from the per-particle values
+(`q6_local`), pooled over an ensemble's members. The results keep no ensemble g2, and no mean of
+g2 is taken here: an ensemble's members are drawn each, thin."""
+import numpy as np
+
+from .figures_results import bands, note, side_rows, with_group
+from .figures_series import group_label, line_style, scalar
+
+FCC_Q6 = 0.575  # 13 / sqrt(512) = 0.57452: fcc's first shell (docs/order-metrics.md, section 2)
+# the verdict: ordered at a mean local q6 >= 0.5, T >= 0.3 or P4 >= 0.5 (section 5)
+Q6_ORDERED = 0.5
+T_ORDERED = 0.3
+P4_ORDERED = 0.5
+MRJ_Q6 = (0.39, 0.44)  # the mean local q6 of every MRJ packing of N >= 200 measured (section 5)
+Q6_BIN = 0.01  # the histogram's bins of q6
+G2_TOP = 5.0  # g2 axis: at least this high; main peaks above it are clipped, their height named
+HEADROOM = 1.25  # axes' top over the highest value they show unclipped
+
+
+def order_values(s):
+    """The series' members' `order` groups."""
+    return [f["order"] for f in s.members("order")]
+
+
+def q6_values(s):
+    """The finite local q6 of every particle of the series' members (pooled; NaN: no bond)."""
+    values = [np.asarray(o["q6_local"], dtype=float) for o in order_values(s) if "q6_local" in o]
+    if not values:
+        return None
+    values = np.concatenate(values)
+    return values[np.isfinite(values)]
+
+
+def value_text(s, name, symbol, digits=3):
+    """'symbol = 0.406' (one input) or 'symbol = 0.406 +- 0.012' (an ensemble); '' if absent."""
+    v = scalar(s, "order", name)
+    if v is None or not np.isfinite(v[0]):
+        return ""
+    spread = fr" \pm {v[1]:.{digits}f}" if s.averaged else ""
+    return fr"${symbol} = {v[0]:.{digits}f}{spread}$"
+
+
+def verdict_text(s):
+    """'ORDERED' (every member), 'ORDERED: 1 of 3', or '' (none ordered)."""
+    ordered = sum(int(o.get("ordered", 0)) for o in order_values(s))
+    members = len(order_values(s))
+    if not ordered:
+        return ""
+    return "ORDERED" if ordered == members else f"ORDERED: {ordered} of {members}"
+
+
+def is_ordered(s):
+    """True where a member of the series is called ordered (sbanalyze's verdict)."""
+    return any(int(o.get("ordered", 0)) for o in order_values(s))
+
+
+def series_text(s, clipped):
+    """The series' legend entry: its label, the verdict, and its cutoff, mean local q6, T and
+    P4 (ensembles: mean +- std); `clipped` the heights of its peaks beyond the axes."""
+    verdict = verdict_text(s)
+    head = group_label(s, "order") + (f": {verdict}" if verdict else "")
+    shells = sorted({int(o["T_shells"]) for o in order_values(s) if "T_shells" in o})
+    t = value_text(s, "T", "T")
+    t += f" ({'/'.join(map(str, shells))} shells)" if t and shells else ""
+    values = [value_text(s, "cutoff_w", r"r_c/\bar w", 2),
+              value_text(s, "q6_local_mean", r"\langle q_6\rangle"), t,
+              value_text(s, "P4", "P_4")]
+    return head + "\n" + ", ".join(v for v in values + clipped if v)
+
+
+def g2_top(part):
+    """The g2 axis's top: G2_TOP, or higher where the structure beyond a cutoff (the second
+    shell and on) reaches it; the main peaks above it are clipped."""
+    top = G2_TOP
+    for s in part:
+        for o in order_values(s):
+            beyond = np.asarray(o["r_w"]) > o.get("cutoff_w", np.inf)
+            if beyond.any():
+                top = max(top, HEADROOM * float(np.max(np.asarray(o["g2"])[beyond])))
+    return top
+
+
+def draw_g2(ax, s, top):
+    """The series' g2 (each member's, thin, for an ensemble), its ideal-gas band 1 +- sigma (the
+    first member's: sigma depends on N and the density only; drawn where sigma <= 1, at small r
+    it spans every value and would only veil the axes) and its cutoff (dotted; an ensemble's
+    mean); the text naming a main peak clipped at `top`, or None."""
+    members = order_values(s)
+    first = members[0]
+    error = np.asarray(first["g2_ideal_gas_error"])
+    ax.fill_between(first["r_w"], 1.0 - error, 1.0 + error, where=error <= 1.0,
+                    color=s.style["color"], alpha=0.1, lw=0)
+    for i, o in enumerate(members):
+        style = line_style(s, len(o["r_w"]))
+        if s.averaged:
+            style.update(lw=0.6, alpha=0.6, marker=style["marker"] if i == 0 else "None")
+        ax.plot(o["r_w"], o["g2"], gid=s.label if i == 0 else None, label="_nolegend_",
+                **style)
+    cutoff = scalar(s, "order", "cutoff_w")
+    if cutoff is not None and np.isfinite(cutoff[0]):
+        ax.axvline(cutoff[0], color=s.style["color"], ls=":", lw=1.1)
+    peak = max(float(np.max(o["g2"])) for o in members)
+    return fr"$g_2$ peak {peak:.1f} (clipped)" if peak > top else None
+
+
+def q6_top(part):
+    """The q6 axis's top: HEADROOM over the highest density of the series that no member calls
+    ordered (an ordered box's narrow spike would flatten them), or None (matplotlib's) when
+    every series is ordered."""
+    peaks = [np.max(np.histogram(v, bins=q6_bins(), density=True)[0]) for s in part
+             if not is_ordered(s) and (v := q6_values(s)) is not None and len(v)]
+    return HEADROOM * max(peaks) if peaks else None
+
+
+def q6_bins():
+    """The edges of the q6 histogram's bins, 0 .. 1 by Q6_BIN."""
+    return np.linspace(0.0, 1.0, int(round(1.0 / Q6_BIN)) + 1)
+
+
+def draw_q6(ax, s, top):
+    """The density of the series' local q6 (pooled over an ensemble's members) as steps, its
+    mean local q6 marked at the top of the axes; the text naming a density clipped at `top`, or
+    None."""
+    values = q6_values(s)
+    if values is None or not len(values):
+        return None
+    density, edges = np.histogram(values, bins=q6_bins(), density=True)
+    ax.stairs(density, edges, color=s.style["color"], ls=s.style["ls"], lw=1.3,
+              fill=False, gid=s.label)
+    if is_ordered(s):  # the verdict, visible without the legend
+        ax.stairs(density, edges, color=s.style["color"], alpha=0.25, fill=True, lw=0)
+    mean = scalar(s, "order", "q6_local_mean")
+    if mean is not None and np.isfinite(mean[0]):
+        ax.plot([mean[0]], [0.97], s.style["marker"], color=s.style["color"], ms=6,
+                transform=ax.get_xaxis_transform(), clip_on=False)
+    peak = float(np.max(density))
+    return f"$q_6$ density peak {peak:.0f} (clipped)" if top is not None and peak > top else None
+
+
+def q6_references(ax, first):
+    """fcc's q6, the verdict's threshold and the MRJ range of the mean local q6."""
+    label = (lambda text: text) if first else (lambda text: "_nolegend_")
+    ax.axvspan(*MRJ_Q6, color="0.5", alpha=0.18, lw=0,
+               label=label(fr"MRJ ($N \geq 200$): mean local $q_6$ {MRJ_Q6[0]}-{MRJ_Q6[1]}"))
+    ax.axvline(Q6_ORDERED, color="tab:red", ls="-.", lw=1.1,
+               label=label(fr"ordered: mean local $q_6 \geq {Q6_ORDERED}$"))
+    ax.axvline(FCC_Q6, color="k", ls="--", lw=1.1, label=label(fr"fcc: $q_6 = {FCC_Q6}$"))
+
+
+def q6_range(part):
+    """The q6 axis: the series' values and fcc's, a margin around them, within [0, 1]."""
+    values = [v for s in part if (v := q6_values(s)) is not None and len(v)]
+    low = min([float(np.min(v)) for v in values] + [MRJ_Q6[0]])
+    high = max([float(np.max(v)) for v in values] + [FCC_Q6])
+    return max(0.0, low - 0.05), min(1.0, high + 0.05)
+
+
+def order(series):
+    """g2(r) against r / w with the ideal-gas band and the cutoff, and the density of the local
+    q6 with fcc, the verdict's threshold and the MRJ range; p <= 1 | p >= 1."""
+    series = with_group(series, "order")
+    if not series:
+        return None
+    with_q6 = any(q6_values(s) is not None for s in series)
+    fig, rows = side_rows(series, 2 if with_q6 else 1, width=4.8, height=3.6)
+    for side, part, row in rows:
+        g2_ax, top = row[0], g2_top(part)
+        g2_ax.axhline(1.0, color="0.3", ls="--", lw=0.8, label=r"$g_2 = 1$ (ideal gas)")
+        g2_ax.fill_between([], [], [], color="0.5", alpha=0.15, lw=0,
+                           label=r"$1 \pm$ ideal-gas error per bin")
+        g2_ax.plot([], [], ":", color="0.3", lw=1.1, label=r"cutoff $r_c$: first minimum")
+        clipped = {id(s): [draw_g2(g2_ax, s, top)] for s in part}
+        g2_ax.set(xlim=(0.0, None), ylim=(0.0, top), xlabel=r"$r/\bar w$",
+                  ylabel=r"$g_2(r)$", title=f"Pair correlation, {side}")
+        if with_q6:
+            q6_ax, q6_axis_top = row[1], q6_top(part)
+            for s in part:
+                clipped[id(s)].append(draw_q6(q6_ax, s, q6_axis_top))
+            q6_references(q6_ax, first=True)
+            q6_ax.set(xlim=q6_range(part), ylim=(0.0, q6_axis_top), xlabel=r"local $q_6$",
+                      ylabel="probability density", title=f"Local $q_6$, {side}")
+        legend_ax = row[-1]
+        for s in part:  # the series' entries, in its style, on the row's last axes
+            legend_ax.plot([], [], **line_style(s, 1),
+                           label=series_text(s, [c for c in clipped[id(s)] if c]))
+    note(fig, order_note(series, with_q6))
+    return fig
+
+
+def order_note(series, with_q6):
+    """What the order figure draws, and what it takes here."""
+    text = ("Order metrics (sbanalyze --compute order; docs/order-metrics.md), lengths over the "
+            "mean width. Left: pair correlation of the centroids (bins of 0.02 w̄); the faint "
+            "band 1 ± the ideal-gas error per bin at the same N and density (Eq. 1.2; where it "
+            "stays above 0); dotted the neighbour cutoff r_c, the first minimum of g₂"
+            + bands(series, "ensembles: each member's g₂ thin (the results keep no ensemble "
+                            "g₂), the band the first member's, r_c their mean"))
+    if with_q6:
+        text += (". Right: density of the local q₆ of each particle with bonds shorter than r_c "
+                 f"(bins of {Q6_BIN:g}"
+                 + bands(series, "ensembles: every member's particles pooled")
+                 + "), the series' marker at the top its mean local q₆; dashed fcc "
+                 f"{FCC_Q6}, dash-dotted the verdict's threshold {Q6_ORDERED} (ordered: mean "
+                 f"local q₆ ≥ {Q6_ORDERED}, T ≥ {T_ORDERED} or P4 ≥ {P4_ORDERED}; drawn "
+                 "filled), grey the MRJ range of the mean local q₆")
+    return text + ". Peaks beyond the axes are clipped: the legend names their height."
