@@ -22,7 +22,7 @@ command="scripts/reproduce-paper.sh"
 for arg in "$@"; do
     if [[ $arg =~ ^[A-Za-z0-9_./=:,+-]+$ ]]; then command+=" $arg"; else command+=" '${arg//\'/\'\\\'\'}'"; fi
 done
-n=1000 count=5 jobs=$(nproc) work=$root/build/reproduce table="" compute=contacts extra="" doc=""
+n=1000 count=5 jobs=$(nproc) work=$root/build/reproduce table="" compute=contacts,order extra="" doc=""
 build=$root/build
 plist="0.85 0.9 0.95 0.975 1 1.025 1.05 1.1 1.2 1.3 1.4 1.5"
 usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; }

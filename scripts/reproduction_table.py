@@ -113,6 +113,20 @@ def transport_row(results, group, paper):
             f"{pm(attr(group, 'hyperuniformity', 'H'), 1e3, 0, n)} | {number(ref, 'H_e-3'):.2f} |")
 
 
+def ordered_count(results, group):
+    """How many of the ensemble's packings sbanalyze's order verdict calls ordered."""
+    return sum(int(results["files"][str(m)]["order"].attrs["ordered"])
+               for m in group["members"][:] if "order" in results["files"][str(m)])
+
+
+def order_row(results, group):
+    n = int(group.attrs["n_files"])
+    return (f"| {float(group.attrs['p']):g} | {int(group.attrs['n_particles'])} | {n} | "
+            f"{pm(attr(group, 'order', 'q6_local_mean'), 1, 3, n)} | "
+            f"{pm(attr(group, 'order', 'Q6'), 1, 3, n)} | {pm(attr(group, 'order', 'T'), 1, 3, n)} | "
+            f"{pm(attr(group, 'order', 'P4'), 1, 4, n)} | {ordered_count(results, group)} of {n} |")
+
+
 STRUCTURE_HEADER = ("p", "N", "n", "phi (ours)", "phi (paper)", "phi ok", "Z (ours)", "Z (paper)",
                     "Z ok", "phi_R % (ours)", "phi_R % (paper)", "phi_R ok",
                     "phi_R ok (both errors)", "sbgen CPU s (mean / max)")
@@ -134,6 +148,14 @@ TRANSPORT_NOTE = (
     "w, pore sizes or transport (its figures only).")
 
 
+ORDER_HEADER = ("p", "N", "n", "mean local q6", "Q6", "T", "P4", "ordered")
+ORDER_NOTE = (
+    "Order metrics (sbanalyze --compute order, docs/order-metrics.md): mean local q6 and global "
+    "Q6 over the bonds shorter than the first minimum of g2, T over the fcc shells, the cubatic "
+    "P4 of the axes (none for spheres); ordered: packings the verdict calls ordered (mean local "
+    "q6 >= 0.5, T >= 0.3 or P4 >= 0.5; fcc: q6 0.575, T 1). The paper reports none of them.")
+
+
 def print_table(header, rows, note):
     print("| " + " | ".join(header) + " |")
     print("|" + "---|" * len(header))
@@ -148,6 +170,9 @@ def main(results_path, reference):
         groups = sorted(results["ensembles"].values(), key=lambda g: float(g.attrs["p"]))
         print_table(STRUCTURE_HEADER, [structure_row(results, g, paper) for g in groups],
                     STRUCTURE_NOTE)
+        if any("order" in g for g in groups):
+            print()
+            print_table(ORDER_HEADER, [order_row(results, g) for g in groups], ORDER_NOTE)
         if any(name in g for g in groups for name in ("pore_size", "hyperuniformity")):
             print()
             print_table(TRANSPORT_HEADER, [transport_row(results, g, paper) for g in groups],
