@@ -153,7 +153,7 @@ ORDER_NOTE = (
     "Order metrics (sbanalyze --compute order, docs/order-metrics.md): mean local q6 and global "
     "Q6 over the bonds shorter than the first minimum of g2, T over the fcc shells, the cubatic "
     "P4 of the axes (none for spheres); ordered: packings the verdict calls ordered (mean local "
-    "q6 >= 0.5, T >= 0.3 or P4 >= 0.5; fcc: q6 0.575, T 1). The paper reports none of them.")
+    "q6 >= 0.5, T >= 0.3 over its 12 shells or P4 >= 0.5; fcc: q6 0.575, T 1). The paper reports none of them.")
 
 
 def print_table(header, rows, note):

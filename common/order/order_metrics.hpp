@@ -41,7 +41,8 @@ OrderMetrics measureOrder(const Packing& packing,
 /// The thresholds of the verdict (docs/order-metrics.md §5, measured on 25 packings): the mean
 /// local q6 over the cutoff bonds, N-independent, is 0.39-0.44 in every MRJ packing of N >= 200
 /// and at most 0.47 in the disordered boxes of N = 40-100, 0.53-0.57 in the ordered ones (fcc:
-/// 0.575); T is 0.04-0.09 at N >= 200; the cubatic P4 is 0.00-0.06 at N >= 200 and 1.0 in the
+/// 0.575); T, which counts only over all 12 of its shells (N of about 500 and more; over fewer the
+/// contact shell dominates it), is 0.04-0.07 at N >= 1000; the cubatic P4 is 0.00-0.06 at N >= 200 and 1.0 in the
 /// aligned near-cubes of data/dense-p10-200.h5 (simple-cubic order, whose q6 is only 0.354).
 inline constexpr double kOrderedLocalQ6 = 0.5;
 inline constexpr double kOrderedT = 0.3;

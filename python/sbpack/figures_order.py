@@ -13,7 +13,7 @@ from .figures_results import bands, note, side_rows, with_group
 from .figures_series import group_label, line_style, scalar
 
 FCC_Q6 = 0.575  # 13 / sqrt(512) = 0.57452: fcc's first shell (docs/order-metrics.md, section 2)
-# the verdict: ordered at a mean local q6 >= 0.5, T >= 0.3 or P4 >= 0.5 (section 5)
+# the verdict: ordered at a mean local q6 >= 0.5, T >= 0.3 (over all 12 shells) or P4 >= 0.5 (section 5)
 Q6_ORDERED = 0.5
 T_ORDERED = 0.3
 P4_ORDERED = 0.5
@@ -207,6 +207,6 @@ def order_note(series, with_q6):
                  + bands(series, "ensembles: every member's particles pooled")
                  + "), the series' marker at the top its mean local q₆; dashed fcc "
                  f"{FCC_Q6}, dash-dotted the verdict's threshold {Q6_ORDERED} (ordered: mean "
-                 f"local q₆ ≥ {Q6_ORDERED}, T ≥ {T_ORDERED} or P4 ≥ {P4_ORDERED}; drawn "
-                 "filled), grey the MRJ range of the mean local q₆")
+                 f"local q₆ ≥ {Q6_ORDERED}, T ≥ {T_ORDERED} over 12 shells or P4 ≥ {P4_ORDERED}; "
+                 "drawn filled), grey the MRJ range of the mean local q₆")
     return text + ". Peaks beyond the axes are clipped: the legend names their height."
