@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
         parameters.fft = {FftPlanning::Estimate, {}};
         const SpectralDensityResult chi =
             SpectralDensity(parameters).compute(packing, voxels, transform, quiet);
-        const DiscreteSpectrum voxel = voxelSpectrum(transform, voxels, w, {});
+        const DiscreteSpectrum voxel = voxelSpectrum(transform, voxels, w, {}, quiet);
         const double gridSeconds = clock.seconds();
         const SpectralPeak peak = spectralPeak(chi.shells.q, chi.shells.value, w);
         const auto [rms, worst] = chiErrors(voxel, exact, peak.chi * w * w * w);

@@ -257,7 +257,7 @@ int errors(const Options& o, const Packing& packing) {
         auto start = std::chrono::steady_clock::now();
         const sbpack::PoreSizeMap map = sbpack::periodicDistanceTransform(mask, m, a);
         const double edtSeconds = secondsSince(start);
-        const auto voxel = sbpack::PoreSizeDistribution({}).compute(map, w);
+        const auto voxel = sbpack::PoreSizeDistribution({}).compute(map, w, sbpack::Progress());
         // The same curve moved down by half a voxel (centre-to-centre distances overshoot the
         // distance to the surface by about a / 2): informative only, not part of the library.
         std::vector<double> shiftedSizes;

@@ -53,7 +53,7 @@ CudaGrid::Spectra CudaGrid::spectralDensity(const Packing& packing,
     const Stopwatch shellClock;
     ShellAverage shells =
         spectralShellSums(gpu::compactCubeSlab(cube.data, voxels_, s), voxelSize(),
-                          packing.boxLength, out.chi.maxShell, progress, parameters.serial)
+                          packing.boxLength, out.chi.maxShell, progress)
             .average();
     out.chi.shellSeconds = shellClock.seconds();
     if (spectrum != nullptr)

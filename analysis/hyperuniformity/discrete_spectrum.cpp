@@ -54,7 +54,7 @@ std::vector<double> blockSums(const VoxelFourierTransform& transform, const std:
 /// sum of chi over every wave vector of the grid, per |n|^2: the blocks summed in order (into
 /// zeros: every term is >= +0, so the first block's sums are its own bit for bit).
 std::vector<double> gridSums(const VoxelFourierTransform& transform, const std::vector<double>& f,
-                             double volume, bool serial) {
+                             double volume, const Progress& progress) {
     return orderedReduce(
         kPlaneBlocks, std::vector<double>(squaredIndexBins(transform.voxels()), 0.0),
         [&](std::int64_t b) { return blockSums(transform, f, volume, b); },
@@ -62,7 +62,7 @@ std::vector<double> gridSums(const VoxelFourierTransform& transform, const std::
             for (std::size_t i = 0; i < sum.size(); ++i)
                 sum[i] += block[i];
         },
-        serial);
+        progress);
 }
 
 double excessAtZero(const DiscreteSpectrum& s) {
@@ -84,14 +84,15 @@ std::vector<double> axisFactors(int m, double a, bool cubeFormFactor) {
 }
 
 DiscreteSpectrum voxelSpectrum(const VoxelFourierTransform& transform, const Voxelization& voxels,
-                               double meanWidth, const VoxelSpectrumOptions& options) {
+                               double meanWidth, const VoxelSpectrumOptions& options,
+                               const Progress& progress) {
     if (transform.voxels() != voxels.voxels())
         throw std::invalid_argument("voxel spectrum: the transform is of a different grid");
     const VoxelGridFigures grid{voxels.voxels(), voxels.boxLength(), voxels.phiVoxel()};
     const std::vector<double> f =
         axisFactors(grid.voxels, voxels.voxelSize(), options.cubeFormFactor);
     return voxelSpectrumFrom(
-        gridSums(transform, f, std::pow(grid.boxLength, 3), options.serial),
+        gridSums(transform, f, std::pow(grid.boxLength, 3), progress),
         [&transform](int kx, int ky, int kz) { return transform.power(kx, ky, kz); }, grid,
         meanWidth, options);
 }

@@ -39,8 +39,6 @@ struct VoxelSpectrumOptions {
     bool cubeFormFactor = true;
     /// Wave vectors with Q w <= individualQw are also kept one by one.
     double individualQw = 16.0;
-    /// Execution only: run on the calling thread (the result is the same).
-    bool serial = false;
 };
 
 /// Every wave vector of the voxel grid (the M^3 - 1 of the discrete transform, n_i in
@@ -51,7 +49,8 @@ struct VoxelSpectrumOptions {
 /// complete: E(0) = 1 - phi_voxel exactly and missingWeight = 0, cutoffQ = inf.
 /// Throws std::invalid_argument if the transform is not of these voxels.
 DiscreteSpectrum voxelSpectrum(const VoxelFourierTransform& transform, const Voxelization& voxels,
-                               double meanWidth, const VoxelSpectrumOptions& options);
+                               double meanWidth, const VoxelSpectrumOptions& options,
+                               const Progress& progress);
 
 /// Per axis and DFT index k of an M-grid of voxel edge a: [a sinc(pi n / M)]^2 (the cube form
 /// factor along that axis, Q a / 2 = pi n / M), or a^2 without the form factor.

@@ -107,7 +107,7 @@ SlabVoxels MpiGrids::voxelizeSlab(const Packing& packing, int voxels, int begin,
     std::unique_ptr<Voxelization> slab;
     collectively(comm_, [&] {
         slab = std::make_unique<Voxelization>(
-            Voxelizer({voxels, false, begin, end}).compute(packing, progress));
+            Voxelizer({voxels, begin, end}).compute(packing, progress));
     });
     SlabVoxels out{std::move(*slab), slab->solidCount(), {}};
     std::int64_t solid = out.solidCount;
@@ -165,7 +165,7 @@ SpectralDensityResult MpiGrids::spectralDensity(const Packing& packing, const Sl
     const std::int64_t rowStride = 2 * (m / 2 + 1);
     collectively(comm_, [&] {
         voxels.slab.copySolidIndicator(std::span<double>(data.get(), s.n0 * m * rowStride),
-                                       rowStride);
+                                       rowStride, progress);
         progress.checkInterrupt();
     });
     result.fillSeconds = clock.seconds();
@@ -178,8 +178,8 @@ SpectralDensityResult MpiGrids::spectralDensity(const Packing& packing, const Sl
         const SpectrumSlab slab{
             data.get(), m,        static_cast<int>(s.start1), static_cast<int>(s.start1 + s.n1),
             m,          m / 2 + 1};
-        shells = spectralShellSums(slab, result.voxelSize, packing.boxLength, result.maxShell,
-                                   progress, parameters.serial);
+        shells =
+            spectralShellSums(slab, result.voxelSize, packing.boxLength, result.maxShell, progress);
     });
     ShellAccumulator merged(packing.boxLength, result.maxShell);
     for (const std::string& bytes : comm_.allGather(encodeSums(shells.sums())))
@@ -211,7 +211,7 @@ PoreSizeDistributionResult MpiGrids::poreSizes(const Packing& packing, int voxel
         const SlabVoxels slab = voxelizeSlab(packing, m, x.begin, x.end, progress);
         collectively(comm_, [&] {
             mask.resize(static_cast<std::size_t>(x.size()) * m * m);
-            slab.slab.copySolidMask(mask);
+            slab.slab.copySolidMask(mask, progress);
         });
         treeBytes = static_cast<double>(slab.slab.memoryBytes());
         solid = slab.solidCount;

@@ -1,9 +1,11 @@
 #pragma once
-// The one parallel-for of sbanalyze (docs/design.md §7): TBB over an index range, with a serial
-// switch so that every parallel result can be compared with a serial one; and the one ordered
-// reduce over it (partials per fixed chunk, combined in chunk order). Thread count is set once
-// per run by ThreadBudget and honoured by TBB and by FFTW, whose threads are OpenMP's
-// (libfftw3_omp), alike (no oversubscription).
+// The one parallel-for of sbanalyze (docs/design.md §7): TBB over an index range, run in order on
+// one thread when the execution context asks (Progress::serial), so that every parallel result
+// can be compared with a serial one; and the one ordered reduce over it (partials per fixed
+// chunk, combined in chunk order). Thread count is set once per run by ThreadBudget and honoured
+// by TBB and by FFTW, whose threads are OpenMP's (libfftw3_omp), alike (no oversubscription).
+
+#include "progress/progress.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -18,13 +20,13 @@
 namespace sbpack {
 
 /// Calls body(begin, end) over consecutive chunks of [begin, end) of about `grain` indices each.
-/// With serial = true the chunks run in order on the calling thread.
+/// With context.serial() the chunks run in order on the calling thread.
 template <class Body>
 void parallelFor(std::int64_t begin, std::int64_t end, std::int64_t grain, const Body& body,
-                 bool serial = false) {
+                 const Progress& context = Progress()) {
     if (end <= begin) return;
     if (grain < 1) grain = 1;
-    if (serial) {
+    if (context.serial()) {
         for (std::int64_t b = begin; b < end; b += grain)
             body(b, std::min(end, b + grain));
         return;
@@ -36,12 +38,12 @@ void parallelFor(std::int64_t begin, std::int64_t end, std::int64_t grain, const
 /// The ordered reduce of sbanalyze (docs/design.md §7): maps every chunk index of [0, chunks) to
 /// a partial result, mapChunk(c) -> T, in parallel (over parallelFor), then folds the partials
 /// into init in chunk order, combine(T& total, T&& partial), on the calling thread. The chunks
-/// are the caller's, fixed, so the result does not depend on the threads and equals serial = true
-/// bit for bit. Interrupt polls and progress belong in mapChunk, once per chunk. Every partial is
-/// kept until the fold: size the chunks for that.
+/// are the caller's, fixed, so the result does not depend on the threads and equals the serial
+/// one (context.serial()) bit for bit. Interrupt polls and progress belong in mapChunk, once per
+/// chunk. Every partial is kept until the fold: size the chunks for that.
 template <class T, class Map, class Combine>
 T orderedReduce(std::int64_t chunks, T init, const Map& mapChunk, const Combine& combine,
-                bool serial = false) {
+                const Progress& context = Progress()) {
     std::vector<std::optional<T>> partials(
         static_cast<std::size_t>(std::max<std::int64_t>(0, chunks)));
     parallelFor(
@@ -50,7 +52,7 @@ T orderedReduce(std::int64_t chunks, T init, const Map& mapChunk, const Combine&
             for (std::int64_t c = begin; c < end; ++c)
                 partials[c].emplace(mapChunk(c));
         },
-        serial);
+        context);
     for (std::optional<T>& partial : partials)
         combine(init, std::move(*partial));
     return init;

@@ -431,7 +431,7 @@ std::int64_t checkMask(std::span<const std::uint8_t> solidMask, int voxels, doub
 } // namespace
 
 PoreSizeMap transformMask(std::span<const std::uint8_t> solidMask, int voxels, double voxelSize,
-                          bool serial, bool withFeatures) {
+                          const Progress& progress, bool withFeatures) {
     if (withFeatures && voxels > maxFeatureTransformVoxels)
         throw std::invalid_argument("feature transform: M = " + std::to_string(voxels) +
                                     " is above " + std::to_string(maxFeatureTransformVoxels) +
@@ -459,7 +459,7 @@ PoreSizeMap transformMask(std::span<const std::uint8_t> solidMask, int voxels, d
             else
                 columnDistances(solidMask, squared, voxels, b, e);
         },
-        serial);
+        progress);
     std::vector<std::uint32_t> planeLargest(voxels);
     parallelFor(
         0, voxels, 1,
@@ -470,7 +470,7 @@ PoreSizeMap transformMask(std::span<const std::uint8_t> solidMask, int voxels, d
                     planeDistances(squared + i * plane,
                                    features != nullptr ? features + i * plane : nullptr, scratch);
         },
-        serial);
+        progress);
     map.voidCount_ = total - solid;
     map.maxSquaredDistance_ = *std::max_element(planeLargest.begin(), planeLargest.end());
     return map;
@@ -500,13 +500,13 @@ PoreSizeMap PoreSizeMap::fromSquaredDistances(std::unique_ptr<std::uint32_t[]> s
 }
 
 PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t> solidMask, int voxels,
-                                      double voxelSize, bool serial) {
-    return transformMask(solidMask, voxels, voxelSize, serial, false);
+                                      double voxelSize, const Progress& progress) {
+    return transformMask(solidMask, voxels, voxelSize, progress, false);
 }
 
 PoreSizeMap periodicFeatureTransform(std::span<const std::uint8_t> solidMask, int voxels,
-                                     double voxelSize, bool serial) {
-    return transformMask(solidMask, voxels, voxelSize, serial, true);
+                                     double voxelSize, const Progress& progress) {
+    return transformMask(solidMask, voxels, voxelSize, progress, true);
 }
 
 } // namespace sbpack

@@ -2,6 +2,8 @@
 // Exact periodic Euclidean distance transform of the void phase of a voxelised packing (paper
 // Sec. III B; docs/design.md §5): the pore-size map, from which F(delta) (Eq. 13) is computed.
 
+#include "progress/progress.hpp"
+
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -86,7 +88,8 @@ class PoreSizeMap {
     std::string vdbImage() const;
 
   private:
-    friend PoreSizeMap transformMask(std::span<const std::uint8_t>, int, double, bool, bool);
+    friend PoreSizeMap transformMask(std::span<const std::uint8_t>, int, double, const Progress&,
+                                     bool);
     PoreSizeMap(int voxels, double voxelSize);
     PoreSizeMap(int voxels, double voxelSize, std::unique_ptr<std::uint32_t[]> squared);
 
@@ -107,23 +110,23 @@ void checkSolidCount(std::int64_t solid, int voxels);
 /// per x plane the periodic min-plus transform along y and z: a Felzenszwalb-Huttenlocher lower
 /// envelope of parabolas with exact rational breakpoints, or, on lines whose values are all
 /// <= 32^2, an exact outward scan (at most 32 steps per voxel). Linear in M^3; parallel over
-/// columns and planes (parallelFor), serial = true for the reference order. Memory: the map
+/// columns and planes (parallelFor), serial as `progress` asks. Memory: the map
 /// (4 bytes per voxel) plus per-line scratch. Throws std::invalid_argument for a mask of the
 /// wrong size, M outside [1, maxPoreSizeVoxels] or a voxel size that is not finite and positive,
 /// std::runtime_error when the map exceeds MemAvailable, and std::domain_error when the grid has
 /// no solid or no void voxel (the pore sizes are undefined).
 PoreSizeMap periodicDistanceTransform(std::span<const std::uint8_t> solidMask, int voxels,
-                                      double voxelSize, bool serial = false);
+                                      double voxelSize, const Progress& progress = Progress());
 
 /// The same distances with the feature transform (PoreSizeMap::features): each pass carries the
 /// nearest solid voxel of the site that wins each voxel's minimum. Memory: 4 more bytes per
 /// voxel. Throws as periodicDistanceTransform, and std::invalid_argument for M above
 /// maxFeatureTransformVoxels.
 PoreSizeMap periodicFeatureTransform(std::span<const std::uint8_t> solidMask, int voxels,
-                                     double voxelSize, bool serial = false);
+                                     double voxelSize, const Progress& progress = Progress());
 
 /// The implementation of both (features when withFeatures).
 PoreSizeMap transformMask(std::span<const std::uint8_t> solidMask, int voxels, double voxelSize,
-                          bool serial, bool withFeatures);
+                          const Progress& progress, bool withFeatures);
 
 } // namespace sbpack

@@ -349,8 +349,7 @@ SampleChunk sampleVoid(const ExactPoreSizes& pores, const ExactPoreSizeParameter
             progress.checkInterrupt();
             return sampleChunk(pores, parameters, separation, c);
         },
-        [](SampleChunk& sample, const SampleChunk& later) { sample.add(later); },
-        parameters.serial);
+        [](SampleChunk& sample, const SampleChunk& later) { sample.add(later); }, progress);
 }
 
 } // namespace
@@ -373,7 +372,6 @@ PoreSizeDistributionResult ExactPoreSizeDistribution::compute(const Packing& pac
     r.method = "exact";
     r.parameters.randomPoints = k;
     r.parameters.seed = parameters_.seed;
-    r.parameters.serial = parameters_.serial;
     setStandardErrors(r, sums);
     r.errorBound = sample.errorBound;
     r.maxSampled = r.max;

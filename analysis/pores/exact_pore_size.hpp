@@ -98,7 +98,6 @@ struct ExactPoreSizeParameters {
     std::int64_t randomPoints = 1'000'000; ///< K random points of the void (paper: 10^6)
     std::uint64_t seed = 1;
     int densityBins = 64;
-    bool serial = false;
 };
 
 /// Compute object: F(delta) and moments from the exact pore sizes of K uniformly random points

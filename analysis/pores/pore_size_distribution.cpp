@@ -233,8 +233,8 @@ PoreSizeDistribution::PoreSizeDistribution(PoreSizeParameters parameters)
                                     std::to_string(parameters_.densityBins) + " (need >= 1)");
 }
 
-PoreSizeDistributionResult PoreSizeDistribution::compute(const PoreSizeMap& map,
-                                                         double meanWidth) const {
+PoreSizeDistributionResult PoreSizeDistribution::compute(const PoreSizeMap& map, double meanWidth,
+                                                         const Progress& progress) const {
     const auto started = std::chrono::steady_clock::now();
     checkMeanWidth(meanWidth);
     const int m = map.voxels();
@@ -275,7 +275,7 @@ PoreSizeDistributionResult PoreSizeDistribution::compute(const PoreSizeMap& map,
             for (std::size_t n = 0; n < sum.size(); ++n)
                 sum[n] += h[n];
         },
-        parameters_.serial);
+        progress);
     PoreSizeDistributionResult r = fromHistogram(histogram, m, map.voxelSize(), meanWidth);
     r.runtimeSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -31,7 +31,6 @@ struct PoreSizeParameters {
     std::int64_t randomPoints = 0;
     std::uint64_t seed = 1; ///< of the random points (results do not depend on the threads)
     int densityBins = 64;   ///< bins of the histogram of P(delta) on [0, max]
-    bool serial = false;    ///< run the parallel loops in order on one thread
 };
 
 /// F(delta), P(delta) and moments of one sample of pore sizes, with what produced it. Lengths are
@@ -128,7 +127,8 @@ class PoreSizeDistribution {
 
     /// Statistics over every void voxel, or K random void points (parameters). Throws
     /// std::invalid_argument unless meanWidth is finite and positive.
-    PoreSizeDistributionResult compute(const PoreSizeMap& map, double meanWidth) const;
+    PoreSizeDistributionResult compute(const PoreSizeMap& map, double meanWidth,
+                                       const Progress& progress) const;
     /// The statistics from histogram[n] = the number of sampled voxels at squared distance n
     /// (voxel units; n = 0 solid, not counted) of an M^3 grid of voxel size a: what compute()
     /// does after its histogram, and what the ranks of a distributed grid do after summing

@@ -223,7 +223,8 @@ std::vector<RandomVoxel> randomVoxels(const PoreSizeMap& map, const PoreSizePara
 /// (< 2^20 of them).
 std::vector<RandomVoxel> randomVoxelsByFeatureBlock(const PoreSizeMap& map,
                                                     const PoreSizeParameters& parameters,
-                                                    std::int64_t first, std::int64_t last) {
+                                                    std::int64_t first, std::int64_t last,
+                                                    const Progress& progress) {
     const std::int64_t m = map.voxels();
     const std::vector<RandomVoxel> voxels = orderedReduce(
         last - first, std::vector<RandomVoxel>(),
@@ -231,7 +232,7 @@ std::vector<RandomVoxel> randomVoxelsByFeatureBlock(const PoreSizeMap& map,
         [](std::vector<RandomVoxel>& all, const std::vector<RandomVoxel>& chunk) {
             all.insert(all.end(), chunk.begin(), chunk.end());
         },
-        parameters.serial);
+        progress);
     constexpr int kPlaceBits = 20;
     static_assert(kChunksPerRound * kRandomPointChunk <= std::int64_t{1} << kPlaceBits);
     std::vector<std::uint64_t> keys(voxels.size());
@@ -263,7 +264,7 @@ Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const Vox
     for (std::int64_t round = 0; round < chunks; round += chunksPerRound) {
         const std::int64_t end = std::min(chunks, round + chunksPerRound);
         const std::vector<RandomVoxel> points =
-            sampled ? randomVoxelsByFeatureBlock(map, parameters, round, end)
+            sampled ? randomVoxelsByFeatureBlock(map, parameters, round, end, progress)
                     : std::vector<RandomVoxel>();
         const auto tallyChunk = [&](std::int64_t i) {
             progress.checkInterrupt();
@@ -284,7 +285,7 @@ Tally tallyVoxels(const PoreSizeMap& map, const ExactPoreSizes& pores, const Vox
         };
         all = orderedReduce(
             end - round, std::move(all), tallyChunk,
-            [](Tally& total, const Tally& tally) { total.add(tally); }, parameters.serial);
+            [](Tally& total, const Tally& tally) { total.add(tally); }, progress);
     }
     return all;
 }

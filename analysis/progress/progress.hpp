@@ -43,9 +43,9 @@ class Stopwatch {
     std::chrono::steady_clock::time_point start_;
 };
 
-/// Where analyses report. Stage lines go to `log` (nullptr: quiet); warnings always go to
-/// `warnings` (nullptr: dropped). Thread-safe for checkInterrupt() only: report from the
-/// calling thread.
+/// The execution context passed down every stage: where analyses report, and how they run.
+/// Stage lines go to `log` (nullptr: quiet); warnings always go to `warnings` (nullptr: dropped).
+/// Thread-safe for checkInterrupt() only: report from the calling thread.
 class Progress {
   public:
     explicit Progress(std::ostream* log = nullptr, std::ostream* warnings = nullptr);
@@ -59,10 +59,17 @@ class Progress {
     /// Throws Interrupted if an interrupt was requested; call once per chunk of work.
     void checkInterrupt() const;
 
+    /// Run the parallel loops (parallelFor, orderedReduce) in order on one thread; results equal
+    /// the parallel ones (FFTW keeps the ThreadBudget's threads). Default false: tests set it to
+    /// compare the two.
+    void setSerial(bool serial) { serial_ = serial; }
+    bool serial() const { return serial_; }
+
   private:
     std::ostream* log_;
     std::ostream* warnings_;
     std::string context_;
+    bool serial_ = false;
 };
 
 } // namespace sbpack

@@ -116,13 +116,13 @@ ShellAverage shellAverage(const WaveVectorSpectrum& spectrum, int maxShell) {
 }
 
 WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
-                                     const Progress& progress, bool serial) {
+                                     const Progress& progress) {
     if (!packing.shape().isSphere())
         throw std::invalid_argument("exact spectral density: the particles are not spheres (p = " +
                                     std::to_string(packing.p) + ")");
     if (maxN2 < 1) throw std::invalid_argument("exact spectral density: no wave vector");
     const DensityModes modes =
-        collectiveDensity(packing.positions, packing.boxLength, maxN2, progress, serial);
+        collectiveDensity(packing.positions, packing.boxLength, maxN2, progress);
     std::vector<std::size_t> order(modes.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::sort(order.begin(), order.end(),
@@ -143,7 +143,7 @@ WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
 }
 
 WaveVectorSpectrum superballWaveVectors(const Packing& packing, std::int64_t maxN2,
-                                        const Progress& progress, bool serial) {
+                                        const Progress& progress) {
     if (maxN2 < 1) throw std::invalid_argument("exact spectral density: no wave vector");
     const SuperballFormFactor form(packing.shape());
     WaveVectorSpectrum out{packing.boxLength, maxN2, halfSpaceWaveVectors(maxN2), {}};
@@ -165,7 +165,7 @@ WaveVectorSpectrum superballWaveVectors(const Packing& packing, std::int64_t max
                 tileSums(form, tables, out.n, static_cast<std::size_t>(i) * T, orders[i], sums);
             }
         },
-        serial);
+        progress);
     const double volume = std::pow(packing.boxLength, 3);
     out.chi.reserve(out.size());
     for (const std::complex<double>& s : sums)
@@ -210,9 +210,8 @@ ExactSpectralDensityResult ExactSpectralDensity::compute(const Packing& packing,
             std::to_string(SuperballFormFactor::kSeriesLimit * result.meanWidth /
                            shape.circumradius()) +
             ")");
-    result.modes = shape.isSphere()
-                       ? sphereWaveVectors(packing, result.maxN2, progress, parameters_.serial)
-                       : superballWaveVectors(packing, result.maxN2, progress, parameters_.serial);
+    result.modes = shape.isSphere() ? sphereWaveVectors(packing, result.maxN2, progress)
+                                    : superballWaveVectors(packing, result.maxN2, progress);
     result.runtimeSeconds = clock.seconds();
     return result;
 }

@@ -44,7 +44,7 @@ ShellAverage shellAverage(const WaveVectorSpectrum& spectrum, int maxShell);
 /// Spheres: |sum_j exp(-i Q.r_j)|^2 m_sphere(Q)^2 / V, 1 <= |n|^2 <= maxN2, by the collective
 /// density kernel. Throws std::invalid_argument unless the particles are spheres and maxN2 >= 1.
 WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
-                                     const Progress& progress, bool serial = false);
+                                     const Progress& progress);
 
 /// Any p: |sum_j m(R_j^T Q) exp(-i Q.r_j)|^2 / V, 1 <= |n|^2 <= maxN2, with the form factor's
 /// series (SuperballFormFactor, accurate to 1e-16 v1 at these Q). Parallel over tiles of wave
@@ -52,13 +52,11 @@ WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
 /// of threads). Throws std::invalid_argument unless maxN2 >= 1 and |Q| R_c stays within the
 /// series' range.
 WaveVectorSpectrum superballWaveVectors(const Packing& packing, std::int64_t maxN2,
-                                        const Progress& progress, bool serial = false);
+                                        const Progress& progress);
 
 struct ExactSpectralDensityParameters {
     /// Every wave vector with 0 < Q w <= maxQw (w the mean width).
     double maxQw = 3.0;
-    /// Execution only: run on the calling thread (the result is the same).
-    bool serial = false;
 };
 
 struct ExactSpectralDensityResult {

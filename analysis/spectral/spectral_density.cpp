@@ -78,7 +78,7 @@ std::vector<double> voxelFormFactors(double voxelSize, int m, int s) {
 } // namespace
 
 ShellAccumulator spectralShellSums(const SpectrumSlab& slab, double voxelSize, double boxLength,
-                                   int s, const Progress& progress, bool serial) {
+                                   int s, const Progress& progress) {
     const int m = slab.voxels, rows = slab.rows;
     const std::int64_t half = slab.rowLength;
     const double volume = std::pow(boxLength, 3);
@@ -112,16 +112,16 @@ ShellAccumulator spectralShellSums(const SpectrumSlab& slab, double voxelSize, d
     return orderedReduce(
         static_cast<std::int64_t>(planes.size()), ShellAccumulator(boxLength, s), planeShells,
         [](ShellAccumulator& shells, const ShellAccumulator& plane) { shells.merge(plane); },
-        serial);
+        progress);
 }
 
 namespace {
 
 /// Spheres: the exact shells and the voxel path's largest error against them over their peak.
 SphereComparison compareWithSpheres(const Packing& packing, const ShellAverage& voxel, int maxShell,
-                                    const Progress& progress, bool serial) {
+                                    const Progress& progress) {
     SphereComparison comparison;
-    comparison.exact = sphereSpectralDensity(packing, maxShell, progress, serial);
+    comparison.exact = sphereSpectralDensity(packing, maxShell, progress);
     double peak = 0.0, worst = 0.0;
     for (std::size_t i = 0; i < comparison.exact.size(); ++i) {
         peak = std::max(peak, comparison.exact.value[i]);
@@ -156,8 +156,7 @@ void SpectralDensity::finish(const Packing& packing, ShellAverage shells, const 
     result.shells = std::move(shells);
     if (packing.shape().isSphere()) {
         const Stopwatch exactClock;
-        result.exactSphere = compareWithSpheres(packing, result.shells, result.maxShell, progress,
-                                                parameters_.serial);
+        result.exactSphere = compareWithSpheres(packing, result.shells, result.maxShell, progress);
         result.exactSeconds = exactClock.seconds();
     }
     result.runtimeSeconds += clock.seconds();
@@ -180,9 +179,9 @@ SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Vox
     const Stopwatch shellClock;
     const int m = voxels.voxels();
     const SpectrumSlab whole{transform.data(), m, 0, m, m, m / 2 + 1};
-    ShellAverage shells = spectralShellSums(whole, voxels.voxelSize(), packing.boxLength,
-                                            result.maxShell, progress, parameters_.serial)
-                              .average();
+    ShellAverage shells =
+        spectralShellSums(whole, voxels.voxelSize(), packing.boxLength, result.maxShell, progress)
+            .average();
     result.shellSeconds = shellClock.seconds();
     result.runtimeSeconds =
         clock.seconds() + result.planSeconds + result.fillSeconds + result.transformSeconds;
@@ -190,11 +189,9 @@ SpectralDensityResult SpectralDensity::compute(const Packing& packing, const Vox
     return result;
 }
 
-ShellAverage sphereSpectralDensity(const Packing& packing, int maxShell, const Progress& progress,
-                                   bool serial) {
+ShellAverage sphereSpectralDensity(const Packing& packing, int maxShell, const Progress& progress) {
     if (maxShell < 1) throw std::invalid_argument("exact spectral density: no shell");
-    return shellAverage(sphereWaveVectors(packing, maxSquaredIndex(maxShell), progress, serial),
-                        maxShell);
+    return shellAverage(sphereWaveVectors(packing, maxSquaredIndex(maxShell), progress), maxShell);
 }
 
 } // namespace sbpack

@@ -25,9 +25,6 @@ struct SpectralDensityParameters {
     /// Shells up to Q w <= maxQw (w the mean width), and below the grid's Nyquist limit.
     double maxQw = 30.0;
     FftSettings fft;
-    /// Execution only: run on the calling thread (the result is the same up to FFTW's own
-    /// threads, whose count is the ThreadBudget's).
-    bool serial = false;
 };
 
 /// The voxel path against the exact one, for spheres.
@@ -80,7 +77,7 @@ struct SpectrumSlab {
 /// [prod_i a sinc(Q_i a / 2)]^2 / V over the half space kz <= M/2 with its weights. Each outer
 /// plane sums into its own accumulator, merged in order (independent of the threads).
 ShellAccumulator spectralShellSums(const SpectrumSlab& slab, double voxelSize, double boxLength,
-                                   int maxShell, const Progress& progress, bool serial);
+                                   int maxShell, const Progress& progress);
 
 /// Compute object (docs/design.md §7): parameters validated at construction.
 class SpectralDensity {
@@ -124,7 +121,6 @@ class SpectralDensity {
 /// Exact chi_V(Q) of a sphere packing without voxels (Eq. 12 with the sphere's form factor):
 /// |sum_j exp(-i Q.r_j)|^2 m(Q)^2 / V, shells 1..maxShell, by the collective-density kernel of
 /// S(Q). Throws std::invalid_argument unless the packing is of spheres and maxShell >= 1.
-ShellAverage sphereSpectralDensity(const Packing& packing, int maxShell, const Progress& progress,
-                                   bool serial = false);
+ShellAverage sphereSpectralDensity(const Packing& packing, int maxShell, const Progress& progress);
 
 } // namespace sbpack

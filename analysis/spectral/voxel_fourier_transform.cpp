@@ -102,7 +102,7 @@ VoxelFourierTransform::VoxelFourierTransform(const Voxelization& voxels, const F
     planSeconds_ = clock.seconds();
 
     clock = Stopwatch();
-    voxels.copySolidIndicator(std::span<double>(data, size), rowStride);
+    voxels.copySolidIndicator(std::span<double>(data, size), rowStride, progress);
     fillSeconds_ = clock.seconds();
     progress.checkInterrupt();
 

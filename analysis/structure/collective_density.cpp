@@ -138,7 +138,7 @@ DensityModes plane(int nx, std::int64_t maxN2, std::int64_t particles, int kmax,
 } // namespace
 
 DensityModes collectiveDensity(std::span<const Eigen::Vector3d> positions, double boxLength,
-                               std::int64_t maxN2, const Progress& progress, bool serial) {
+                               std::int64_t maxN2, const Progress& progress) {
     if (!(boxLength > 0.0) || !std::isfinite(boxLength))
         throw std::invalid_argument("collective density: box length must be positive and finite");
     if (maxN2 < 1) throw std::invalid_argument("collective density: no wave vector (maxN2 < 1)");
@@ -156,7 +156,7 @@ DensityModes collectiveDensity(std::span<const Eigen::Vector3d> positions, doubl
             all.n.insert(all.n.end(), p.n.begin(), p.n.end());
             all.intensity.insert(all.intensity.end(), p.intensity.begin(), p.intensity.end());
         },
-        serial);
+        progress);
 }
 
 } // namespace sbpack

@@ -43,6 +43,6 @@ PhaseTable phaseTable(std::span<const Eigen::Vector3d> positions, int axis, doub
 /// Parallel over n_x (the order of every sum is fixed, so the result does not depend on the
 /// number of threads). Throws std::invalid_argument unless L > 0 and maxN2 >= 1.
 DensityModes collectiveDensity(std::span<const Eigen::Vector3d> positions, double boxLength,
-                               std::int64_t maxN2, const Progress& progress, bool serial = false);
+                               std::int64_t maxN2, const Progress& progress);
 
 } // namespace sbpack

@@ -38,9 +38,8 @@ StructureFactorResult StructureFactor::compute(const Packing& packing,
             "structure factor: qmax = " + fmt::format("{:g}", parameters_.maxQw) +
             " is below the smallest wave number of the box, 2 pi w / L = " +
             std::to_string(2.0 * std::numbers::pi * result.meanWidth / packing.boxLength));
-    const DensityModes modes =
-        collectiveDensity(packing.positions, packing.boxLength, maxSquaredIndex(result.maxShell),
-                          progress, parameters_.serial);
+    const DensityModes modes = collectiveDensity(packing.positions, packing.boxLength,
+                                                 maxSquaredIndex(result.maxShell), progress);
     const auto n = static_cast<double>(packing.size());
     ShellAccumulator shells(packing.boxLength, result.maxShell);
     for (std::size_t m = 0; m < modes.size(); ++m) {

@@ -11,8 +11,6 @@ namespace sbpack {
 struct StructureFactorParameters {
     /// Shells up to Q w <= maxQw, w the mean width (docs/design.md §5: report Q w).
     double maxQw = 30.0;
-    /// Execution only: run on the calling thread (the result is the same).
-    bool serial = false;
 };
 
 struct StructureFactorResult {

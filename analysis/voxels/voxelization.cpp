@@ -247,7 +247,8 @@ bool Voxelization::solid(std::int64_t i, std::int64_t j, std::int64_t k) const {
 }
 
 template <class T>
-void Voxelization::copySolid(std::span<T> values, std::int64_t rowStride, const char* what) const {
+void Voxelization::copySolid(std::span<T> values, std::int64_t rowStride, const char* what,
+                             const Progress& progress) const {
     const std::int64_t m = voxels_, x0 = slabBegin_, x1 = slabEnd_;
     if (rowStride < m || values.size() != static_cast<std::size_t>((x1 - x0) * m * rowStride))
         throw std::invalid_argument(std::string(what) + ": the destination has " +
@@ -266,15 +267,16 @@ void Voxelization::copySolid(std::span<T> values, std::int64_t rowStride, const 
                         copyBlock(tree, bx * kBlock, by * kBlock, bz * kBlock, m, x0, x1,
                                   values.data(), rowStride);
         },
-        parameters_.serial);
+        progress);
 }
 
-void Voxelization::copySolidMask(std::span<std::uint8_t> mask) const {
-    copySolid(mask, voxels_, "copySolidMask");
+void Voxelization::copySolidMask(std::span<std::uint8_t> mask, const Progress& progress) const {
+    copySolid(mask, voxels_, "copySolidMask", progress);
 }
 
-void Voxelization::copySolidIndicator(std::span<double> values, std::int64_t rowStride) const {
-    copySolid(values, rowStride, "copySolidIndicator");
+void Voxelization::copySolidIndicator(std::span<double> values, std::int64_t rowStride,
+                                      const Progress& progress) const {
+    copySolid(values, rowStride, "copySolidIndicator", progress);
 }
 
 void Voxelization::writeVdb(const std::filesystem::path& file) const {
@@ -422,7 +424,7 @@ struct BlockMasks {
 
 BlockMasks voxelizeBlocks(const BlockCandidates& in, const std::vector<Eigen::Matrix3d>& toBody,
                           const ContainmentTest& inside, const BlockGeometry& geometry,
-                          const Progress& progress, bool serial) {
+                          const Progress& progress) {
     BlockMasks out(geometry.blockCount());
     parallelFor(
         0, geometry.blockCount(), kBlocksPerTask,
@@ -435,31 +437,27 @@ BlockMasks voxelizeBlocks(const BlockCandidates& in, const std::vector<Eigen::Ma
                 out.store(b, voxelizeBlock(ox, oy, oz, mine, toBody, inside, geometry), geometry);
             }
         },
-        serial);
+        progress);
     return out;
 }
 
 /// The whole grid's blocks from row bits (gpu/grid_kernels.hpp: M x M rows of ceil(M / 32)
 /// words, bit z & 31 of word z >> 5): a block's 8 z-bits never straddle a word (8 | 32).
-BlockMasks blocksFromRowBits(std::span<const std::uint32_t> rows, const BlockGeometry& g,
-                             bool serial) {
+BlockMasks blocksFromRowBits(std::span<const std::uint32_t> rows, const BlockGeometry& g) {
     const std::int64_t m = g.m, perRow = gpu::wordsPerRow(g.m);
     BlockMasks out(g.blockCount());
-    parallelFor(
-        0, g.blockCount(), kBlocksPerTask,
-        [&](std::int64_t begin, std::int64_t end) {
-            for (std::int64_t b = begin; b < end; ++b) {
-                const auto [ox, oy, oz] = g.origin(b);
-                std::array<std::uint64_t, kBlock> words{};
-                for (int x = 0; x < kBlock && ox + x < m; ++x)
-                    for (int y = 0; y < kBlock && oy + y < m; ++y) {
-                        const std::uint32_t word = rows[((ox + x) * m + oy + y) * perRow + oz / 32];
-                        words[x] |= std::uint64_t{(word >> (oz % 32)) & 0xffu} << (y * kBlock);
-                    }
-                out.store(b, words, g);
-            }
-        },
-        serial);
+    parallelFor(0, g.blockCount(), kBlocksPerTask, [&](std::int64_t begin, std::int64_t end) {
+        for (std::int64_t b = begin; b < end; ++b) {
+            const auto [ox, oy, oz] = g.origin(b);
+            std::array<std::uint64_t, kBlock> words{};
+            for (int x = 0; x < kBlock && ox + x < m; ++x)
+                for (int y = 0; y < kBlock && oy + y < m; ++y) {
+                    const std::uint32_t word = rows[((ox + x) * m + oy + y) * perRow + oz / 32];
+                    words[x] |= std::uint64_t{(word >> (oz % 32)) & 0xffu} << (y * kBlock);
+                }
+            out.store(b, words, g);
+        }
+    });
     return out;
 }
 
@@ -508,9 +506,8 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
     std::vector<Eigen::Matrix3d> toBody(packing.size());
     for (std::size_t j = 0; j < packing.size(); ++j)
         toBody[j] = packing.orientations[j].toRotationMatrix().transpose();
-    BlockMasks masks =
-        voxelizeBlocks(blockCandidates(packing, geometry), toBody, ContainmentTest(shape), geometry,
-                       progress, parameters_.serial);
+    BlockMasks masks = voxelizeBlocks(blockCandidates(packing, geometry), toBody,
+                                      ContainmentTest(shape), geometry, progress);
     auto grid = std::make_unique<Voxelization::Grid>();
     std::int64_t solid = 0;
     grid->grid = assembleTree(masks, geometry, solid);
@@ -529,11 +526,11 @@ Voxelization Voxelizer::fromRowBits(std::span<const std::uint32_t> rows, const P
     const int blocks = (voxels + kBlock - 1) / kBlock;
     const BlockGeometry geometry{voxels, packing.boxLength / voxels, 0.0, 0.0, 0, voxels, blocks, 0,
                                  blocks};
-    BlockMasks masks = blocksFromRowBits(rows, geometry, false);
+    BlockMasks masks = blocksFromRowBits(rows, geometry);
     auto grid = std::make_unique<Voxelization::Grid>();
     std::int64_t solid = 0;
     grid->grid = assembleTree(masks, geometry, solid);
-    return Voxelization(std::move(grid), VoxelizationParameters{voxels, false, 0, voxels},
+    return Voxelization(std::move(grid), VoxelizationParameters{voxels, 0, voxels},
                         packing.boxLength, packing.p, packing.packingFraction(), solid,
                         runtimeSeconds);
 }

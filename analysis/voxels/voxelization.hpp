@@ -26,8 +26,6 @@ class VoxelResolutionError : public std::invalid_argument {
 
 struct VoxelizationParameters {
     int voxels = 300; ///< M, voxels along each box edge
-    /// Execution only: run on the calling thread (the result is the same).
-    bool serial = false;
     /// Only the slab of x-planes [slabBegin, slabEnd) (slabEnd -1: M; may be empty), as one rank of
     /// a distributed grid voxelises (docs/scale-out.md): only particles (and periodic images) whose
     /// circumscribed sphere reaches the slab are visited, and the tree holds the slab alone.
@@ -61,13 +59,15 @@ class Voxelization {
     /// Whether voxel (i, j, k) is solid; indices are taken modulo M (periodic box).
     bool solid(std::int64_t i, std::int64_t j, std::int64_t k) const;
     /// Fills mask[(i * M + j) * M + k] with 1 (solid) or 0 for every voxel; parallel by blocks of
-    /// the grid. Throws std::invalid_argument unless mask.size() == M^3. For a slab, i counts
-    /// from slabBegin() and the size is (slabEnd() - slabBegin()) M^2 (also below).
-    void copySolidMask(std::span<std::uint8_t> mask) const;
+    /// the grid (serial as `progress` asks). Throws std::invalid_argument unless mask.size() ==
+    /// M^3. For a slab, i counts from slabBegin() and the size is (slabEnd() - slabBegin()) M^2
+    /// (also below).
+    void copySolidMask(std::span<std::uint8_t> mask, const Progress& progress = Progress()) const;
     /// Fills values[(i * M + j) * rowStride + k] with 1.0 (solid) or 0.0 for k < M, leaving
     /// the padding k >= M of each row alone (FFTW's in-place real-to-complex layout).
     /// Throws std::invalid_argument unless rowStride >= M and values.size() == M^2 rowStride.
-    void copySolidIndicator(std::span<double> values, std::int64_t rowStride) const;
+    void copySolidIndicator(std::span<double> values, std::int64_t rowStride,
+                            const Progress& progress = Progress()) const;
 
     /// Writes the grid as an OpenVDB file (atomically, through AtomicOutput) for Blender,
     /// Houdini or ParaView: a float fog volume "density" (1 in the particles, 0 elsewhere) in
@@ -82,7 +82,8 @@ class Voxelization {
     Voxelization(std::unique_ptr<Grid> grid, VoxelizationParameters parameters, double boxLength,
                  double p, double phiExact, std::int64_t solidCount, double runtimeSeconds);
     template <class T>
-    void copySolid(std::span<T> values, std::int64_t rowStride, const char* what) const;
+    void copySolid(std::span<T> values, std::int64_t rowStride, const char* what,
+                   const Progress& progress) const;
 
     std::unique_ptr<Grid> grid_;
     VoxelizationParameters parameters_;

@@ -113,9 +113,9 @@ py::tuple voxelSlice(const Packing& packing, int voxels, int plane, int threads)
         [&] {
             const ThreadBudget budget(threads);
             const Progress progress;
-            Voxelizer({voxels}).compute(packing, progress).copySolidMask(mask);
+            Voxelizer({voxels}).compute(packing, progress).copySolidMask(mask, progress);
             const PoreSizeMap map =
-                periodicDistanceTransform(mask, voxels, packing.boxLength / voxels);
+                periodicDistanceTransform(mask, voxels, packing.boxLength / voxels, progress);
             const auto d2 = map.squaredDistances().subspan(plane * m * m, m * m);
             for (std::size_t i = 0; i < m * m; ++i)
                 distance[i] = std::sqrt(static_cast<double>(d2[i])) * map.voxelSize();

@@ -208,11 +208,12 @@ TEST(GridKernels, CompactCubeGivesTheWholeGridsShellsAndModes) {
     const VoxelFourierTransform transform(voxels, fft, Progress());
     const std::vector<double> cube = compactCube(transform, s);
     const double a = voxels.voxelSize(), l = packing.boxLength;
+    Progress inOrder;
+    inOrder.setSerial(true);
     const ShellAverage whole =
-        spectralShellSums({transform.data(), m, 0, m, m, m / 2 + 1}, a, l, s, Progress(), true)
-            .average();
+        spectralShellSums({transform.data(), m, 0, m, m, m / 2 + 1}, a, l, s, inOrder).average();
     const ShellAverage compact =
-        spectralShellSums(gpu::compactCubeSlab(cube, m, s), a, l, s, Progress(), true).average();
+        spectralShellSums(gpu::compactCubeSlab(cube, m, s), a, l, s, inOrder).average();
     EXPECT_EQ(compact.value, whole.value);
     EXPECT_EQ(compact.count, whole.count);
     EXPECT_EQ(compact.q, whole.q);
@@ -222,7 +223,7 @@ TEST(GridKernels, CompactCubeGivesTheWholeGridsShellsAndModes) {
     const std::int64_t reach2 = individualMaxN2(m, l, w, options);
     ASSERT_GT(reach2, 10);
     ASSERT_LE(reach2, std::int64_t{s} * s);
-    const DiscreteSpectrum cpu = voxelSpectrum(transform, voxels, w, options);
+    const DiscreteSpectrum cpu = voxelSpectrum(transform, voxels, w, options, Progress());
     const DiscreteSpectrum fromCube = voxelSpectrumFrom(
         cpu.sumByN2, gpu::compactCubePower(cube, m, s), {m, l, voxels.phiVoxel()}, w, options);
     EXPECT_EQ(fromCube.modes.chi, cpu.modes.chi);

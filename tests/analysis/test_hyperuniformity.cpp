@@ -43,13 +43,13 @@ TEST(Spreadability, DiscreteSumRuleIsParsevalsIdentity) {
     const double w = packing.shape().meanWidth();
     VoxelSpectrumOptions plain;
     plain.cubeFormFactor = false;
-    const DiscreteSpectrum s = voxelSpectrum(transform, voxels, w, plain);
+    const DiscreteSpectrum s = voxelSpectrum(transform, voxels, w, plain, quiet);
     const SpreadabilityCurve curve(std::span(&s, 1));
     EXPECT_NEAR(curve.excess(0.0), 1.0 - voxels.phiVoxel(), 1e-12);
     EXPECT_EQ(curve.truncationBound(0.0), 0.0);
     // With the cube form factor weight moves beyond the grid; E(0) plus the reported missing
     // weight restores the sum rule, and the bound covers it at t = 0.
-    const DiscreteSpectrum cube = voxelSpectrum(transform, voxels, w, {});
+    const DiscreteSpectrum cube = voxelSpectrum(transform, voxels, w, {}, quiet);
     const SpreadabilityCurve cubes(std::span(&cube, 1));
     EXPECT_LT(cubes.excess(0.0), 1.0 - voxels.phiVoxel());
     EXPECT_NEAR(cubes.excess(0.0) + cubes.truncationBound(0.0), 1.0 - voxels.phiVoxel(), 1e-12);
@@ -199,7 +199,7 @@ TEST(ExactSpectralDensity, VoxelsConvergeToIt) {
     for (const int m : {24, 48}) {
         const Voxelization voxels = Voxelizer({m}).compute(packing, quiet);
         const VoxelFourierTransform transform(voxels, {FftPlanning::Estimate, {}}, quiet);
-        const DiscreteSpectrum s = voxelSpectrum(transform, voxels, w, {});
+        const DiscreteSpectrum s = voxelSpectrum(transform, voxels, w, {}, quiet);
         double worst = 0.0;
         for (std::size_t i = 0; i < exact.modes.size(); ++i)
             worst = std::max(worst, std::abs(s.modes.chi[i] - exact.modes.chi[i]));

@@ -135,17 +135,17 @@ TEST(Pipeline, OneAndTwoThreadsAgree) {
         ShellAverage sq[2], chi[2], exact[2];
         for (const int threads : {1, 2}) {
             const ThreadBudget budget(threads);
-            const bool serial = threads == 1;
-            const Voxelization voxels = Voxelizer({48, serial}).compute(packing, quiet);
+            Progress run;
+            run.setSerial(threads == 1);
+            const Voxelization voxels = Voxelizer({48}).compute(packing, run);
             masks[threads - 1].resize(48 * 48 * 48);
-            voxels.copySolidMask(masks[threads - 1]);
-            sq[threads - 1] = StructureFactor({20.0, serial}).compute(packing, quiet).shells;
+            voxels.copySolidMask(masks[threads - 1], run);
+            sq[threads - 1] = StructureFactor({20.0}).compute(packing, run).shells;
             SpectralDensityParameters parameters;
             parameters.maxQw = 20.0;
             parameters.fft = {FftPlanning::Estimate, {}};
-            parameters.serial = serial;
             const SpectralDensityResult s =
-                SpectralDensity(parameters).compute(packing, voxels, quiet);
+                SpectralDensity(parameters).compute(packing, voxels, run);
             chi[threads - 1] = s.shells;
             if (s.exactSphere) exact[threads - 1] = s.exactSphere->exact;
         }

@@ -110,7 +110,8 @@ class PoreSizeOfSpheres : public ::testing::Test {
 
 TEST_F(PoreSizeOfSpheres, FStartsAtOneAndTheMomentsAreTheIntegralsOfF) {
     const PoreSizeMap map = periodicDistanceTransform(mask, m, length / m);
-    const PoreSizeDistributionResult r = PoreSizeDistribution({}).compute(map, meanWidth);
+    const PoreSizeDistributionResult r =
+        PoreSizeDistribution({}).compute(map, meanWidth, Progress());
     EXPECT_EQ(r.method, "voxels");
     EXPECT_EQ(r.samples, map.voidCount());
     ASSERT_GE(r.delta.size(), 3u);
@@ -162,15 +163,18 @@ TEST_F(PoreSizeOfSpheres, FStartsAtOneAndTheMomentsAreTheIntegralsOfF) {
 TEST_F(PoreSizeOfSpheres, RandomVoidPointsAreReproducibleAndApproachAllVoxels) {
     const ThreadBudget budget(2);
     const PoreSizeMap map = periodicDistanceTransform(mask, m, length / m);
-    const PoreSizeDistributionResult all = PoreSizeDistribution({}).compute(map, meanWidth);
+    const Progress parallel;
+    const PoreSizeDistributionResult all =
+        PoreSizeDistribution({}).compute(map, meanWidth, parallel);
     PoreSizeParameters parameters;
     parameters.randomPoints = 200000;
     parameters.seed = 5;
     const PoreSizeDistributionResult sampled =
-        PoreSizeDistribution(parameters).compute(map, meanWidth);
-    parameters.serial = true;
+        PoreSizeDistribution(parameters).compute(map, meanWidth, parallel);
+    Progress inOrder;
+    inOrder.setSerial(true);
     const PoreSizeDistributionResult serial =
-        PoreSizeDistribution(parameters).compute(map, meanWidth);
+        PoreSizeDistribution(parameters).compute(map, meanWidth, inOrder);
     EXPECT_EQ(sampled.method, "random voxels");
     EXPECT_EQ(sampled.samples, 200000);
     EXPECT_EQ(sampled.F, serial.F);
@@ -179,7 +183,7 @@ TEST_F(PoreSizeOfSpheres, RandomVoidPointsAreReproducibleAndApproachAllVoxels) {
     EXPECT_LT(largestGap(sampled, all), 0.006);
     EXPECT_NEAR(sampled.mean, all.mean, 0.01 * all.mean);
     parameters.seed = 6;
-    EXPECT_NE(PoreSizeDistribution(parameters).compute(map, meanWidth).F, sampled.F);
+    EXPECT_NE(PoreSizeDistribution(parameters).compute(map, meanWidth, parallel).F, sampled.F);
 }
 
 TEST(PoreSizeStatistics, LargestGapOfTwoStepFunctions) {
@@ -197,7 +201,7 @@ TEST(PoreSizeStatistics, LargestGapOfTwoStepFunctions) {
     EXPECT_THROW(poreSizeStatistics(unsorted, countsA, 1.0, 4), std::invalid_argument);
     EXPECT_THROW(poreSizeStatistics(sizesA, countsA, 0.0, 4), std::invalid_argument);
     EXPECT_THROW(poreSizeStatistics(sizesA, countsA, 1.0, 0), std::invalid_argument);
-    EXPECT_THROW(PoreSizeDistribution({-1, 1, 64, false}), std::invalid_argument);
+    EXPECT_THROW(PoreSizeDistribution({-1, 1, 64}), std::invalid_argument);
 }
 
 TEST(ExactPoreSize, SingleSphereIsExactIncludingPeriodicImages) {
@@ -225,8 +229,9 @@ TEST(ExactPoreSize, SingleSphereDistributionMatchesTheClosedForm) {
     parameters.randomPoints = 100000;
     const PoreSizeDistributionResult result =
         ExactPoreSizeDistribution(parameters).compute(packing, Progress());
-    parameters.serial = true;
-    EXPECT_EQ(ExactPoreSizeDistribution(parameters).compute(packing, Progress()).F, result.F);
+    Progress inOrder;
+    inOrder.setSerial(true);
+    EXPECT_EQ(ExactPoreSizeDistribution(parameters).compute(packing, inOrder).F, result.F);
     EXPECT_EQ(result.method, "exact");
     EXPECT_EQ(result.samples, 100000);
     EXPECT_DOUBLE_EQ(result.meanWidth, 1.0);
@@ -318,7 +323,7 @@ TEST(ExactPoreSize, CellSearchEqualsBruteForceOverAllImages) {
 TEST(ExactPoreSize, RejectsBadInput) {
     Packing empty;
     EXPECT_THROW(ExactPoreSizes{empty}, std::invalid_argument);
-    EXPECT_THROW(ExactPoreSizeDistribution({0, 1, 64, false}), std::invalid_argument);
+    EXPECT_THROW(ExactPoreSizeDistribution({0, 1, 64}), std::invalid_argument);
 }
 
 } // namespace

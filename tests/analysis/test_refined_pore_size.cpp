@@ -137,7 +137,7 @@ TEST(RefinedPoreSize, RejectsAMapWithoutFeatures) {
     const PoreSizeMap plain = periodicDistanceTransform(mask, 16, voxels.voxelSize());
     EXPECT_THROW(RefinedPoreSizeDistribution({}).compute(plain, packing, Progress()),
                  std::invalid_argument);
-    EXPECT_THROW(RefinedPoreSizeDistribution({-1, 1, 64, false}), std::invalid_argument);
+    EXPECT_THROW(RefinedPoreSizeDistribution({-1, 1, 64}), std::invalid_argument);
 }
 
 TEST(PoreSizeStatistics, BinnedStatisticsKeepTheSampleMomentsAndFAtTheEdges) {

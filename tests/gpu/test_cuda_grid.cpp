@@ -134,7 +134,7 @@ TEST_F(CudaGridTest, HyperSpectrumAgreesWithTheCpu) {
         const Voxelization voxels = Voxelizer({c.voxels}).compute(packing, Progress());
         const VoxelFourierTransform transform(voxels, parameters.fft, Progress());
         const double w = packing.shape().meanWidth();
-        const DiscreteSpectrum cpu = voxelSpectrum(transform, voxels, w, options);
+        const DiscreteSpectrum cpu = voxelSpectrum(transform, voxels, w, options, Progress());
         const DiscreteSpectrum gpu =
             *CudaGrid(packing, c.voxels)
                  .spectralDensity(packing, parameters, false, &options, Progress())

@@ -51,15 +51,15 @@ PoreSizeMap poreSizeMap(const FileContext& context, int m, bool features) {
     double voxelSize = 0.0;
     {
         const Voxelization voxels = Voxelizer({m}).compute(context.packing(), context.progress());
-        voxels.copySolidMask(mask);
+        voxels.copySolidMask(mask, context.progress());
         voxelSize = voxels.voxelSize();
         context.progress().stageDone(
             "pore voxelization", voxels.runtimeSeconds(),
             fmt::format("{}^3, phi_voxel = {}", m, describe(voxels.phiVoxel())));
     }
     const Stopwatch clock;
-    PoreSizeMap map = features ? periodicFeatureTransform(mask, m, voxelSize)
-                               : periodicDistanceTransform(mask, m, voxelSize);
+    PoreSizeMap map = features ? periodicFeatureTransform(mask, m, voxelSize, context.progress())
+                               : periodicDistanceTransform(mask, m, voxelSize, context.progress());
     context.progress().stageDone(features ? "distance and feature transform" : "distance transform",
                                  clock.seconds(), fmt::format("{} void voxels", map.voidCount()));
     return map;
@@ -87,7 +87,7 @@ PoreSizeDistributionResult measurePores(const FileContext& context, std::optiona
     if (refined)
         return RefinedPoreSizeDistribution(parameters)
             .compute(*map, context.packing(), context.progress());
-    return PoreSizeDistribution(parameters).compute(*map, context.meanWidth());
+    return PoreSizeDistribution(parameters).compute(*map, context.meanWidth(), context.progress());
 }
 
 /// The progress line's detail: the moment, the largest pore, and what bounds the error.

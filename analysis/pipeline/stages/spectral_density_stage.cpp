@@ -60,7 +60,8 @@ SpectralDensityResult wholeGrid(FileContext& context, const SpectralDensityParam
     s.planSource = transform.planSource();
     if (context.settings().runs(Analysis::Hyperuniformity))
         context.keep(Analysis::SpectralDensity,
-                     KeptSpectrum{voxelSpectrum(transform, voxels, context.meanWidth(), {}),
+                     KeptSpectrum{voxelSpectrum(transform, voxels, context.meanWidth(), {},
+                                                context.progress()),
                                   spectralPeak(s.shells.q, s.shells.value, context.meanWidth())});
     return s;
 }
