@@ -42,8 +42,9 @@ OrderMetrics measureOrder(const Packing& packing,
 /// local q6 over the cutoff bonds, N-independent, is 0.39-0.44 in every MRJ packing of N >= 200
 /// and at most 0.47 in the disordered boxes of N = 40-100, 0.53-0.57 in the ordered ones (fcc:
 /// 0.575); T, which counts only over all 12 of its shells (N of about 500 and more; over fewer the
-/// contact shell dominates it), is 0.04-0.07 at N >= 1000; the cubatic P4 is 0.00-0.06 at N >= 200 and 1.0 in the
-/// aligned near-cubes of data/dense-p10-200.h5 (simple-cubic order, whose q6 is only 0.354).
+/// contact shell dominates it), is 0.04-0.07 at N >= 1000; the cubatic P4 is 0.00-0.06 at N >= 200
+/// and 1.0 in the aligned near-cubes of data/dense-p10-200.h5 (simple-cubic order, whose q6 is only
+/// 0.354).
 inline constexpr double kOrderedLocalQ6 = 0.5;
 inline constexpr double kOrderedT = 0.3;
 inline constexpr double kOrderedP4 = 0.5;
