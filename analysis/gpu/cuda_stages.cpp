@@ -53,7 +53,9 @@ bool runCudaVoxels(FileContext& context, schema::Record& record) {
                          .voxelSize = grid.voxelSize(),
                          .solidVoxels = grid.solidCount(),
                          .memoryBytes = static_cast<std::int64_t>(grid.deviceBytes()),
-                         .runtimeSeconds = grid.runtimeSeconds()};
+                         .runtimeSeconds = grid.runtimeSeconds(),
+                         .vdbFile = std::nullopt, // set below with --vdb
+                         .distribution = std::nullopt};
     if (context.vdbExport(Analysis::Voxels) != nullptr) // OpenVDB on the host, from the GPU's bits
         figures.vdbFile =
             exportVoxels(context, Voxelizer::fromRowBits(grid.rowBits(), context.packing(), m,

@@ -59,22 +59,12 @@ template <auto... Path> using OwnerOf = typename Owner<Path...>::type;
 template <class T> struct IsOptional : std::false_type {};
 template <class T> struct IsOptional<std::optional<T>> : std::true_type {};
 
-/// A result's number, text or array as a Value (integers as Int, whatever their width).
-template <class T> std::optional<Value> toValue(const T& v) {
-    if constexpr (IsOptional<T>::value) {
-        return v ? toValue(*v) : std::nullopt;
-    } else if constexpr (std::is_same_v<T, bool> || std::is_integral_v<T>) {
-        return Value(static_cast<std::int64_t>(v));
-    } else if constexpr (std::is_floating_point_v<T>) {
-        return Value(static_cast<double>(v));
-    } else if constexpr (std::is_convertible_v<T, std::string_view>) {
-        return Value(std::string(v));
-    } else if constexpr (std::is_same_v<T, std::vector<double>>) {
-        return Value(v);
-    } else { // a std::vector of integers
-        static_assert(std::is_integral_v<typename T::value_type>, "no Value holds this type");
-        return Value(std::vector<std::int64_t>(v.begin(), v.end()));
-    }
+/// A result's value, absent where it is an empty std::optional (record.hpp's toValue).
+template <class T> std::optional<Value> optionalValue(const T& v) {
+    if constexpr (IsOptional<T>::value)
+        return v ? optionalValue(*v) : std::nullopt;
+    else
+        return toValue(v);
 }
 
 /// value / w^K for a number or an array (the dimensionless forms); K < 0 multiplies by w^-K.
@@ -106,7 +96,7 @@ template <class T, auto First, auto... Rest> decltype(auto) follow(const T& obje
 /// &PoreSizeDistributionResult::meanOverWidth), or a chain of them into nested structs.
 template <auto... Path>
 std::optional<Value> member(const detail::OwnerOf<Path...>& result, const Scales&) {
-    return detail::toValue(detail::follow<detail::OwnerOf<Path...>, Path...>(result));
+    return detail::optionalValue(detail::follow<detail::OwnerOf<Path...>, Path...>(result));
 }
 
 /// A number written only where it is finite (NaN: the case that does not fill it).
@@ -122,7 +112,7 @@ std::optional<Value> inside(const detail::OwnerOf<Optional>& result, const Scale
     const auto& held = std::invoke(Optional, result);
     if (!held) return std::nullopt;
     using Held = std::remove_cvref_t<decltype(*held)>;
-    return detail::toValue(detail::follow<Held, Path...>(*held));
+    return detail::optionalValue(detail::follow<Held, Path...>(*held));
 }
 
 /// The member at `Path` divided by w^K; K = -1 multiplies by w (Q w).
@@ -163,19 +153,8 @@ constexpr std::array<Column<R>, (N + ...)> joinColumns(const std::array<Column<R
     return out;
 }
 
-/// Short names for the rows of a table.
+/// What a table's rows use besides the Kind, Type and Reduce names of results_schema.hpp.
 namespace columns {
-inline constexpr Kind A = Kind::Attribute;
-inline constexpr Kind D = Kind::Dataset;
-inline constexpr Type F = Type::Float;
-inline constexpr Type I = Type::Int;
-inline constexpr Type S = Type::String;
-inline constexpr Reduce Mean = Reduce::MeanStd;
-inline constexpr Reduce Curve = Reduce::Curve;
-inline constexpr Reduce No = Reduce::None;
-inline constexpr Reduce Pointwise = Reduce::Pointwise;
-inline constexpr Reduce Same = Reduce::Same;
-inline constexpr Reduce Pooled = Reduce::Pooled;
 inline constexpr std::string_view kRuntime = "wall-clock time of this analysis";
 using schema::finite;
 using schema::inside;

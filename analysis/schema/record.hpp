@@ -19,6 +19,27 @@ namespace sbpack::schema {
 using Value =
     std::variant<double, std::int64_t, std::string, std::vector<double>, std::vector<std::int64_t>>;
 
+namespace detail {
+
+/// A number, text or array as a Value: integers (bool included) as Int, whatever their width;
+/// Record::set converts an Int to a Float field's double.
+template <class T> Value toValue(const T& v) {
+    if constexpr (std::is_same_v<T, bool> || std::is_integral_v<T>) {
+        return Value(static_cast<std::int64_t>(v));
+    } else if constexpr (std::is_floating_point_v<T>) {
+        return Value(static_cast<double>(v));
+    } else if constexpr (std::is_convertible_v<T, std::string_view>) {
+        return Value(std::string(std::string_view(v)));
+    } else if constexpr (std::is_same_v<T, std::vector<double>>) {
+        return Value(v);
+    } else { // a std::vector of integers
+        static_assert(std::is_integral_v<typename T::value_type>, "no Value holds this type");
+        return Value(std::vector<std::int64_t>(v.begin(), v.end()));
+    }
+}
+
+} // namespace detail
+
 struct Entry {
     const Field* field;
     Value value;
@@ -37,17 +58,7 @@ class Record {
     /// Sets field `name` (replacing an earlier value); numbers are stored as the schema's type
     /// (an Int field takes integers and bools only).
     template <class T> Record& set(std::string_view name, const T& value) {
-        const Field& f = field(name);
-        if constexpr (std::is_same_v<T, bool> || std::is_integral_v<T>) {
-            if (f.type == Type::Int) return store(f, Value(static_cast<std::int64_t>(value)));
-            return store(f, Value(static_cast<double>(value)));
-        } else if constexpr (std::is_floating_point_v<T>) {
-            return store(f, Value(static_cast<double>(value)));
-        } else if constexpr (std::is_convertible_v<T, std::string_view>) {
-            return store(f, Value(std::string(std::string_view(value))));
-        } else {
-            return store(f, Value(value));
-        }
+        return set(field(name), detail::toValue(value));
     }
 
     /// Sets `field`, one of the group's own Fields (a FieldTable's column: schema/field_table.hpp);

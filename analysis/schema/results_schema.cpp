@@ -10,13 +10,7 @@ namespace sbpack::schema {
 
 namespace {
 
-constexpr Kind A = Kind::Attribute;
-constexpr Kind D = Kind::Dataset;
-constexpr Type F = Type::Float;
-constexpr Type I = Type::Int;
-constexpr Type S = Type::String;
-constexpr Reduce Mean = Reduce::MeanStd;
-constexpr Reduce No = Reduce::None;
+using namespace columns;
 
 constexpr Field kRun[] = {
     {"format", A, S, "", "\"sbpack.results\""},

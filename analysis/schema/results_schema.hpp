@@ -48,6 +48,21 @@ struct Field {
     bool optional = false; ///< written only in some cases (said in the description)
 };
 
+/// Short names for the rows of a field table (here, and schema/field_table.hpp's).
+namespace columns {
+inline constexpr Kind A = Kind::Attribute;
+inline constexpr Kind D = Kind::Dataset;
+inline constexpr Type F = Type::Float;
+inline constexpr Type I = Type::Int;
+inline constexpr Type S = Type::String;
+inline constexpr Reduce Mean = Reduce::MeanStd;
+inline constexpr Reduce Curve = Reduce::Curve;
+inline constexpr Reduce No = Reduce::None;
+inline constexpr Reduce Pointwise = Reduce::Pointwise;
+inline constexpr Reduce Same = Reduce::Same;
+inline constexpr Reduce Pooled = Reduce::Pooled;
+} // namespace columns
+
 struct Group {
     std::string_view name; ///< the group's name under files/<i>/ and ensembles/<k>/; "" for those
     std::string_view path; ///< where it is in the file, e.g. "files/<i>/contacts"

@@ -36,6 +36,7 @@ bool runSlabVoxels(FileContext& context, schema::Record& record) {
                                .solidVoxels = voxels.solidCount,
                                .memoryBytes = static_cast<std::int64_t>(voxels.slab.memoryBytes()),
                                .runtimeSeconds = voxels.slab.runtimeSeconds(),
+                               .vdbFile = std::nullopt, // no export of a slab
                                .distribution = voxels.figures};
     voxelization_fields::kTable.fill(record, figures, context.scales());
     context.keep(Analysis::Voxels, std::move(voxels));
@@ -73,7 +74,8 @@ bool runVoxels(FileContext& context, schema::Record& record) {
                                .solidVoxels = voxels.solidCount(),
                                .memoryBytes = static_cast<std::int64_t>(voxels.memoryBytes()),
                                .runtimeSeconds = voxels.runtimeSeconds(),
-                               .vdbFile = exportVoxels(context, voxels)};
+                               .vdbFile = exportVoxels(context, voxels),
+                               .distribution = std::nullopt};
     voxelization_fields::kTable.fill(record, figures, context.scales());
     context.keep(Analysis::Voxels, std::move(voxels));
     return true;
