@@ -42,7 +42,7 @@ NO_TABLE = {
 NO_TABLE_VALUE = {
     "Q6": "not in the paper; fcc 0.575; disordered: shrinks with N",
     "q6_local_mean": r"not in the paper; fcc 0.575, ordered $\geq 0.5$",
-    "T": r"not in the paper; fcc 1, ordered $\geq 0.3$",
+    "T": r"not in the paper; fcc 1, ordered $\geq 0.3$ over its 12 shells",
     "P4": r"not in the paper; aligned 1, random 0, ordered $\geq 0.5$",
 }
 
