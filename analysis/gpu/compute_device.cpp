@@ -18,6 +18,10 @@ ComputeDevice computeDeviceFromName(std::string_view name) {
         fmt::format("option --device: '{}' is not cpu, cuda or auto", name));
 }
 
+std::string_view computeDeviceName(ComputeDevice device) {
+    return device == ComputeDevice::Cpu ? "cpu" : device == ComputeDevice::Cuda ? "cuda" : "auto";
+}
+
 bool builtWithCuda() {
 #ifdef SBPACK_WITH_CUDA
     return true;

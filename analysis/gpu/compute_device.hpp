@@ -13,6 +13,8 @@ enum class ComputeDevice { Cpu, Cuda, Auto };
 
 /// "cpu", "cuda" or "auto"; std::invalid_argument naming --device otherwise.
 ComputeDevice computeDeviceFromName(std::string_view name);
+/// The name computeDeviceFromName reads.
+std::string_view computeDeviceName(ComputeDevice device);
 
 /// Whether this sbanalyze was built with SBPACK_WITH_CUDA.
 bool builtWithCuda();

@@ -41,7 +41,9 @@ struct RunSettings {
     ContactParameters contacts;
     FftSettings fft;
     bool quiet = false;
-    /// Where the grids are computed (--device, resolved when the options are read; docs/gpu.md)
+    /// Where the grids are asked to be computed (--device; docs/gpu.md)
+    ComputeDevice requestedDevice = ComputeDevice::Auto;
+    /// ... and where they are, resolved once the options are read
     ResolvedDevice device;
     /// cuFFT in single precision (--fft-precision single; --device cuda only)
     bool fftSingle = false;

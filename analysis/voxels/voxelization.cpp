@@ -1,4 +1,5 @@
-// The only translation unit of sbanalyze that includes OpenVDB's tree (each costs ~30 s to build).
+// The only translation unit of sbanalyze that includes OpenVDB's tree, whose headers are slow to
+// build (bench/RESULTS.md, "Measurement history moved out of code comments").
 #include "voxels/voxelization.hpp"
 
 #include "gpu/grid_kernels.hpp"

@@ -16,15 +16,16 @@ namespace sbpack::norm {
 
 /// y^e for 0 < y <= 1 (or a sum in [1, 3]) as exp2(e log2 y): about 1e-16 relative where it
 /// matters (y^e |log2 y^e| <= 0.53, so the absolute error of a sum of such terms stays at
-/// rounding), and two to three times cheaper than std::pow, the predictor's inner loop.
+/// rounding), and cheaper than std::pow in the predictor's inner loop (bench/RESULTS.md,
+/// "Predictor speed-ups"; "Measurement history moved out of code comments").
 SBPACK_HD inline double power(double y, double e) {
     return std::exp2(e * std::log2(y));
 }
 
 /// x^{1/3} for 1 <= x <= 3: a quadratic first guess (within 0.6 %), then two Halley steps
 /// z <- z + z (x - z^3) / (2z^3 + x), each cubing the relative error; written as a correction,
-/// the last one rounds to within one ulp and keeps 1^{1/3} = 1 exact (libm's cbrt, which reduces
-/// any x first, took 11 % of a p = 1.5 run in its place).
+/// the last one rounds to within one ulp and keeps 1^{1/3} = 1 exact (libm's cbrt reduces any x
+/// first and is the slower: bench/RESULTS.md, "Roots instead of exp2/log2 at p = 1.5").
 SBPACK_HD inline double cubeRootOf1To3(double x) {
     double z = 0.6747968821859316 + x * (0.36905165677595114 - 0.03816218708648547 * x);
     for (int step = 0; step < 2; ++step) {

@@ -260,8 +260,9 @@ class PlaneMinorant {
 /// a subgradient g at the centroid c of the polygon known to hold the minimiser keeps only
 /// g . (x - c) <= 0, which loses no minimiser of a quasi-convex f whatever its kinks (the support
 /// points of near-cubes and near-octahedra are subgradients where Newton stalls), and each cut
-/// takes at least 4/9 of the polygon's area (Grunbaum), so ~150 evaluations reach rounding where
-/// nested golden sections took ~6000. For convex f the cut deepens to
+/// takes at least 4/9 of the polygon's area (Grunbaum), so ~150 evaluations reach rounding, far
+/// fewer than nested golden sections (bench/RESULTS.md, "Results after the cutting-plane finish
+/// and the mismatch certificate"). For convex f the cut deepens to
 /// g . (x - c) <= f_best - f(c). `valueAndGradient(c, g)` returns f(c) and writes g.
 /// The search stops when the polygon is within `resolution` of its centroid, or as soon as
 /// `lowerBound(polygon)`, a lower bound on f over the polygon, reaches the best f: then that is

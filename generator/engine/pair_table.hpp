@@ -2,8 +2,9 @@
 // The engine's per-pair records, keyed by the pair's index min(i, j) N + max(i, j): an
 // open-addressing hash table (linear probing, Fibonacci hashing, at most half full) with the keys
 // apart from the values, so that a lookup reads one short run of keys and then its value.
-// std::unordered_map took a node chase and a modulo by a prime per lookup: half the time of a
-// pair's scheduling, ~3 % of a collision at p = 1.5.
+// std::unordered_map takes a node chase and a modulo by a prime per lookup (bench/RESULTS.md,
+// "Roots instead of exp2/log2 at p = 1.5, and a flat pair table"; "Measurement history moved
+// out of code comments").
 
 #include <algorithm>
 #include <cassert>

@@ -16,10 +16,11 @@ namespace sbpack {
 /// The skin (units of D) of the lists at packing fraction phi (docs/design.md §3, "Neighbour-list
 /// skin"): five mean free paths of hard spheres, D / (6 sqrt(2) phi g(phi)) with the
 /// Carnahan-Starling contact value g = (1 - phi / 2) / (1 - phi)^3, within [0.1, 0.5]. A particle
-/// is relisted after flying skin D / 2: the fixed 0.1 D relisted it 2.5 times per collision from
-/// phi = 0.2 to P = 30, and relisting took ~65 % of the time there; a wider skin lists more
-/// pairs. 3, 5 and 8 free paths gave 1.42, 1.60 and 1.62 times the collisions per CPU second of
-/// that phase (bench/RESULTS.md). From phi ~ 0.57 up it is 0.1, the fixed skin of before.
+/// is relisted after flying skin D / 2: a skin fixed at 0.1 D makes relisting dominate at low
+/// density, a wider skin lists more pairs, and five free paths is the trade kept
+/// (bench/RESULTS.md, "Where sbgen's time goes at low density", "Neighbour-list skin from the
+/// packing fraction"; "Measurement history moved out of code comments"). From phi ~ 0.57 up it
+/// is 0.1.
 double neighbourSkin(double packingFraction);
 
 class NeighbourLists {

@@ -36,8 +36,8 @@ const std::vector<MeasuredAtP>& paperSlowRates() {
     // The slow rate whose packings at N = 1000 have the paper's Z: Z = a + b ln gamma through
     // the mean of three seeds at 1e-2 (E9) with the slope of seed 1 between 1e-2 and 5e-3
     // (E11), solved for the paper's Z (bench/RESULTS.md, "Fidelity", E11). At p = 1.5, where Z
-    // hardly moves with the rate, 1e-2 (Z 0.02 below the paper's, E9) instead of the fit's
-    // 8.6e-3 (0.07 above in the first ensemble packing, at 1.5 to 2 times the collisions).
+    // hardly moves with the rate, 1e-2 (E9) instead of the fit's rate, which costs more
+    // collisions for no closer Z (bench/RESULTS.md, "Fidelity, continued", E11).
     static const std::vector<MeasuredAtP> rates = {
         {0.85, 6.5e-3}, {0.9, 6.2e-3}, {1.1, 5.1e-3}, {1.2, 4.4e-3}, {1.5, 1e-2},
     };

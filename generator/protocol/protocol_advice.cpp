@@ -13,8 +13,8 @@ namespace {
 /// Collisions per CPU second of the rotating engine, measured on this machine class with the
 /// other core busy (bench/RESULTS.md: "Extreme p" at N = 50 for p <= 0.55 and p >= 100, the
 /// "Fidelity" E9 defaults at N = 1000 for 0.85-1.5, "Near-cubes after the jam check" and the
-/// local search at N = 200 for 2-10; "Near-octahedra" at N = 100 for p = 0.5000001, whose rate
-/// the table held at 0.501's before, so that no warning came: issue 46, defect 12).
+/// local search at N = 200 for 2-10; "Near-octahedra" at N = 100 for p = 0.5000001, so that
+/// the rate falls, and the warning comes, as p -> 1/2: issue 46, defect 12).
 const std::vector<MeasuredAtP>& rotatingRates() {
     static const std::vector<MeasuredAtP> rates = {
         {0.5000001, 2.1e2}, {0.501, 3.8e3}, {0.51, 1.8e4}, {0.55, 3.9e4}, {0.85, 7.8e4},

@@ -127,7 +127,8 @@ PairContact SuperballShape::contact(const PairMotion& m, PairMemory& memory) {
                              m.orientationJ.toRotationMatrix(), m.displacement};
     // The prediction's normal was the optimal one at the root it found, a state within rounding
     // of this one: where its plane still touches (within the contact gap, either way), no
-    // evaluation is needed (at p = 10 it was a local search per collision).
+    // evaluation is needed (at p = 10 that evaluation is a local search: bench/RESULTS.md,
+    // "The collision's contact from its prediction").
     SignedDistanceResult r;
     if (memory.atContact) r = atNormal(pair, normal);
     if (!memory.atContact || !(std::abs(r.signedDistance) <= 2.0 * limits.contactGap * m.diameter))

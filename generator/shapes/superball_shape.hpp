@@ -76,8 +76,8 @@ class SuperballShape {
 
     /// The neighbours in the order in which their inscribed spheres would touch (by then the
     /// bodies certainly have): the earliest contact tends to come first, and the horizon it
-    /// sets lets the cheap tiers reject the rest (exact evaluations per collision 15.7 -> 14.0
-    /// at p = 1.5).
+    /// sets lets the cheap tiers reject the rest (fewer exact evaluations per collision:
+    /// bench/RESULTS.md, "Warm Newton on the normal: zero crossings and carried normals").
     template <class MotionOf, class Consider>
     void inPredictionOrder(int count, MotionOf&& motionOf, Consider&& consider);
 

@@ -77,13 +77,21 @@ class _Analysis:
         return f"<sbpack.{type(self).__name__} ({state})>"
 
 
-def _analysis_class(row):
+def _keyword_doc(option, table):
+    """One keyword of a class's docstring, from sbanalyze's option table."""
+    row = table[option]
+    default = f" (default {row['default']})" if row["default"] else ""
+    return f"    {option.replace('-', '_')}: {row['value']}{default}, as --{option}"
+
+
+def _analysis_class(row, table):
     """The class of one registry row (pipeline/analysis_registry.cpp): its --compute name, its
-    own results group and its options (the command line's, dashes as underscores)."""
+    own results group and its options (the command line's, dashes as underscores), documented
+    from sbanalyze's option table (analysis/cli/option_table.cpp)."""
     description = row["description"][0].upper() + row["description"][1:]
+    keywords = "\n".join(_keyword_doc(o, table) for o in ("threads", *row["options"]))
     doc = (f"{description} (--compute {row['name']}; results groups: "
-           f"{', '.join(row['groups'])}). Keywords: threads, "
-           f"{', '.join(o.replace('-', '_') for o in row['options'])}.")
+           f"{', '.join(row['groups'])}).\n\nKeywords (sbanalyze --help says more):\n{keywords}")
     return type(row["python_class"], (_Analysis,), {
         "__doc__": doc,
         "__module__": __name__,
@@ -95,7 +103,8 @@ def _analysis_class(row):
 
 # One class per analysis of sbanalyze's registry: Contacts, StructureFactor, SpectralDensity,
 # Voxelization, PoreSizes, Transport, Hyperuniformity, Order, ...
-ANALYSES = tuple(_analysis_class(row) for row in _sbpack.analysis_registry())
+ANALYSES = tuple(_analysis_class(row, _sbpack.analysis_options())
+                 for row in _sbpack.analysis_registry())
 globals().update({cls.__name__: cls for cls in ANALYSES})
 
 

@@ -4,6 +4,7 @@
 #include "bindings.hpp"
 
 #include "cli/command_line.hpp"
+#include "cli/option_table.hpp"
 #include "parallel/parallel.hpp"
 #include "pipeline/analysis_registry.hpp"
 #include "pipeline/file_analysis.hpp"
@@ -153,6 +154,21 @@ py::list registryRows() {
     return rows;
 }
 
+/// The option table (cli/option_table.hpp): each option's name, value name, default and help
+/// as the command line prints them, for the analysis classes' docstrings.
+py::dict optionRows() {
+    const RunSettings defaults = defaultRunSettings();
+    py::dict rows;
+    for (const OptionRow& row : analysisOptionTable()) {
+        py::dict entry;
+        entry["value"] = std::string(row.valueName);
+        entry["default"] = row.shownDefault != nullptr ? row.shownDefault(defaults) : "";
+        entry["help"] = optionHelp(row, defaults);
+        rows[py::str(std::string(row.name))] = entry;
+    }
+    return rows;
+}
+
 } // namespace
 
 void registerAnalyses(py::module_& m) {
@@ -166,6 +182,9 @@ void registerAnalyses(py::module_& m) {
     m.def("analysis_registry", &registryRows,
           "sbanalyze's analyses: name (--compute), python_class, description, groups (its own "
           "first) and options (the command line's, without --, besides threads)");
+    m.def("analysis_options", &optionRows,
+          "sbanalyze's options by name (without --): value (its name; empty for a flag), default "
+          "(as --help prints it; empty where it prints none) and help");
     m.def("analyze", &analyzeFiles, py::arg("args"),
           "sbanalyze FILE... [options] in-process (args without the program name)");
     m.def("voxel_slice", &voxelSlice, py::arg("packing"), py::arg("voxels"), py::arg("plane"),

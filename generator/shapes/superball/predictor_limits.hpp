@@ -10,11 +10,11 @@ namespace sbpack {
 /// Tolerances and limits of the superball predictor, in one place.
 struct SuperballPredictorLimits : FirstContactLimits {
     /// Warm Newton steps of an exact signed distance before its plane serves as a lower bound or
-    /// the local search and the robust pair solver take over (at p = 1.5 the robust solver
-    /// served one exact evaluation in 170 with 32, one in 37 with 8; since lower bounds serve
-    /// down to the contact gap, 16 costs p = 1.5 nothing and spares near-cubes the steps of a
-    /// Newton that will not converge: bench/RESULTS.md, "Near-cubes: lower bounds down to the
-    /// contact gap").
+    /// the local search and the robust pair solver take over (fewer steps send p = 1.5 to the
+    /// robust solver more often; since lower bounds serve down to the contact gap, 16 is enough
+    /// for p = 1.5 and spares near-cubes the steps of a Newton that will not converge:
+    /// bench/RESULTS.md, "Near-cubes: lower bounds down to the contact gap"; "Measurement
+    /// history moved out of code comments").
     int newtonSteps = 16;
     /// Where a lower bound on s will do (it must clear the contact gap), warm Newton stops, from
     /// its second iterate on, once its plane gap clears that need by 1 / this times the ascent

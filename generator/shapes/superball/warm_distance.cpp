@@ -136,8 +136,8 @@ WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n,
         // Where a body presents a face (p > 1.5: Newton on its support function, ~|x|^q with
         // q < 1.5 across the face normal, overshoots) the gradient stays large at the optimum:
         // the supporting planes' common perpendicular certifies s instead; not where the plane
-        // is already the lower bound needed (1.02-1.15x per collision at p = 3 to 10:
-        // bench/RESULTS.md, "Warm Newton stops where its plane will do").
+        // is already the lower bound needed (bench/RESULTS.md, "Warm Newton stops where its
+        // plane will do").
         if (pair.shape.p() > 1.5 && now.f <= enough &&
             supportPlaneMismatch(pair, now.n, now.f, xi, d - xj) <=
                 PairTolerances{}.mismatchTolerance * size)
