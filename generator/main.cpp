@@ -18,18 +18,8 @@
 
 namespace {
 
-/// The first SIGINT or SIGTERM stops the run at the end of its window (an exact checkpoint);
-/// a second one stops it at its next event.
-volatile std::sig_atomic_t stopSignal = 0;
-volatile std::sig_atomic_t stopNow = 0;
-
 /// Exit status of a run whose output fails the jam check (docs/design.md §3).
 constexpr int kNotJammed = 3;
-
-void requestStop(int signal) {
-    if (stopSignal != 0) stopNow = 1;
-    stopSignal = signal;
-}
 
 const char* phaseName(sbpack::Phase phase) {
     switch (phase) {
@@ -80,10 +70,11 @@ sbpack::JammingProtocol startProtocol(const sbpack::GeneratorOptions& o) {
 
 int generate(const sbpack::GeneratorOptions& o) {
     using Clock = std::chrono::steady_clock;
-    // Installed first: a signal during the set-up stops the run at its first event, with a
-    // checkpoint of the starting state.
-    std::signal(SIGINT, requestStop);
-    std::signal(SIGTERM, requestStop);
+    // Installed first: a signal during the set-up stops the run after its first window. The
+    // first SIGINT or SIGTERM stops the run at the end of its window (an exact checkpoint); a
+    // second one stops it at its next event (common/stop/stop_request.hpp).
+    sbpack::installStopHandler();
+    const sbpack::StopRequest& stop = sbpack::processStopRequest();
     // No other run may write this run's output or checkpoint while it lasts (io/atomic_file.hpp).
     const sbpack::OutputLock outputLock(o.out), checkpointLock(interruptCheckpointPath(o));
     sbpack::JammingProtocol protocol = startProtocol(o);
@@ -91,29 +82,31 @@ int generate(const sbpack::GeneratorOptions& o) {
     const auto start = Clock::now();
     auto lastProgress = start, lastCheckpoint = start;
     const std::uint64_t startCollisions = protocol.status().collisions;
-    const bool done = protocol.run(&stopSignal, &stopNow, [&](const sbpack::ProtocolStatus& s) {
-        const auto now = Clock::now();
-        if (!o.quiet &&
-            (now - lastProgress > std::chrono::seconds(2) || s.phase == sbpack::Phase::Done)) {
-            printProgress(s, std::chrono::duration<double>(now - start).count(),
-                          s.collisions - startCollisions);
-            lastProgress = now;
-        }
-        if (o.checkpoint &&
-            std::chrono::duration<double>(now - lastCheckpoint).count() >= o.checkpointInterval) {
-            sbpack::writePacking(protocol.checkpoint(), *o.checkpoint);
-            lastCheckpoint = now;
-        }
-    });
+    const bool done = protocol.run(
+        [&](const sbpack::ProtocolStatus& s) {
+            const auto now = Clock::now();
+            if (!o.quiet &&
+                (now - lastProgress > std::chrono::seconds(2) || s.phase == sbpack::Phase::Done)) {
+                printProgress(s, std::chrono::duration<double>(now - start).count(),
+                              s.collisions - startCollisions);
+                lastProgress = now;
+            }
+            if (o.checkpoint && std::chrono::duration<double>(now - lastCheckpoint).count() >=
+                                    o.checkpointInterval) {
+                sbpack::writePacking(protocol.checkpoint(), *o.checkpoint);
+                lastCheckpoint = now;
+            }
+        },
+        stop);
     if (!done) {
         const std::filesystem::path path = interruptCheckpointPath(o);
         sbpack::writePacking(protocol.checkpoint(), path);
-        std::cerr << "sbgen: stopped by signal " << stopSignal
-                  << (stopNow ? " (twice: mid-window, resumes the run but not bit for bit)"
-                              : " at the end of a window (resumes bit for bit)")
+        std::cerr << "sbgen: stopped by signal " << stop.signal()
+                  << (stop.repeated() ? " (twice: mid-window, resumes the run but not bit for bit)"
+                                      : " at the end of a window (resumes bit for bit)")
                   << "; checkpoint written to " << path.string() << " (continue with --resume "
                   << path.string() << ")\n";
-        return 128 + stopSignal;
+        return 128 + stop.signal();
     }
     const sbpack::Packing packing = sbpack::finalPacking(protocol);
     sbpack::writePacking(packing, o.out);

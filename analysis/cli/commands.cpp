@@ -32,7 +32,7 @@ Format formatOf(const std::string& name) {
 } // namespace
 
 int analyzeCommand(const RunSettings& settings, const Communicator& communicator) {
-    installInterruptHandler();
+    installStopHandler();
     runAnalyses(settings, std::cerr, std::cout, communicator);
     return EXIT_SUCCESS;
 }

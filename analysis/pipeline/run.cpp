@@ -268,8 +268,9 @@ std::unique_ptr<AtomicOutput> writeJson(const RunSettings& settings, const RunRe
 
 } // namespace
 
-RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out) {
-    return runAnalyses(settings, log, out, SerialCommunicator());
+RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out,
+                       const StopRequest& stop) {
+    return runAnalyses(settings, log, out, SerialCommunicator(), stop);
 }
 
 namespace {
@@ -300,7 +301,7 @@ void writeOutputs(const RunSettings& settings, RunResults& results, const Progre
 } // namespace
 
 RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out,
-                       const Communicator& comm) {
+                       const Communicator& comm, const StopRequest& stop) {
     const Stopwatch clock;
     const ThreadBudget budget(settings.threads);
     const std::vector<std::size_t> mine = filesOfRank(settings, comm);
@@ -324,7 +325,7 @@ RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostr
         return {};
     }
 
-    Progress progress(settings.quiet ? nullptr : &log, &log);
+    Progress progress(settings.quiet ? nullptr : &log, &log, stop);
     RunResults results;
     results.ranks = comm.size();
     std::vector<std::unique_ptr<AtomicOutput>> exports; // committed with the results file

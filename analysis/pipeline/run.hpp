@@ -12,6 +12,8 @@
 #include <filesystem>
 #include <iosfwd>
 
+#include "stop/stop_request.hpp"
+
 namespace sbpack {
 
 /// Runs `settings`. Stage lines go to `log` unless settings.quiet; warnings always do; a JSON
@@ -24,7 +26,9 @@ namespace sbpack {
 void checkPackingForRun(const Packing& packing, const RunSettings& settings,
                         const std::filesystem::path& input);
 
-RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out);
+/// `stop`: the request its stages poll (Interrupted once made).
+RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out,
+                       const StopRequest& stop = processStopRequest());
 
 /// The same on the ranks of `comm` (docs/scale-out.md), every rank calling it: --distribute files
 /// shares the inputs out round robin, --distribute grids analyses each input on all ranks
@@ -33,6 +37,6 @@ RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostr
 /// reducer and writes the outputs; its RunResults hold them (the other ranks' hold none).
 /// With settings.plan nothing runs: rank 0 prints the plan (pipeline/scale_plan.hpp) to `out`.
 RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out,
-                       const Communicator& comm);
+                       const Communicator& comm, const StopRequest& stop = processStopRequest());
 
 } // namespace sbpack

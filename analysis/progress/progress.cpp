@@ -1,6 +1,5 @@
 #include "progress/progress.hpp"
 
-#include <atomic>
 #include <csignal>
 #include <iomanip>
 #include <ostream>
@@ -11,14 +10,6 @@ namespace sbpack {
 
 namespace {
 
-/// -1: none requested; else the signal that asked (0: requestInterrupt() without one).
-std::atomic<int> interruptRequested{-1};
-static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs a lock-free flag");
-
-extern "C" void onInterruptSignal(int signal) {
-    interruptRequested.store(signal, std::memory_order_relaxed);
-}
-
 std::string interruptMessage(int signal) {
     const char* name = signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : nullptr;
     return std::string("interrupted") + (name != nullptr ? std::string(" by ") + name : "") +
@@ -27,23 +18,11 @@ std::string interruptMessage(int signal) {
 
 } // namespace
 
-void installInterruptHandler() {
-    std::signal(SIGINT, onInterruptSignal);
-    std::signal(SIGTERM, onInterruptSignal);
-}
-
 Interrupted::Interrupted(int signal)
     : std::runtime_error(interruptMessage(signal)), signal_(signal) {}
 
-void requestInterrupt(int signal) {
-    interruptRequested.store(signal, std::memory_order_relaxed);
-}
-
-void clearInterrupt() {
-    interruptRequested.store(-1, std::memory_order_relaxed);
-}
-
-Progress::Progress(std::ostream* log, std::ostream* warnings) : log_(log), warnings_(warnings) {}
+Progress::Progress(std::ostream* log, std::ostream* warnings, const StopRequest& stop)
+    : log_(log), warnings_(warnings), stop_(&stop) {}
 
 void Progress::stageDone(std::string_view stage, double seconds, std::string_view detail) const {
     if (log_ == nullptr) return;
@@ -67,8 +46,7 @@ void Progress::warn(std::string_view message) const {
 }
 
 void Progress::checkInterrupt() const {
-    const int signal = interruptRequested.load(std::memory_order_relaxed);
-    if (signal >= 0) throw Interrupted(signal);
+    if (stop_->requested()) throw Interrupted(stop_->signal());
 }
 
 } // namespace sbpack

@@ -1,7 +1,9 @@
 #pragma once
 // Stage reports and cooperative interruption of long analyses (docs/design.md §7): one line per
-// finished stage, and an interrupt flag that compute loops poll once per chunk (as OpenVDB's
-// interrupter).
+// finished stage, and the stop request (common/stop) that compute loops poll once per chunk (as
+// OpenVDB's interrupter).
+
+#include "stop/stop_request.hpp"
 
 #include <chrono>
 #include <iosfwd>
@@ -12,8 +14,8 @@
 
 namespace sbpack {
 
-/// Thrown by Progress::checkInterrupt() once an interrupt was requested: `signal` is the
-/// SIGINT or SIGTERM that asked (0 for requestInterrupt() without one).
+/// Thrown by Progress::checkInterrupt() once a stop was requested: `signal` is the SIGINT or
+/// SIGTERM that asked (0 for a request without one).
 class Interrupted : public std::runtime_error {
   public:
     explicit Interrupted(int signal);
@@ -22,14 +24,6 @@ class Interrupted : public std::runtime_error {
   private:
     int signal_;
 };
-
-/// Makes SIGINT and SIGTERM request an interrupt instead of killing the process, so that the
-/// running stage stops at its next chunk and unwinds (no output file is left behind).
-void installInterruptHandler();
-/// What the signal handler does (with its signal); also usable from tests (signal 0).
-void requestInterrupt(int signal = 0);
-/// Clears a pending request (tests).
-void clearInterrupt();
 
 /// Wall-clock seconds since construction.
 class Stopwatch {
@@ -44,11 +38,14 @@ class Stopwatch {
 };
 
 /// The execution context passed down every stage: where analyses report, and how they run.
-/// Stage lines go to `log` (nullptr: quiet); warnings always go to `warnings` (nullptr: dropped).
-/// Thread-safe for checkInterrupt() only: report from the calling thread.
+/// Stage lines go to `log` (nullptr: quiet); warnings always go to `warnings` (nullptr: dropped);
+/// `stop` is the request the stages poll (sbanalyze's: the process's, which SIGINT and SIGTERM
+/// make; Python's: one per call). Thread-safe for checkInterrupt() only: report from the calling
+/// thread.
 class Progress {
   public:
-    explicit Progress(std::ostream* log = nullptr, std::ostream* warnings = nullptr);
+    explicit Progress(std::ostream* log = nullptr, std::ostream* warnings = nullptr,
+                      const StopRequest& stop = processStopRequest());
 
     /// Prefix of the following lines, e.g. "[2/5] packing.h5".
     void setContext(std::string context) { context_ = std::move(context); }
@@ -56,7 +53,7 @@ class Progress {
     void stageDone(std::string_view stage, double seconds, std::string_view detail = {}) const;
     /// "sbanalyze: warning: <context>: <message>".
     void warn(std::string_view message) const;
-    /// Throws Interrupted if an interrupt was requested; call once per chunk of work.
+    /// Throws Interrupted if a stop was requested; call once per chunk of work.
     void checkInterrupt() const;
 
     /// Run the parallel loops (parallelFor, orderedReduce) in order on one thread; results equal
@@ -68,6 +65,7 @@ class Progress {
   private:
     std::ostream* log_;
     std::ostream* warnings_;
+    const StopRequest* stop_;
     std::string context_;
     bool serial_ = false;
 };

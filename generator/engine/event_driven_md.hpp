@@ -30,9 +30,9 @@
 #include "packing/packing.hpp"
 #include "shapes/pair_motion.hpp"
 #include "shapes/shape.hpp"
+#include "stop/stop_request.hpp"
 
 #include <algorithm>
-#include <csignal>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
@@ -123,11 +123,12 @@ template <EngineShape Shape> class EventDrivenMd {
         dirty_ = true;
     }
 
-    /// Processes events until `maxCollisions` collisions, engine time `maxDuration`, or *stop
-    /// becomes nonzero (checked every event); then synchronises. Growth past the lists' design
-    /// diameter synchronises and rebuilds them on the way.
+    /// Processes events until `maxCollisions` collisions, engine time `maxDuration`, or a
+    /// repeated `stop` request (checked every event: a second request stops at once, the first
+    /// waits for the window's end, JammingProtocol::run); then synchronises. Growth past the
+    /// lists' design diameter synchronises and rebuilds them on the way.
     RunReport run(std::uint64_t maxCollisions, double maxDuration = kNever,
-                  const volatile std::sig_atomic_t* stop = nullptr) {
+                  const StopRequest* stop = nullptr) {
         RunReport report;
         ++run_;
         while (report.collisions < maxCollisions && !report.interrupted) {
@@ -136,7 +137,7 @@ template <EngineShape Shape> class EventDrivenMd {
             double now = 0.0;
             bool limitReached = false;
             while (report.collisions < maxCollisions) {
-                if (stop != nullptr && *stop != 0) {
+                if (stop != nullptr && stop->repeated()) {
                     report.interrupted = true;
                     break;
                 }

@@ -188,9 +188,8 @@ bool JammingProtocol::stopAtCostLimit() {
     return true;
 }
 
-bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
-                          const volatile std::sig_atomic_t* stopNow,
-                          const std::function<void(const ProtocolStatus&)>& onWindow) {
+bool JammingProtocol::run(const std::function<void(const ProtocolStatus&)>& onWindow,
+                          const StopRequest& stop) {
     using Clock = std::chrono::steady_clock;
     const std::uint64_t perWindow = static_cast<std::uint64_t>(
         std::ceil(parameters_.collisionsPerWindow * parameters_.particles));
@@ -199,7 +198,7 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
         const auto start = Clock::now();
         const std::clock_t cpuStart = std::clock();
         const RunReport report = std::visit(
-            [&](auto& engine) { return engine.run(perWindow, INFINITY, stopNow); }, engine_);
+            [&](auto& engine) { return engine.run(perWindow, INFINITY, &stop); }, engine_);
         status_.collisions += report.collisions;
         status_.relists += report.relists;
         status_.staleEvents += report.staleEvents;
@@ -216,7 +215,7 @@ bool JammingProtocol::run(const volatile std::sig_atomic_t* stop,
                                      "reduced pressure (virial / duration) is undefined");
         watchJam(report.participants, finishWindow(report.virial, report.duration));
         onWindow(status_);
-        if (stop != nullptr && *stop != 0 && status_.phase != Phase::Done) return false;
+        if (stop.requested() && status_.phase != Phase::Done) return false;
     }
     if (!status_.jam)
         status_.jam = checkJam(checkpoint(), status_.reducedPressure, parameters_.jamCheck);

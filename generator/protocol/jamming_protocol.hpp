@@ -21,8 +21,8 @@
 #include "packing/packing.hpp"
 #include "shapes/sphere.hpp"
 #include "shapes/superball_shape.hpp"
+#include "stop/stop_request.hpp"
 
-#include <csignal>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -131,12 +131,12 @@ class JammingProtocol {
 
     /// Runs windows until Phase::Done, the cost limit (status().jam then says why) or a stop;
     /// calls onWindow after every window (with the protocol synchronised, so checkpoint() may be
-    /// called there). `stop` is looked at after each window, so a run stopped by it is
-    /// synchronised and its checkpoint resumes bit for bit like a periodic one; `stopNow`
+    /// called there). A `stop` request is looked at after each window, so a run stopped by it is
+    /// synchronised and its checkpoint resumes bit for bit like a periodic one; a repeated one
     /// interrupts the window at its next event (a checkpoint then resumes the run, but not bit
     /// for bit). Returns true when done or at the cost limit.
-    bool run(const volatile std::sig_atomic_t* stop, const volatile std::sig_atomic_t* stopNow,
-             const std::function<void(const ProtocolStatus&)>& onWindow);
+    bool run(const std::function<void(const ProtocolStatus&)>& onWindow,
+             const StopRequest& stop = processStopRequest());
 
     const ProtocolParameters& parameters() const { return parameters_; }
     /// Only the final pressure and the cost limit may change on resume (e.g. to continue from

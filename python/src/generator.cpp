@@ -50,26 +50,27 @@ void validateAsKeywords(const ProtocolParameters& parameters) {
 /// Runs the protocol with the GIL released; after each window, with the GIL: Python's signals
 /// (Ctrl-C stops the run at the end of the window) and `progress` every `interval` seconds.
 bool runProtocol(JammingProtocol& protocol, const py::object& progress, double interval) {
-    volatile std::sig_atomic_t stop = 0;
-    volatile std::sig_atomic_t stopNow = 0;
+    StopRequest stop; // this call's (common/stop/stop_request.hpp)
     auto last = std::chrono::steady_clock::now();
     py::gil_scoped_release release;
-    return protocol.run(&stop, &stopNow, [&](const ProtocolStatus& s) {
-        py::gil_scoped_acquire acquire;
-        try {
-            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-            const auto now = std::chrono::steady_clock::now();
-            if (!progress.is_none() &&
-                (s.phase == Phase::Done ||
-                 std::chrono::duration<double>(now - last).count() >= interval)) {
-                progress(statusDict(s));
-                last = now;
+    return protocol.run(
+        [&](const ProtocolStatus& s) {
+            py::gil_scoped_acquire acquire;
+            try {
+                if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+                const auto now = std::chrono::steady_clock::now();
+                if (!progress.is_none() &&
+                    (s.phase == Phase::Done ||
+                     std::chrono::duration<double>(now - last).count() >= interval)) {
+                    progress(statusDict(s));
+                    last = now;
+                }
+            } catch (py::error_already_set& e) {
+                e.restore(); // raised once the run has stopped
+                stop.request();
             }
-        } catch (py::error_already_set& e) {
-            e.restore(); // raised once the run has stopped
-            stop = 1;
-        }
-    });
+        },
+        stop);
 }
 
 Packing generate(const ProtocolParameters& parameters, const py::object& progress,

@@ -335,18 +335,22 @@ TEST(Pipeline, OverlappingParticlesAreAnalysedWithAWarning) {
 
 TEST(Pipeline, InterruptStopsAStageAtItsNextChunk) {
     const Packing packing = testing::latticePacking(1.5, 3, 1.35, 0.03, 5);
-    requestInterrupt();
-    EXPECT_THROW(Voxelizer({40}).compute(packing, quiet), Interrupted);
-    EXPECT_THROW(StructureFactor({10.0}).compute(packing, quiet), Interrupted);
-    EXPECT_THROW(ExactPoreSizeDistribution({1000}).compute(packing, quiet), Interrupted);
-    clearInterrupt();
+    StopRequest stop;
+    stop.request();
+    const Progress stopped(nullptr, nullptr, stop);
+    EXPECT_THROW(Voxelizer({40}).compute(packing, stopped), Interrupted);
+    EXPECT_THROW(StructureFactor({10.0}).compute(packing, stopped), Interrupted);
+    EXPECT_THROW(ExactPoreSizeDistribution({1000}).compute(packing, stopped), Interrupted);
+    // Another call's request (Python gives each its own) and the process's are untouched.
+    EXPECT_FALSE(processStopRequest().requested());
     EXPECT_NO_THROW(Voxelizer({40}).compute(packing, quiet));
 }
 
 TEST(Pipeline, AnInterruptNamesItsSignal) {
-    requestInterrupt(SIGTERM);
+    StopRequest stop;
+    stop.request(SIGTERM);
     try {
-        Progress().checkInterrupt();
+        Progress(nullptr, nullptr, stop).checkInterrupt();
         ADD_FAILURE() << "no Interrupted";
     } catch (const Interrupted& e) {
         EXPECT_EQ(e.signal(), SIGTERM);
@@ -354,7 +358,21 @@ TEST(Pipeline, AnInterruptNamesItsSignal) {
                   std::string::npos)
             << e.what();
     }
-    clearInterrupt();
+}
+
+// A whole run given a request stops before it writes anything.
+TEST(Pipeline, ARequestedStopEndsARunWithoutOutput) {
+    const TempDir dir("sbpack-test-pipeline-stop");
+    writePacking(testing::latticePacking(1.5, 3, 1.35, 0.03, 5), dir / "a.h5");
+    RunSettings s = settingsFor({dir / "a.h5"}, dir / "r.h5");
+    s.analyses = resolveAnalyses("sq");
+    StopRequest stop;
+    stop.request(SIGINT);
+    std::ostringstream log, out;
+    EXPECT_THROW(runAnalyses(s, log, out, stop), Interrupted);
+    EXPECT_FALSE(fs::exists(dir / "r.h5"));
+    EXPECT_NO_THROW(runAnalyses(s, log, out)); // the process's request was not made
+    EXPECT_TRUE(fs::exists(dir / "r.h5"));
 }
 
 } // namespace

@@ -22,7 +22,7 @@ Packing shortSuperballCheckpoint() {
     p.pressureSwitch = 1e2;
     p.pressureFinal = 1e4;
     JammingProtocol run(p);
-    run.run(nullptr, nullptr, [](const ProtocolStatus&) {});
+    run.run([](const ProtocolStatus&) {});
     return run.checkpoint();
 }
 

@@ -86,9 +86,9 @@ TEST(JammingProtocol, RejectsBadParametersNamingTheParameter) {
 
 TEST(JammingProtocol, SameSeedGivesIdenticalPacking) {
     JammingProtocol a(smallRun(5)), b(smallRun(5)), c(smallRun(6));
-    ASSERT_TRUE(a.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
-    ASSERT_TRUE(b.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
-    ASSERT_TRUE(c.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(a.run([](const ProtocolStatus&) {}));
+    ASSERT_TRUE(b.run([](const ProtocolStatus&) {}));
+    ASSERT_TRUE(c.run([](const ProtocolStatus&) {}));
     expectIdentical(a.checkpoint(), b.checkpoint());
     EXPECT_NE(a.checkpoint().positions[0], c.checkpoint().positions[0]);
     EXPECT_GE(a.status().reducedPressure, 1e7);
@@ -97,7 +97,7 @@ TEST(JammingProtocol, SameSeedGivesIdenticalPacking) {
 TEST(JammingProtocol, ResumingFromACheckpointFileGivesTheUninterruptedResult) {
     JammingProtocol uninterrupted(smallRun(9));
     std::optional<Packing> saved;
-    ASSERT_TRUE(uninterrupted.run(nullptr, nullptr, [&](const ProtocolStatus& s) {
+    ASSERT_TRUE(uninterrupted.run([&](const ProtocolStatus& s) {
         if (s.windows == 40) saved = uninterrupted.checkpoint();
     }));
     ASSERT_TRUE(saved.has_value());
@@ -106,7 +106,7 @@ TEST(JammingProtocol, ResumingFromACheckpointFileGivesTheUninterruptedResult) {
     JammingProtocol resumed(readPacking(file), file.string());
     std::filesystem::remove(file);
     EXPECT_EQ(resumed.status().windows, 40u);
-    ASSERT_TRUE(resumed.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(resumed.run([](const ProtocolStatus&) {}));
     expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
 }
 
@@ -119,25 +119,49 @@ TEST(JammingProtocol, AStopRequestEndsTheWindowAndResumesExactly) {
     parameters.pressureSwitch = 1e2;
     parameters.pressureFinal = 1e4;
     JammingProtocol uninterrupted(parameters);
-    ASSERT_TRUE(uninterrupted.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
-    volatile std::sig_atomic_t stop = 0;
+    ASSERT_TRUE(uninterrupted.run([](const ProtocolStatus&) {}));
+    StopRequest stop;
     JammingProtocol stopped(parameters);
-    ASSERT_FALSE(stopped.run(&stop, nullptr, [&](const ProtocolStatus& s) {
-        if (s.windows == 25) stop = SIGINT; // as the handler would, between two events
-    }));
+    ASSERT_FALSE(stopped.run(
+        [&](const ProtocolStatus& s) {
+            if (s.windows == 25) stop.request(SIGINT); // as the handler would, between two events
+        },
+        stop));
+    EXPECT_EQ(stop.signal(), SIGINT);
     EXPECT_EQ(stopped.status().windows, 25u);
     const auto file = std::filesystem::temp_directory_path() / "sbgen-test-stop.h5";
     writePacking(stopped.checkpoint(), file);
     JammingProtocol resumed(readPacking(file), file.string());
     std::filesystem::remove(file);
-    ASSERT_TRUE(resumed.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(resumed.run([](const ProtocolStatus&) {}));
     expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
+}
+
+// A repeated request stops the window at its next event: nothing runs after the window in
+// which both came (sbgen's second SIGTERM; the checkpoint resumes, not bit for bit).
+TEST(JammingProtocol, ARepeatedStopRequestEndsTheRunAtItsNextEvent) {
+    ProtocolParameters parameters = smallRun(11);
+    parameters.particles = 27;
+    StopRequest stop;
+    std::uint64_t collisionsThen = 0;
+    JammingProtocol stopped(parameters);
+    ASSERT_FALSE(stopped.run(
+        [&](const ProtocolStatus& s) {
+            if (s.windows != 5) return;
+            collisionsThen = s.collisions;
+            stop.request(SIGTERM);
+            stop.request(SIGTERM);
+        },
+        stop));
+    EXPECT_TRUE(stop.repeated());
+    EXPECT_EQ(stopped.status().windows, 5u);
+    EXPECT_EQ(stopped.status().collisions, collisionsThen);
 }
 
 TEST(JammingProtocol, SuperballRunsAreDeterministicAndResumeExactly) {
     JammingProtocol uninterrupted(smallSuperballRun(4));
     std::optional<Packing> saved;
-    ASSERT_TRUE(uninterrupted.run(nullptr, nullptr, [&](const ProtocolStatus& s) {
+    ASSERT_TRUE(uninterrupted.run([&](const ProtocolStatus& s) {
         if (s.windows == 20) saved = uninterrupted.checkpoint();
     }));
     ASSERT_TRUE(saved.has_value());
@@ -149,19 +173,19 @@ TEST(JammingProtocol, SuperballRunsAreDeterministicAndResumeExactly) {
     writePacking(*saved, file);
     JammingProtocol resumed(readPacking(file), file.string());
     std::filesystem::remove(file);
-    ASSERT_TRUE(resumed.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(resumed.run([](const ProtocolStatus&) {}));
     expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
     JammingProtocol again(smallSuperballRun(4));
-    ASSERT_TRUE(again.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(again.run([](const ProtocolStatus&) {}));
     expectIdentical(uninterrupted.checkpoint(), again.checkpoint());
 }
 
 TEST(JammingProtocol, AFinishedRunContinuesToAHigherFinalPressure) {
     JammingProtocol run(smallRun(3));
-    ASSERT_TRUE(run.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(run.run([](const ProtocolStatus&) {}));
     JammingProtocol more(run.checkpoint(), "memory");
     more.setPressureFinal(1e9);
-    ASSERT_TRUE(more.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(more.run([](const ProtocolStatus&) {}));
     EXPECT_GE(more.status().reducedPressure, 1e9);
     EXPECT_GT(more.status().collisions, run.status().collisions);
 }
@@ -172,11 +196,11 @@ TEST(JammingProtocol, ARunStopsAtItsCostLimitNotJammedAndGoesOnWithALargerOne) {
     ProtocolParameters parameters = smallSuperballRun(4);
     parameters.costLimit = 0.0;
     JammingProtocol uninterrupted(parameters);
-    ASSERT_TRUE(uninterrupted.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(uninterrupted.run([](const ProtocolStatus&) {}));
     const double all = static_cast<double>(uninterrupted.status().collisions);
     parameters.costLimit = 0.5 * all / expectedCost(parameters).collisions;
     JammingProtocol limited(parameters);
-    ASSERT_TRUE(limited.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(limited.run([](const ProtocolStatus&) {}));
     const ProtocolStatus& s = limited.status();
     EXPECT_NE(s.phase, Phase::Done);
     EXPECT_GE(s.collisions, parameters.collisionLimit());
@@ -192,18 +216,18 @@ TEST(JammingProtocol, ARunStopsAtItsCostLimitNotJammedAndGoesOnWithALargerOne) {
     std::filesystem::remove(file);
     EXPECT_EQ(written.provenance.at("jammed"), ProvenanceValue(std::int64_t{0}));
     JammingProtocol same(written, "memory"); // the same limit: stops before any window
-    ASSERT_TRUE(same.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(same.run([](const ProtocolStatus&) {}));
     EXPECT_EQ(same.status().collisions, s.collisions);
     JammingProtocol resumed(written, "memory");
     resumed.setCostLimit(0.0);
-    ASSERT_TRUE(resumed.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(resumed.run([](const ProtocolStatus&) {}));
     EXPECT_TRUE(resumed.status().jam->jammed);
     expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
 }
 
 TEST(JammingProtocol, RefusesToResumeFromOverlappingParticles) {
     JammingProtocol run(smallRun(3));
-    ASSERT_TRUE(run.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(run.run([](const ProtocolStatus&) {}));
     Packing overlapping = run.checkpoint();
     overlapping.positions[1] = overlapping.positions[0] + Vector3d(0.1, 0.0, 0.0);
     try {
@@ -254,7 +278,7 @@ TEST(JammingProtocol, DefaultsSwitchAtTheirPressureAndUseTheSlowRateOfTheirShape
     EXPECT_EQ(superballs.slowGrowthRate(), paperSlowRate(1.5));
     JammingProtocol protocol(superballs);
     std::vector<std::pair<Phase, double>> windows; // phase after each window, and its pressure
-    ASSERT_TRUE(protocol.run(nullptr, nullptr, [&](const ProtocolStatus& s) {
+    ASSERT_TRUE(protocol.run([&](const ProtocolStatus& s) {
         windows.emplace_back(s.phase, s.reducedPressure);
         // The rate the engine grows at from here: the paper's fast rate, then the slow one.
         const double rate = std::get<double>(protocol.checkpoint().resumeState.at("growth_rate"));
@@ -319,7 +343,7 @@ TEST(JammingProtocol, TheDefaultRatesAreTheMeasuredPaperRatesOfTheirP) {
 // A checkpoint whose engine state was tampered with is refused, naming it (issue 20, defect 7).
 TEST(JammingProtocol, RefusesATamperedGrowthClock) {
     JammingProtocol run(smallRun(3));
-    run.run(nullptr, nullptr, [](const ProtocolStatus&) {});
+    run.run([](const ProtocolStatus&) {});
     const Packing good = run.checkpoint();
     const auto refused = [&](auto edit, const std::string& words) {
         Packing bad = good;
@@ -342,7 +366,7 @@ TEST(JammingProtocol, RefusesATamperedGrowthClock) {
 // Pair records that cannot be the engine's are refused, naming the row (issue 40).
 TEST(JammingProtocol, RefusesTamperedPairRecords) {
     JammingProtocol run(smallSuperballRun(4));
-    run.run(nullptr, nullptr, [](const ProtocolStatus&) {});
+    run.run([](const ProtocolStatus&) {});
     const Packing good = run.checkpoint();
     ASSERT_GT(good.pairRecords.size(), kPairRecordColumns);
     const auto refused = [&](std::size_t column, double value, const std::string& words) {

@@ -75,7 +75,7 @@ TEST_P(StiffJamming, AJamHasTheContactsOfOneAndARefusalNamesTheChain) {
     parameters.pressureSwitch = 1e4;
     parameters.pressureFinal = 1e8;
     JammingProtocol run(parameters);
-    ASSERT_TRUE(run.run(nullptr, nullptr, [](const ProtocolStatus&) {}));
+    ASSERT_TRUE(run.run([](const ProtocolStatus&) {}));
     const ProtocolStatus& status = run.status();
     ASSERT_TRUE(status.jam.has_value());
     const Packing packing = run.checkpoint();
@@ -112,10 +112,12 @@ TEST(StiffJamming, AStalledPressureOnAWrappingColumnEndsTheRunNotJammed) {
     const std::string file = std::string(SBPACK_DATA_DIR) + "/stalled-column-p10-200.h5";
     JammingProtocol run(readPacking(file), file);
     const std::uint64_t start = run.status().windows;
-    volatile std::sig_atomic_t guard = 0;
-    const bool done = run.run(&guard, nullptr, [&](const ProtocolStatus& status) {
-        if (status.windows - start >= 400) guard = 1;
-    });
+    StopRequest guard;
+    const bool done = run.run(
+        [&](const ProtocolStatus& status) {
+            if (status.windows - start >= 400) guard.request();
+        },
+        guard);
     ASSERT_TRUE(done) << "still running at P = " << run.status().reducedPressure;
     const ProtocolStatus& status = run.status();
     EXPECT_LT(status.reducedPressure, run.parameters().pressureFinal);
