@@ -87,52 +87,67 @@ void accumulateRow(std::int64_t begin, std::int64_t end, int nx, int ny, int zl,
     }
 }
 
-/// The modes of one plane n_x, in the order (n_y, n_z, sign combination).
-DensityModes plane(int nx, std::int64_t maxN2, std::int64_t particles, int kmax,
-                   const PhaseTable& x, const PhaseTable& y, const PhaseTable& z,
-                   const Progress& progress) {
-    const std::int64_t stride = kmax + 1;
-    const std::int64_t rest = maxN2 - static_cast<std::int64_t>(nx) * nx;
+/// The rows of plane n_x (|n|^2 <= maxN2 leaves n_y^2 + n_z^2 <= rest): row n_y holds 8 arrays
+/// over n_z = 0..zmax(n_y), Re and Im of A_u, B_u, A_v, B_v with A = sum of (u or v) cos(θz n_z),
+/// B = sum of (u or v) sin(θz n_z) (accumulateRow), from offset[n_y] on.
+struct PlaneRows {
+    std::vector<int> length;         ///< zmax(n_y) + 1
+    std::vector<std::size_t> offset; ///< of row n_y in the plane's sums; offset.back(): their size
+};
+
+PlaneRows planeRows(std::int64_t rest) {
     const int ymax = isqrt(rest);
-    // Row n_y holds 8 arrays over n_z = 0..zmax(n_y): Re and Im of A_u, B_u, A_v, B_v with
-    // A = sum of (u or v) cos(θz n_z), B = sum of (u or v) sin(θz n_z) (accumulateRow).
-    std::vector<int> length(ymax + 1);
-    std::vector<std::size_t> offset(ymax + 2, 0);
+    PlaneRows rows{std::vector<int>(ymax + 1), std::vector<std::size_t>(ymax + 2, 0)};
     for (int ny = 0; ny <= ymax; ++ny) {
-        length[ny] = isqrt(rest - static_cast<std::int64_t>(ny) * ny) + 1;
-        offset[ny + 1] = offset[ny] + 8 * static_cast<std::size_t>(length[ny]);
+        rows.length[ny] = isqrt(rest - static_cast<std::int64_t>(ny) * ny) + 1;
+        rows.offset[ny + 1] = rows.offset[ny] + 8 * static_cast<std::size_t>(rows.length[ny]);
     }
-    std::vector<double> acc(offset.back(), 0.0);
-    for (std::int64_t begin = 0; begin < particles; begin += kParticleBlock) {
-        progress.checkInterrupt();
-        const std::int64_t end = std::min(particles, begin + kParticleBlock);
-        for (int ny = 0; ny <= ymax; ++ny) {
-            const int zl = length[ny];
-            double* const a = &acc[offset[ny]];
-            accumulateRow(begin, end, nx, ny, zl, stride, x, y, z, a, a + zl, a + 2 * zl,
-                          a + 3 * zl, a + 4 * zl, a + 5 * zl, a + 6 * zl, a + 7 * zl);
-        }
-    }
+    return rows;
+}
+
+/// The modes of plane n_x from its rows' sums, in the order (n_y, n_z, sign combination):
+/// rho(n_x, +-n_y, n_z) = A - i B, rho(n_x, +-n_y, -n_z) = A + i B.
+DensityModes planeModes(int nx, const PlaneRows& rows, const std::vector<double>& acc) {
     DensityModes out;
     auto emit = [&](int ny, int nz, double re, double im) {
         out.n.push_back({nx, ny, nz});
         out.intensity.push_back(re * re + im * im);
     };
-    for (int ny = 0; ny <= ymax; ++ny) {
-        const int zl = length[ny];
-        const double* a = &acc[offset[ny]];
+    for (int ny = 0; ny + 1 < static_cast<int>(rows.offset.size()); ++ny) {
+        const int zl = rows.length[ny];
+        const double* a = &acc[rows.offset[ny]];
+        const bool xOrY = nx > 0 || ny > 0, xAndY = nx > 0 && ny > 0;
         for (int nz = 0; nz < zl; ++nz) {
             const double auR = a[nz], auI = a[zl + nz], buR = a[2 * zl + nz], buI = a[3 * zl + nz];
             const double avR = a[4 * zl + nz], avI = a[5 * zl + nz], bvR = a[6 * zl + nz],
                          bvI = a[7 * zl + nz];
-            // rho(n_x, +-n_y, n_z) = A - i B, rho(n_x, +-n_y, -n_z) = A + i B.
-            if (nx > 0 || ny > 0 || nz > 0) emit(ny, nz, auR + buI, auI - buR);
-            if (nz > 0 && (nx > 0 || ny > 0)) emit(ny, -nz, auR - buI, auI + buR);
-            if (nx > 0 && ny > 0) emit(-ny, nz, avR + bvI, avI - bvR);
-            if (nx > 0 && ny > 0 && nz > 0) emit(-ny, -nz, avR - bvI, avI + bvR);
+            if (xOrY || nz > 0) emit(ny, nz, auR + buI, auI - buR);
+            if (xOrY && nz > 0) emit(ny, -nz, auR - buI, auI + buR);
+            if (xAndY) emit(-ny, nz, avR + bvI, avI - bvR);
+            if (xAndY && nz > 0) emit(-ny, -nz, avR - bvI, avI + bvR);
         }
     }
     return out;
+}
+
+/// The modes of one plane n_x, in the order (n_y, n_z, sign combination).
+DensityModes plane(int nx, std::int64_t maxN2, std::int64_t particles, int kmax,
+                   const PhaseTable& x, const PhaseTable& y, const PhaseTable& z,
+                   const Progress& progress) {
+    const std::int64_t stride = kmax + 1;
+    const PlaneRows rows = planeRows(maxN2 - static_cast<std::int64_t>(nx) * nx);
+    std::vector<double> acc(rows.offset.back(), 0.0);
+    for (std::int64_t begin = 0; begin < particles; begin += kParticleBlock) {
+        progress.checkInterrupt();
+        const std::int64_t end = std::min(particles, begin + kParticleBlock);
+        for (std::size_t ny = 0; ny < rows.length.size(); ++ny) {
+            const int zl = rows.length[ny];
+            double* const a = &acc[rows.offset[ny]];
+            accumulateRow(begin, end, nx, static_cast<int>(ny), zl, stride, x, y, z, a, a + zl,
+                          a + 2 * zl, a + 3 * zl, a + 4 * zl, a + 5 * zl, a + 6 * zl, a + 7 * zl);
+        }
+    }
+    return planeModes(nx, rows, acc);
 }
 
 } // namespace

@@ -124,6 +124,36 @@ struct BlockGeometry {
     }
 };
 
+/// The bits (rowBits at `shift`) of the solid voxels of one row z0..z1 of one particle: an
+/// interval, the body being convex. `inner` is solid without a test (inner.first > inner.last:
+/// none); the test runs from each end inwards up to the first solid voxel.
+template <class Solid>
+std::uint64_t rowWord(int z0, int z1, gpu::IndexRange inner, int shift, const Solid& solidAt) {
+    const auto [in0, in1] = inner;
+    if (in0 <= in1) {
+        std::uint64_t word = rowBits(in0, in1, shift);
+        for (int z = z0; z < in0; ++z)
+            if (solidAt(z)) {
+                word |= rowBits(z, in0 - 1, shift);
+                break;
+            }
+        for (int z = z1; z > in1; --z)
+            if (solidAt(z)) {
+                word |= rowBits(in1 + 1, z, shift);
+                break;
+            }
+        return word;
+    }
+    int first = z0;
+    while (first <= z1 && !solidAt(first))
+        ++first;
+    if (first > z1) return 0;
+    int last = z1;
+    while (last > first && !solidAt(last))
+        --last;
+    return rowBits(first, last, shift);
+}
+
 /// The 8 words of block (ox, oy, oz) from its candidates. Per row (x, y) the solid voxels of one
 /// particle form an interval (the body is convex): the inscribed sphere's part is solid without
 /// a test, and the exact test runs from each end of the circumscribed sphere's part inwards up to
@@ -152,36 +182,13 @@ std::array<std::uint64_t, kBlock> voxelizeBlock(int ox, int oy, int oz,
                 if (rxy2 >= rc2) continue;
                 const auto [z0, z1] = voxelRange(c.z(), std::sqrt(rc2 - rxy2), g.a, oz, lastZ);
                 if (z0 > z1) continue;
-                std::uint64_t& word = words[x - ox];
-                const int shift = (y - oy) * kBlock - oz;
                 auto solidAt = [&](int z) {
                     return inside(rotation * Vector3d(dx, dy, (z + 0.5) * g.a - c.z()));
                 };
-                const auto [in0, in1] = rxy2 < ri2
-                                            ? voxelRange(c.z(), std::sqrt(ri2 - rxy2), g.a, z0, z1)
-                                            : gpu::IndexRange{z1 + 1, z1};
-                if (in0 <= in1) {
-                    word |= rowBits(in0, in1, shift);
-                    for (int z = z0; z < in0; ++z)
-                        if (solidAt(z)) {
-                            word |= rowBits(z, in0 - 1, shift);
-                            break;
-                        }
-                    for (int z = z1; z > in1; --z)
-                        if (solidAt(z)) {
-                            word |= rowBits(in1 + 1, z, shift);
-                            break;
-                        }
-                } else {
-                    int first = z0;
-                    while (first <= z1 && !solidAt(first))
-                        ++first;
-                    if (first > z1) continue;
-                    int last = z1;
-                    while (last > first && !solidAt(last))
-                        --last;
-                    word |= rowBits(first, last, shift);
-                }
+                const gpu::IndexRange inner =
+                    rxy2 < ri2 ? voxelRange(c.z(), std::sqrt(ri2 - rxy2), g.a, z0, z1)
+                               : gpu::IndexRange{z1 + 1, z1};
+                words[x - ox] |= rowWord(z0, z1, inner, (y - oy) * kBlock - oz, solidAt);
             }
         }
     }

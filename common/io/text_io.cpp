@@ -110,57 +110,79 @@ Packing readPackingFile(const fs::path& file) {
     return file.extension() == ".txt" ? readTextPacking(file) : readPacking(file);
 }
 
+namespace {
+
+/// The header of a text packing: "# key value" lines before the first particle line.
+class TextHeader {
+  public:
+    /// Reads a comment line's key if it is a header key (others are free comments).
+    void read(const std::vector<std::string>& tokens, LineReader& reader) {
+        if (tokens.front() != "#" || tokens.size() != 3) return;
+        const std::string& key = tokens[1];
+        if (key == "n_particles") {
+            if (count_) reader.fail("header key 'n_particles' is repeated");
+            count_ = reader.parseCount(tokens[2]);
+        } else if (const auto it = values_.find(key); it != values_.end()) {
+            if (it->second) reader.fail("header key '" + key + "' is repeated");
+            it->second = reader.parseDouble(tokens[2]);
+        }
+    }
+    /// Fails naming the first key missing.
+    void requireComplete(LineReader& reader) const {
+        for (const auto& [key, value] : values_)
+            if (!value) reader.fail("missing header key '" + key + "' before the particles");
+        if (!count_) reader.fail("missing header key 'n_particles' before the particles");
+    }
+    long long count() const { return *count_; }
+    double value(const std::string& key) const { return *values_.at(key); }
+
+  private:
+    std::map<std::string, std::optional<double>> values_ = {
+        {"p", std::nullopt}, {"semi_axis", std::nullopt}, {"box_length", std::nullopt}};
+    std::optional<long long> count_;
+};
+
+/// One particle line, x y z qw qx qy qz, appended to `packing`.
+void readParticle(const std::vector<std::string>& tokens, LineReader& reader, Packing& packing) {
+    if (tokens.size() != 7)
+        reader.fail("expected 7 numbers (x y z qw qx qy qz), found " +
+                    std::to_string(tokens.size()));
+    double v[7];
+    for (int k = 0; k < 7; ++k)
+        v[k] = reader.parseDouble(tokens[k]);
+    packing.positions.emplace_back(v[0], v[1], v[2]);
+    packing.orientations.emplace_back(v[3], v[4], v[5], v[6]);
+}
+
+} // namespace
+
 Packing readTextPacking(const fs::path& file) {
     LineReader reader(file);
     std::string line;
     if (!reader.next(line) || line != kTextMagic)
         reader.fail("not an sbpack text packing (the first line must be '" +
                     std::string(kTextMagic) + "')");
-
-    std::map<std::string, std::optional<double>> header = {
-        {"p", std::nullopt}, {"semi_axis", std::nullopt}, {"box_length", std::nullopt}};
-    std::optional<long long> count;
-    const auto requireHeader = [&] {
-        for (const auto& [key, value] : header)
-            if (!value) reader.fail("missing header key '" + key + "' before the particles");
-        if (!count) reader.fail("missing header key 'n_particles' before the particles");
-    };
+    TextHeader header;
     Packing packing;
     while (reader.next(line)) {
         const std::vector<std::string> tokens = splitWhitespace(line);
         if (tokens.empty()) continue;
         if (tokens.front().starts_with('#')) {
-            if (!packing.positions.empty() || tokens.front() != "#" || tokens.size() != 3)
-                continue; // a free comment
-            const std::string& key = tokens[1];
-            if (key == "n_particles") {
-                if (count) reader.fail("header key 'n_particles' is repeated");
-                count = reader.parseCount(tokens[2]);
-            } else if (const auto it = header.find(key); it != header.end()) {
-                if (it->second) reader.fail("header key '" + key + "' is repeated");
-                it->second = reader.parseDouble(tokens[2]);
-            }
+            if (packing.positions.empty()) header.read(tokens, reader); // else a free comment
             continue;
         }
-        if (packing.positions.empty()) requireHeader();
-        if (tokens.size() != 7)
-            reader.fail("expected 7 numbers (x y z qw qx qy qz), found " +
-                        std::to_string(tokens.size()));
-        double v[7];
-        for (int k = 0; k < 7; ++k)
-            v[k] = reader.parseDouble(tokens[k]);
-        packing.positions.emplace_back(v[0], v[1], v[2]);
-        packing.orientations.emplace_back(v[3], v[4], v[5], v[6]);
+        if (packing.positions.empty()) header.requireComplete(reader);
+        readParticle(tokens, reader, packing);
     }
-    requireHeader();
-    if (static_cast<long long>(packing.positions.size()) != *count)
+    header.requireComplete(reader);
+    if (static_cast<long long>(packing.positions.size()) != header.count())
         throw PackingFileError("'" + reader.name() + "': header says n_particles " +
-                               std::to_string(*count) + " but the file has " +
+                               std::to_string(header.count()) + " but the file has " +
                                std::to_string(packing.positions.size()) +
                                " particle lines (wrong particle count)");
-    packing.p = *header["p"];
-    packing.semiAxis = *header["semi_axis"];
-    packing.boxLength = *header["box_length"];
+    packing.p = header.value("p");
+    packing.semiAxis = header.value("semi_axis");
+    packing.boxLength = header.value("box_length");
     validatePacking(packing, reader.name());
     canonicalizePacking(packing);
     return packing;

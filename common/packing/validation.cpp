@@ -43,7 +43,11 @@ void checkOptionalRows(const std::vector<Vector3d>& rows, const std::string& wha
 
 } // namespace
 
-void validatePacking(const Packing& packing, const std::string& source) {
+namespace {
+
+/// p, the box, the semi-axis and the pressure: each finite and in range, the particle narrower
+/// than the box.
+void checkScalars(const Packing& packing, const std::string& source) {
     if (!(packing.p >= 0.5 && std::isfinite(packing.p)))
         reject(source, "p = " + formatDouble(packing.p) + " (must be finite and >= 0.5)");
     if (!(packing.boxLength > 0.0 && std::isfinite(packing.boxLength)))
@@ -58,11 +62,31 @@ void validatePacking(const Packing& packing, const std::string& source) {
         !(std::isfinite(*packing.reducedPressure) && *packing.reducedPressure > 0.0))
         reject(source, "reduced_pressure = " + formatDouble(*packing.reducedPressure) +
                            " (must be finite and positive)");
-
     if (2.0 * packing.semiAxis > packing.boxLength)
         reject(source, "semi_axis = " + formatDouble(packing.semiAxis) +
                            ": a particle is wider than the box (L = " +
                            formatDouble(packing.boxLength) + ") and overlaps its own image");
+}
+
+/// Every orientation a finite unit quaternion (to kQuaternionNormTolerance).
+void checkOrientations(const Packing& packing, const std::string& source) {
+    for (std::size_t i = 0; i < packing.orientations.size(); ++i) {
+        const Quaterniond& q = packing.orientations[i];
+        if (!q.coeffs().allFinite())
+            reject(source, "particle " + std::to_string(i) +
+                               " has a non-finite (NaN or inf) orientation quaternion");
+        const double norm = q.norm();
+        if (std::abs(norm - 1.0) > kQuaternionNormTolerance)
+            reject(source, "particle " + std::to_string(i) + " has an orientation quaternion " +
+                               "of norm " + formatDouble(norm) + " (must be 1 within " +
+                               formatDouble(kQuaternionNormTolerance) + ")");
+    }
+}
+
+} // namespace
+
+void validatePacking(const Packing& packing, const std::string& source) {
+    checkScalars(packing, source);
     const std::size_t n = packing.positions.size();
     if (n == 0) reject(source, "no particles");
     // Finite sizes can still overflow or underflow the volume (semi_axis 1e300 or 1e-300).
@@ -75,17 +99,7 @@ void validatePacking(const Packing& packing, const std::string& source) {
                            std::to_string(packing.orientations.size()) +
                            " orientations (count mismatch)");
     checkFiniteRows(packing.positions, "position", source);
-    for (std::size_t i = 0; i < n; ++i) {
-        const Quaterniond& q = packing.orientations[i];
-        if (!q.coeffs().allFinite())
-            reject(source, "particle " + std::to_string(i) +
-                               " has a non-finite (NaN or inf) orientation quaternion");
-        const double norm = q.norm();
-        if (std::abs(norm - 1.0) > kQuaternionNormTolerance)
-            reject(source, "particle " + std::to_string(i) + " has an orientation quaternion " +
-                               "of norm " + formatDouble(norm) + " (must be 1 within " +
-                               formatDouble(kQuaternionNormTolerance) + ")");
-    }
+    checkOrientations(packing, source);
     checkOptionalRows(packing.velocities, "velocity", source, n);
     checkOptionalRows(packing.angularVelocities, "angular velocity", source, n);
 }

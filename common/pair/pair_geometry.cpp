@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace sbpack {
@@ -51,26 +52,15 @@ class MinkowskiSum {
     const SuperballPair& pair_;
 };
 
-/// Solves phi'(t) = 0 for 0 < t <= tMax along a search direction, given phi'(0) < 0 and
-/// phi' nondecreasing past its root (convex phi, or a local maximum of -phi): the full
-/// Newton step t = 1 is tried first; otherwise the root is bracketed and refined by Illinois
-/// regula falsi with bisection safeguards. tTolerance is absolute in t.
-template <class Derivative>
-double exactLineSearch(Derivative&& derivative, double slope0, double tTolerance, double tMax,
-                       int maxIterations) {
-    double lo = 0.0, dlo = slope0;
-    double hi = std::min(1.0, tMax), dhi = derivative(hi);
-    if (std::abs(dhi) <= 1e-2 * std::abs(slope0)) return hi; // Newton's step is good enough
-    int iteration = 0;
-    while (dhi < 0.0 && hi < tMax && iteration++ < maxIterations) { // bracket the root
-        lo = hi;
-        dlo = dhi;
-        hi = std::min(2.0 * hi, tMax);
-        dhi = derivative(hi);
-    }
-    if (dhi < 0.0) return hi;
-    int side = 0; // Illinois: which end was kept last time
-    while (hi - lo > tTolerance && iteration++ < maxIterations) {
+/// A bracket [lo, hi] of the root of phi', phi'(lo) = dlo < 0 <= dhi = phi'(hi), refined by
+/// Illinois regula falsi with bisection safeguards.
+struct Bracket {
+    double lo, dlo, hi, dhi;
+    int side = 0; ///< Illinois: which end was kept last time
+
+    /// One regula falsi step (its end's value halved when the same end is kept twice), and a
+    /// bisection when the bracket shrank by less than half; the root if a step hit it exactly.
+    template <class Derivative> std::optional<double> refine(Derivative& derivative) {
         double t = lo - dlo * (hi - lo) / (dhi - dlo);
         const double width = hi - lo;
         if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
@@ -95,8 +85,31 @@ double exactLineSearch(Derivative&& derivative, double slope0, double tTolerance
             (dm < 0.0 ? dlo : dhi) = dm;
             side = 0;
         }
+        return std::nullopt;
     }
-    return 0.5 * (lo + hi);
+};
+
+/// Solves phi'(t) = 0 for 0 < t <= tMax along a search direction, given phi'(0) < 0 and
+/// phi' nondecreasing past its root (convex phi, or a local maximum of -phi): the full
+/// Newton step t = 1 is tried first; otherwise the root is bracketed and refined (Bracket).
+/// tTolerance is absolute in t.
+template <class Derivative>
+double exactLineSearch(Derivative&& derivative, double slope0, double tTolerance, double tMax,
+                       int maxIterations) {
+    Bracket b{0.0, slope0, std::min(1.0, tMax), 0.0};
+    b.dhi = derivative(b.hi);
+    if (std::abs(b.dhi) <= 1e-2 * std::abs(slope0)) return b.hi; // Newton's step will do
+    int iteration = 0;
+    while (b.dhi < 0.0 && b.hi < tMax && iteration++ < maxIterations) { // bracket the root
+        b.lo = b.hi;
+        b.dlo = b.dhi;
+        b.hi = std::min(2.0 * b.hi, tMax);
+        b.dhi = derivative(b.hi);
+    }
+    if (b.dhi < 0.0) return b.hi;
+    while (b.hi - b.lo > tTolerance && iteration++ < maxIterations)
+        if (const std::optional<double> root = b.refine(derivative)) return *root;
+    return 0.5 * (b.lo + b.hi);
 }
 
 /// Largest t with |c + t v| <= radius, for |c| <= radius.
