@@ -285,9 +285,9 @@ int errors(const Options& o, const Packing& packing) {
             std::printf("transport at M = %d (exact in brackets): zeta2 = %.5f, F = %.4f, k/w^2 = "
                         "%.3e (%.3e), tau D/w^2 = %.3e (%.3e), T1 D/w^2 = %.3e (%.3e)\n",
                         m, t.zeta2, t.formationFactor, t.permeabilityOverWidth2(),
-                        te.permeabilityOverWidth2(), t.meanSurvivalTimeScaled(),
-                        te.meanSurvivalTimeScaled(), t.principalRelaxationTimeScaled(),
-                        te.principalRelaxationTimeScaled());
+                        te.permeabilityOverWidth2(), t.meanSurvivalTimeOverWidth2(),
+                        te.meanSurvivalTimeOverWidth2(), t.principalRelaxationTimeOverWidth2(),
+                        te.principalRelaxationTimeOverWidth2());
         }
     }
     return 0;

@@ -105,8 +105,8 @@ def transport_row(results, group, paper):
     width = width_over_axis(results, group)
     return (f"| {p:g} | {width:.4f} | {pm(attr(group, 'pore_size', 'mean_w'), 1e2, 3, n)} | "
             f"{pm(attr(group, 'transport', 'permeability_w2'), 1e4, 3, n)} | "
-            f"{pm(attr(group, 'transport', 'mean_survival_time_scaled'), 1e3, 3, n)} | "
-            f"{pm(attr(group, 'transport', 'principal_relaxation_time_scaled'), 1e3, 3, n)} | "
+            f"{pm(attr(group, 'transport', 'mean_survival_time_w2'), 1e3, 3, n)} | "
+            f"{pm(attr(group, 'transport', 'principal_relaxation_time_w2'), 1e3, 3, n)} | "
             f"{pm(attr(group, 'spreadability', 'alpha'), 1, 2, n)} | {number(ref, 'alpha'):.2f} | "
             f"{pm(attr(group, 'hyperuniformity', 'a0'), 1e4, 1, n)} | {number(ref, 'a0_e-4'):.2f} | "
             f"{pm(attr(group, 'hyperuniformity', 'a1'), 1e3, 1, n)} | {number(ref, 'a1_e-3'):.2f} | "

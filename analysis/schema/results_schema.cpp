@@ -14,7 +14,8 @@ using namespace columns;
 
 constexpr Field kRun[] = {
     {"format", A, S, "", "\"sbpack.results\""},
-    {"format_version", A, I, "1", "2 (this layout)"},
+    {"format_version", A, I, "1",
+     "3 (this layout; 2 differs only in the fields renamed, \"Names\")"},
     {"sbanalyze_version", A, S, "", "version of the sbanalyze that wrote the file"},
     {"compute", A, S, "", "the analyses run, comma-separated (--compute with what they need)"},
     {"threads", A, I, "1", "threads of the run (--threads), per rank"},
@@ -25,6 +26,11 @@ constexpr Field kRun[] = {
     {"n_files", A, I, "1", "inputs: groups files/0 ... files/<n_files - 1>"},
     {"n_ensembles", A, I, "1", "ensembles (inputs of equal p and N): ensembles/0 ..."},
     {"runtime_s", A, F, "s", "wall-clock time of the whole run"},
+};
+
+constexpr RenamedField kRenamed[] = {
+    {"transport", "mean_survival_time_scaled", "mean_survival_time_w2", 3},
+    {"transport", "principal_relaxation_time_scaled", "principal_relaxation_time_w2", 3},
 };
 
 constexpr Field kFile[] = {
@@ -122,6 +128,10 @@ EnsembleSchemas& ensembleSchemas() {
 }
 
 } // namespace
+
+std::span<const RenamedField> renamedFields() {
+    return kRenamed;
+}
 
 const Group& runGroup() {
     return kRunGroup;

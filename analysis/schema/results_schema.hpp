@@ -15,7 +15,8 @@ namespace sbpack::schema {
 
 inline constexpr std::string_view kFormat = "sbpack.results";
 inline constexpr std::string_view kSummaryFormat = "sbpack.summary";
-inline constexpr std::int64_t kFormatVersion = 2;
+/// 3: the transport times reduced by w^2 / D named as the other reduced fields (renamedFields).
+inline constexpr std::int64_t kFormatVersion = 3;
 
 enum class Kind { Attribute, Dataset };
 enum class Type { Float, Int, String };
@@ -62,6 +63,18 @@ inline constexpr Reduce Pointwise = Reduce::Pointwise;
 inline constexpr Reduce Same = Reduce::Same;
 inline constexpr Reduce Pooled = Reduce::Pooled;
 } // namespace columns
+
+/// A field that files of an earlier format_version name otherwise (docs/results-schema.md,
+/// "Names"); sbpack.read_results reads such files under today's names.
+struct RenamedField {
+    std::string_view group;  ///< the analysis group, under files/<i>/ and ensembles/<k>/
+    std::string_view before; ///< the name before `since` (its ensemble NAME_std likewise)
+    std::string_view now;    ///< the name from `since` on
+    std::int64_t since;      ///< the format_version that renamed it
+};
+
+/// Every renamed field, oldest first.
+std::span<const RenamedField> renamedFields();
 
 struct Group {
     std::string_view name; ///< the group's name under files/<i>/ and ensembles/<k>/; "" for those

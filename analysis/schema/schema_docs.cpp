@@ -41,7 +41,20 @@ Every dataset has a string attribute `units`; every numeric attribute `NAME` has
 attribute `NAME_units`. Units: `1` dimensionless; `length` the packing's length unit (that of
 `box_length`); `1/length`, `length^2`, `length^3`; `D` the major-axis length `2 semi_axis`;
 `time` the unit of the transport times (`length^2 / diffusion_coefficient`); `length^2/time`;
-`s` wall-clock seconds; `bytes`.
+`s` wall-clock seconds; `bytes`; in units of the mean width `w` (`mean_width`) and the diffusion
+coefficient `D`: `w^3`, `w^(3+alpha)`, `w^2/D`.
+
+## Names
+
+One convention throughout: snake_case names of the quantity, the paper's symbol where it has one
+(`Q`, `S`, `F`, `P`, `H`, `a0`, `alpha`, `t`). A field reduced by the mean width ends in the power
+of `w` it is reduced by: `_w` (lengths over w, and wave numbers times w: `Q_w`, `q_peak_w`),
+`_w2` (areas over w^2, and times in units of w^2 / D), `_w3` (`number_density_w3`); its
+unreduced form, where the group has one, is the plain name (`mean`, `mean_w`; `permeability`,
+`permeability_w2`). The groups that exist only reduced (`spreadability`, `hyperuniformity`)
+keep the paper's symbols, their units in the table (`t` in `w^2/D`, `a0` in `w^3`). Suffixes of
+statistics and costs: `_std` the ensemble's sample standard deviation, `_stderr` a standard error
+within one file, `_s` wall-clock seconds, `_bytes` memory.
 )";
 
 std::string_view kindName(Kind kind) {
@@ -51,6 +64,17 @@ std::string_view kindName(Kind kind) {
 std::string_view typeName(const Field& f) {
     if (f.type == Type::String) return "string";
     return f.type == Type::Float ? "float64" : "int64";
+}
+
+/// The renamed fields, for readers of older files.
+std::string renamedTable() {
+    std::string out =
+        "\nFiles of an earlier `format_version` name these fields otherwise "
+        "(`sbpack.read_results` reads them under today's names; the ensembles' "
+        "`NAME_std` likewise):\n\n| group | before | now | since |\n|---|---|---|---|\n";
+    for (const RenamedField& r : renamedFields())
+        out += fmt::format("| `{}` | `{}` | `{}` | {} |\n", r.group, r.before, r.now, r.since);
+    return out;
 }
 
 std::string table(const Group& group) {
@@ -79,6 +103,7 @@ nlohmann::ordered_json groupJson(const Group& group) {
 
 std::string schemaMarkdown(std::span<const Group* const> analyses) {
     std::string out(kIntroduction);
+    out += renamedTable();
     out += "\n## Groups\n";
     out += table(runGroup());
     out += table(fileGroup());
@@ -101,8 +126,13 @@ std::string schemaJson(std::span<const Group* const> analyses) {
     groups.push_back(groupJson(ensembleRootGroup()));
     for (const Group* g : analyses)
         groups.push_back(groupJson(ensembleGroup(*g)));
+    nlohmann::ordered_json renamed = nlohmann::ordered_json::array();
+    for (const RenamedField& r : renamedFields())
+        renamed.push_back(
+            {{"group", r.group}, {"before", r.before}, {"now", r.now}, {"since", r.since}});
     const nlohmann::ordered_json root = {{"format", kFormat},
                                          {"format_version", kFormatVersion},
+                                         {"renamed", std::move(renamed)},
                                          {"units_attribute", kDatasetUnits},
                                          {"attribute_units_suffix", "_units"},
                                          {"groups", std::move(groups)}};

@@ -41,11 +41,11 @@ struct TransportResult {
 
     double permeabilityOverWidth2() const { return permeability / (meanWidth * meanWidth); }
     /// tau D / w^2 (paper Fig. 14).
-    double meanSurvivalTimeScaled() const {
+    double meanSurvivalTimeOverWidth2() const {
         return meanSurvivalTime * parameters.diffusionCoefficient / (meanWidth * meanWidth);
     }
     /// T1 D / w^2 (paper Fig. 14).
-    double principalRelaxationTimeScaled() const {
+    double principalRelaxationTimeOverWidth2() const {
         return principalRelaxationTime * parameters.diffusionCoefficient / (meanWidth * meanWidth);
     }
 };

@@ -48,8 +48,8 @@ TEST(Transport, PermeabilityAndBoundsFromTheMoments) {
     EXPECT_NEAR(t.meanSurvivalTime, 0.15 * 0.15 / 2.0, 1e-15); // Eq. 19
     EXPECT_NEAR(t.principalRelaxationTime, 0.03 / 2.0, 1e-15); // Eq. 20
     EXPECT_NEAR(t.permeabilityOverWidth2(), 0.03 / f / (w * w), 1e-15);
-    EXPECT_NEAR(t.meanSurvivalTimeScaled(), 0.15 * 0.15 / (w * w), 1e-15);
-    EXPECT_NEAR(t.principalRelaxationTimeScaled(), 0.03 / (w * w), 1e-15);
+    EXPECT_NEAR(t.meanSurvivalTimeOverWidth2(), 0.15 * 0.15 / (w * w), 1e-15);
+    EXPECT_NEAR(t.principalRelaxationTimeOverWidth2(), 0.03 / (w * w), 1e-15);
     EXPECT_EQ(t.p, p);
     EXPECT_EQ(t.phi, phi);
     EXPECT_EQ(t.parameters.diffusionCoefficient, 2.0);
