@@ -48,9 +48,9 @@ void fitSmallQ(HyperuniformityResult& r, std::span<const DiscreteSpectrum> membe
     SmallQPoints all;
     for (const DiscreteSpectrum& s : members)
         all.append(smallQPoints(s, reach));
-    const SmallQPoints window = all.upTo(q);
-    r.fit = fitFixedExponent(window, r.alpha.alpha);
-    r.freeFit = fitFreeExponent(window);
+    r.fitted = all.upTo(q);
+    r.fit = fitFixedExponent(r.fitted, r.alpha.alpha);
+    r.freeFit = fitFreeExponent(r.fitted);
     r.h = r.fit.a0 / r.peak.chi;
     r.hSpread = indexSpread(all, q, r.alpha.alpha, r.peak.chi);
 }

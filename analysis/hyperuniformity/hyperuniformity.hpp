@@ -47,7 +47,8 @@ struct HyperuniformityResult {
     double cutoffTime = 0.0;           ///< t_c D / w^2
     ExponentWindow window;
     ExponentEstimate alpha;
-    PowerLawFit fit; ///< at alpha.alpha
+    PowerLawFit fit;     ///< at alpha.alpha
+    SmallQPoints fitted; ///< the wave vectors it fits
     FreeFit freeFit;
     SpectralPeak peak;
     double h = 0.0; ///< a0 / chi_peak

@@ -75,7 +75,7 @@ inline constexpr schema::FieldTable kSpreadability{std::array<schema::Column<R>,
      member<&R::h, &H::truncation>},
 }}};
 
-inline constexpr schema::FieldTable kHyperuniformity{std::array<schema::Column<R>, 19>{{
+inline constexpr schema::FieldTable kHyperuniformity{std::array<schema::Column<R>, 21>{{
     {{"alpha", A, F, "1", "alpha of the fit, fixed from spreadability/alpha"},
      member<&R::h, &H::fit, &PowerLawFit::alpha>},
     {{"a0", A, F, "w^3", "chi_V(0) / w^3 of the fit chi_V = a0 + a1 Q^alpha (Eq. fit), not clamped",
@@ -91,6 +91,11 @@ inline constexpr schema::FieldTable kHyperuniformity{std::array<schema::Column<R
      member<&R::h, &H::fit, &PowerLawFit::points>},
     {{"q_fit_max_w", A, F, "1", "the fit window 0 < Q w <= q_fit_max_w (--fit-qmax)"},
      member<&R::h, &H::parameters, &HyperuniformityParameters::fitQmaxW>},
+    {{"fit_Q_w", D, F, "1", "Q w of each wave vector fitted (one of each +-Q, in the window)"},
+     member<&R::h, &H::fitted, &SmallQPoints::qw>},
+    {{"fit_chi", D, F, "w^3",
+      "chi_V / w^3 fitted there: exact up to chi_exact_qmax (source), else the voxels'"},
+     member<&R::h, &H::fitted, &SmallQPoints::chi>},
     {{"H", A, F, "1", "hyperuniformity index a0 / chi_peak (Eq. HX)", Mean}, member<&R::h, &H::h>},
     {{"H_stderr", A, F, "1", "a0_stderr / chi_peak"},
      +[](const R& r, const Scales&) -> Optional { return Value(r.h.fit.a0Error / r.h.peak.chi); }},

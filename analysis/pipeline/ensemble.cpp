@@ -149,6 +149,31 @@ void reducePointwise(const schema::Field& f, const Sources& in, schema::Record& 
     out.set(f.name, mean).set(std::string(f.name) + "_std", std);
 }
 
+/// y(at) of the right-continuous steps y[j] at x[j] (x ascending): the last j with x[j] <= at.
+double stepValue(const std::vector<double>& x, const std::vector<double>& y, double at) {
+    const auto j = std::upper_bound(x.begin(), x.end(), at) - x.begin();
+    return j == 0 ? y.front() : y[static_cast<std::size_t>(j - 1)];
+}
+
+/// Mean and standard deviation of step functions on a common grid of f.over (Reduce::Steps).
+void reduceSteps(const schema::Field& f, const Sources& in, schema::Record& out) {
+    double reach = 0.0;
+    for (const schema::Record* r : in.records)
+        reach = std::max(reach, r->floats(f.over).back());
+    std::vector<double> grid(schema::kStepsGrid + 1), mean(grid.size()), std(grid.size());
+    std::vector<double> values(in.records.size());
+    for (std::size_t k = 0; k < grid.size(); ++k) {
+        grid[k] = reach * static_cast<double>(k) / schema::kStepsGrid;
+        for (std::size_t i = 0; i < in.records.size(); ++i)
+            values[i] =
+                stepValue(in.records[i]->floats(f.over), in.records[i]->floats(f.name), grid[k]);
+        const EnsembleScalar s = ensembleScalar(values);
+        mean[k] = s.mean;
+        std[k] = s.std;
+    }
+    out.set(f.over, grid).set(f.name, mean).set(std::string(f.name) + "_std", std);
+}
+
 /// A grid every member has alike.
 void copySame(const schema::Field& f, const Sources& in, schema::Record& out) {
     const std::vector<double>& first = in.records.front()->floats(f.name);
@@ -166,6 +191,7 @@ schema::Record reduce(const schema::Group& source, const schema::Group& target, 
         if (f.reduce == schema::Reduce::Curve) reduceCurve(f, in, out);
         if (f.reduce == schema::Reduce::Pointwise) reducePointwise(f, in, out);
         if (f.reduce == schema::Reduce::Same) copySame(f, in, out);
+        if (f.reduce == schema::Reduce::Steps) reduceSteps(f, in, out);
     }
     return out;
 }

@@ -295,8 +295,13 @@ PoreSizeDistribution::fromHistogram(std::span<const std::int64_t> histogram, int
             counts.push_back(histogram[n]);
             sums.add(sizes.back(), histogram[n]);
         }
-    PoreSizeDistributionResult r =
-        poreSizeStatistics(sizes, counts, meanWidth, parameters_.densityBins);
+    // The voxel method's sizes are the discrete sqrt(n) a, from a on: density bins no wider than
+    // a voxel would fall empty between them (a comb), so each is wider (fewer than max / a
+    // bins; docs/design.md §5).
+    const double voxelsAcross = sizes.empty() ? 1.0 : std::ceil(sizes.back() / voxelSize) - 1.0;
+    const int bins = static_cast<int>(
+        std::clamp(voxelsAcross, 1.0, static_cast<double>(parameters_.densityBins)));
+    PoreSizeDistributionResult r = poreSizeStatistics(sizes, counts, meanWidth, bins);
     const bool sampled = parameters_.randomPoints > 0;
     if (sampled) setStandardErrors(r, sums);
     r.method = sampled ? "random voxels" : "voxels";

@@ -30,7 +30,9 @@ struct PoreSizeParameters {
     /// pore size of the voxel it lies in (the paper's sampling, Sec. III B).
     std::int64_t randomPoints = 0;
     std::uint64_t seed = 1; ///< of the random points (results do not depend on the threads)
-    int densityBins = 64;   ///< bins of the histogram of P(delta) on [0, max]
+    /// Bins of the histogram of P(delta) on [0, max]; on voxels fewer than max / a (each wider
+    /// than a voxel)
+    int densityBins = 64;
 };
 
 /// F(delta), P(delta) and moments of one sample of pore sizes, with what produced it. Lengths are

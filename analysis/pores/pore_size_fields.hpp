@@ -86,7 +86,8 @@ inline constexpr schema::FieldTable kTable{schema::joinColumns(
          member<&R::pores, &P::delta>},
         {{"F", D, F, "1",
           "F(delta) (Eq. 13), right-continuous steps: fraction of the void with pore size > "
-          "delta[j]"},
+          "delta[j]",
+          Steps, false, "delta_w"},
          member<&R::pores, &P::F>},
         {{"delta_w", D, F, "1", "delta / w"}, member<&R::pores, &P::deltaOverWidth>},
         {{"P_delta", D, F, "length", "bin centres of the density P(delta)"},

@@ -1,5 +1,7 @@
 #include "schema/results_schema.hpp"
 
+#include <fmt/format.h>
+
 #include <array>
 #include <deque>
 #include <map>
@@ -101,6 +103,15 @@ class EnsembleSchemas {
         out.push_back({"count", D, I, "1", "wave vectors in the bin, all files together"});
         out.push_back({"files", D, I, "1", "files with a shell in the bin"});
     }
+    void addSteps(std::vector<Field>& out, const Field& f) {
+        const std::string v(f.name), x(f.over);
+        out.push_back({f.over, D, F, "1",
+                       keep(fmt::format("common grid: {} points from 0 to the files' largest {}",
+                                        kStepsGrid + 1, x))});
+        out.push_back({f.name, D, F, f.units, keep("mean over the files of " + v + " there")});
+        out.push_back({keep(v + "_std"), D, F, f.units,
+                       keep("sample standard deviation of " + v + " over the files there")});
+    }
     const Group& build(std::string_view name, std::string path, std::string title,
                        std::span<const Field> own, const Group& source) {
         Owned& o = groups_[std::string(name)];
@@ -112,6 +123,7 @@ class EnsembleSchemas {
             if (f.reduce == Reduce::Pointwise) addStatistics(o.fields, f);
             if (f.reduce == Reduce::Same) o.fields.push_back(f);
             if (f.reduce == Reduce::Pooled) addPooled(o.fields, f);
+            if (f.reduce == Reduce::Steps) addSteps(o.fields, f);
         }
         o.group = {name, keep(std::move(path)), keep(std::move(title)), o.fields};
         return o.group;

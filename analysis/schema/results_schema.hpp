@@ -33,7 +33,14 @@ enum class Reduce {
     /// an ensemble's own value, computed from its statistics by the analysis's EnsembleFinish
     /// (pipeline/analysis_registry.hpp); never set per file
     Pooled,
+    /// dataset, a right-continuous step function of the dataset `over` (F against delta_w):
+    /// mean and std over the files on a common grid `over` of kStepsGrid + 1 points from 0 to
+    /// the largest `over` of the files
+    Steps,
 };
+
+/// Intervals of the common grid of Reduce::Steps.
+inline constexpr int kStepsGrid = 200;
 
 struct Field {
     std::string_view name;
@@ -46,7 +53,8 @@ struct Field {
     std::string_view units;
     std::string_view description;
     Reduce reduce = Reduce::None;
-    bool optional = false; ///< written only in some cases (said in the description)
+    bool optional = false;      ///< written only in some cases (said in the description)
+    std::string_view over = {}; ///< Reduce::Steps: the dataset it is a function of
 };
 
 /// Short names for the rows of a field table (here, and schema/field_table.hpp's).
@@ -62,6 +70,7 @@ inline constexpr Reduce No = Reduce::None;
 inline constexpr Reduce Pointwise = Reduce::Pointwise;
 inline constexpr Reduce Same = Reduce::Same;
 inline constexpr Reduce Pooled = Reduce::Pooled;
+inline constexpr Reduce Steps = Reduce::Steps;
 } // namespace columns
 
 /// A field that files of an earlier format_version name otherwise (docs/results-schema.md,

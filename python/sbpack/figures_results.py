@@ -141,8 +141,12 @@ def fit_drawable(h):
 
 
 def small_q_fit(ax, s, f):
-    """The one input's fit a0 + a1 Q^alpha (in units of w) over its window only."""
+    """The one input's fit a0 + a1 Q^alpha (in units of w) over its window only, and the wave
+    vectors it fitted (fit_Q_w, fit_chi; results before them have only their count)."""
     h, qw = f["hyperuniformity"], f["spectral_density"]["Q_w"]
+    if "fit_Q_w" in h:
+        ax.plot(h["fit_Q_w"], h["fit_chi"], "x", ms=4, color=s.style["color"], alpha=0.6,
+                label=f"the {len(h['fit_Q_w'])} wave vectors fitted (one of each ±Q)")
     x = np.geomspace(min(qw[0], h["q_fit_max_w"]) * 0.8, h["q_fit_max_w"], 100)
     ax.plot(x, h["a0"] + h["a1"] * x ** h["alpha"], "-", color=s.style["color"], lw=1.5,
             label=fr"fit: $\alpha = {h['alpha']:.2f}$, $H = {h['H']:.2g} \pm "
@@ -199,9 +203,8 @@ def small_q_note(series, windows):
     if not windows:
         return text + "No hyper results: no fit."
     return text + ("Fit χ_V = a₀ + a₁ Q^α (α from E(t)) over the "
-                   f"wave vectors at Q w ≤ {', '.join(f'{q:g}' for q in windows)} (dotted), "
-                   "exact χ_V where --chi-exact-qmax covers them: those fitted values are "
-                   "not stored in the results, only their count."
+                   f"wave vectors at Q w ≤ {', '.join(f'{q:g}' for q in windows)} (dotted): "
+                   "crosses, the values fitted, exact χ_V where --chi-exact-qmax covers them."
                    + (" Ensembles: no fit line (a mean of fits is not a fit); their H against p "
                       "in versus_p." if any(s.averaged for s in series) else ""))
 
@@ -303,6 +306,6 @@ def pore_size(series):
         left.set_ylim(max(least / 2, 1e-7), 1.5)
     note(fig, f"Pore-size distribution ({grids_title(series, 'pore_size')}): F(δ), the void "
               "fraction with pore size > δ (log axis), and its density P" + bands(
-                  series, "ensembles: mean ± std over the members, taken here on one δ/w grid "
-                          "(the results keep no ensemble F or P)"))
+                  series, "ensembles: mean ± std over the members, F the results' own on their "
+                          "δ/w grid, P averaged here (the results keep no ensemble P)"))
     return fig

@@ -120,7 +120,8 @@ def curve(s, group, x, y):
 def members_mean(files, group, x, y, points=400):
     """Mean and sample std over `files` of the curve group/y against group/x, each member read
     at the same x (a step function, right-continuous, where y is F; else linear between its
-    points; 0 beyond its last point): for the curves the results keep no ensemble of."""
+    points; 0 beyond its last point): for the curves the results keep no ensemble of (P, and F
+    in results of format_version 2)."""
     grid = np.linspace(0.0, max(float(np.max(f[group][x])) for f in files), points)
     step = y == "F"
     rows = [_at(np.asarray(f[group][x]), np.asarray(f[group][y]), grid, step) for f in files]

@@ -238,6 +238,16 @@ TEST(Hyperuniformity, PerturbedLatticeHasAlphaNearTwo) {
     EXPECT_LT(r.alpha.alpha, 2.3);
     EXPECT_GT(r.alpha.standardError, 0.0);
     EXPECT_LT(r.window.tMin, r.window.tMax);
+    // The points kept with the fit are the ones it fitted: in the window, and fitting them again
+    // gives the same a0 and a1.
+    ASSERT_EQ(r.fitted.qw.size(), static_cast<std::size_t>(r.fit.points));
+    for (double qw : r.fitted.qw) {
+        EXPECT_GT(qw, 0.0);
+        EXPECT_LE(qw, r.parameters.fitQmaxW);
+    }
+    const PowerLawFit again = fitFixedExponent(r.fitted, r.alpha.alpha);
+    EXPECT_EQ(again.a0, r.fit.a0);
+    EXPECT_EQ(again.a1, r.fit.a1);
 }
 
 TEST(Hyperuniformity, AWindowPastTheCutoffTimeIsRefused) {

@@ -246,6 +246,48 @@ TEST(Pipeline, SeveralInputsGetFilesAndAnEnsemble) {
                      0.0);
 }
 
+/// F(at) of one file's right-continuous steps, by a plain scan.
+double stepsAt(const std::vector<double>& delta, const std::vector<double>& F, double at) {
+    double value = F.front();
+    for (std::size_t j = 0; j < delta.size() && delta[j] <= at; ++j)
+        value = F[j];
+    return value;
+}
+
+// The ensemble's F(delta) is the mean of its files' step functions on one delta / w grid.
+TEST(Pipeline, EnsemblePoreSizesAreTheMeanOfTheFilesSteps) {
+    const TempDir dir("sbpack-test-pipeline-steps");
+    writePacking(testing::latticePacking(1.0, 3, 1.2, 0.05, 7), dir / "a.h5");
+    writePacking(testing::latticePacking(1.0, 3, 1.2, 0.05, 8), dir / "b.h5");
+    RunSettings s = settingsFor({dir / "a.h5", dir / "b.h5"}, dir / "r.h5");
+    s.analyses = resolveAnalyses("pores");
+    std::ostringstream log, out;
+    const RunResults results = runAnalyses(s, log, out);
+    ASSERT_EQ(results.ensembles.size(), 1u);
+    const schema::Record& e = *results.ensembles[0].group("pore_size");
+    const std::vector<double>& grid = e.floats("delta_w");
+    ASSERT_EQ(grid.size(), static_cast<std::size_t>(schema::kStepsGrid + 1));
+    EXPECT_EQ(grid.front(), 0.0);
+    double reach = 0.0;
+    for (const FileResults& f : results.files)
+        reach = std::max(reach, f.group("pore_size")->floats("delta_w").back());
+    EXPECT_EQ(grid.back(), reach);
+    EXPECT_EQ(e.floats("F").front(), 1.0);
+    EXPECT_EQ(e.floats("F_std").front(), 0.0);
+    EXPECT_EQ(e.floats("F").back(), 0.0);
+    for (std::size_t k = 0; k < grid.size(); ++k) {
+        const schema::Record& a = *results.files[0].group("pore_size");
+        const schema::Record& b = *results.files[1].group("pore_size");
+        const double fa = stepsAt(a.floats("delta_w"), a.floats("F"), grid[k]);
+        const double fb = stepsAt(b.floats("delta_w"), b.floats("F"), grid[k]);
+        EXPECT_NEAR(e.floats("F")[k], 0.5 * (fa + fb), 1e-15) << k;
+        EXPECT_NEAR(e.floats("F_std")[k], std::abs(fa - fb) / std::sqrt(2.0), 1e-15) << k;
+        if (k > 0) {
+            EXPECT_LE(e.floats("F")[k], e.floats("F")[k - 1]);
+        }
+    }
+}
+
 TEST(Pipeline, InputsOfOtherPOrNFormSeparateEnsembles) {
     const TempDir dir("sbpack-test-pipeline-mixed");
     writePacking(testing::latticePacking(1.0, 3, 1.2, 0.05, 7), dir / "a.h5");

@@ -158,6 +158,13 @@ TEST_F(PoreSizeOfSpheres, FStartsAtOneAndTheMomentsAreTheIntegralsOfF) {
     }
     EXPECT_NEAR(norm, 1.0, 1e-12);
     EXPECT_NEAR(histogramMean, r.mean, 0.5 * width);
+    // On voxels each density bin is wider than a voxel, so none falls empty between the
+    // discrete sizes sqrt(n) a, n = 1, 2, 3, 4, 5, 6, 8, ... (a comb).
+    EXPECT_GT(width, map.voxelSize());
+    EXPECT_EQ(static_cast<double>(r.density.size()),
+              std::min(64.0, std::ceil(r.max / map.voxelSize()) - 1.0));
+    for (std::size_t b = 0; b < r.density.size(); ++b)
+        EXPECT_GT(r.density[b], 0.0) << "empty bin " << b << " of " << r.density.size();
 }
 
 TEST_F(PoreSizeOfSpheres, RandomVoidPointsAreReproducibleAndApproachAllVoxels) {

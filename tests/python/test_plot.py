@@ -143,18 +143,21 @@ def test_ensemble_is_one_line_and_one_band_per_series(ensemble, ensemble_figures
 
 
 def test_ensemble_pore_sizes_are_the_members_mean(ensemble, ensemble_figures):
-    """F(delta) of an ensemble: the mean and std of its members' steps on one delta / w grid."""
+    """F(delta) of an ensemble: the results' own mean and std of its members' steps on one
+    delta / w grid, drawn as they are; the same as the members' mean taken here."""
     r = sbpack.read_results(ensemble)
     ax = ensemble_figures["pore_size"].axes[0]
     for e in r["ensembles"]:
         members = [r["files"][int(m)] for m in e["members"]]
-        grid, mean, std = figures_series.members_mean(members, "pore_size", "delta_w", "F")
+        stored = e["pore_size"]
         line = labelled(ax)[f"p = {e['p']:g}, N = {e['n_particles']} (mean $\\pm$ std of 3)"]
-        assert np.array_equal(line.get_ydata(), mean) and np.array_equal(line.get_xdata(), grid)
-        i = np.searchsorted(grid, members[0]["pore_size"]["delta_w"][3])
-        assert mean[i] == pytest.approx(np.mean([
-            m["pore_size"]["F"][np.searchsorted(m["pore_size"]["delta_w"], grid[i], "right") - 1]
-            for m in members]))
+        assert np.array_equal(line.get_ydata(), stored["F"])
+        assert np.array_equal(line.get_xdata(), stored["delta_w"])
+        here = np.array([figures_series._at(np.asarray(m["pore_size"]["delta_w"]),
+                                            np.asarray(m["pore_size"]["F"]),
+                                            stored["delta_w"], True) for m in members])
+        assert np.allclose(stored["F"], here.mean(axis=0), rtol=0, atol=1e-15)
+        assert np.allclose(stored["F_std"], here.std(axis=0, ddof=1), rtol=0, atol=1e-15)
     assert ax.get_yscale() == "log"
     assert len(ensemble_figures["pore_size"].axes) == 2  # F and P (one side: p >= 1)
     assert ensemble_figures["pore_size"].axes[1].get_legend() is not None
@@ -245,7 +248,13 @@ def test_small_q_fit_over_its_window_and_its_points(results, figures):
         assert np.allclose(fit.get_ydata(), h["a0"] + h["a1"] * x ** h["alpha"])
     exact = [line for line in ax.lines if line.get_label().startswith("exact")]
     assert len(exact) == 1  # the spheres' exact chi_V, at the voxel points' shells
-    assert "not stored in the results" in " ".join(figures["small_q"]._suptitle.get_text().split())
+    assert "crosses, the values fitted" in " ".join(figures["small_q"]._suptitle.get_text().split())
+    for f in files:  # the wave vectors fitted, as the results keep them
+        h = f["hyperuniformity"]
+        crosses = [line for line in ax.lines if line.get_label().startswith(
+            f"the {h['fit_points']} wave vectors fitted")]
+        assert any(np.array_equal(c.get_xdata(), h["fit_Q_w"])
+                   and np.array_equal(c.get_ydata(), h["fit_chi"]) for c in crosses)
 
 
 def test_mixed_grids_are_named(results):
