@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
             SpectralDensity(parameters).compute(packing, voxels, transform, quiet);
         const DiscreteSpectrum voxel = voxelSpectrum(transform, voxels, w, {}, quiet);
         const double gridSeconds = clock.seconds();
-        const SpectralPeak peak = spectralPeak(chi.shells.q, chi.shells.value, w);
+        const SpectralPeak peak = principalPeak(voxel);
         const auto [rms, worst] = chiErrors(voxel, exact, peak.chi * w * w * w);
         double voxelSeconds = 0.0, exactSeconds = 0.0, plain = 0.0;
         const std::string byVoxel = summary(voxel, peak, voxelSeconds, plain);

@@ -73,11 +73,10 @@ SpectralDensityResult cudaSpectralDensity(FileContext& context,
     CudaGrid::Spectra s =
         grid.spectralDensity(context.packing(), parameters, context.settings().fftSingle,
                              hyper ? &spectrum : nullptr, context.progress());
-    if (hyper)
-        context.keep(
-            Analysis::SpectralDensity,
-            KeptSpectrum{std::move(*s.voxelSpectrum),
-                         spectralPeak(s.chi.shells.q, s.chi.shells.value, context.meanWidth())});
+    if (hyper) {
+        const SpectralPeak peak = principalPeak(*s.voxelSpectrum);
+        context.keep(Analysis::SpectralDensity, KeptSpectrum{std::move(*s.voxelSpectrum), peak});
+    }
     return std::move(s.chi);
 }
 

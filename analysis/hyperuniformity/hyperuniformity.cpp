@@ -5,9 +5,14 @@
 #include "parallel/parallel.hpp"
 #include "progress/progress.hpp"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <numbers>
 #include <stdexcept>
+#include <string>
 
 namespace sbpack {
 
@@ -96,12 +101,52 @@ HyperuniformityResult Hyperuniformity::compute(std::span<const DiscreteSpectrum>
     return r;
 }
 
-SpectralPeak spectralPeak(const std::vector<double>& q, const std::vector<double>& chi,
-                          double meanWidth) {
-    if (chi.empty()) throw std::invalid_argument("hyperuniformity: no chi_V shells for the peak");
-    const auto top = std::max_element(chi.begin(), chi.end());
-    const std::size_t i = static_cast<std::size_t>(top - chi.begin());
-    return {q[i] * meanWidth, *top / std::pow(meanWidth, 3)};
+std::vector<ChiBin> binnedChi(const DiscreteSpectrum& s, double binWidthQw) {
+    if (!(binWidthQw > 0.0)) throw std::invalid_argument("chi_V bins: width must be positive");
+    std::map<long, ChiBin> bins;
+    const double q1w = 2.0 * std::numbers::pi / s.boxLength * s.meanWidth;
+    for (std::size_t i = 0; i < s.modes.size(); ++i) {
+        const double qw = q1w * std::sqrt(static_cast<double>(s.modes.n2(i)));
+        ChiBin& b = bins[static_cast<long>(std::floor(qw / binWidthQw))];
+        b.qw += qw;
+        b.chi += s.modes.chi[i];
+        ++b.modes;
+    }
+    std::vector<ChiBin> out;
+    const double w3 = std::pow(s.meanWidth, 3);
+    for (const auto& [index, b] : bins)
+        out.push_back({b.qw / b.modes, b.chi / b.modes / w3, b.modes});
+    return out;
+}
+
+SpectralPeak fittedPeak(const std::vector<ChiBin>& bins, double halfWidthQw) {
+    if (bins.empty()) throw std::invalid_argument("chi_V peak: no bins");
+    const auto top = std::max_element(
+        bins.begin(), bins.end(), [](const ChiBin& a, const ChiBin& b) { return a.chi < b.chi; });
+    // ln chi = c0 + c1 x + c2 x^2, x = Q w - top's (a Gaussian peak exactly), weighted by the
+    // wave vectors of each bin (the relative scatter of its mean goes as 1 / sqrt(modes)).
+    Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+    int used = 0;
+    for (const ChiBin& b : bins) {
+        const double x = b.qw - top->qw;
+        if (std::abs(x) > halfWidthQw || !(b.chi > 0.0)) continue;
+        const Eigen::Vector3d basis(1.0, x, x * x);
+        normal += b.modes * basis * basis.transpose();
+        rhs += b.modes * std::log(b.chi) * basis;
+        ++used;
+    }
+    const SpectralPeak largest{top->qw, top->chi};
+    if (used < 4) return largest;
+    const Eigen::Vector3d c = normal.ldlt().solve(rhs);
+    if (!(c[2] < 0.0)) return largest;
+    const double vertex = -c[1] / (2.0 * c[2]);
+    if (!(std::abs(vertex) < halfWidthQw)) return largest;
+    return {top->qw + vertex, std::exp(c[0] - c[1] * c[1] / (4.0 * c[2]))};
+}
+
+SpectralPeak principalPeak(const DiscreteSpectrum& s) {
+    return fittedPeak(binnedChi(s, kPeakBinQw), kPeakHalfWidthQw);
 }
 
 } // namespace sbpack

@@ -76,8 +76,25 @@ class Hyperuniformity {
     HyperuniformityParameters parameters_;
 };
 
-/// The principal peak of a shell-averaged chi_V (length^3 against Q) in units of w.
-SpectralPeak spectralPeak(const std::vector<double>& q, const std::vector<double>& chi,
-                          double meanWidth);
+/// chi_V of the individual wave vectors of `s` (its modes, Q w up to its individualQw) averaged
+/// in bins of Q w of width `binWidthQw` (bin k: [k, k + 1) times the width), in units of w.
+struct ChiBin {
+    double qw = 0.0;  ///< the mean Q w of its wave vectors
+    double chi = 0.0; ///< their mean chi_V / w^3
+    int modes = 0;    ///< wave vectors (one of each +-Q)
+};
+std::vector<ChiBin> binnedChi(const DiscreteSpectrum& s, double binWidthQw);
+
+/// The principal peak of chi_V from `bins`: the top of the least-squares Gaussian (a parabola in
+/// ln chi_V) through the bins within `halfWidthQw` of the largest mean, weighted by their wave
+/// vectors, which the bins' scatter does not bias upward as their maximum is; the largest bin
+/// itself where the parabola is not concave or its vertex leaves that range.
+SpectralPeak fittedPeak(const std::vector<ChiBin>& bins, double halfWidthQw);
+
+/// The peak H is divided by (paper Eq. HX; docs/hyperuniformity.md, "Fit and H"): fittedPeak
+/// over bins of Q w kPeakBinQw within kPeakHalfWidthQw of the largest.
+inline constexpr double kPeakBinQw = 0.05;
+inline constexpr double kPeakHalfWidthQw = 0.4;
+SpectralPeak principalPeak(const DiscreteSpectrum& s);
 
 } // namespace sbpack

@@ -103,7 +103,9 @@ inline constexpr schema::FieldTable kHyperuniformity{std::array<schema::Column<R
      member<&R::h, &H::hSpread, &IndexSpread::hMin>},
     {{"H_max", A, F, "1", "largest H over those windows"},
      member<&R::h, &H::hSpread, &IndexSpread::hMax>},
-    {{"chi_peak", A, F, "w^3", "chi_V(Q_peak) / w^3, the largest shell average from the voxels"},
+    {{"chi_peak", A, F, "w^3",
+      "chi_V(Q_peak) / w^3: the top of a Gaussian through the voxels' chi_V in bins of Q w 0.05 "
+      "within 0.4 of the largest (docs/hyperuniformity.md)"},
      member<&R::h, &H::peak, &SpectralPeak::chi>},
     {{"q_peak_w", A, F, "1", "Q_peak w"}, member<&R::h, &H::peak, &SpectralPeak::qw>},
     {{"alpha_free", A, F, "1", "alpha of the free three-parameter fit (scan over [0, 4])"},

@@ -58,11 +58,12 @@ SpectralDensityResult wholeGrid(FileContext& context, const SpectralDensityParam
         SpectralDensity(parameters)
             .compute(context.packing(), voxels, transform, context.progress());
     s.planSource = transform.planSource();
-    if (context.settings().runs(Analysis::Hyperuniformity))
-        context.keep(Analysis::SpectralDensity,
-                     KeptSpectrum{voxelSpectrum(transform, voxels, context.meanWidth(), {},
-                                                context.progress()),
-                                  spectralPeak(s.shells.q, s.shells.value, context.meanWidth())});
+    if (context.settings().runs(Analysis::Hyperuniformity)) {
+        DiscreteSpectrum spectrum =
+            voxelSpectrum(transform, voxels, context.meanWidth(), {}, context.progress());
+        const SpectralPeak peak = principalPeak(spectrum);
+        context.keep(Analysis::SpectralDensity, KeptSpectrum{std::move(spectrum), peak});
+    }
     return s;
 }
 
