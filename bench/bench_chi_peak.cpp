@@ -6,36 +6,19 @@
 //
 //   bench_chi_peak FILE.h5 [M1,M2,...] [THREADS]     (default 200,300 and 2)
 
-#include "hyperuniformity/discrete_spectrum.hpp"
 #include "hyperuniformity/hyperuniformity.hpp"
 #include "io/packing_io.hpp"
 #include "parallel/parallel.hpp"
-#include "progress/progress.hpp"
-#include "spectral/spectral_density.hpp"
-#include "spectral/voxel_fourier_transform.hpp"
-#include "voxels/voxelization.hpp"
+#include "voxel_spectrum_run.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
-#include <sstream>
 #include <string>
 #include <vector>
 
-namespace {
-
 using namespace sbpack;
-
-std::vector<int> parseGrids(const std::string& text) {
-    std::vector<int> grids;
-    std::stringstream in(text);
-    for (std::string item; std::getline(in, item, ',');)
-        grids.push_back(std::stoi(item));
-    return grids;
-}
-
-} // namespace
 
 int main(int argc, char** argv) {
     if (argc < 2) {
@@ -50,18 +33,14 @@ int main(int argc, char** argv) {
     std::printf("%s: N = %zu, p = %g, box wave number 2 pi w / L = %.4f\n\n", argv[1],
                 packing.size(), packing.p, shellQw);
     std::printf("| M | binning | Q_peak w | chi_peak / w^3 |\n|---|---|---|---|\n");
-    for (const int m : parseGrids(argc > 2 ? argv[2] : "200,300")) {
-        const Voxelization voxels = Voxelizer({m}).compute(packing, quiet);
-        const VoxelFourierTransform transform(voxels, {FftPlanning::Estimate, {}}, quiet);
-        SpectralDensityParameters parameters;
-        parameters.fft = {FftPlanning::Estimate, {}};
-        const SpectralDensityResult chi =
-            SpectralDensity(parameters).compute(packing, voxels, transform, quiet);
+    for (const int m : bench::parseGrids(argc > 2 ? argv[2] : "200,300")) {
+        const bench::VoxelSpectrumRun run = bench::voxelSpectrumRun(packing, m, quiet);
+        const SpectralDensityResult& chi = run.chi;
         const auto shell = std::max_element(chi.shells.value.begin(), chi.shells.value.end());
         const auto i = static_cast<std::size_t>(shell - chi.shells.value.begin());
         std::printf("| %d | largest shell average (shells 2 pi / L wide) | %.4f | %.5f |\n", m,
                     chi.shells.q[i] * w, *shell / (w * w * w));
-        const DiscreteSpectrum s = voxelSpectrum(transform, voxels, w, {}, quiet);
+        const DiscreteSpectrum& s = run.spectrum;
         const SpectralPeak chosen = principalPeak(s);
         std::printf("| %d | principalPeak (sbanalyze's H) | %.4f | %.5f |\n", m, chosen.qw,
                     chosen.chi);
@@ -74,8 +53,9 @@ int main(int argc, char** argv) {
                         width, top->modes, top->qw, top->chi);
             for (const double half : {0.4, 0.6, 0.8, 1.0}) {
                 const SpectralPeak fit = fittedPeak(bins, half);
-                std::printf("| %d | parabola over bins of %.3f within +-%.1f | %.4f | %.5f |\n", m,
-                            width, half, fit.qw, fit.chi);
+                std::printf(
+                    "| %d | Gaussian through the bins of %.3f within +-%.1f | %.4f | %.5f |\n", m,
+                    width, half, fit.qw, fit.chi);
             }
         }
     }

@@ -16,6 +16,7 @@
 #include "spectral/exact_spectral_density.hpp"
 #include "spectral/spectral_density.hpp"
 #include "spectral/voxel_fourier_transform.hpp"
+#include "voxel_spectrum_run.hpp"
 #include "voxels/voxelization.hpp"
 
 #include <cmath>
@@ -27,14 +28,6 @@
 namespace {
 
 using namespace sbpack;
-
-std::vector<int> parseGrids(const std::string& text) {
-    std::vector<int> grids;
-    std::stringstream in(text);
-    for (std::string item; std::getline(in, item, ',');)
-        grids.push_back(std::stoi(item));
-    return grids;
-}
 
 /// RMS and largest |voxel - exact| over the exact wave vectors, in units of `peak`.
 std::pair<double, double> chiErrors(const DiscreteSpectrum& voxel,
@@ -82,7 +75,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     const Packing packing = readPacking(argv[1]);
-    const std::vector<int> grids = parseGrids(argc > 2 ? argv[2] : "100,200,300,500");
+    const std::vector<int> grids = bench::parseGrids(argc > 2 ? argv[2] : "100,200,300,500");
     const ThreadBudget budget(argc > 3 ? std::stoi(argv[3]) : 2);
     const Progress quiet;
     const double w = packing.shape().meanWidth();
@@ -95,15 +88,9 @@ int main(int argc, char** argv) {
         "spreadability + fits s | with the bootstrap (200) s |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const int m : grids) {
-        const Stopwatch clock;
-        const Voxelization voxels = Voxelizer({m}).compute(packing, quiet);
-        const VoxelFourierTransform transform(voxels, {FftPlanning::Estimate, {}}, quiet);
-        SpectralDensityParameters parameters;
-        parameters.fft = {FftPlanning::Estimate, {}};
-        const SpectralDensityResult chi =
-            SpectralDensity(parameters).compute(packing, voxels, transform, quiet);
-        const DiscreteSpectrum voxel = voxelSpectrum(transform, voxels, w, {}, quiet);
-        const double gridSeconds = clock.seconds();
+        const bench::VoxelSpectrumRun run = bench::voxelSpectrumRun(packing, m, quiet);
+        const DiscreteSpectrum& voxel = run.spectrum;
+        const double gridSeconds = run.seconds;
         const SpectralPeak peak = principalPeak(voxel);
         const auto [rms, worst] = chiErrors(voxel, exact, peak.chi * w * w * w);
         double voxelSeconds = 0.0, exactSeconds = 0.0, plain = 0.0;
