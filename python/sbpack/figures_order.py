@@ -9,14 +9,16 @@ Every value drawn is the results'; the histogram of q6 is taken here from the pe
 g2 is taken here: an ensemble's members are drawn each, thin."""
 import numpy as np
 
+from . import _sbpack
 from .figures_results import bands, note, side_rows, with_group
 from .figures_series import group_label, line_style, scalar
 
 FCC_Q6 = 0.575  # 13 / sqrt(512) = 0.57452: fcc's first shell (docs/order-metrics.md, section 2)
-# the verdict: ordered at a mean local q6 >= 0.5, T >= 0.3 (over all 12 shells) or P4 >= 0.5 (section 5)
-Q6_ORDERED = 0.5
-T_ORDERED = 0.3
-P4_ORDERED = 0.5
+# the verdict's thresholds, sbanalyze's own (order/order_metrics.hpp): ordered at a mean local q6,
+# T (over all 12 shells) or P4 at or above them (docs/order-metrics.md section 5)
+Q6_ORDERED = _sbpack.order_thresholds["q6_local_mean"]
+T_ORDERED = _sbpack.order_thresholds["T"]
+P4_ORDERED = _sbpack.order_thresholds["P4"]
 MRJ_Q6 = (0.39, 0.44)  # the mean local q6 of every MRJ packing of N >= 200 measured (section 5)
 Q6_BIN = 0.01  # the histogram's bins of q6
 G2_TOP = 5.0  # g2 axis: at least this high; main peaks above it are clipped, their height named

@@ -9,6 +9,7 @@ import os
 import matplotlib.ticker as ticker
 import numpy as np
 
+from . import _sbpack
 from .figures_results import new_figure, note
 from .figures_series import scalar
 
@@ -39,11 +40,12 @@ NO_TABLE = {
     "transport": "paper: a figure only, no table",
     "order": "not in the paper",
 }
+_ORDERED = _sbpack.order_thresholds  # the verdict's thresholds, sbanalyze's own
 NO_TABLE_VALUE = {
     "Q6": "not in the paper; fcc 0.575; disordered: shrinks with N",
-    "q6_local_mean": r"not in the paper; fcc 0.575, ordered $\geq 0.5$",
-    "T": r"not in the paper; fcc 1, ordered $\geq 0.3$ over its 12 shells",
-    "P4": r"not in the paper; aligned 1, random 0, ordered $\geq 0.5$",
+    "q6_local_mean": fr"not in the paper; fcc 0.575, ordered $\geq {_ORDERED['q6_local_mean']:g}$",
+    "T": fr"not in the paper; fcc 1, ordered $\geq {_ORDERED['T']:g}$ over its 12 shells",
+    "P4": fr"not in the paper; aligned 1, random 0, ordered $\geq {_ORDERED['P4']:g}$",
 }
 
 

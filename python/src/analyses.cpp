@@ -5,6 +5,7 @@
 
 #include "cli/command_line.hpp"
 #include "cli/option_table.hpp"
+#include "order/order_metrics.hpp"
 #include "parallel/parallel.hpp"
 #include "pipeline/analysis_registry.hpp"
 #include "pipeline/file_analysis.hpp"
@@ -180,6 +181,11 @@ void registerAnalyses(py::module_& m) {
     m.def("analysis_registry", &registryRows,
           "sbanalyze's analyses: name (--compute), python_class, description, groups (its own "
           "first) and options (the command line's, without --, besides threads)");
+    py::dict thresholds; // order/order_metrics.hpp; docs/order-metrics.md §5
+    thresholds["q6_local_mean"] = kOrderedLocalQ6;
+    thresholds["T"] = kOrderedT;
+    thresholds["P4"] = kOrderedP4;
+    m.attr("order_thresholds") = thresholds;
     m.def("analysis_options", &optionRows,
           "sbanalyze's options by name (without --): value (its name; empty for a flag), default "
           "(as --help prints it; empty where it prints none) and help");
