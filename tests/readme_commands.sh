@@ -12,13 +12,13 @@ trap 'rm -rf "$work"' EXIT
 ln -s "$build" "$work/build"
 ln -s "$root/data" "$work/data"
 
-# block HEADING LANGUAGE: the first ```LANGUAGE block after the line "## HEADING".
+# block HEADING LANGUAGE [FILE]: the first ```LANGUAGE block after the line "## HEADING".
 block() {
     awk -v heading="## $1" -v open="\`\`\`$2" '
         $0 == heading { found = 1; next }
         found && !inside && $0 == open { inside = 1; next }
         inside && $0 == "```" { exit }
-        inside { print }' "$readme"
+        inside { print }' "${3:-$readme}"
 }
 shell=$(block "Already built? Start here" sh)
 python_code=$(block "Python" python)
@@ -35,4 +35,9 @@ for file in mrj-spheres-250.h5 mrj-spheres-250-results.h5 mrj-spheres-250.xyz st
 done
 echo "== the Python block"
 PYTHONPATH=build/python "$python" -c "$python_code"
+manual=$root/docs/python.md
+manual_code=$(for heading in Packing Analyses Generator; do block "$heading" python "$manual"; done)
+[[ $(grep -c . <<< "$manual_code") -gt 10 ]] || { echo "docs/python.md: blocks not found" >&2; exit 1; }
+echo "== docs/python.md's blocks"
+PYTHONPATH=build/python "$python" -c "$manual_code" | tail -n 2
 echo "readme_commands: ok"
