@@ -45,12 +45,10 @@ int main(int argc, char** argv) {
         std::printf("| %d | principalPeak (sbanalyze's H) | %.4f | %.5f |\n", m, chosen.qw,
                     chosen.chi);
         for (const double width : {0.4, 0.2, 0.1, 0.05}) {
-            const std::vector<ChiBin> bins = binnedChi(s, width);
-            const auto top =
-                std::max_element(bins.begin(), bins.end(),
-                                 [](const ChiBin& a, const ChiBin& b) { return a.chi < b.chi; });
+            const std::vector<ChiBin> bins = binnedChi(modePoints(s), width);
+            const ChiBin& top = largestBin(bins);
             std::printf("| %d | largest bin of Q w %.3f (%d wave vectors) | %.4f | %.5f |\n", m,
-                        width, top->modes, top->qw, top->chi);
+                        width, top.modes, top.qw, top.chi);
             for (const double half : {0.4, 0.6, 0.8, 1.0}) {
                 const SpectralPeak fit = fittedPeak(bins, half);
                 std::printf(

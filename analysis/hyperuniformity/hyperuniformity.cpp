@@ -101,52 +101,53 @@ HyperuniformityResult Hyperuniformity::compute(std::span<const DiscreteSpectrum>
     return r;
 }
 
-std::vector<ChiBin> binnedChi(const DiscreteSpectrum& s, double binWidthQw) {
+std::vector<ChiBin> binnedChi(const SmallQPoints& points, double binWidthQw) {
     if (!(binWidthQw > 0.0)) throw std::invalid_argument("chi_V bins: width must be positive");
     std::map<long, ChiBin> bins;
-    const double q1w = 2.0 * std::numbers::pi / s.boxLength * s.meanWidth;
-    for (std::size_t i = 0; i < s.modes.size(); ++i) {
-        const double qw = q1w * std::sqrt(static_cast<double>(s.modes.n2(i)));
-        ChiBin& b = bins[static_cast<long>(std::floor(qw / binWidthQw))];
-        b.qw += qw;
-        b.chi += s.modes.chi[i];
+    for (std::size_t i = 0; i < points.qw.size(); ++i) {
+        ChiBin& b = bins[static_cast<long>(std::floor(points.qw[i] / binWidthQw))];
+        b.qw += points.qw[i];
+        b.chi += points.chi[i];
         ++b.modes;
     }
     std::vector<ChiBin> out;
-    const double w3 = std::pow(s.meanWidth, 3);
     for (const auto& [index, b] : bins)
-        out.push_back({b.qw / b.modes, b.chi / b.modes / w3, b.modes});
+        out.push_back({b.qw / b.modes, b.chi / b.modes, b.modes});
     return out;
+}
+
+const ChiBin& largestBin(const std::vector<ChiBin>& bins) {
+    return *std::max_element(bins.begin(), bins.end(),
+                             [](const ChiBin& a, const ChiBin& b) { return a.chi < b.chi; });
 }
 
 SpectralPeak fittedPeak(const std::vector<ChiBin>& bins, double halfWidthQw) {
     if (bins.empty()) throw std::invalid_argument("chi_V peak: no bins");
-    const auto top = std::max_element(
-        bins.begin(), bins.end(), [](const ChiBin& a, const ChiBin& b) { return a.chi < b.chi; });
+    const ChiBin& top = largestBin(bins);
     // ln chi = c0 + c1 x + c2 x^2, x = Q w - top's (a Gaussian peak exactly), weighted by the
     // wave vectors of each bin (the relative scatter of its mean goes as 1 / sqrt(modes)).
     Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
     Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
     int used = 0;
     for (const ChiBin& b : bins) {
-        const double x = b.qw - top->qw;
+        const double x = b.qw - top.qw;
         if (std::abs(x) > halfWidthQw || !(b.chi > 0.0)) continue;
         const Eigen::Vector3d basis(1.0, x, x * x);
         normal += b.modes * basis * basis.transpose();
         rhs += b.modes * std::log(b.chi) * basis;
         ++used;
     }
-    const SpectralPeak largest{top->qw, top->chi};
+    const SpectralPeak largest{top.qw, top.chi};
     if (used < 4) return largest;
     const Eigen::Vector3d c = normal.ldlt().solve(rhs);
     if (!(c[2] < 0.0)) return largest;
     const double vertex = -c[1] / (2.0 * c[2]);
     if (!(std::abs(vertex) < halfWidthQw)) return largest;
-    return {top->qw + vertex, std::exp(c[0] - c[1] * c[1] / (4.0 * c[2]))};
+    return {top.qw + vertex, std::exp(c[0] - c[1] * c[1] / (4.0 * c[2]))};
 }
 
 SpectralPeak principalPeak(const DiscreteSpectrum& s) {
-    return fittedPeak(binnedChi(s, kPeakBinQw), kPeakHalfWidthQw);
+    return fittedPeak(binnedChi(modePoints(s), kPeakBinQw), kPeakHalfWidthQw);
 }
 
 } // namespace sbpack

@@ -76,14 +76,16 @@ class Hyperuniformity {
     HyperuniformityParameters parameters_;
 };
 
-/// chi_V of the individual wave vectors of `s` (its modes, Q w up to its individualQw) averaged
-/// in bins of Q w of width `binWidthQw` (bin k: [k, k + 1) times the width), in units of w.
+/// chi_V of individual wave vectors (modePoints) averaged in bins of Q w of width `binWidthQw`
+/// (bin k: [k, k + 1) times the width), in units of w.
 struct ChiBin {
     double qw = 0.0;  ///< the mean Q w of its wave vectors
     double chi = 0.0; ///< their mean chi_V / w^3
     int modes = 0;    ///< wave vectors (one of each +-Q)
 };
-std::vector<ChiBin> binnedChi(const DiscreteSpectrum& s, double binWidthQw);
+std::vector<ChiBin> binnedChi(const SmallQPoints& points, double binWidthQw);
+/// The bin of largest mean chi_V (`bins` not empty).
+const ChiBin& largestBin(const std::vector<ChiBin>& bins);
 
 /// The principal peak of chi_V from `bins`: the top of the least-squares Gaussian (a parabola in
 /// ln chi_V) through the bins within `halfWidthQw` of the largest mean, weighted by their wave

@@ -10,14 +10,17 @@
 
 namespace sbpack {
 
-SmallQPoints smallQPoints(const DiscreteSpectrum& spectrum, double qMaxW) {
-    const double unit = 2.0 * std::numbers::pi * spectrum.meanWidth / spectrum.boxLength;
-    const double reach = std::sqrt(static_cast<double>(spectrum.individualMaxN2)) * unit;
-    if (qMaxW > reach * (1.0 + 1e-12))
-        throw std::domain_error(
-            "small-Q fit: the windows up to Q w = " + std::to_string(qMaxW) +
-            " reach beyond the wave vectors resolved (Q w <= " + std::to_string(reach) +
-            "): lower --fit-qmax, or raise --voxels or --chi-exact-qmax");
+namespace {
+
+/// Q w of the box's first wave number, 2 pi w / L.
+double qwUnit(const DiscreteSpectrum& spectrum) {
+    return 2.0 * std::numbers::pi * spectrum.meanWidth / spectrum.boxLength;
+}
+
+} // namespace
+
+SmallQPoints modePoints(const DiscreteSpectrum& spectrum, double qMaxW) {
+    const double unit = qwUnit(spectrum);
     SmallQPoints p;
     const double w3 = std::pow(spectrum.meanWidth, 3);
     for (std::size_t i = 0; i < spectrum.modes.size(); ++i) {
@@ -27,6 +30,17 @@ SmallQPoints smallQPoints(const DiscreteSpectrum& spectrum, double qMaxW) {
         p.chi.push_back(spectrum.modes.chi[i] / w3);
     }
     return p;
+}
+
+SmallQPoints smallQPoints(const DiscreteSpectrum& spectrum, double qMaxW) {
+    const double reach =
+        std::sqrt(static_cast<double>(spectrum.individualMaxN2)) * qwUnit(spectrum);
+    if (qMaxW > reach * (1.0 + 1e-12))
+        throw std::domain_error(
+            "small-Q fit: the windows up to Q w = " + std::to_string(qMaxW) +
+            " reach beyond the wave vectors resolved (Q w <= " + std::to_string(reach) +
+            "): lower --fit-qmax, or raise --voxels or --chi-exact-qmax");
+    return modePoints(spectrum, qMaxW);
 }
 
 namespace {

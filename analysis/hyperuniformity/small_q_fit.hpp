@@ -6,6 +6,7 @@
 
 #include "hyperuniformity/discrete_spectrum.hpp"
 
+#include <limits>
 #include <vector>
 
 namespace sbpack {
@@ -19,7 +20,12 @@ struct SmallQPoints {
     void append(const SmallQPoints& other);
 };
 
-/// The wave vectors of `spectrum` listed one by one with 0 < Q w <= qMaxW. Throws
+/// The wave vectors `spectrum` lists one by one (its modes, up to its individualQw) with
+/// 0 < Q w <= qMaxW (default: every one), in units of w.
+SmallQPoints modePoints(const DiscreteSpectrum& spectrum,
+                        double qMaxW = std::numeric_limits<double>::infinity());
+
+/// The same for the small-Q fit, which must not reach beyond them. Throws
 /// std::domain_error if qMaxW reaches beyond them (the message names the options to change).
 SmallQPoints smallQPoints(const DiscreteSpectrum& spectrum, double qMaxW);
 
