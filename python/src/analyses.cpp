@@ -64,14 +64,11 @@ class Analyzer {
         checkPackingForRun(packing, settings_, input);
         std::ostringstream warnings;
         FileResults results;
-        StopRequest stop; // this call's: Ctrl-C stops it at its next chunk
-        runInterruptibly(
-            [&] {
-                const ThreadBudget budget(settings_.threads); // on the thread that computes
-                const Progress progress(nullptr, &warnings, stop);
-                results = analyzeFile(packing, input, settings_, progress);
-            },
-            [&stop] { stop.request(); });
+        runInterruptibly([&](const StopRequest& stop) {   // Ctrl-C: at the next chunk
+            const ThreadBudget budget(settings_.threads); // on the thread that computes
+            const Progress progress(nullptr, &warnings, stop);
+            results = analyzeFile(packing, input, settings_, progress);
+        });
         reportInPython(warnings.str());
         py::dict groups;
         groups["file"] = recordToDict(results.root);
@@ -93,8 +90,7 @@ void analyzeFiles(const std::vector<std::string>& args) {
     const RunSettings settings = parseAnalyzeArguments(args);
     std::ostringstream log;
     std::ostringstream out;
-    StopRequest stop;
-    runInterruptibly([&] { runAnalyses(settings, log, out, stop); }, [&stop] { stop.request(); });
+    runInterruptibly([&](const StopRequest& stop) { runAnalyses(settings, log, out, stop); });
     reportInPython(log.str());
 }
 
@@ -109,19 +105,16 @@ py::tuple voxelSlice(const Packing& packing, int voxels, int plane, int threads)
     const auto m = static_cast<std::size_t>(voxels);
     std::vector<std::uint8_t> mask(m * m * m);
     std::vector<double> distance(m * m);
-    StopRequest stop;
-    runInterruptibly(
-        [&] {
-            const ThreadBudget budget(threads);
-            const Progress progress(nullptr, nullptr, stop);
-            Voxelizer({voxels}).compute(packing, progress).copySolidMask(mask, progress);
-            const PoreSizeMap map =
-                periodicDistanceTransform(mask, voxels, packing.boxLength / voxels, progress);
-            const auto d2 = map.squaredDistances().subspan(plane * m * m, m * m);
-            for (std::size_t i = 0; i < m * m; ++i)
-                distance[i] = std::sqrt(static_cast<double>(d2[i])) * map.voxelSize();
-        },
-        [&stop] { stop.request(); });
+    runInterruptibly([&](const StopRequest& stop) {
+        const ThreadBudget budget(threads);
+        const Progress progress(nullptr, nullptr, stop);
+        Voxelizer({voxels}).compute(packing, progress).copySolidMask(mask, progress);
+        const PoreSizeMap map =
+            periodicDistanceTransform(mask, voxels, packing.boxLength / voxels, progress);
+        const auto d2 = map.squaredDistances().subspan(plane * m * m, m * m);
+        for (std::size_t i = 0; i < m * m; ++i)
+            distance[i] = std::sqrt(static_cast<double>(d2[i])) * map.voxelSize();
+    });
     const auto n = static_cast<py::ssize_t>(m);
     py::array_t<std::uint8_t> solid({n, n});
     std::copy_n(mask.begin() + static_cast<std::ptrdiff_t>(plane * m * m), m * m,

@@ -2,6 +2,7 @@
 // What the binding files share; python/src/module.cpp registers each area (docs/python.md).
 #include "packing/packing.hpp"
 #include "schema/record.hpp"
+#include "stop/stop_request.hpp"
 
 #include <pybind11/pybind11.h>
 
@@ -21,8 +22,9 @@ void registerResults(py::module_& m);
 py::dict recordToDict(const schema::Record& record);
 
 /// Runs `work` with the GIL released on a worker thread while this (the calling) thread polls
-/// for Python signals every 50 ms; on Ctrl-C it calls `interrupt`, waits for `work` to stop and
-/// raises KeyboardInterrupt. Exceptions of `work` propagate.
-void runInterruptibly(const std::function<void()>& work, const std::function<void()>& interrupt);
+/// for Python signals every 50 ms; `work` gets this call's own stop request (common/stop), which
+/// Ctrl-C makes: then it waits for `work` to stop and raises KeyboardInterrupt. Exceptions of
+/// `work` propagate.
+void runInterruptibly(const std::function<void(const StopRequest&)>& work);
 
 } // namespace sbpack::python

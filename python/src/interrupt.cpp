@@ -4,21 +4,23 @@
 
 #include <chrono>
 #include <exception>
+#include <functional>
 #include <future>
 
 namespace sbpack::python {
 
-void runInterruptibly(const std::function<void()>& work, const std::function<void()>& interrupt) {
+void runInterruptibly(const std::function<void(const StopRequest&)>& work) {
+    StopRequest stop;
     bool interrupted = false;
     {
         py::gil_scoped_release release;
-        std::future<void> done = std::async(std::launch::async, work);
+        std::future<void> done = std::async(std::launch::async, work, std::cref(stop));
         while (done.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
             py::gil_scoped_acquire acquire;
             if (!interrupted && PyErr_CheckSignals() != 0) {
                 interrupted =
                     true; // KeyboardInterrupt is now set; the work stops at its next check
-                interrupt();
+                stop.request();
             }
         }
         if (!interrupted) {
