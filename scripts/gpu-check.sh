@@ -68,12 +68,12 @@ echo "== benchmark: data/mrj-p1.5-5000.h5, voxels + chi + pores, CPU ($(nproc) t
 echo "grid,device,wall_s,voxels_s,chi_s,pores_s,stages_s,phi_voxel,chi_peak,pore_mean_w,status" >"$out/gpu-bench.csv"
 bench() { # M DEVICE COMPUTE LIMIT_S
     local m=$1 device=$2 compute=$3 json="$out/bench-$1-$2.json" start end rc=0
-    start=$(date +%s.%N)
+    start=$EPOCHREALTIME
     timeout "$4" "$run/sbanalyze" data/mrj-p1.5-5000.h5 --compute "$compute" --voxels "$m" \
         --pore-voxels "$m" --device "$device" --threads "$(nproc)" --fft-plan estimate \
         --fft-wisdom none --json "$json" || rc=$?
-    end=$(date +%s.%N)
-    python3 scripts/gpu_bench_row.py "$json" "$m" "$device" "$(echo "$end - $start" | bc)" "$rc" \
+    end=$EPOCHREALTIME
+    python3 scripts/gpu_bench_row.py "$json" "$m" "$device" "$(awk "BEGIN {print $end - $start}")" "$rc" \
         >>"$out/gpu-bench.csv"
 }
 for m in 500 1000; do
@@ -82,7 +82,7 @@ for m in 500 1000; do
 done
 bench 2000 cuda pores 120
 bench 2000 cpu pores 150
-column -s, -t "$out/gpu-bench.csv"
+tr , "\t" <"$out/gpu-bench.csv"
 python3 scripts/gpu_bench_row.py --figure "$out/gpu-bench.csv" "$out/gpu-bench.png" ||
     /usr/bin/python3 scripts/gpu_bench_row.py --figure "$out/gpu-bench.csv" "$out/gpu-bench.png" ||
     echo "gpu-check: no figure (no matplotlib)"

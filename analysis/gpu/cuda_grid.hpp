@@ -48,8 +48,13 @@ class CudaGrid {
                             const Progress& progress) const;
 
     /// The exact periodic distance transform, as periodicDistanceTransform (std::domain_error
-    /// when no voxel is solid or none void), `linesPerBatch` lines per envelope launch.
-    PoreSizeMap poreSizeMap(std::int64_t linesPerBatch) const;
+    /// when no voxel is solid or none void), with the seconds spent on the device and on the
+    /// copy to the host.
+    struct TimedPoreSizeMap {
+        PoreSizeMap map;
+        double deviceSeconds = 0.0, copySeconds = 0.0;
+    };
+    TimedPoreSizeMap poreSizeMap() const;
 
   private:
     int voxels_;

@@ -6,6 +6,7 @@
 #include <cuda_runtime.h>
 #include <cufft.h>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <string>
@@ -49,6 +50,16 @@ __global__ void voxelizeImages(const ParticleImage* images, VoxelGeometry g, std
     for (int r = static_cast<int>(threadIdx.x); r < rows.count(); r += blockDim.x)
         imageRow(image, rows.xOf(r), rows.yOf(r), g,
                  [words](std::int64_t word, std::uint32_t bits) { atomicOr(words + word, bits); });
+}
+
+__global__ void largestOf(const std::uint32_t* values, std::int64_t count, unsigned* largest) {
+    unsigned most = 0;
+    for (std::int64_t i = blockIdx.x * std::int64_t{blockDim.x} + threadIdx.x; i < count;
+         i += std::int64_t{gridDim.x} * blockDim.x)
+        most = max(most, values[i]);
+    for (int offset = 16; offset > 0; offset >>= 1)
+        most = max(most, __shfl_down_sync(0xffffffffu, most, offset));
+    if ((threadIdx.x & 31) == 0) atomicMax(largest, most);
 }
 
 __global__ void popcountWords(const std::uint32_t* words, std::int64_t count,
@@ -115,21 +126,40 @@ __global__ void rowPass(const std::uint32_t* words, int m, std::uint32_t* distan
     rowDistances(words + row * wordsPerRow(m), m, distances + row * m);
 }
 
-/// Lines [first, first + count) of one axis: line l starts at (l / inner) outerStride +
-/// (l % inner), its voxels `stride` apart; thread t uses scratch column t.
+/// The lines of one axis: line l starts at (l / inner) outerStride + (l % inner), its voxels
+/// `stride` apart.
 struct LineSet {
-    std::int64_t first, count;
-    std::int64_t inner, outerStride, stride;
+    std::int64_t count, inner, outerStride, stride;
 };
 
-__global__ void envelopePass(std::uint32_t* distances, int m, LineSet lines, EnvelopeScratch s) {
-    const std::int64_t t = blockIdx.x * std::int64_t{blockDim.x} + threadIdx.x;
-    if (t >= lines.count) return;
-    const std::int64_t l = lines.first + t;
+/// One thread per line, blockDim.x lines a block, each thread's copy of its line and its
+/// envelope in the block's shared memory (envelopeBytesPerLine each, lane-interleaved), the
+/// result written over the line.
+__global__ void envelopePass(std::uint32_t* distances, int m, LineSet lines) {
+    extern __shared__ std::uint32_t shared[];
+    const int lanes = static_cast<int>(blockDim.x), lane = static_cast<int>(threadIdx.x);
+    const std::int64_t l = blockIdx.x * std::int64_t{lanes} + lane;
+    if (l >= lines.count) return;
     std::uint32_t* line = distances + (l / lines.inner) * lines.outerStride + l % lines.inner;
-    EnvelopeScratch mine = s;
-    mine.site += t, mine.value += t, mine.startNumerator += t, mine.startDenominator += t;
-    envelopeLine(line, lines.stride, m, line, lines.stride, mine);
+    std::uint32_t* copy = shared + lane;
+    for (int q = 0; q < m; ++q)
+        copy[q * lanes] = line[q * lines.stride];
+    auto* stacks = reinterpret_cast<std::uint16_t*>(shared + std::int64_t{m} * lanes);
+    const EnvelopeStack stack{stacks + lane, stacks + std::int64_t{2} * m * lanes + lane, lanes};
+    envelopeLine(copy, lanes, m, line, lines.stride, stack);
+}
+
+/// Lines a block of envelopePass: at most 32 (a warp, the lines side by side along z), halved
+/// until their shared memory fits the device's opt-in limit; 0 when one line does not fit.
+int envelopeLanes(int m) {
+    int device = 0, limit = 0;
+    check(cudaGetDevice(&device), "cudaGetDevice");
+    check(cudaDeviceGetAttribute(&limit, cudaDevAttrMaxSharedMemoryPerBlockOptin, device),
+          "cudaDeviceGetAttribute");
+    int lanes = 32;
+    while (lanes > 0 && lanes * envelopeBytesPerLine(m) > limit)
+        lanes /= 2;
+    return lanes;
 }
 
 } // namespace
@@ -178,6 +208,66 @@ void DeviceBuffer::download(void* host) const {
     check(cudaMemcpy(host, data_, bytes_, cudaMemcpyDeviceToHost), "cudaMemcpy to the host");
 }
 
+namespace {
+
+/// Page-locked host memory (cudaMallocHost), freed with the object.
+class PinnedChunk {
+  public:
+    explicit PinnedChunk(std::size_t bytes) {
+        check(cudaMallocHost(&data_, bytes), "cudaMallocHost");
+    }
+    PinnedChunk(const PinnedChunk&) = delete;
+    PinnedChunk& operator=(const PinnedChunk&) = delete;
+    ~PinnedChunk() { cudaFreeHost(data_); }
+    void* get() const { return data_; }
+
+  private:
+    void* data_ = nullptr;
+};
+
+/// A stream of its own, with one event per staging chunk.
+struct CopyStream {
+    cudaStream_t stream = nullptr;
+    cudaEvent_t done[2] = {nullptr, nullptr};
+    CopyStream() {
+        check(cudaStreamCreateWithFlags(&stream, cudaStreamNonBlocking), "cudaStreamCreate");
+        for (cudaEvent_t& event : done)
+            check(cudaEventCreateWithFlags(&event, cudaEventDisableTiming), "cudaEventCreate");
+    }
+    CopyStream(const CopyStream&) = delete;
+    CopyStream& operator=(const CopyStream&) = delete;
+    ~CopyStream() {
+        for (cudaEvent_t event : done)
+            cudaEventDestroy(event);
+        cudaStreamDestroy(stream);
+    }
+};
+
+} // namespace
+
+void DeviceBuffer::downloadStaged(void* host, std::size_t chunk, const HostCopy& copyOut) const {
+    const std::size_t chunks = (bytes_ + chunk - 1) / chunk;
+    if (chunks <= 1) return download(host);
+    const PinnedChunk stage[2] = {PinnedChunk(chunk), PinnedChunk(chunk)};
+    const CopyStream copies;
+    const auto* from = static_cast<const char*>(data_);
+    auto* to = static_cast<char*>(host);
+    const auto size = [&](std::size_t c) { return std::min(chunk, bytes_ - c * chunk); };
+    // Chunk c goes to stage c % 2; the host empties chunk c - 1 while the device sends chunk c.
+    for (std::size_t c = 0; c <= chunks; ++c) {
+        if (c < chunks) {
+            check(cudaMemcpyAsync(stage[c % 2].get(), from + c * chunk, size(c),
+                                  cudaMemcpyDeviceToHost, copies.stream),
+                  "cudaMemcpyAsync to the host");
+            check(cudaEventRecord(copies.done[c % 2], copies.stream), "cudaEventRecord");
+        }
+        if (c == 0) continue;
+        const std::size_t last = c - 1;
+        check(cudaEventSynchronize(copies.done[last % 2]), "cudaEventSynchronize");
+        copyOut(to + last * chunk, stage[last % 2].get(), size(last));
+    }
+}
+
 DeviceBuffer voxelize(const std::vector<ParticleImage>& images, const VoxelGeometry& geometry) {
     const std::int64_t m = geometry.voxels;
     DeviceBuffer words(static_cast<std::size_t>(m * m * wordsPerRow(geometry.voxels)) *
@@ -204,6 +294,18 @@ std::int64_t countSolid(const DeviceBuffer& words) {
     unsigned long long host = 0;
     total.download(&host);
     return static_cast<std::int64_t>(host);
+}
+
+std::uint32_t largestValue(const DeviceBuffer& values) {
+    DeviceBuffer largest(sizeof(unsigned));
+    check(cudaMemset(largest.get(), 0, largest.bytes()), "cudaMemset");
+    const auto count = static_cast<std::int64_t>(values.bytes() / sizeof(std::uint32_t));
+    largestOf<<<1024, kThreads>>>(static_cast<const std::uint32_t*>(values.get()), count,
+                                  static_cast<unsigned*>(largest.get()));
+    synchronize("largestOf");
+    unsigned host = 0;
+    largest.download(&host);
+    return host;
 }
 
 namespace {
@@ -279,29 +381,27 @@ std::size_t fftWorkBytes(int voxels, bool single) {
     return bytes;
 }
 
-DeviceBuffer squaredDistances(const DeviceBuffer& words, int voxels, std::int64_t linesPerBatch) {
+DeviceBuffer squaredDistances(const DeviceBuffer& words, int voxels) {
     const std::int64_t m = voxels, lines = m * m;
+    const int lanes = envelopeLanes(voxels);
+    if (lanes == 0)
+        throw std::runtime_error("--device cuda: pores at M = " + std::to_string(voxels) +
+                                 " need " + std::to_string(envelopeBytesPerLine(voxels)) +
+                                 " bytes of shared memory per block, more than this GPU has; "
+                                 "choose a smaller --pore-voxels or --device cpu");
+    const auto sharedBytes = static_cast<int>(lanes * envelopeBytesPerLine(voxels));
+    check(cudaFuncSetAttribute(envelopePass, cudaFuncAttributeMaxDynamicSharedMemorySize,
+                               sharedBytes),
+          "cudaFuncSetAttribute");
     DeviceBuffer distances(static_cast<std::size_t>(m * m * m) * sizeof(std::uint32_t));
     auto* d = static_cast<std::uint32_t*>(distances.get());
     rowPass<<<blocksFor(lines), kThreads>>>(static_cast<const std::uint32_t*>(words.get()), voxels,
                                             d);
     synchronize("rowPass");
-    const std::int64_t batch = linesPerBatch < lines ? linesPerBatch : lines;
-    const std::size_t entries = static_cast<std::size_t>((2 * m + 1) * batch);
-    DeviceBuffer site(entries * sizeof(std::int32_t)), value(entries * sizeof(std::uint32_t)),
-        numerator(entries * sizeof(std::int64_t)), denominator(entries * sizeof(std::int32_t));
-    const EnvelopeScratch scratch{static_cast<std::int32_t*>(site.get()),
-                                  static_cast<std::uint32_t*>(value.get()),
-                                  static_cast<std::int64_t*>(numerator.get()),
-                                  static_cast<std::int32_t*>(denominator.get()), batch};
+    const auto blocks = static_cast<unsigned>((lines + lanes - 1) / lanes);
     // Along y: line (x, z) at x M^2 + z, stride M; along x: line (y, z) at y M + z, stride M^2.
-    for (const LineSet axis : {LineSet{0, 0, m, m * m, m}, LineSet{0, 0, m, m, m * m}}) {
-        for (std::int64_t first = 0; first < lines; first += batch) {
-            LineSet part = axis;
-            part.first = first;
-            part.count = lines - first < batch ? lines - first : batch;
-            envelopePass<<<blocksFor(part.count), kThreads>>>(d, voxels, part, scratch);
-        }
+    for (const LineSet axis : {LineSet{lines, m, m * m, m}, LineSet{lines, m, m, m * m}}) {
+        envelopePass<<<blocks, lanes, sharedBytes>>>(d, voxels, axis);
         synchronize("envelopePass");
     }
     return distances;

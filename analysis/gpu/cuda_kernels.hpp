@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,13 @@ class DeviceBuffer {
     std::size_t bytes() const { return bytes_; }
     /// Copies the whole buffer into host memory of bytes() bytes.
     void download(void* host) const;
+    /// The host's part of a staged copy: copies `bytes` from pinned memory into the target.
+    using HostCopy = std::function<void(void* to, const void* from, std::size_t bytes)>;
+    /// As download, for buffers of gigabytes: through two pinned chunks of `chunkBytes`, the
+    /// device filling one while `copyOut` (the caller's threads) empties the other, so that the
+    /// page faults and copies into fresh pageable memory overlap the transfer (docs/gpu.md,
+    /// "Copies to the host").
+    void downloadStaged(void* host, std::size_t chunkBytes, const HostCopy& copyOut) const;
 
   private:
     void* data_ = nullptr;
@@ -49,6 +57,9 @@ DeviceBuffer voxelize(const std::vector<ParticleImage>& images, const VoxelGeome
 
 /// Number of set bits of the voxel words.
 std::int64_t countSolid(const DeviceBuffer& words);
+
+/// The largest of the uint32 values in the buffer (0 when it is empty).
+std::uint32_t largestValue(const DeviceBuffer& values);
 
 /// The DFT F(k) of the voxel indicator (cuFFT, double precision unless `single`) at the wave
 /// indices |n_x|, |n_y| <= s and 0 <= n_z <= s, as a compact cube: (re, im) of signed index
@@ -70,14 +81,8 @@ std::size_t fftWorkBytes(int voxels, bool single);
 
 /// The exact periodic squared distances (voxel units) from every voxel to the nearest solid one
 /// (kNoSite everywhere when there is none), as uint32 at (x M + y) M + z: rowDistances along z,
-/// then envelopeLine along y and along x, `linesPerBatch` lines at a time.
-DeviceBuffer squaredDistances(const DeviceBuffer& words, int voxels, std::int64_t linesPerBatch);
-
-/// Bytes of envelope scratch per line of M voxels (grid_kernels.hpp, EnvelopeScratch).
-inline std::size_t envelopeScratchBytesPerLine(int voxels) {
-    return (2 * static_cast<std::size_t>(voxels) + 1) *
-           (sizeof(std::int32_t) + sizeof(std::uint32_t) + sizeof(std::int64_t) +
-            sizeof(std::int32_t));
-}
+/// then envelopeLine along y and along x (docs/gpu.md). Throws std::runtime_error when one
+/// line's envelope (envelopeBytesPerLine) exceeds the device's shared memory per block.
+DeviceBuffer squaredDistances(const DeviceBuffer& words, int voxels);
 
 } // namespace sbpack::gpu::cuda

@@ -22,21 +22,21 @@ std::size_t freeDeviceBytes() {
     return device->freeBytes;
 }
 
-GpuMemoryPlan planFor(const RunSettings& settings, std::size_t freeBytes) {
+GpuMemoryPlan planFor(const RunSettings& settings) {
     const bool spectral =
         settings.runs(Analysis::Voxels) || settings.runs(Analysis::SpectralDensity);
     const bool pores =
         settings.runs(Analysis::PoreSizes) && settings.poreMethod == PoreMethod::Voxel;
     const int m = spectral ? settings.voxels : 0;
     return planGpuMemory(m, pores ? settings.poreVoxels : 0, settings.fftSingle,
-                         m > 0 ? gpu::cuda::fftWorkBytes(m, settings.fftSingle) : 0, freeBytes);
+                         m > 0 ? gpu::cuda::fftWorkBytes(m, settings.fftSingle) : 0);
 }
 
 } // namespace
 
 void checkCudaRun(const RunSettings& settings) {
     const std::size_t freeBytes = freeDeviceBytes();
-    checkGpuMemory(planFor(settings, freeBytes), freeBytes, settings.device.description());
+    checkGpuMemory(planFor(settings), freeBytes, settings.device.description());
 }
 
 bool runCudaVoxels(FileContext& context, schema::Record& record) {
@@ -86,11 +86,12 @@ PoreSizeMap cudaPoreSizeMap(const FileContext& context, int voxels) {
         "pore voxelization (cuda)", grid.runtimeSeconds(),
         fmt::format("{}^3, phi_voxel = {}", voxels, describe(grid.phiVoxel())));
     const Stopwatch clock;
-    const GpuMemoryPlan plan = planGpuMemory(0, voxels, false, 0, freeDeviceBytes());
-    PoreSizeMap map = grid.poreSizeMap(plan.linesPerBatch);
-    context.progress().stageDone("distance transform (cuda)", clock.seconds(),
-                                 fmt::format("{} void voxels", map.voidCount()));
-    return map;
+    CudaGrid::TimedPoreSizeMap timed = grid.poreSizeMap();
+    context.progress().stageDone(
+        "distance transform (cuda)", clock.seconds(),
+        fmt::format("{} void voxels; device {:.3g} s, copy to the host {:.3g} s",
+                    timed.map.voidCount(), timed.deviceSeconds, timed.copySeconds));
+    return std::move(timed.map);
 }
 
 } // namespace sbpack::stages

@@ -13,8 +13,6 @@ namespace sbpack {
 namespace {
 
 constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
-constexpr std::int64_t kFewestLines = 1024;
-constexpr double kMostScratchBytes = 4.0 * kGiB;
 
 } // namespace
 
@@ -29,7 +27,7 @@ double gpuFftGridBytes(int voxels, bool single) {
 }
 
 GpuMemoryPlan planGpuMemory(int spectralVoxels, int poreVoxels, bool single,
-                            std::size_t fftWorkBytes, std::size_t freeBytes) {
+                            std::size_t fftWorkBytes) {
     GpuMemoryPlan plan;
     const double kept = spectralVoxels > 0 ? gpuVoxelBytes(spectralVoxels) : 0.0;
     if (spectralVoxels > 0)
@@ -37,14 +35,7 @@ GpuMemoryPlan planGpuMemory(int spectralVoxels, int poreVoxels, bool single,
             kept + gpuFftGridBytes(spectralVoxels, single) + static_cast<double>(fftWorkBytes);
     if (poreVoxels > 0) {
         const double m = poreVoxels;
-        const double grids = gpuVoxelBytes(poreVoxels) + m * m * m * 4.0;
-        const auto perLine =
-            static_cast<double>(gpu::cuda::envelopeScratchBytesPerLine(poreVoxels));
-        const double budget = std::min(
-            kMostScratchBytes, std::max(0.0, static_cast<double>(freeBytes) - kept - grids) / 2);
-        plan.linesPerBatch = std::clamp(static_cast<std::int64_t>(budget / perLine), kFewestLines,
-                                        static_cast<std::int64_t>(m * m));
-        plan.poreBytes = grids + perLine * static_cast<double>(plan.linesPerBatch);
+        plan.poreBytes = gpuVoxelBytes(poreVoxels) + m * m * m * 4.0;
     }
     plan.peakBytes = std::max(plan.spectralBytes, kept + plan.poreBytes);
     return plan;

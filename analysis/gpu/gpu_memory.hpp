@@ -12,12 +12,11 @@ struct GpuMemoryPlan {
     /// Voxels and chi on the spectral grid: voxel bits, the in-place real-to-complex grid and
     /// cuFFT's work area (0 without a spectral grid).
     double spectralBytes = 0.0;
-    /// Pores on the pore grid: voxel bits, squared distances and the envelope scratch.
+    /// Pores on the pore grid: voxel bits and squared distances (the envelopes live in shared
+    /// memory, grid_kernels.hpp).
     double poreBytes = 0.0;
     /// The larger of the two, with the spectral grid's voxel bits kept while pores run.
     double peakBytes = 0.0;
-    /// Lines of the envelope passes per launch (grid_kernels.hpp), by the scratch budget.
-    std::int64_t linesPerBatch = 0;
 };
 
 /// Bytes of the voxel bits of an M^3 grid (32-bit words, rows of ceil(M / 32)).
@@ -26,13 +25,12 @@ double gpuVoxelBytes(int voxels);
 double gpuFftGridBytes(int voxels, bool single);
 
 /// The plan for a spectral grid of spectralVoxels (0: none) and a pore grid of poreVoxels (0:
-/// none), cuFFT's work area `fftWorkBytes` (cuda::fftWorkBytes) and `freeBytes` on the device:
-/// the envelope scratch takes at most half of what the grids leave, within [1024 lines, 4 GiB].
+/// none) with cuFFT's work area `fftWorkBytes` (cuda::fftWorkBytes).
 GpuMemoryPlan planGpuMemory(int spectralVoxels, int poreVoxels, bool single,
-                            std::size_t fftWorkBytes, std::size_t freeBytes);
+                            std::size_t fftWorkBytes);
 
-/// Throws std::runtime_error when the plan's peak (with 1024 lines of scratch) exceeds
-/// freeBytes: the bytes needed and free, and what to change (--voxels, --pore-voxels, --device).
+/// Throws std::runtime_error when the plan's peak exceeds freeBytes: the bytes needed and free, and
+/// what to change (--voxels, --pore-voxels, --device).
 void checkGpuMemory(const GpuMemoryPlan& plan, std::size_t freeBytes, const std::string& device);
 
 } // namespace sbpack

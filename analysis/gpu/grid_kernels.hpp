@@ -133,63 +133,66 @@ SBPACK_HD inline void rowDistances(const std::uint32_t* words, int m, std::uint3
     }
 }
 
-/// Scratch of one line's lower envelope, 2M + 1 entries `stride` apart (so that the threads of
-/// a warp, lines side by side, touch adjacent words).
-struct EnvelopeScratch {
-    std::int32_t* site;           ///< position q' of each parabola, periodic images included
-    std::uint32_t* value;         ///< f(q' mod M)
-    std::int64_t* startNumerator; ///< the parabola is lowest for p > numerator / denominator
-    std::int32_t* startDenominator;
-    std::int64_t stride;
+/// One line's lower envelope, 2M entries `stride` apart (per-thread scratch in the block's
+/// shared memory on the device): each parabola's image position plus M/2, and the first p at
+/// which it is the lowest. 16 bits suffice for M <= maxPoreSizeVoxels (2M <= 32768).
+struct EnvelopeStack {
+    std::uint16_t* site;
+    std::uint16_t* start;
+    int stride;
 };
 
-/// The exact periodic min-plus transform of one line (Felzenszwalb-Huttenlocher):
+/// Bytes of one line's EnvelopeStack and its copy of the line (the envelope kernel's shared
+/// memory per line).
+SBPACK_HD constexpr std::int64_t envelopeBytesPerLine(int m) {
+    return std::int64_t{m} *
+           static_cast<std::int64_t>(sizeof(std::uint32_t) + 2 * 2 * sizeof(std::uint16_t));
+}
+
+/// Floor of n / d for d > 0.
+SBPACK_HD inline std::int64_t floorDivide(std::int64_t n, std::int64_t d) {
+    return n >= 0 ? n / d : -((-n + d - 1) / d);
+}
+
+/// The exact periodic min-plus transform of one line (Meijster, Roerdink & Hesselink's lower
+/// envelope in integers):
 ///   out(p) = min_q [ f(q) + (min-image |p - q|)^2 ],  p, q in [0, M),  f = kNoSite: no site,
-/// f read at in[q * inStride], written at out[p * outStride]; in and out may be the same line
-/// (the envelope is built from `in` before anything is written, and read from the scratch). The
-/// images q' in [-M/2, M + M/2) enter as further parabolas (a minimum image lies within M/2);
-/// breakpoints are exact rationals compared by integer cross-multiplication (|numerator| <
-/// 3 M^2 + 1 < 2^30, denominator <= 4M for M <= maxPoreSizeVoxels), so the result is exact, as
-/// the CPU's (pores/distance_transform.cpp).
-SBPACK_HD inline void envelopeLine(const std::uint32_t* in, std::int64_t inStride, int m,
-                                   std::uint32_t* out, std::int64_t outStride,
-                                   const EnvelopeScratch& s) {
-    const std::int64_t st = s.stride;
+/// f read at f[q * fStride], written at out[p * outStride] (not the same memory: f is read
+/// while out is written). The images q' in [-M/2, M + M/2) enter as further parabolas (a minimum
+/// image lies within M/2); the separator of two parabolas is the floor of an exact integer
+/// quotient, so the result is the exact minimum, as the CPU's (pores/distance_transform.cpp).
+SBPACK_HD inline void envelopeLine(const std::uint32_t* f, int fStride, int m, std::uint32_t* out,
+                                   std::int64_t outStride, const EnvelopeStack& s) {
     const int h = m / 2;
+    auto height = [&](std::int64_t p, int image) { // the parabola of image `image` at p
+        const std::int64_t q = image < 0 ? image + m : (image >= m ? image - m : image);
+        return (p - image) * (p - image) + f[q * fStride];
+    };
+    auto site = [&](int k) { return int{s.site[k * s.stride]} - h; };
+    auto start = [&](int k) { return std::int64_t{s.start[k * s.stride]}; };
     int top = -1;
-    for (int qq = -h; qq < m + h; ++qq) {
-        const int q = qq < 0 ? qq + m : (qq >= m ? qq - m : qq);
-        const std::uint32_t fq = in[q * inStride];
-        if (fq == kNoSite) continue;
-        const std::int64_t height = fq + std::int64_t{qq} * qq;
-        std::int64_t numerator = 0;
-        std::int32_t denominator = 1;
-        while (top >= 0) {
-            const std::int64_t t = s.site[top * st];
-            numerator = height - (s.value[top * st] + t * t);
-            denominator = static_cast<std::int32_t>(2 * (qq - t));
-            if (top == 0 ||
-                numerator * s.startDenominator[top * st] > s.startNumerator[top * st] * denominator)
-                break;
+    for (int u = -h; u < m + h; ++u) {
+        const std::uint32_t fu = f[(u < 0 ? u + m : (u >= m ? u - m : u)) * fStride];
+        if (fu == kNoSite) continue;
+        while (top >= 0 && height(start(top), site(top)) > height(start(top), u))
             --top;
+        std::int64_t first = 0;
+        if (top >= 0) { // the first p at which u is strictly lower than the top
+            const std::int64_t i = site(top), fi = height(i, i);
+            first = 1 + floorDivide(std::int64_t{u} * u - i * i + fu - fi, 2 * (u - i));
+            if (first >= m) continue;
         }
         ++top;
-        s.site[top * st] = qq;
-        s.value[top * st] = fq;
-        s.startNumerator[top * st] = numerator;
-        s.startDenominator[top * st] = denominator;
+        s.site[top * s.stride] = static_cast<std::uint16_t>(u + h);
+        s.start[top * s.stride] = static_cast<std::uint16_t>(first);
     }
-    int k = 0;
-    for (int p = 0; p < m; ++p) {
+    for (int p = m - 1; p >= 0; --p) {
         if (top < 0) {
             out[p * outStride] = kNoSite;
             continue;
         }
-        while (k < top &&
-               s.startNumerator[(k + 1) * st] < std::int64_t{p} * s.startDenominator[(k + 1) * st])
-            ++k;
-        const std::int64_t d = p - std::int64_t{s.site[k * st]};
-        out[p * outStride] = static_cast<std::uint32_t>(d * d + s.value[k * st]);
+        out[p * outStride] = static_cast<std::uint32_t>(height(p, site(top)));
+        if (p == start(top)) --top;
     }
 }
 

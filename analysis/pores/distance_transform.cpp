@@ -489,13 +489,12 @@ void checkSolidCount(std::int64_t solid, int voxels) {
 }
 
 PoreSizeMap PoreSizeMap::fromSquaredDistances(std::unique_ptr<std::uint32_t[]> squared, int voxels,
-                                              double voxelSize) {
+                                              double voxelSize, std::int64_t voidCount,
+                                              std::uint32_t maxSquaredDistance) {
     checkVoxels(voxels);
     PoreSizeMap map(voxels, voxelSize, std::move(squared));
-    const std::int64_t m = voxels;
-    const std::uint32_t* d = map.squaredDistances_.get();
-    map.voidCount_ = std::count_if(d, d + m * m * m, [](std::uint32_t v) { return v != 0; });
-    map.maxSquaredDistance_ = *std::max_element(d, d + m * m * m);
+    map.voidCount_ = voidCount;
+    map.maxSquaredDistance_ = maxSquaredDistance;
     return map;
 }
 

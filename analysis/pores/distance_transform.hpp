@@ -74,11 +74,12 @@ class PoreSizeMap {
     std::span<const std::uint32_t> features() const;
     bool hasFeatures() const { return features_ != nullptr; }
 
-    /// A map computed elsewhere (the GPU, gpu/cuda_grid.cpp): the M^3 squared distances, the
-    /// void count and the largest taken from them. Throws std::invalid_argument for M outside
-    /// [1, maxPoreSizeVoxels].
+    /// A map computed elsewhere (the GPU, gpu/cuda_grid.cpp): the M^3 squared distances with
+    /// their void count and largest value, counted where they were made. Throws
+    /// std::invalid_argument for M outside [1, maxPoreSizeVoxels].
     static PoreSizeMap fromSquaredDistances(std::unique_ptr<std::uint32_t[]> squared, int voxels,
-                                            double voxelSize);
+                                            double voxelSize, std::int64_t voidCount,
+                                            std::uint32_t maxSquaredDistance);
 
     /// Writes the map as an OpenVDB FloatGrid named "pore_size": active on the void voxels only,
     /// value the pore size in length units, index (i, j, k) centred at ((i, j, k) + 0.5) a, with

@@ -61,17 +61,20 @@ std::vector<std::uint32_t> hostSquaredDistances(const std::vector<std::uint32_t>
     std::vector<std::uint32_t> d(static_cast<std::size_t>(mm * mm * mm));
     for (std::int64_t row = 0; row < mm * mm; ++row)
         gpu::rowDistances(words.data() + row * w, m, d.data() + row * mm);
-    std::vector<std::int32_t> site(2 * m + 1), denominator(2 * m + 1);
-    std::vector<std::uint32_t> value(2 * m + 1);
-    std::vector<std::int64_t> numerator(2 * m + 1);
-    const gpu::EnvelopeScratch s{site.data(), value.data(), numerator.data(), denominator.data(),
-                                 1};
+    std::vector<std::uint16_t> site(2 * m), start(2 * m);
+    std::vector<std::uint32_t> copy(m); // the line's copy, as in the kernel's shared memory
+    const gpu::EnvelopeStack s{site.data(), start.data(), 1};
+    auto pass = [&](std::uint32_t* line, std::int64_t stride) {
+        for (int q = 0; q < m; ++q)
+            copy[q] = line[q * stride];
+        gpu::envelopeLine(copy.data(), 1, m, line, stride, s);
+    };
     for (std::int64_t x = 0; x < mm; ++x) // along y
         for (std::int64_t z = 0; z < mm; ++z)
-            gpu::envelopeLine(d.data() + x * mm * mm + z, mm, m, d.data() + x * mm * mm + z, mm, s);
+            pass(d.data() + x * mm * mm + z, mm);
     for (std::int64_t y = 0; y < mm; ++y) // along x
         for (std::int64_t z = 0; z < mm; ++z)
-            gpu::envelopeLine(d.data() + y * mm + z, mm * mm, m, d.data() + y * mm + z, mm * mm, s);
+            pass(d.data() + y * mm + z, mm * mm);
     return d;
 }
 
@@ -132,16 +135,13 @@ TEST(GridKernels, RowDistancesWrapAroundTheBox) {
 
 TEST(GridKernels, EnvelopeLineIsTheBruteForceMinimum) {
     std::mt19937_64 rng(3);
-    for (int m : {1, 2, 3, 8, 17, 64}) {
-        std::vector<std::int32_t> site(2 * m + 1), denominator(2 * m + 1);
-        std::vector<std::uint32_t> value(2 * m + 1);
-        std::vector<std::int64_t> numerator(2 * m + 1);
-        const gpu::EnvelopeScratch s{site.data(), value.data(), numerator.data(),
-                                     denominator.data(), 1};
+    for (int m : {1, 2, 3, 8, 17, 64, 201}) {
+        std::vector<std::uint16_t> site(2 * m), start(2 * m);
+        const gpu::EnvelopeStack s{site.data(), start.data(), 1};
         for (int trial = 0; trial < 200; ++trial) {
             std::vector<std::uint32_t> f(m);
             for (auto& v : f)
-                v = rng() % 3 == 0 ? kNoSite : static_cast<std::uint32_t>(rng() % (m * m + 1));
+                v = rng() % 3 == 0 ? kNoSite : static_cast<std::uint32_t>(rng() % (3 * m * m + 1));
             std::vector<std::uint32_t> expected(m, kNoSite);
             for (int p = 0; p < m; ++p)
                 for (int q = 0; q < m; ++q) {
@@ -149,8 +149,9 @@ TEST(GridKernels, EnvelopeLineIsTheBruteForceMinimum) {
                     const std::int64_t d = std::min(std::abs(p - q), m - std::abs(p - q));
                     expected[p] = std::min<std::uint32_t>(expected[p], f[q] + d * d);
                 }
-            gpu::envelopeLine(f.data(), 1, m, f.data(), 1, s); // in place, as the kernels
-            ASSERT_EQ(f, expected) << "M " << m << " trial " << trial;
+            std::vector<std::uint32_t> out(m);
+            gpu::envelopeLine(f.data(), 1, m, out.data(), 1, s);
+            ASSERT_EQ(out, expected) << "M " << m << " trial " << trial;
         }
     }
 }
@@ -231,24 +232,19 @@ TEST(GridKernels, CompactCubeGivesTheWholeGridsShellsAndModes) {
     EXPECT_EQ(fromCube.cutoffQ, cpu.cutoffQ);
 }
 
-TEST(GpuMemory, PlanAddsTheGridsAndBoundsTheScratch) {
+TEST(GpuMemory, PlanAddsTheGrids) {
     constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
     EXPECT_EQ(gpuVoxelBytes(500), 500.0 * 500 * 16 * 4);
     EXPECT_EQ(gpuFftGridBytes(500, false), 500.0 * 500 * 251 * 16);
     EXPECT_EQ(gpuFftGridBytes(500, true), 500.0 * 500 * 251 * 8);
     const auto big = static_cast<std::size_t>(80 * kGiB);
-    const GpuMemoryPlan plan = planGpuMemory(500, 500, false, 1000, big);
+    const GpuMemoryPlan plan = planGpuMemory(500, 500, false, 1000);
     EXPECT_EQ(plan.spectralBytes, gpuVoxelBytes(500) + gpuFftGridBytes(500, false) + 1000);
-    const double perLine = 1001.0 * 20;
-    EXPECT_EQ(plan.linesPerBatch, static_cast<std::int64_t>(4 * kGiB / perLine)); // the 4 GiB cap
-    EXPECT_EQ(plan.poreBytes,
-              gpuVoxelBytes(500) + 500.0 * 500 * 500 * 4 + perLine * plan.linesPerBatch);
+    EXPECT_EQ(plan.poreBytes, gpuVoxelBytes(500) + 500.0 * 500 * 500 * 4);
     EXPECT_EQ(plan.peakBytes, std::max(plan.spectralBytes, gpuVoxelBytes(500) + plan.poreBytes));
     EXPECT_NO_THROW(checkGpuMemory(plan, big, "test GPU"));
-    // A small device: the fewest lines, and a refusal naming the sizes and the options.
-    const GpuMemoryPlan small =
-        planGpuMemory(0, 500, false, 0, static_cast<std::size_t>(0.1 * kGiB));
-    EXPECT_EQ(small.linesPerBatch, 1024);
+    // A small device: a refusal naming the sizes and the options.
+    const GpuMemoryPlan small = planGpuMemory(0, 500, false, 0);
     try {
         checkGpuMemory(small, static_cast<std::size_t>(0.1 * kGiB), "test GPU");
         FAIL() << "no refusal";
