@@ -99,4 +99,10 @@ CudaGrid::TimedPoreSizeMap CudaGrid::poreSizeMap() const {
             deviceSeconds, copySeconds};
 }
 
+std::vector<std::int64_t> CudaGrid::poreHistogram() const {
+    checkSolidCount(solidCount_, voxels_);
+    const gpu::cuda::DeviceBuffer distances = gpu::cuda::squaredDistances(words_, voxels_);
+    return gpu::cuda::histogram(distances, gpu::cuda::largestValue(distances), solidCount_);
+}
+
 } // namespace sbpack

@@ -132,21 +132,40 @@ struct LineSet {
     std::int64_t count, inner, outerStride, stride;
 };
 
-/// One thread per line, blockDim.x lines a block, each thread's copy of its line and its
-/// envelope in the block's shared memory (envelopeBytesPerLine each, lane-interleaved), the
-/// result written over the line.
-__global__ void envelopePass(std::uint32_t* distances, int m, LineSet lines) {
-    extern __shared__ std::uint32_t shared[];
+/// One thread per line, blockDim.x lines a block, each thread's envelope in the block's
+/// shared memory (envelopeBytesPerLine each, lane-interleaved); from `in` into `out`.
+__global__ void envelopePass(const std::uint32_t* in, std::uint32_t* out, int m, LineSet lines) {
+    extern __shared__ std::uint16_t sites[];
     const int lanes = static_cast<int>(blockDim.x), lane = static_cast<int>(threadIdx.x);
     const std::int64_t l = blockIdx.x * std::int64_t{lanes} + lane;
     if (l >= lines.count) return;
-    std::uint32_t* line = distances + (l / lines.inner) * lines.outerStride + l % lines.inner;
-    std::uint32_t* copy = shared + lane;
-    for (int q = 0; q < m; ++q)
-        copy[q * lanes] = line[q * lines.stride];
-    auto* stacks = reinterpret_cast<std::uint16_t*>(shared + std::int64_t{m} * lanes);
-    const EnvelopeStack stack{stacks + lane, stacks + std::int64_t{2} * m * lanes + lane, lanes};
-    envelopeLine(copy, lanes, m, line, lines.stride, stack);
+    const std::int64_t start = (l / lines.inner) * lines.outerStride + l % lines.inner;
+    envelopeLine(in + start, lines.stride, m, out + start, EnvelopeStack{sites + lane, lanes});
+}
+
+/// Counts of the nonzero values below `levels` (the void voxels' squared distances) into bins,
+/// through the block's shared memory when `local` (levels 32-bit counters fit there).
+__global__ void histogramOf(const std::uint32_t* values, std::int64_t count, int levels, bool local,
+                            unsigned long long* bins) {
+    extern __shared__ unsigned counts[];
+    if (local) {
+        for (int n = static_cast<int>(threadIdx.x); n < levels; n += blockDim.x)
+            counts[n] = 0;
+        __syncthreads();
+    }
+    for (std::int64_t i = blockIdx.x * std::int64_t{blockDim.x} + threadIdx.x; i < count;
+         i += std::int64_t{gridDim.x} * blockDim.x) {
+        const std::uint32_t v = values[i];
+        if (v == 0) continue;
+        if (local)
+            atomicAdd(counts + v, 1u);
+        else
+            atomicAdd(bins + v, 1ull);
+    }
+    if (!local) return;
+    __syncthreads();
+    for (int n = static_cast<int>(threadIdx.x); n < levels; n += blockDim.x)
+        if (counts[n] != 0) atomicAdd(bins + n, static_cast<unsigned long long>(counts[n]));
 }
 
 /// Lines a block of envelopePass: at most 32 (a warp, the lines side by side along z), halved
@@ -393,18 +412,39 @@ DeviceBuffer squaredDistances(const DeviceBuffer& words, int voxels) {
     check(cudaFuncSetAttribute(envelopePass, cudaFuncAttributeMaxDynamicSharedMemorySize,
                                sharedBytes),
           "cudaFuncSetAttribute");
-    DeviceBuffer distances(static_cast<std::size_t>(m * m * m) * sizeof(std::uint32_t));
+    const std::size_t bytes = static_cast<std::size_t>(m * m * m) * sizeof(std::uint32_t);
+    DeviceBuffer distances(bytes);
     auto* d = static_cast<std::uint32_t*>(distances.get());
     rowPass<<<blocksFor(lines), kThreads>>>(static_cast<const std::uint32_t*>(words.get()), voxels,
                                             d);
     synchronize("rowPass");
+    const DeviceBuffer along(bytes); // the pass along y, read by the pass along x
+    auto* e = static_cast<std::uint32_t*>(along.get());
     const auto blocks = static_cast<unsigned>((lines + lanes - 1) / lanes);
     // Along y: line (x, z) at x M^2 + z, stride M; along x: line (y, z) at y M + z, stride M^2.
-    for (const LineSet axis : {LineSet{lines, m, m * m, m}, LineSet{lines, m, m, m * m}}) {
-        envelopePass<<<blocks, lanes, sharedBytes>>>(d, voxels, axis);
-        synchronize("envelopePass");
-    }
+    envelopePass<<<blocks, lanes, sharedBytes>>>(d, e, voxels, LineSet{lines, m, m * m, m});
+    envelopePass<<<blocks, lanes, sharedBytes>>>(e, d, voxels, LineSet{lines, m, m, m * m});
+    synchronize("envelopePass");
     return distances;
+}
+
+std::vector<std::int64_t> histogram(const DeviceBuffer& values, std::uint32_t largest,
+                                    std::int64_t zeros) {
+    const int levels = static_cast<int>(largest) + 1;
+    DeviceBuffer bins(static_cast<std::size_t>(levels) * sizeof(unsigned long long));
+    check(cudaMemset(bins.get(), 0, bins.bytes()), "cudaMemset");
+    const std::size_t localBytes = static_cast<std::size_t>(levels) * sizeof(unsigned);
+    const bool local = localBytes <= 48 * 1024;
+    histogramOf<<<1024, kThreads, local ? localBytes : 0>>>(
+        static_cast<const std::uint32_t*>(values.get()),
+        static_cast<std::int64_t>(values.bytes() / sizeof(std::uint32_t)), levels, local,
+        static_cast<unsigned long long*>(bins.get()));
+    synchronize("histogramOf");
+    std::vector<std::int64_t> counts(static_cast<std::size_t>(levels));
+    static_assert(sizeof(std::int64_t) == sizeof(unsigned long long));
+    bins.download(counts.data());
+    counts[0] = zeros;
+    return counts;
 }
 
 } // namespace sbpack::gpu::cuda

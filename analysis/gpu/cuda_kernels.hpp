@@ -81,8 +81,14 @@ std::size_t fftWorkBytes(int voxels, bool single);
 
 /// The exact periodic squared distances (voxel units) from every voxel to the nearest solid one
 /// (kNoSite everywhere when there is none), as uint32 at (x M + y) M + z: rowDistances along z,
-/// then envelopeLine along y and along x (docs/gpu.md). Throws std::runtime_error when one
-/// line's envelope (envelopeBytesPerLine) exceeds the device's shared memory per block.
+/// then envelopeLine along y (into a second M^3 buffer, freed on return) and back along x
+/// (docs/gpu.md). Throws std::runtime_error when one line's envelope (envelopeBytesPerLine)
+/// exceeds the device's shared memory per block.
 DeviceBuffer squaredDistances(const DeviceBuffer& words, int voxels);
+
+/// The counts of each value 0 .. largest of the uint32 values (largestValue), the count of
+/// zeros given (the solid voxels, counted with the voxels).
+std::vector<std::int64_t> histogram(const DeviceBuffer& values, std::uint32_t largest,
+                                    std::int64_t zeros);
 
 } // namespace sbpack::gpu::cuda

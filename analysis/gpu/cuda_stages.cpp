@@ -80,11 +80,20 @@ SpectralDensityResult cudaSpectralDensity(FileContext& context,
     return std::move(s.chi);
 }
 
-PoreSizeMap cudaPoreSizeMap(const FileContext& context, int voxels) {
-    const CudaGrid grid(context.packing(), voxels);
+namespace {
+
+CudaGrid voxelizedPoreGrid(const FileContext& context, int voxels) {
+    CudaGrid grid(context.packing(), voxels);
     context.progress().stageDone(
         "pore voxelization (cuda)", grid.runtimeSeconds(),
         fmt::format("{}^3, phi_voxel = {}", voxels, describe(grid.phiVoxel())));
+    return grid;
+}
+
+} // namespace
+
+PoreSizeMap cudaPoreSizeMap(const FileContext& context, int voxels) {
+    const CudaGrid grid = voxelizedPoreGrid(context, voxels);
     const Stopwatch clock;
     CudaGrid::TimedPoreSizeMap timed = grid.poreSizeMap();
     context.progress().stageDone(
@@ -92,6 +101,22 @@ PoreSizeMap cudaPoreSizeMap(const FileContext& context, int voxels) {
         fmt::format("{} void voxels; device {:.3g} s, copy to the host {:.3g} s",
                     timed.map.voidCount(), timed.deviceSeconds, timed.copySeconds));
     return std::move(timed.map);
+}
+
+PoreSizeDistributionResult cudaPoreSizes(const FileContext& context, int voxels,
+                                         const PoreSizeParameters& parameters) {
+    const CudaGrid grid = voxelizedPoreGrid(context, voxels);
+    const Stopwatch clock;
+    const std::vector<std::int64_t> histogram = grid.poreHistogram();
+    context.progress().stageDone(
+        "distance transform and histogram (cuda)", clock.seconds(),
+        fmt::format("{} void voxels", voxels * std::int64_t{voxels} * voxels - grid.solidCount()));
+    const Stopwatch countClock;
+    PoreSizeDistributionResult pores =
+        PoreSizeDistribution(parameters)
+            .fromHistogram(histogram, voxels, grid.voxelSize(), context.meanWidth());
+    pores.runtimeSeconds = countClock.seconds();
+    return pores;
 }
 
 } // namespace sbpack::stages

@@ -35,7 +35,7 @@ GpuMemoryPlan planGpuMemory(int spectralVoxels, int poreVoxels, bool single,
             kept + gpuFftGridBytes(spectralVoxels, single) + static_cast<double>(fftWorkBytes);
     if (poreVoxels > 0) {
         const double m = poreVoxels;
-        plan.poreBytes = gpuVoxelBytes(poreVoxels) + m * m * m * 4.0;
+        plan.poreBytes = gpuVoxelBytes(poreVoxels) + 2 * m * m * m * 4.0;
     }
     plan.peakBytes = std::max(plan.spectralBytes, kept + plan.poreBytes);
     return plan;

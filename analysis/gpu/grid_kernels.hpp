@@ -133,20 +133,17 @@ SBPACK_HD inline void rowDistances(const std::uint32_t* words, int m, std::uint3
     }
 }
 
-/// One line's lower envelope, 2M entries `stride` apart (per-thread scratch in the block's
-/// shared memory on the device): each parabola's image position plus M/2, and the first p at
-/// which it is the lowest. 16 bits suffice for M <= maxPoreSizeVoxels (2M <= 32768).
+/// One line's lower envelope: the image position plus M/2 of each of its parabolas, 2M entries
+/// `stride` apart (per-thread scratch in the block's shared memory on the device). 16 bits
+/// suffice for M <= maxPoreSizeVoxels (2M <= 32768).
 struct EnvelopeStack {
     std::uint16_t* site;
-    std::uint16_t* start;
     int stride;
 };
 
-/// Bytes of one line's EnvelopeStack and its copy of the line (the envelope kernel's shared
-/// memory per line).
+/// Bytes of one line's EnvelopeStack (the envelope kernel's shared memory per line).
 SBPACK_HD constexpr std::int64_t envelopeBytesPerLine(int m) {
-    return std::int64_t{m} *
-           static_cast<std::int64_t>(sizeof(std::uint32_t) + 2 * 2 * sizeof(std::uint16_t));
+    return 2 * std::int64_t{m} * static_cast<std::int64_t>(sizeof(std::uint16_t));
 }
 
 /// Floor of n / d for d > 0.
@@ -157,42 +154,43 @@ SBPACK_HD inline std::int64_t floorDivide(std::int64_t n, std::int64_t d) {
 /// The exact periodic min-plus transform of one line (Meijster, Roerdink & Hesselink's lower
 /// envelope in integers):
 ///   out(p) = min_q [ f(q) + (min-image |p - q|)^2 ],  p, q in [0, M),  f = kNoSite: no site,
-/// f read at f[q * fStride], written at out[p * outStride] (not the same memory: f is read
-/// while out is written). The images q' in [-M/2, M + M/2) enter as further parabolas (a minimum
-/// image lies within M/2); the separator of two parabolas is the floor of an exact integer
-/// quotient, so the result is the exact minimum, as the CPU's (pores/distance_transform.cpp).
-SBPACK_HD inline void envelopeLine(const std::uint32_t* f, int fStride, int m, std::uint32_t* out,
-                                   std::int64_t outStride, const EnvelopeStack& s) {
+/// f read at f[q * stride], written at out[p * stride] (other memory: f is read while out is
+/// written). The images q' in [-M/2, M + M/2) enter as further parabolas (a minimum image lies
+/// within M/2). A parabola is the lowest from the first integer p past its separator with the
+/// one below it on the stack, the floor of an exact integer quotient, so the result is the exact
+/// minimum, as the CPU's (pores/distance_transform.cpp); the separators are recomputed from the
+/// sites, which is why the stack holds nothing else.
+SBPACK_HD inline void envelopeLine(const std::uint32_t* f, std::int64_t stride, int m,
+                                   std::uint32_t* out, const EnvelopeStack& s) {
     const int h = m / 2;
-    auto height = [&](std::int64_t p, int image) { // the parabola of image `image` at p
-        const std::int64_t q = image < 0 ? image + m : (image >= m ? image - m : image);
-        return (p - image) * (p - image) + f[q * fStride];
+    auto value = [&](std::int64_t image) {
+        return std::int64_t{f[(image < 0 ? image + m : (image >= m ? image - m : image)) * stride]};
     };
-    auto site = [&](int k) { return int{s.site[k * s.stride]} - h; };
-    auto start = [&](int k) { return std::int64_t{s.start[k * s.stride]}; };
+    auto site = [&](int k) { return std::int64_t{s.site[k * s.stride]} - h; };
+    auto firstBelow = [&](std::int64_t i, std::int64_t u) { // where u becomes lower than i
+        return 1 + floorDivide(u * u - i * i + value(u) - value(i), 2 * (u - i));
+    };
+    auto start = [&](int k) { return k == 0 ? std::int64_t{0} : firstBelow(site(k - 1), site(k)); };
+    auto height = [&](std::int64_t p, std::int64_t image) {
+        return (p - image) * (p - image) + value(image);
+    };
     int top = -1;
-    for (int u = -h; u < m + h; ++u) {
-        const std::uint32_t fu = f[(u < 0 ? u + m : (u >= m ? u - m : u)) * fStride];
-        if (fu == kNoSite) continue;
+    for (std::int64_t u = -h; u < m + h; ++u) {
+        if (value(u) == kNoSite) continue;
         while (top >= 0 && height(start(top), site(top)) > height(start(top), u))
             --top;
-        std::int64_t first = 0;
-        if (top >= 0) { // the first p at which u is strictly lower than the top
-            const std::int64_t i = site(top), fi = height(i, i);
-            first = 1 + floorDivide(std::int64_t{u} * u - i * i + fu - fi, 2 * (u - i));
-            if (first >= m) continue;
-        }
+        if (top >= 0 && firstBelow(site(top), u) >= m) continue;
         ++top;
         s.site[top * s.stride] = static_cast<std::uint16_t>(u + h);
-        s.start[top * s.stride] = static_cast<std::uint16_t>(first);
     }
-    for (int p = m - 1; p >= 0; --p) {
+    std::int64_t from = top >= 0 ? start(top) : 0;
+    for (std::int64_t p = m - 1; p >= 0; --p) {
         if (top < 0) {
-            out[p * outStride] = kNoSite;
+            out[p * stride] = kNoSite;
             continue;
         }
-        out[p * outStride] = static_cast<std::uint32_t>(height(p, site(top)));
-        if (p == start(top)) --top;
+        out[p * stride] = static_cast<std::uint32_t>(height(p, site(top)));
+        if (p == from && --top >= 0) from = start(top);
     }
 }
 

@@ -65,8 +65,8 @@ PoreSizeMap poreSizeMap(const FileContext& context, int m, bool features) {
     return map;
 }
 
-/// The pore sizes by the run's method; `map` is filled unless the method is exact, and mapSeconds
-/// is the time it took.
+/// The pore sizes by the run's method; `map` is filled unless the method is exact or the GPU
+/// made the histogram alone, and mapSeconds is the time the distances took.
 PoreSizeDistributionResult measurePores(const FileContext& context, std::optional<PoreSizeMap>& map,
                                         double& mapSeconds) {
     const RunSettings& s = context.settings();
@@ -78,12 +78,21 @@ PoreSizeDistributionResult measurePores(const FileContext& context, std::optiona
         return ExactPoreSizeDistribution(parameters).compute(context.packing(), context.progress());
     }
     const bool refined = s.poreMethod == PoreMethod::Refined;
-    const Stopwatch clock;
-    map.emplace(poreSizeMap(context, s.poreVoxels, refined));
-    mapSeconds = clock.seconds();
     PoreSizeParameters parameters;
     parameters.randomPoints = s.porePoints;
     parameters.seed = s.poreSeed;
+    const Stopwatch clock;
+#ifdef SBPACK_WITH_CUDA
+    // All voxels counted and no export: the histogram alone comes back from the GPU.
+    if (s.device.device == ComputeDevice::Cuda && !refined && s.porePoints == 0 &&
+        context.vdbExport(Analysis::PoreSizes) == nullptr) {
+        PoreSizeDistributionResult pores = cudaPoreSizes(context, s.poreVoxels, parameters);
+        mapSeconds = clock.seconds() - pores.runtimeSeconds;
+        return pores;
+    }
+#endif
+    map.emplace(poreSizeMap(context, s.poreVoxels, refined));
+    mapSeconds = clock.seconds();
     if (refined)
         return RefinedPoreSizeDistribution(parameters)
             .compute(*map, context.packing(), context.progress());
@@ -133,7 +142,8 @@ bool runPoreSizes(FileContext& context, schema::Record& record) {
         vdb->output->write(map->vdbImage());
         context.progress().stageDone("pore vdb export", clock.seconds(), vdb->destination.string());
     }
-    PoreSizeFigures recorded{std::move(pores), map ? std::optional(mapSeconds) : std::nullopt,
+    const bool gridded = context.settings().poreMethod != PoreMethod::Exact;
+    PoreSizeFigures recorded{std::move(pores), gridded ? std::optional(mapSeconds) : std::nullopt,
                              std::nullopt};
     pore_size_fields::kTable.fill(record, recorded, context.scales());
     context.keep(Analysis::PoreSizes, std::move(recorded.pores));

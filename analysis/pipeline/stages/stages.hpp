@@ -58,8 +58,12 @@ bool runCudaVoxels(FileContext& context, schema::Record& record);
 /// chi from the kept CudaGrid, the transform by cuFFT.
 SpectralDensityResult cudaSpectralDensity(FileContext& context,
                                           const SpectralDensityParameters& parameters);
-/// The pore grid voxelised and distance-transformed on the GPU.
+/// The pore grid voxelised and distance-transformed on the GPU, the map copied to the host.
 PoreSizeMap cudaPoreSizeMap(const FileContext& context, int voxels);
+/// F(delta) of the voxel method with no map on the host: the squared distances' histogram made
+/// on the GPU (CudaGrid::poreHistogram), what PoreSizeDistribution makes of the map.
+PoreSizeDistributionResult cudaPoreSizes(const FileContext& context, int voxels,
+                                         const PoreSizeParameters& parameters);
 #endif
 
 /// "6.12345": a number for progress lines (6 significant digits unless `digits`).
