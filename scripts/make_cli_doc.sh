@@ -81,7 +81,8 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   `--checkpoint-interval` seconds (atomically), and `--resume FILE` continues from it bit for bit.
   A finished output can be resumed too, e.g. with `--pressure-final 1e14` to continue from 1e12,
   or one stopped at its cost limit with a larger `--cost-limit`. A file without sbgen state is
-  refused, and so is an `--out` that is the `--resume` file.
+  refused, and so is an `--out` that is the `--resume` file; `--checkpoint` may name it (each
+  checkpoint replaces it atomically with a later state of the same run).
 - **Bad input** (`p` outside `(0.5, 1000]` or NaN, `N < 2`, `phi-init` outside (0, 0.5),
   non-positive or NaN rates or pressures, `pressure-final <= pressure-switch`, a negative
   `cost-limit`, an unwritable output, a resume file that is not a checkpoint, protocol options

@@ -18,8 +18,10 @@ kill -KILL "$pid" && ! wait "$pid" 2>/dev/null || true
 [[ -f ck.h5 && ! -f a.h5 ]] || { echo "expected a checkpoint and no output after SIGKILL"; exit 1; }
 # SIGKILL can land while a checkpoint is written: its temporary may stay, never ck.h5 half-written.
 killed_temporaries=$(ls -a | grep '\.tmp-' || true)
-"$sbgen" --resume ck.h5 --pressure-final 1e8 --out a.h5 --quiet
-[[ -f a.h5 ]] || { echo "resumed run wrote no output"; exit 1; }
+# The resumed run checkpoints into the file it resumed from (scripts/reproduce-paper.sh does).
+"$sbgen" --resume ck.h5 --checkpoint ck.h5 --checkpoint-interval 0.01 --pressure-final 1e8 \
+    --out a.h5 --quiet
+[[ -f a.h5 && -f ck.h5 ]] || { echo "resumed run wrote no output or lost its checkpoint"; exit 1; }
 
 "$sbgen" "${args[@]}" --out b.h5 --quiet &
 pid=$!
