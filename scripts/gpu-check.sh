@@ -70,7 +70,7 @@ bench() { # M DEVICE COMPUTE LIMIT_S
     local m=$1 device=$2 compute=$3 json="$out/bench-$1-$2.json" start end rc=0
     start=$EPOCHREALTIME
     timeout "$4" "$run/sbanalyze" data/mrj-p1.5-5000.h5 --compute "$compute" --voxels "$m" \
-        --pore-voxels "$m" --device "$device" --threads "$(nproc)" --fft-plan estimate \
+        --pore-voxels "$m" --pores voxel --device "$device" --threads "$(nproc)" --fft-plan estimate \
         --fft-wisdom none --json "$json" || rc=$?
     end=$EPOCHREALTIME
     python3 scripts/gpu_bench_row.py "$json" "$m" "$device" "$(awk "BEGIN {print $end - $start}")" "$rc" \

@@ -104,7 +104,7 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   | `sq` | `S(Q) = \|sum_j exp(-i Q.r_j)\|^2 / N` of the centroids, `Q = 2 pi n / L != 0`, by direct summation in double precision (separable phase tables, half space `S(Q) = S(-Q)`) | Eq. 4 |
   | `chi` | `chi_V(Q) = \|F(Q)\|^2 [prod_i a sinc(Q_i a / 2)]^2 / V`, `F` the FFT of the voxel indicator (FFTW r2c, threaded, wisdom kept), `a = L / M`; for spheres also exactly, `\|sum_j exp(-i Q.r_j)\|^2 m(Q)^2 / V` with `m(Q) = 4 pi (sin QR - QR cos QR) / Q^3`, and the voxel path's error against it | Eq. 12 |
   | `voxels` | `M^3` voxels of the box, voxel `(i, j, k)` centred at `((i + 1/2) a, ...)`, solid when its centre is inside a particle or a periodic image; `phi_voxel` beside `phi` | Sec. III B |
-  | `pores` | by `--pores`: `voxel` (default), on the `--pore-voxels` grid the exact periodic Euclidean distance transform of the void (distance from each void voxel centre to the nearest solid voxel centre, minimum image; Felzenszwalb–Huttenlocher, parallel over lines); `refined`, each void voxel centre's certified distance to the nearest particle surface (feature transform, then the exact point-to-superball distance); `exact`, K random points of the void without voxels; then `F(delta)`, `P(delta)`, `<delta>`, `<delta^2>`, the largest pore (refined, exact: a local maximum by Nelder-Mead) and the saturation check `max delta < w / 2`, also divided by `w` | Eqs. 13–15 |
+  | `pores` | by `--pores`: `refined` (default; at `--pore-voxels` 200), each void voxel centre's certified distance to the nearest particle surface (feature transform, then the exact point-to-superball distance); `voxel` (the paper's; at 500 unless `--pore-voxels` says), on the `--pore-voxels` grid the exact periodic Euclidean distance transform of the void (distance from each void voxel centre to the nearest solid voxel centre, minimum image; Felzenszwalb–Huttenlocher, parallel over lines); `exact`, K random points of the void without voxels; then `F(delta)`, `P(delta)`, `<delta>`, `<delta^2>`, the largest pore (refined, exact: a local maximum by Nelder-Mead) and the saturation check `max delta < w / 2`, also divided by `w` | Eqs. 13–15 |
   | `transport` | from the pore-size moments, diffusion-controlled limit: formation factor from the `zeta_2` interpolation of Sec. V A, `k ~ <delta^2> / F`, `tau <= <delta>^2 / D`, `T1 <= <delta^2> / D`, each also over `w^2` | Eqs. 16–20 |
   | `hyper` | the excess spreadability `E(t)` as the exact lattice sum over the box's wave vectors, its local exponent, `alpha` from the long-time decay with a bootstrap error, the fit `chi_V = a0 + a1 Q^alpha` at that `alpha` (and the free fit), `H = a0 / chi_V(Q_peak)`, the Debye medium on the same time axis; `chi_V` exact (no voxels) at `Q w <= --chi-exact-qmax` (docs/hyperuniformity.md) | Eqs. FT_spread, PLF, fit, HX, deb |
 
@@ -141,7 +141,7 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   for that file; the warning names the option to change (`--alpha-window`, `--fit-qmax`,
   `--voxels`).
 - **Under `mpirun`** (builds with `-DSBPACK_WITH_MPI=ON`; docs/scale-out.md): `--distribute
-  grids` also refuses `--pores refined|exact`. Under Slurm (scripts/slurm/, docs/scale-out.md),
+  grids` takes `--pores voxel` (its default there) and refuses `--pores refined|exact`. Under Slurm (scripts/slurm/, docs/scale-out.md),
   preemption, `scontrol requeue` and the time-limit warning resume bit for bit (tests
   `slurm_preemption` and, against a real Slurm, `slurm_real`).
 

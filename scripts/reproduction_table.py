@@ -141,8 +141,8 @@ TRANSPORT_HEADER = ("p", "w / D", "<delta> / w (1e-2)", "k / w^2 (1e-4)", "tau D
                     "a0 (paper)", "a1 (1e-3, ours)", "a1 (paper)", "H (1e-3, ours)", "H (paper)")
 TRANSPORT_NOTE = (
     "Mean +- sd over the ensemble's packings (the value alone for one packing); w / D of each "
-    "packing on its own (as sbanalyze info prints it), averaged. Pore sizes and transport: the voxel method unless "
-    "sbanalyze was given --pores refined|exact; k, tau and T1 are the paper's bounds (Eqs. "
+    "packing on its own (as sbanalyze info prints it), averaged. Pore sizes and transport: "
+    "{pores}; k, tau and T1 are the paper's bounds (Eqs. "
     "17-20, diffusion-controlled: T1 D / w^2 = <delta^2> / w^2). alpha from the spreadability "
     "fit; a0, a1, H from the chi_V fit (docs/hyperuniformity.md). The paper prints no table of "
     "w, pore sizes or transport (its figures only).")
@@ -154,6 +154,18 @@ ORDER_NOTE = (
     "Q6 over the bonds shorter than the first minimum of g2, T over the fcc shells, the cubatic "
     "P4 of the axes (none for spheres); ordered: packings the verdict calls ordered (mean local "
     "q6 >= 0.5, T >= 0.3 over its 12 shells or P4 >= 0.5; fcc: q6 0.575, T 1). The paper reports none of them.")
+
+
+def pore_method(results):
+    """The pore-size methods of the files, as their pore_size groups record them."""
+    methods = set()
+    for f in results["files"].values():
+        if "pore_size" in f:
+            a = f["pore_size"].attrs
+            method = a["method"].decode() if isinstance(a["method"], bytes) else str(a["method"])
+            voxels = int(a.get("voxels", 0))
+            methods.add(f"{method} at M = {voxels}" if voxels else method)
+    return ", ".join(sorted(methods)) + " (sbanalyze --pores, --pore-voxels)" if methods else "none"
 
 
 def print_table(header, rows, note):
@@ -176,7 +188,7 @@ def main(results_path, reference):
         if any(name in g for g in groups for name in ("pore_size", "hyperuniformity")):
             print()
             print_table(TRANSPORT_HEADER, [transport_row(results, g, paper) for g in groups],
-                        TRANSPORT_NOTE)
+                        TRANSPORT_NOTE.format(pores=pore_method(results)))
 
 
 if __name__ == "__main__":

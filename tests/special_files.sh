@@ -76,8 +76,9 @@ if [[ $rc -ne 0 || "$output" != *"is not a regular file"* ]]; then
     echo "FAIL (rc $rc): FIFO wisdom: $output"; failures=$((failures + 1))
 fi
 # Bad values refused at once, naming their option or variable (defects 7, 8, 10).
-expect "exceed the 500^3" "$sbanalyze" good.h5 --compute pores --pore-points 1099511627776 --json -
-expect "use a smaller --pore-voxels" "$sbanalyze" good.h5 --compute pores --pore-voxels 10000 --json -
+expect "exceed the 200^3" "$sbanalyze" good.h5 --compute pores --pore-points 1099511627776 --json -
+expect "use a smaller --pore-voxels" "$sbanalyze" good.h5 --compute pores --pores voxel --pore-voxels 10000 --json -
+expect "above 1625, the largest grid of --pores refined" "$sbanalyze" good.h5 --compute pores --pore-voxels 10000 --json -
 for deadline in 1e10 99999999999 1e400 0 -1 abc ""; do
     expect "SBPACK_READ_DEADLINE_S='$deadline' is not a number" \
         env SBPACK_READ_DEADLINE_S="$deadline" "$sbanalyze" info good.h5

@@ -126,6 +126,11 @@ void CommandLine::addSubcommands() {
 void CommandLine::finishAnalysis() {
     settings_.inputs.assign(inputs_.begin(), inputs_.end());
     if (!settings_.vdbDirectory.empty()) settings_.analyses.insert(Analysis::Voxels);
+    // The distributed grid's pore sizes are the voxel method's (docs/scale-out.md).
+    if (settings_.distribute == Distribution::Grids && app_.count("--pores") == 0)
+        settings_.poreMethod = PoreMethod::Voxel;
+    if (settings_.poreMethod == PoreMethod::Voxel && app_.count("--pore-voxels") == 0)
+        settings_.poreVoxels = RunSettings::kPaperPoreVoxels; // the paper's method at its M
     if (settings_.poreMethod == PoreMethod::Refined &&
         settings_.poreVoxels > maxFeatureTransformVoxels)
         throw std::invalid_argument(
@@ -139,7 +144,10 @@ void CommandLine::finishAnalysis() {
             settings_.porePoints, m, m * m * m));
     static_cast<void>(ContactNetwork(settings_.contacts)); // throws on a bad tolerance or threshold
     if (!app_.get_subcommands().empty()) return;           // info, convert, schema: no grids
-    settings_.device = resolveComputeDevice(settings_.requestedDevice, settings_.cpuOnlyReason());
+    settings_.device = resolveComputeDevice(settings_.requestedDevice,
+                                            settings_.requestedDevice == ComputeDevice::Cuda
+                                                ? settings_.cudaRefusal()
+                                                : settings_.cpuOnlyReason());
     if (settings_.fftSingle && settings_.device.device != ComputeDevice::Cuda)
         throw std::invalid_argument(
             "option --fft-precision single: only cuFFT has it (--device cuda on a CUDA build)");

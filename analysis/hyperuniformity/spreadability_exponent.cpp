@@ -7,6 +7,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace sbpack {
@@ -58,15 +60,29 @@ DiscreteSpectrum resampled(const DiscreteSpectrum& s, Random& random) {
     return r;
 }
 
-/// alpha of replica r (its own stream: the same for any number of threads).
-double replicaExponent(std::span<const DiscreteSpectrum> members, const ExponentWindow& window,
-                       std::uint64_t seed, int r) {
+/// The window's and the extrapolated alpha of replica r (its own stream: the same for any
+/// number of threads).
+std::pair<double, double> replicaExponents(std::span<const DiscreteSpectrum> members,
+                                           const ExponentWindow& window, std::uint64_t seed,
+                                           int r) {
     Random random = Random::stream(seed, r);
     std::vector<DiscreteSpectrum> replica;
     replica.reserve(members.size());
     for (const DiscreteSpectrum& s : members)
         replica.push_back(resampled(s, random));
-    return windowExponent(SpreadabilityCurve(replica), window);
+    const SpreadabilityCurve curve(replica);
+    return {windowExponent(curve, window), extrapolatedExponent(curve, window)};
+}
+
+/// Sample standard deviation of the values (Welford).
+double standardDeviation(const std::vector<double>& values) {
+    double mean = 0.0, m2 = 0.0;
+    for (std::size_t r = 0; r < values.size(); ++r) {
+        const double delta = values[r] - mean;
+        mean += delta / static_cast<double>(r + 1);
+        m2 += delta * (values[r] - mean);
+    }
+    return std::sqrt(m2 / static_cast<double>(values.size() - 1));
 }
 
 } // namespace
@@ -92,6 +108,19 @@ double windowExponent(const std::function<double(double)>& logExcess,
 
 double windowExponent(const SpreadabilityCurve& curve, const ExponentWindow& window) {
     return windowExponent([&](double t) { return curve.at(t).logExcess; }, window);
+}
+
+double extrapolatedExponent(const SpreadabilityCurve& curve, const ExponentWindow& window) {
+    double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+    const double ratio = std::log(window.tMax / window.tMin) / (kExtrapolationPoints - 1);
+    for (int k = 0; k < kExtrapolationPoints; ++k) {
+        const double t = window.tMin * std::exp(k * ratio);
+        const double x = 1.0 / t, y = -3.0 - 2.0 * curve.at(t).exponent;
+        sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    const double n = kExtrapolationPoints;
+    const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    return (sy - slope * sx) / n;
 }
 
 double sampledExponent(const std::vector<double>& t, const std::vector<double>& excess,
@@ -120,20 +149,17 @@ ExponentEstimate estimateExponent(const SpreadabilityCurve& curve,
         e.windowLow = std::min(e.windowLow, alpha);
         e.windowHigh = std::max(e.windowHigh, alpha);
     }
+    e.extrapolated = extrapolatedExponent(curve, window);
     e.replicas = replicas;
     if (replicas < 2) return e;
-    std::vector<double> alphas(static_cast<std::size_t>(replicas));
+    std::vector<double> alphas(static_cast<std::size_t>(replicas)), limits(alphas.size());
     parallelFor(0, replicas, 1, [&](std::int64_t begin, std::int64_t end) {
         for (std::int64_t r = begin; r < end; ++r)
-            alphas[r] = replicaExponent(members, window, seed, static_cast<int>(r));
+            std::tie(alphas[r], limits[r]) =
+                replicaExponents(members, window, seed, static_cast<int>(r));
     });
-    double mean = 0.0, m2 = 0.0;
-    for (int r = 0; r < replicas; ++r) {
-        const double delta = alphas[r] - mean;
-        mean += delta / (r + 1);
-        m2 += delta * (alphas[r] - mean);
-    }
-    e.standardError = std::sqrt(m2 / (replicas - 1));
+    e.standardError = standardDeviation(alphas);
+    e.extrapolatedError = standardDeviation(limits);
     return e;
 }
 

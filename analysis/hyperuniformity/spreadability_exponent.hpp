@@ -44,6 +44,16 @@ ExponentWindow findExponentWindow(const SpreadabilityCurve& curve, double peakQw
 double windowExponent(const SpreadabilityCurve& curve, const ExponentWindow& window);
 double windowExponent(const std::function<double(double)>& logExcess, const ExponentWindow& window);
 
+/// Time points of the extrapolation in a window (log-spaced, ends included).
+inline constexpr int kExtrapolationPoints = 24;
+
+/// The local alpha, -3 - 2 d ln E / d ln t, extrapolated to t -> infinity: the least-squares line
+/// of it against 1/t through kExtrapolationPoints log-spaced times of the window, at 1/t = 0.
+/// For chi_V = a1 Q^alpha (1 + b Q^2 + ...) the local alpha is alpha + c / t + O(1/t^2), so the
+/// line removes the leading finite-time bias of the window's mean (bench/RESULTS.md, "alpha's
+/// finite-time bias").
+double extrapolatedExponent(const SpreadabilityCurve& curve, const ExponentWindow& window);
+
 /// The same from E sampled at times t (ascending), ln E interpolated linearly in ln t at the
 /// window's ends (e.g. an ensemble's mean E(t)). Throws std::domain_error if the samples do
 /// not cover the window.
@@ -58,6 +68,8 @@ struct ExponentEstimate {
     /// The least and largest alpha over the windows that end at t_2 / 2, t_2 and 2 t_2 (same
     /// t_1): how much alpha owes to where the window ends.
     double windowLow = 0.0, windowHigh = 0.0;
+    /// extrapolatedExponent of the curve and its standard deviation over the same replicas.
+    double extrapolated = 0.0, extrapolatedError = 0.0;
 };
 
 /// alpha of the pooled members in `window` from their `curve` (SpreadabilityCurve(members), made

@@ -266,30 +266,7 @@ TEST(Hyperuniformity, AWindowPastTheCutoffTimeIsRefused) {
 
 TEST(Hyperuniformity, RandomSequentialAdditionIsNotHyperuniform) {
     // Random sequential addition of spheres to phi = 0.3: S(0) > 0, alpha = 0.
-    Packing packing;
-    packing.p = 1.0;
-    packing.semiAxis = 0.5;
-    const int n = 1500;
-    packing.boxLength = std::cbrt(n * (kPi / 6.0) / 0.3);
-    std::mt19937_64 random(41);
-    std::uniform_real_distribution<double> uniform(0.0, packing.boxLength);
-    while (static_cast<int>(packing.positions.size()) < n) {
-        const Vector3d r(uniform(random), uniform(random), uniform(random));
-        bool free = true;
-        for (const Vector3d& s : packing.positions) {
-            Vector3d d = r - s;
-            for (int i = 0; i < 3; ++i)
-                d[i] -= packing.boxLength * std::round(d[i] / packing.boxLength);
-            if (d.squaredNorm() < 1.0) {
-                free = false;
-                break;
-            }
-        }
-        if (free) {
-            packing.positions.push_back(r);
-            packing.orientations.push_back(Quaterniond::Identity());
-        }
-    }
+    const Packing packing = testing::randomSequentialAddition(1500, 0.3, 41);
     const HyperuniformityResult r = exactChain(packing, 12.0);
     std::printf("RSA: alpha %.3f +- %.3f in t = [%.3g, %.3g], a0 %.3g +- %.2g, H %.3g\n",
                 r.alpha.alpha, r.alpha.standardError, r.window.tMin, r.window.tMax, r.fit.a0,

@@ -49,7 +49,8 @@ TEST(OptionTable, PrintedDefaultsAreTheDefaultsUsed) {
     const RunSettings parsed = parseAnalyzeArguments({"a.h5", "--out", "r.h5"});
     EXPECT_EQ(shownDefaults(parsed), before);
     EXPECT_EQ(parsed.voxels, 300);
-    EXPECT_EQ(parsed.poreVoxels, 500);
+    EXPECT_EQ(parsed.poreVoxels, 200);
+    EXPECT_EQ(parsed.poreMethod, PoreMethod::Refined);
     EXPECT_DOUBLE_EQ(parsed.hyperuniformity.fitQmaxW, 1.4); // the paper's fit range
 }
 
@@ -59,7 +60,7 @@ TEST(OptionTable, HelpPrintsTheDefaultFromTheSettings) {
     EXPECT_NE(optionHelp(findOption("voxels"), s).find("(default 123)"), std::string::npos);
     EXPECT_NE(optionHelp(findOption("spread-times"), s).find("(default 1e-3,1e4)"),
               std::string::npos);
-    EXPECT_NE(usage().find("(default 500, as the paper)"), std::string::npos);
+    EXPECT_NE(usage().find("(default 200; with --pores voxel"), std::string::npos);
     EXPECT_THROW(findOption("no-such-option"), std::logic_error);
 }
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <random>
 
 namespace sbpack::testing {
@@ -34,6 +35,35 @@ inline Packing latticePacking(double p, int cells, double spacing, double jitter
                             .normalized();
                 packing.orientations.push_back(q);
             }
+    return packing;
+}
+
+/// Random sequential addition of n unit-diameter spheres to packing fraction phi (a cubic box
+/// of edge (n (pi / 6) / phi)^(1/3)): a fixture that is not hyperuniform (S(0) > 0, alpha = 0).
+inline Packing randomSequentialAddition(int n, double phi, std::uint64_t seed) {
+    Packing packing;
+    packing.p = 1.0;
+    packing.semiAxis = 0.5;
+    packing.boxLength = std::cbrt(n * (std::numbers::pi / 6.0) / phi);
+    std::mt19937_64 random(seed);
+    std::uniform_real_distribution<double> uniform(0.0, packing.boxLength);
+    while (static_cast<int>(packing.positions.size()) < n) {
+        const Vector3d r(uniform(random), uniform(random), uniform(random));
+        bool free = true;
+        for (const Vector3d& s : packing.positions) {
+            Vector3d d = r - s;
+            for (int i = 0; i < 3; ++i)
+                d[i] -= packing.boxLength * std::round(d[i] / packing.boxLength);
+            if (d.squaredNorm() < 1.0) {
+                free = false;
+                break;
+            }
+        }
+        if (free) {
+            packing.positions.push_back(r);
+            packing.orientations.push_back(Quaterniond::Identity());
+        }
+    }
     return packing;
 }
 

@@ -86,7 +86,7 @@ TEST(CommandLine, ParsesTheAnalysisOptions) {
     EXPECT_EQ(s.analyses, (AnalysisSet{Analysis::StructureFactor, Analysis::Voxels})); // --vdb
     EXPECT_EQ(s.threads, 1);
     EXPECT_EQ(s.voxels, 64);
-    EXPECT_EQ(s.poreVoxels, 500);
+    EXPECT_EQ(s.poreVoxels, 200);
     EXPECT_DOUBLE_EQ(s.maxQw, 12.5);
     EXPECT_EQ(s.fft.planning, FftPlanning::Estimate);
     EXPECT_TRUE(s.fft.wisdomFile.empty());
@@ -104,7 +104,19 @@ TEST(CommandLine, ParsesTheAnalysisOptions) {
         std::isinf(parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--fft-planning-budget", "none"})
                        .fft.planningBudget));
     const RunSettings defaults = parseAnalyzeArguments({"a.h5", "--out", "r.h5"});
-    EXPECT_EQ(defaults.poreMethod, PoreMethod::Voxel);
+    EXPECT_EQ(defaults.poreMethod, PoreMethod::Refined);
+    EXPECT_EQ(defaults.poreVoxels, 200);
+    // The paper's voxel method at the paper's M unless --pore-voxels says otherwise; the
+    // distributed grid's pores are voxel pores.
+    EXPECT_EQ(parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--pores", "voxel"}).poreVoxels, 500);
+    EXPECT_EQ(
+        parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--pores", "voxel", "--pore-voxels", "300"})
+            .poreVoxels,
+        300);
+    const RunSettings distributed =
+        parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--distribute", "grids"});
+    EXPECT_EQ(distributed.poreMethod, PoreMethod::Voxel);
+    EXPECT_EQ(distributed.poreVoxels, 500);
     EXPECT_DOUBLE_EQ(defaults.fft.planningBudget, kDefaultFftPlanningBudget);
     EXPECT_EQ(defaults.voxels, 300);
     EXPECT_DOUBLE_EQ(defaults.maxQw, 30.0);

@@ -23,7 +23,7 @@ options=(--compute contacts,sq,chi,pores,transport --voxels 72 --pore-voxels 72 
 run "${inputs[@]}" "${options[@]}" --out ranks.h5 2>/dev/null
 $compare one.h5 ranks.h5
 
-grids=(--compute chi,pores,transport --fft-plan estimate --fft-wisdom none --quiet)
+grids=(--compute chi,pores,transport --pores voxel --fft-plan estimate --fft-wisdom none --quiet)
 for m in 96 128; do
     "$sbanalyze" "$data/mrj-p1.5-1000.h5" "$data/mrj-spheres-5000.h5" "${grids[@]}" \
         --voxels $m --pore-voxels $m --threads 2 --out "grid-one-$m.h5" 2>/dev/null

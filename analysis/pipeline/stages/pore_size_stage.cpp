@@ -45,7 +45,8 @@ namespace {
 PoreSizeMap poreSizeMap(const FileContext& context, int m, bool features) {
     checkPoreSizeMemory(m);
 #ifdef SBPACK_WITH_CUDA
-    if (context.settings().device.device == ComputeDevice::Cuda) return cudaPoreSizeMap(context, m);
+    if (context.settings().device.device == ComputeDevice::Cuda && !features)
+        return cudaPoreSizeMap(context, m); // refined pore sizes run on the CPU (docs/gpu.md)
 #endif
     std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m);
     double voxelSize = 0.0;
