@@ -24,7 +24,7 @@ using namespace schema::columns;
 using R = HyperuniformityFigures;
 using H = HyperuniformityResult;
 
-inline constexpr schema::FieldTable kSpreadability{std::array<schema::Column<R>, 18>{{
+inline constexpr schema::FieldTable kSpreadability{std::array<schema::Column<R>, 20>{{
     {{"source", A, S, "",
       "chi_V used: \"voxel\" (the --voxels grid) or \"exact+voxel\" (exact at Q w <= "
       "chi_exact_qmax, voxels beyond)"},
@@ -34,19 +34,32 @@ inline constexpr schema::FieldTable kSpreadability{std::array<schema::Column<R>,
     {{"phi", A, F, "1", "the phi that normalises E: phi_voxel (voxel) or N v1 / V (exact+voxel)"},
      member<&R::phi>},
     {{"alpha", A, F, "1",
-      "-3 - 2 ln(E(t_fit_max) / E(t_fit_min)) / ln(t_fit_max / t_fit_min) (Eq. PLF)", Mean},
+      "the local alpha -3 - 2 d ln E / d ln t in the window, extrapolated linearly in 1/t to "
+      "t -> infinity (Eq. PLF; docs/hyperuniformity.md, \"alpha\")",
+      Mean},
      member<&R::h, &H::alpha, &ExponentEstimate::alpha>},
-    {{"alpha_stderr", A, F, "1", "standard deviation of alpha over the Poisson bootstrap replicas"},
+    {{"alpha_stderr", A, F, "1",
+      "standard deviation of alpha over the Poisson bootstrap replicas; alpha +- 2 alpha_stderr "
+      "covered the truth in 20 of 20 fixtures of each known exponent"},
      member<&R::h, &H::alpha, &ExponentEstimate::standardError>},
     {{"bootstrap_replicas", A, I, "1", "bootstrap replicas over the wave vectors"},
      member<&R::h, &H::alpha, &ExponentEstimate::replicas>},
-    {{"alpha_window_low", A, F, "1",
+    {{"alpha_end_low", A, F, "1",
       "least alpha over the windows ending at t_fit_max / 2, t_fit_max, 2 t_fit_max"},
-     member<&R::h, &H::alpha, &ExponentEstimate::windowLow>},
-    {{"alpha_window_high", A, F, "1", "largest alpha over those windows"},
-     member<&R::h, &H::alpha, &ExponentEstimate::windowHigh>},
+     member<&R::h, &H::alpha, &ExponentEstimate::endLow>},
+    {{"alpha_end_high", A, F, "1", "largest alpha over those windows"},
+     member<&R::h, &H::alpha, &ExponentEstimate::endHigh>},
+    {{"alpha_window_mean", A, F, "1",
+      "-3 - 2 ln(E(t_fit_max) / E(t_fit_min)) / ln(t_fit_max / t_fit_min): the window's mean "
+      "local alpha (the paper's estimate; biased by the finite times, bench/RESULTS.md)",
+      Mean},
+     member<&R::h, &H::alpha, &ExponentEstimate::windowMean>},
+    {{"alpha_window_mean_stderr", A, F, "1",
+      "standard deviation of alpha_window_mean over the same replicas"},
+     member<&R::h, &H::alpha, &ExponentEstimate::windowMeanError>},
     {{"alpha_pooled", A, F, "1",
-      "ensembles only: alpha of the mean E(t) over the mean window (ln E interpolated in ln t)",
+      "ensembles only: alpha of the mean E(t) over the mean window (the local alpha of "
+      "neighbouring time points, extrapolated in 1/t)",
       Pooled, true},
      +[](const R&, const Scales&) -> Optional { return std::nullopt; }},
     {{"t_fit_min", A, F, "w^2/D",

@@ -60,7 +60,7 @@ DiscreteSpectrum resampled(const DiscreteSpectrum& s, Random& random) {
     return r;
 }
 
-/// The window's and the extrapolated alpha of replica r (its own stream: the same for any
+/// The extrapolated alpha and the window's mean of replica r (its own stream: the same for any
 /// number of threads).
 std::pair<double, double> replicaExponents(std::span<const DiscreteSpectrum> members,
                                            const ExponentWindow& window, std::uint64_t seed,
@@ -71,7 +71,7 @@ std::pair<double, double> replicaExponents(std::span<const DiscreteSpectrum> mem
     for (const DiscreteSpectrum& s : members)
         replica.push_back(resampled(s, random));
     const SpreadabilityCurve curve(replica);
-    return {windowExponent(curve, window), extrapolatedExponent(curve, window)};
+    return {extrapolatedExponent(curve, window), windowExponent(curve, window)};
 }
 
 /// Sample standard deviation of the values (Welford).
@@ -83,6 +83,16 @@ double standardDeviation(const std::vector<double>& values) {
         m2 += delta * (values[r] - mean);
     }
     return std::sqrt(m2 / static_cast<double>(values.size() - 1));
+}
+
+/// The intercept at x = 0 of the least-squares line through (x_k, y_k).
+double interceptAtZero(const std::vector<double>& x, const std::vector<double>& y) {
+    double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+    for (std::size_t k = 0; k < x.size(); ++k)
+        sx += x[k], sy += y[k], sxx += x[k] * x[k], sxy += x[k] * y[k];
+    const auto n = static_cast<double>(x.size());
+    const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    return (sy - slope * sx) / n;
 }
 
 } // namespace
@@ -111,55 +121,54 @@ double windowExponent(const SpreadabilityCurve& curve, const ExponentWindow& win
 }
 
 double extrapolatedExponent(const SpreadabilityCurve& curve, const ExponentWindow& window) {
-    double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
-    const double ratio = std::log(window.tMax / window.tMin) / (kExtrapolationPoints - 1);
+    std::vector<double> inverseTime, local;
+    const double step = std::log(window.tMax / window.tMin) / (kExtrapolationPoints - 1);
     for (int k = 0; k < kExtrapolationPoints; ++k) {
-        const double t = window.tMin * std::exp(k * ratio);
-        const double x = 1.0 / t, y = -3.0 - 2.0 * curve.at(t).exponent;
-        sx += x, sy += y, sxx += x * x, sxy += x * y;
+        const double t = window.tMin * std::exp(k * step);
+        inverseTime.push_back(1.0 / t);
+        local.push_back(-3.0 - 2.0 * curve.at(t).exponent);
     }
-    const double n = kExtrapolationPoints;
-    const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-    return (sy - slope * sx) / n;
+    return interceptAtZero(inverseTime, local);
 }
 
 double sampledExponent(const std::vector<double>& t, const std::vector<double>& excess,
                        const ExponentWindow& window) {
-    const auto logAt = [&](double time) {
-        const auto upper = std::lower_bound(t.begin(), t.end(), time);
-        if (upper == t.end() || (upper == t.begin() && *upper != time) || t.size() != excess.size())
-            throw std::domain_error("alpha: the sampled times do not cover the window");
-        const std::size_t j = static_cast<std::size_t>(upper - t.begin());
-        if (*upper == time) return std::log(excess[j]);
-        const double f = std::log(time / t[j - 1]) / std::log(t[j] / t[j - 1]);
-        return (1.0 - f) * std::log(excess[j - 1]) + f * std::log(excess[j]);
-    };
-    return windowExponent(logAt, window);
+    if (t.size() != excess.size()) throw std::invalid_argument("alpha: times and E differ in size");
+    std::vector<double> inverseTime, local;
+    for (std::size_t j = 0; j + 1 < t.size(); ++j) {
+        if (t[j] < window.tMin || t[j + 1] > window.tMax) continue;
+        inverseTime.push_back(1.0 / std::sqrt(t[j] * t[j + 1]));
+        local.push_back(-3.0 -
+                        2.0 * std::log(excess[j + 1] / excess[j]) / std::log(t[j + 1] / t[j]));
+    }
+    if (local.size() < 2)
+        throw std::domain_error("alpha: fewer than three sampled times lie in the window");
+    return interceptAtZero(inverseTime, local);
 }
 
 ExponentEstimate estimateExponent(const SpreadabilityCurve& curve,
                                   std::span<const DiscreteSpectrum> members,
                                   const ExponentWindow& window, int replicas, std::uint64_t seed) {
     ExponentEstimate e;
-    e.alpha = windowExponent(curve, window);
-    e.windowLow = e.windowHigh = e.alpha;
+    e.alpha = extrapolatedExponent(curve, window);
+    e.windowMean = windowExponent(curve, window);
+    e.endLow = e.endHigh = e.alpha;
     for (const double f : {0.5, 2.0}) {
-        const double alpha =
-            windowExponent(curve, {window.tMin, std::max(f * window.tMax, 1.5 * window.tMin)});
-        e.windowLow = std::min(e.windowLow, alpha);
-        e.windowHigh = std::max(e.windowHigh, alpha);
+        const double alpha = extrapolatedExponent(
+            curve, {window.tMin, std::max(f * window.tMax, 1.5 * window.tMin)});
+        e.endLow = std::min(e.endLow, alpha);
+        e.endHigh = std::max(e.endHigh, alpha);
     }
-    e.extrapolated = extrapolatedExponent(curve, window);
     e.replicas = replicas;
     if (replicas < 2) return e;
-    std::vector<double> alphas(static_cast<std::size_t>(replicas)), limits(alphas.size());
+    std::vector<double> alphas(static_cast<std::size_t>(replicas)), means(alphas.size());
     parallelFor(0, replicas, 1, [&](std::int64_t begin, std::int64_t end) {
         for (std::int64_t r = begin; r < end; ++r)
-            std::tie(alphas[r], limits[r]) =
+            std::tie(alphas[r], means[r]) =
                 replicaExponents(members, window, seed, static_cast<int>(r));
     });
     e.standardError = standardDeviation(alphas);
-    e.extrapolatedError = standardDeviation(limits);
+    e.windowMeanError = standardDeviation(means);
     return e;
 }
 

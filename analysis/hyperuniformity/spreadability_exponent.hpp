@@ -1,10 +1,16 @@
 #pragma once
 // The hyperuniformity exponent alpha from the long-time decay of the excess spreadability,
 // E(t) ~ t^{-(3 + alpha)/2} (paper Eq. PLF; docs/hyperuniformity.md, "alpha"). In a window
-// [t_1, t_2] alpha is the window's mean local exponent,
-//   alpha = -3 - 2 ln(E(t_2) / E(t_1)) / ln(t_2 / t_1)   (the mean of nu = d ln E / d ln t over
-// ln t), with an uncertainty from a Poisson bootstrap over the wave vectors (each one's chi_V is a
-// random variable around its mean). Times are t D / w^2.
+// [t_1, t_2] the local exponent alpha(t) = -3 - 2 d ln E / d ln t still carries the finite-time
+// correction of chi_V = a1 Q^alpha (1 + b Q^2 + ...): alpha(t) = alpha + c / t + O(1/t^2). alpha
+// is the straight line of alpha(t) against 1/t through the window, taken at 1/t = 0; the window's
+// mean local alpha (the paper's estimate),
+//   -3 - 2 ln(E(t_2) / E(t_1)) / ln(t_2 / t_1),
+// is kept beside it. On fixtures with known exponents the mean is biased by -0.33 (perturbed
+// lattices, alpha = 2) and +0.25 (RSA, alpha = 0), the extrapolation by -0.09 and +0.07, within
+// its uncertainty, a Poisson bootstrap over the wave vectors (each one's chi_V is a random
+// variable around its mean): bench/RESULTS.md, "alpha on fixtures with known exponents". Times
+// are t D / w^2.
 //
 // The window the code finds: it starts when the peak of chi_V has decayed away,
 // t_1 = kPeakDecay / (Q_peak w)^2 (the microscopic transient: the wave vectors near the peak
@@ -39,41 +45,40 @@ inline constexpr double kMinWindowDecades = 0.2;
 /// the grid too coarse, for a long-time regime), naming both ends.
 ExponentWindow findExponentWindow(const SpreadabilityCurve& curve, double peakQw);
 
-/// alpha = -3 - 2 ln(E(t_2) / E(t_1)) / ln(t_2 / t_1), of a curve or of any ln E(t) (e.g. a
-/// continuum reference).
+/// The window's mean local alpha, -3 - 2 ln(E(t_2) / E(t_1)) / ln(t_2 / t_1), of a curve or of
+/// any ln E(t) (e.g. a continuum reference).
 double windowExponent(const SpreadabilityCurve& curve, const ExponentWindow& window);
 double windowExponent(const std::function<double(double)>& logExcess, const ExponentWindow& window);
 
 /// Time points of the extrapolation in a window (log-spaced, ends included).
 inline constexpr int kExtrapolationPoints = 24;
 
-/// The local alpha, -3 - 2 d ln E / d ln t, extrapolated to t -> infinity: the least-squares line
-/// of it against 1/t through kExtrapolationPoints log-spaced times of the window, at 1/t = 0.
-/// For chi_V = a1 Q^alpha (1 + b Q^2 + ...) the local alpha is alpha + c / t + O(1/t^2), so the
-/// line removes the leading finite-time bias of the window's mean (bench/RESULTS.md, "alpha's
-/// finite-time bias").
+/// alpha: the local alpha, -3 - 2 d ln E / d ln t (exact, SpreadabilityCurve::at), at
+/// kExtrapolationPoints log-spaced times of the window, its least-squares line against 1/t taken
+/// at 1/t = 0.
 double extrapolatedExponent(const SpreadabilityCurve& curve, const ExponentWindow& window);
 
-/// The same from E sampled at times t (ascending), ln E interpolated linearly in ln t at the
-/// window's ends (e.g. an ensemble's mean E(t)). Throws std::domain_error if the samples do
-/// not cover the window.
+/// The same from E sampled at times t (ascending; e.g. an ensemble's mean E(t)): the local
+/// alpha of each pair of neighbouring samples inside the window, at their geometric mean time.
+/// Throws std::domain_error if fewer than three samples lie in the window.
 double sampledExponent(const std::vector<double>& t, const std::vector<double>& excess,
                        const ExponentWindow& window);
 
 struct ExponentEstimate {
-    double alpha = 0.0;
+    double alpha = 0.0; ///< extrapolatedExponent
     /// Standard deviation of alpha over the bootstrap replicas (0 when replicas = 0).
     double standardError = 0.0;
     int replicas = 0;
     /// The least and largest alpha over the windows that end at t_2 / 2, t_2 and 2 t_2 (same
     /// t_1): how much alpha owes to where the window ends.
-    double windowLow = 0.0, windowHigh = 0.0;
-    /// extrapolatedExponent of the curve and its standard deviation over the same replicas.
-    double extrapolated = 0.0, extrapolatedError = 0.0;
+    double endLow = 0.0, endHigh = 0.0;
+    /// windowExponent, the paper's estimate, and its standard deviation over the same replicas.
+    double windowMean = 0.0, windowMeanError = 0.0;
 };
 
-/// alpha of the pooled members in `window` from their `curve` (SpreadabilityCurve(members), made
-/// once by the caller), with the Poisson bootstrap: each wave vector listed
+/// alpha (and the window's mean) of the pooled members in `window` from their `curve`
+/// (SpreadabilityCurve(members), made once by the caller), with the Poisson bootstrap: each wave
+/// vector listed
 /// one by one (DiscreteSpectrum::modes) is weighted by an independent Poisson(1) count in each
 /// replica (seeded; the same seed gives the same result).
 ExponentEstimate estimateExponent(const SpreadabilityCurve& curve,

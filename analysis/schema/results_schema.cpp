@@ -17,7 +17,7 @@ using namespace columns;
 constexpr Field kRun[] = {
     {"format", A, S, "", "\"sbpack.results\""},
     {"format_version", A, I, "1",
-     "3 (this layout; 2 differs only in the fields renamed, \"Names\")"},
+     "4 (this layout; 2 and 3 differ in the fields renamed, \"Names\")"},
     {"sbanalyze_version", A, S, "", "version of the sbanalyze that wrote the file"},
     {"compute", A, S, "", "the analyses run, comma-separated (--compute with what they need)"},
     {"threads", A, I, "1", "threads of the run (--threads), per rank"},
@@ -33,6 +33,9 @@ constexpr Field kRun[] = {
 constexpr RenamedField kRenamed[] = {
     {"transport", "mean_survival_time_scaled", "mean_survival_time_w2", 3},
     {"transport", "principal_relaxation_time_scaled", "principal_relaxation_time_w2", 3},
+    // alpha became the extrapolated local alpha; the window's mean it was keeps its own name.
+    {"spreadability", "alpha", "alpha_window_mean", 4},
+    {"spreadability", "alpha_stderr", "alpha_window_mean_stderr", 4},
 };
 
 constexpr Field kFile[] = {

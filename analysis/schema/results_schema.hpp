@@ -16,7 +16,7 @@ namespace sbpack::schema {
 inline constexpr std::string_view kFormat = "sbpack.results";
 inline constexpr std::string_view kSummaryFormat = "sbpack.summary";
 /// 3: the transport times reduced by w^2 / D named as the other reduced fields (renamedFields).
-inline constexpr std::int64_t kFormatVersion = 3;
+inline constexpr std::int64_t kFormatVersion = 4;
 
 enum class Kind { Attribute, Dataset };
 enum class Type { Float, Int, String };

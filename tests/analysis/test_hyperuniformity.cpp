@@ -231,9 +231,14 @@ TEST(Hyperuniformity, PerturbedLatticeHasAlphaNearTwo) {
     const HyperuniformityResult r = exactChain(packing, 3.0);
     std::printf("perturbed lattice: alpha %.3f +- %.3f in t = [%.3g, %.3g]\n", r.alpha.alpha,
                 r.alpha.standardError, r.window.tMin, r.window.tMax);
-    EXPECT_GT(r.alpha.alpha, 1.6);
-    EXPECT_LT(r.alpha.alpha, 2.3);
+    // alpha (extrapolated in 1/t) covers the truth within two standard errors; the window's
+    // mean lies below it, by the finite times (bench/RESULTS.md, "alpha on fixtures with known
+    // exponents": 20 of 20 such lattices covered).
     EXPECT_GT(r.alpha.standardError, 0.0);
+    EXPECT_NEAR(r.alpha.alpha, 2.0, 2.0 * r.alpha.standardError);
+    EXPECT_LT(r.alpha.windowMean, r.alpha.alpha);
+    EXPECT_LE(r.alpha.endLow, r.alpha.alpha);
+    EXPECT_GE(r.alpha.endHigh, r.alpha.alpha);
     EXPECT_LT(r.window.tMin, r.window.tMax);
     // The points kept with the fit are the ones it fitted: in the window, and fitting them again
     // gives the same a0 and a1.
@@ -272,6 +277,40 @@ TEST(Hyperuniformity, RandomSequentialAdditionIsNotHyperuniform) {
                 r.alpha.alpha, r.alpha.standardError, r.window.tMin, r.window.tMax, r.fit.a0,
                 r.fit.a0Error, r.h);
     EXPECT_NEAR(r.alpha.alpha, 0.0, 0.3);
+    EXPECT_NEAR(r.alpha.alpha, 0.0, 2.0 * r.alpha.standardError);
+}
+
+TEST(Hyperuniformity, ExtrapolationRemovesTheDebyeMediumsFiniteTimeBias) {
+    // The Debye medium's chi_V on the wave vectors of a box of 200 a, no noise: its local alpha
+    // tends to 0 as c / t. In t = 10 ... t_c / 4 the window's mean is -0.13, the line in 1/t at
+    // 1/t = 0 within 0.02 of 0.
+    const double phi = 0.3, box = 200.0;
+    DiscreteSpectrum s;
+    s.source = "exact";
+    s.boxLength = box;
+    s.meanWidth = 1.0;
+    s.phi = phi;
+    s.cutoffQ = INFINITY;
+    const int reach = 40; // Q a <= 1.26: weight exp(-(Q a)^2 t) below e^{-15} at t = 10
+    s.sumByN2.assign(3 * reach * reach + 1, 0.0);
+    for (int x = -reach; x <= reach; ++x)
+        for (int y = -reach; y <= reach; ++y)
+            for (int z = -reach; z <= reach; ++z) {
+                const std::int64_t n2 = x * x + y * y + z * z;
+                if (n2 != 0)
+                    s.sumByN2[n2] +=
+                        debyeSpectralDensity(2 * kPi * std::sqrt(double(n2)) / box, phi, 1.0);
+            }
+    const SpreadabilityCurve curve(std::span(&s, 1));
+    const ExponentWindow window{10.0, curve.cutoffTime() / kCutoffFraction};
+    const ExponentEstimate e = estimateExponent(curve, std::span(&s, 1), window, 0);
+    EXPECT_LT(e.windowMean, -0.1);
+    EXPECT_NEAR(e.alpha, 0.0, 0.02);
+    // The ensemble path's estimate from E sampled on a time grid agrees with the exact one.
+    std::vector<double> t, excess;
+    for (double time = 1.0; time <= 300.0; time *= std::pow(10.0, 1.0 / 40))
+        t.push_back(time), excess.push_back(curve.excess(time));
+    EXPECT_NEAR(sampledExponent(t, excess, window), e.alpha, 0.01);
 }
 
 /// A spectrum of every wave vector up to Q w = 10 in a box of box wave number 2 pi w / L = 0.4

@@ -55,13 +55,14 @@ bool runHyperuniformity(FileContext& context, schema::Record& record) {
     }
     context.progress().stageDone(
         "hyperuniformity", clock.seconds(),
-        fmt::format("alpha = {} +- {} (windows: {} .. {}; t D / w^2 in [{}, {}], {}), H = {} +- {} "
-                    "(a0 = {} w^3, chi_peak = {} w^3 at Q w = {})",
+        fmt::format("alpha = {} +- {} (window ends: {} .. {}; window mean {}; t D / w^2 in [{}, "
+                    "{}], {}), H = {} +- {} (a0 = {} w^3, chi_peak = {} w^3 at Q w = {})",
                     describe(h.alpha.alpha, 3), describe(h.alpha.standardError, 2),
-                    describe(h.alpha.windowLow, 3), describe(h.alpha.windowHigh, 3),
-                    describe(h.window.tMin, 3), describe(h.window.tMax, 3), spectrum.source,
-                    describe(h.h, 3), describe(h.fit.a0Error / h.peak.chi, 2),
-                    describe(h.fit.a0, 3), describe(h.peak.chi, 4), describe(h.peak.qw, 3)));
+                    describe(h.alpha.endLow, 3), describe(h.alpha.endHigh, 3),
+                    describe(h.alpha.windowMean, 3), describe(h.window.tMin, 3),
+                    describe(h.window.tMax, 3), spectrum.source, describe(h.h, 3),
+                    describe(h.fit.a0Error / h.peak.chi, 2), describe(h.fit.a0, 3),
+                    describe(h.peak.chi, 4), describe(h.peak.qw, 3)));
     const HyperuniformityFigures figures{std::move(h), spectrum.source, spectrum.phi,
                                          context.settings().chiExactQw, clock.seconds()};
     hyperuniformity_fields::kSpreadability.fill(record, figures, context.scales());
