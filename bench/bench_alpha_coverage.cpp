@@ -11,16 +11,15 @@
 //
 //   bench_alpha_coverage [COUNT] [REPLICAS] [THREADS]      (default 20, 100 and 2)
 
-#include "hyperuniformity/debye_medium.hpp"
 #include "hyperuniformity/hyperuniformity.hpp"
 #include "parallel/parallel.hpp"
 #include "spectral/exact_spectral_density.hpp"
 #include "test_packings.hpp"
+#include "test_spectra.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <numbers>
 #include <string>
 
 using namespace sbpack;
@@ -78,23 +77,7 @@ void runFamily(const Family& family, int count, int replicas) {
 
 /// The Debye medium (phi = 0.3, a = 1 = w) on the wave vectors |n| <= 40 of a box of 200 a.
 void debyeRow() {
-    const double box = 200.0;
-    DiscreteSpectrum s;
-    s.source = "exact";
-    s.boxLength = box;
-    s.meanWidth = 1.0;
-    s.phi = 0.3;
-    s.cutoffQ = INFINITY;
-    const int reach = 40;
-    s.sumByN2.assign(3 * reach * reach + 1, 0.0);
-    for (int x = -reach; x <= reach; ++x)
-        for (int y = -reach; y <= reach; ++y)
-            for (int z = -reach; z <= reach; ++z) {
-                const int n2 = x * x + y * y + z * z;
-                if (n2 == 0) continue;
-                const double q = 2.0 * std::numbers::pi * std::sqrt(double(n2)) / box;
-                s.sumByN2[static_cast<std::size_t>(n2)] += debyeSpectralDensity(q, s.phi, 1.0);
-            }
+    const DiscreteSpectrum s = testing::debyeBoxSpectrum(0.3, 1.0, 200.0, 40);
     const SpreadabilityCurve curve(std::span(&s, 1));
     const ExponentWindow window{10.0, curve.cutoffTime() / kCutoffFraction};
     const ExponentEstimate e = estimateExponent(curve, std::span(&s, 1), window, 0);

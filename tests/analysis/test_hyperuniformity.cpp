@@ -18,6 +18,7 @@
 #include "voxels/voxelization.hpp"
 
 #include "test_packings.hpp"
+#include "test_spectra.hpp"
 
 #include <gtest/gtest.h>
 
@@ -92,22 +93,7 @@ TEST(Debye, NoAlphaWindowInABoxOfTwentyA) {
     // A box of 20 a: t_c / 4 = (20 / 2 pi)^2 / 4 = 2.5 a^2 / D, before the tail (the weight
     // Q^2 chi_V peaks at Q a = 1, whose transient lasts to t = 10).
     const double phi = 0.3, a = 1.0, box = 20.0;
-    DiscreteSpectrum s;
-    s.source = "exact";
-    s.boxLength = box;
-    s.meanWidth = a;
-    s.phi = phi;
-    s.cutoffQ = INFINITY;
-    const int reach = 60;
-    s.sumByN2.assign(3 * reach * reach + 1, 0.0);
-    for (int x = -reach; x <= reach; ++x)
-        for (int y = -reach; y <= reach; ++y)
-            for (int z = -reach; z <= reach; ++z) {
-                const std::int64_t n2 = x * x + y * y + z * z;
-                if (n2 == 0) continue;
-                const double q = 2 * kPi * std::sqrt(double(n2)) / box;
-                s.sumByN2[n2] += debyeSpectralDensity(q, phi, a);
-            }
+    const DiscreteSpectrum s = testing::debyeBoxSpectrum(phi, a, box, 60);
     const SpreadabilityCurve curve(std::span(&s, 1));
     EXPECT_NEAR(curve.cutoffTime(), std::pow(box / (2 * kPi), 2), 1e-12);
     EXPECT_THROW(findExponentWindow(curve, 1.0), std::domain_error);
@@ -284,23 +270,8 @@ TEST(Hyperuniformity, ExtrapolationRemovesTheDebyeMediumsFiniteTimeBias) {
     // The Debye medium's chi_V on the wave vectors of a box of 200 a, no noise: its local alpha
     // tends to 0 as c / t. In t = 10 ... t_c / 4 the window's mean is -0.13, the line in 1/t at
     // 1/t = 0 within 0.02 of 0.
-    const double phi = 0.3, box = 200.0;
-    DiscreteSpectrum s;
-    s.source = "exact";
-    s.boxLength = box;
-    s.meanWidth = 1.0;
-    s.phi = phi;
-    s.cutoffQ = INFINITY;
-    const int reach = 40; // Q a <= 1.26: weight exp(-(Q a)^2 t) below e^{-15} at t = 10
-    s.sumByN2.assign(3 * reach * reach + 1, 0.0);
-    for (int x = -reach; x <= reach; ++x)
-        for (int y = -reach; y <= reach; ++y)
-            for (int z = -reach; z <= reach; ++z) {
-                const std::int64_t n2 = x * x + y * y + z * z;
-                if (n2 != 0)
-                    s.sumByN2[n2] +=
-                        debyeSpectralDensity(2 * kPi * std::sqrt(double(n2)) / box, phi, 1.0);
-            }
+    // Q a <= 1.26 at |n_i| <= 40: weight exp(-(Q a)^2 t) below e^{-15} at t = 10.
+    const DiscreteSpectrum s = testing::debyeBoxSpectrum(0.3, 1.0, 200.0, 40);
     const SpreadabilityCurve curve(std::span(&s, 1));
     const ExponentWindow window{10.0, curve.cutoffTime() / kCutoffFraction};
     const ExponentEstimate e = estimateExponent(curve, std::span(&s, 1), window, 0);
