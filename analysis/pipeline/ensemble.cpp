@@ -131,21 +131,30 @@ void reduceCurve(const schema::Field& f, const Sources& in, schema::Record& out)
         .set("files", c.files);
 }
 
-/// Element-wise mean and standard deviation of a dataset on a grid common to the members.
-void reducePointwise(const schema::Field& f, const Sources& in, schema::Record& out) {
-    const std::size_t size = in.records.front()->floats(f.name).size();
-    std::vector<double> mean(size), std(size), values(in.records.size());
+/// Mean and standard deviation over `members` at each of `size` points, member i's value at
+/// point j being valueAt(i, j).
+template <class ValueAt>
+std::pair<std::vector<double>, std::vector<double>>
+pointwiseStatistics(std::size_t size, std::size_t members, ValueAt&& valueAt) {
+    std::vector<double> mean(size), std(size), values(members);
     for (std::size_t j = 0; j < size; ++j) {
-        for (std::size_t i = 0; i < in.records.size(); ++i) {
-            const std::vector<double>& v = in.records[i]->floats(f.name);
-            if (v.size() != size)
-                throw std::logic_error("ensemble: " + std::string(f.name) + " differs in length");
-            values[i] = v[j];
-        }
+        for (std::size_t i = 0; i < members; ++i)
+            values[i] = valueAt(i, j);
         const EnsembleScalar s = ensembleScalar(values);
         mean[j] = s.mean;
         std[j] = s.std;
     }
+    return {mean, std};
+}
+
+/// Element-wise mean and standard deviation of a dataset on a grid common to the members.
+void reducePointwise(const schema::Field& f, const Sources& in, schema::Record& out) {
+    const std::size_t size = in.records.front()->floats(f.name).size();
+    for (const schema::Record* r : in.records)
+        if (r->floats(f.name).size() != size)
+            throw std::logic_error("ensemble: " + std::string(f.name) + " differs in length");
+    const auto [mean, std] = pointwiseStatistics(
+        size, in.records.size(), [&](auto i, auto j) { return in.records[i]->floats(f.name)[j]; });
     out.set(f.name, mean).set(std::string(f.name) + "_std", std);
 }
 
@@ -160,17 +169,13 @@ void reduceSteps(const schema::Field& f, const Sources& in, schema::Record& out)
     double reach = 0.0;
     for (const schema::Record* r : in.records)
         reach = std::max(reach, r->floats(f.over).back());
-    std::vector<double> grid(schema::kStepsGrid + 1), mean(grid.size()), std(grid.size());
-    std::vector<double> values(in.records.size());
-    for (std::size_t k = 0; k < grid.size(); ++k) {
+    std::vector<double> grid(schema::kStepsGrid + 1);
+    for (std::size_t k = 0; k < grid.size(); ++k)
         grid[k] = reach * static_cast<double>(k) / schema::kStepsGrid;
-        for (std::size_t i = 0; i < in.records.size(); ++i)
-            values[i] =
-                stepValue(in.records[i]->floats(f.over), in.records[i]->floats(f.name), grid[k]);
-        const EnsembleScalar s = ensembleScalar(values);
-        mean[k] = s.mean;
-        std[k] = s.std;
-    }
+    const auto [mean, std] =
+        pointwiseStatistics(grid.size(), in.records.size(), [&](auto i, auto k) {
+            return stepValue(in.records[i]->floats(f.over), in.records[i]->floats(f.name), grid[k]);
+        });
     out.set(f.over, grid).set(f.name, mean).set(std::string(f.name) + "_std", std);
 }
 
