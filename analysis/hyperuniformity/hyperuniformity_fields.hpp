@@ -24,7 +24,7 @@ using namespace schema::columns;
 using R = HyperuniformityFigures;
 using H = HyperuniformityResult;
 
-inline constexpr schema::FieldTable kSpreadability{std::array<schema::Column<R>, 20>{{
+inline constexpr schema::FieldTable kSpreadability{std::array<schema::Column<R>, 21>{{
     {{"source", A, S, "",
       "chi_V used: \"voxel\" (the --voxels grid) or \"exact+voxel\" (exact at Q w <= "
       "chi_exact_qmax, voxels beyond)"},
@@ -38,6 +38,9 @@ inline constexpr schema::FieldTable kSpreadability{std::array<schema::Column<R>,
       "t -> infinity (Eq. PLF; docs/hyperuniformity.md, \"alpha\")",
       Mean},
      member<&R::h, &H::alpha, &ExponentEstimate::alpha>},
+    {{"alpha_slope", A, F, "w^2/D",
+      "c of the line alpha + c / t through the local alpha in the window (alpha its limit)", Mean},
+     member<&R::h, &H::alpha, &ExponentEstimate::slope>},
     {{"alpha_stderr", A, F, "1",
       "standard deviation of alpha over the Poisson bootstrap replicas; alpha +- 2 alpha_stderr "
       "covered the truth in 20 of 20 fixtures of each known exponent"},

@@ -71,7 +71,7 @@ std::pair<double, double> replicaExponents(std::span<const DiscreteSpectrum> mem
     for (const DiscreteSpectrum& s : members)
         replica.push_back(resampled(s, random));
     const SpreadabilityCurve curve(replica);
-    return {extrapolatedExponent(curve, window), windowExponent(curve, window)};
+    return {extrapolatedExponent(curve, window).alpha, windowExponent(curve, window)};
 }
 
 /// Sample standard deviation of the values (Welford).
@@ -85,14 +85,14 @@ double standardDeviation(const std::vector<double>& values) {
     return std::sqrt(m2 / static_cast<double>(values.size() - 1));
 }
 
-/// The intercept at x = 0 of the least-squares line through (x_k, y_k).
-double interceptAtZero(const std::vector<double>& x, const std::vector<double>& y) {
+/// The least-squares line y = alpha + slope x through (x_k, y_k).
+ExponentLine lineThrough(const std::vector<double>& x, const std::vector<double>& y) {
     double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
     for (std::size_t k = 0; k < x.size(); ++k)
         sx += x[k], sy += y[k], sxx += x[k] * x[k], sxy += x[k] * y[k];
     const auto n = static_cast<double>(x.size());
     const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-    return (sy - slope * sx) / n;
+    return {(sy - slope * sx) / n, slope};
 }
 
 } // namespace
@@ -120,7 +120,7 @@ double windowExponent(const SpreadabilityCurve& curve, const ExponentWindow& win
     return windowExponent([&](double t) { return curve.at(t).logExcess; }, window);
 }
 
-double extrapolatedExponent(const SpreadabilityCurve& curve, const ExponentWindow& window) {
+ExponentLine extrapolatedExponent(const SpreadabilityCurve& curve, const ExponentWindow& window) {
     std::vector<double> inverseTime, local;
     const double step = std::log(window.tMax / window.tMin) / (kExtrapolationPoints - 1);
     for (int k = 0; k < kExtrapolationPoints; ++k) {
@@ -128,11 +128,11 @@ double extrapolatedExponent(const SpreadabilityCurve& curve, const ExponentWindo
         inverseTime.push_back(1.0 / t);
         local.push_back(-3.0 - 2.0 * curve.at(t).exponent);
     }
-    return interceptAtZero(inverseTime, local);
+    return lineThrough(inverseTime, local);
 }
 
-double sampledExponent(const std::vector<double>& t, const std::vector<double>& excess,
-                       const ExponentWindow& window) {
+ExponentLine sampledExponent(const std::vector<double>& t, const std::vector<double>& excess,
+                             const ExponentWindow& window) {
     if (t.size() != excess.size()) throw std::invalid_argument("alpha: times and E differ in size");
     std::vector<double> inverseTime, local;
     for (std::size_t j = 0; j + 1 < t.size(); ++j) {
@@ -143,19 +143,22 @@ double sampledExponent(const std::vector<double>& t, const std::vector<double>& 
     }
     if (local.size() < 2)
         throw std::domain_error("alpha: fewer than three sampled times lie in the window");
-    return interceptAtZero(inverseTime, local);
+    return lineThrough(inverseTime, local);
 }
 
 ExponentEstimate estimateExponent(const SpreadabilityCurve& curve,
                                   std::span<const DiscreteSpectrum> members,
                                   const ExponentWindow& window, int replicas, std::uint64_t seed) {
     ExponentEstimate e;
-    e.alpha = extrapolatedExponent(curve, window);
+    const ExponentLine line = extrapolatedExponent(curve, window);
+    e.alpha = line.alpha;
+    e.slope = line.slope;
     e.windowMean = windowExponent(curve, window);
     e.endLow = e.endHigh = e.alpha;
     for (const double f : {0.5, 2.0}) {
-        const double alpha = extrapolatedExponent(
-            curve, {window.tMin, std::max(f * window.tMax, 1.5 * window.tMin)});
+        const double alpha =
+            extrapolatedExponent(curve, {window.tMin, std::max(f * window.tMax, 1.5 * window.tMin)})
+                .alpha;
         e.endLow = std::min(e.endLow, alpha);
         e.endHigh = std::max(e.endHigh, alpha);
     }

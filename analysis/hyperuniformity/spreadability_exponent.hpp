@@ -53,19 +53,23 @@ double windowExponent(const std::function<double(double)>& logExcess, const Expo
 /// Time points of the extrapolation in a window (log-spaced, ends included).
 inline constexpr int kExtrapolationPoints = 24;
 
-/// alpha: the local alpha, -3 - 2 d ln E / d ln t (exact, SpreadabilityCurve::at), at
-/// kExtrapolationPoints log-spaced times of the window, its least-squares line against 1/t taken
-/// at 1/t = 0.
-double extrapolatedExponent(const SpreadabilityCurve& curve, const ExponentWindow& window);
+/// The least-squares line local alpha = alpha + slope / t of the local alpha,
+/// -3 - 2 d ln E / d ln t (exact, SpreadabilityCurve::at), at kExtrapolationPoints log-spaced
+/// times of the window: alpha is its value at 1/t = 0.
+struct ExponentLine {
+    double alpha = 0.0, slope = 0.0;
+};
+ExponentLine extrapolatedExponent(const SpreadabilityCurve& curve, const ExponentWindow& window);
 
 /// The same from E sampled at times t (ascending; e.g. an ensemble's mean E(t)): the local
 /// alpha of each pair of neighbouring samples inside the window, at their geometric mean time.
 /// Throws std::domain_error if fewer than three samples lie in the window.
-double sampledExponent(const std::vector<double>& t, const std::vector<double>& excess,
-                       const ExponentWindow& window);
+ExponentLine sampledExponent(const std::vector<double>& t, const std::vector<double>& excess,
+                             const ExponentWindow& window);
 
 struct ExponentEstimate {
     double alpha = 0.0; ///< extrapolatedExponent
+    double slope = 0.0; ///< ... and its line's slope in 1/t
     /// Standard deviation of alpha over the bootstrap replicas (0 when replicas = 0).
     double standardError = 0.0;
     int replicas = 0;

@@ -454,6 +454,7 @@ PoreSizeMap transformMask(std::span<const std::uint8_t> solidMask, int voxels, d
     parallelFor(
         0, plane, columnGrain,
         [&](std::int64_t b, std::int64_t e) {
+            progress.checkInterrupt(); // a stop ends the transform at its next chunk
             if (features != nullptr)
                 columnDistancesAndFeatures(solidMask, squared, features, voxels, b, e);
             else
@@ -464,6 +465,7 @@ PoreSizeMap transformMask(std::span<const std::uint8_t> solidMask, int voxels, d
     parallelFor(
         0, voxels, 1,
         [&](std::int64_t b, std::int64_t e) {
+            progress.checkInterrupt();
             LineScratch scratch(voxels, features != nullptr);
             for (std::int64_t i = b; i < e; ++i)
                 planeLargest[i] =

@@ -223,7 +223,7 @@ def log_axes(ax):
 
 def spreadability(series):
     """E(t) with each series' Debye medium (paper Fig. 16), and the local alpha with each
-    series' fitted alpha over its window (paper Fig. 17's alpha)."""
+    series' line alpha + c / t over its window and its limit alpha (paper Fig. 17's alpha)."""
     series = with_group(series, "spreadability")
     if not series:
         return None
@@ -242,8 +242,9 @@ def spreadability(series):
                ylabel=r"local $\alpha$", ylim=(-1.5, 3))
     note(fig, f"Excess spreadability{bands(series)}, and the Debye random medium at each "
               "series' φ (dashed, same colour); below, the local α of each input "
-              "(thin) and the fitted α over its window (thick; band: the ensemble's std, "
-              "or one input's bootstrap error)")
+              "(thin), the line α + c/t fitted to it over the window (thick) and its "
+              "limit α past the window (dashed; band: the ensemble's std, or one input's "
+              "bootstrap error)")
     return fig
 
 
@@ -257,18 +258,22 @@ def debye(ax, s, first):
 
 
 def local_alpha(ax, s):
-    """Each member's local alpha (thin) and the series' alpha over its window (thick, with
-    its std over the ensemble, or the input's bootstrap stderr, as a band)."""
+    """Each member's local alpha (thin), the series' line alpha + c / t through it over the
+    window (thick) and its limit alpha from the window's end on (with its std over the ensemble,
+    or the input's bootstrap stderr, as a band; docs/hyperuniformity.md, "alpha")."""
     for f in s.members("spreadability"):
         g = f["spreadability"]
         ax.plot(g["t"], g["local_alpha"], lw=0.7, alpha=0.5 if s.averaged else 0.9,
                 color=s.style["color"])
     alpha = scalar(s, "spreadability", "alpha")
+    slope = scalar(s, "spreadability", "alpha_slope")[0]
     t0, t1 = (scalar(s, "spreadability", k)[0] for k in ("t_fit_min", "t_fit_max"))
     spread = alpha[1] if s.averaged else s.first("spreadability")["alpha_stderr"]
-    ax.plot([t0, t1], [alpha[0]] * 2, lw=3, color=s.style["color"], solid_capstyle="butt",
+    t = np.geomspace(t0, t1, 32)
+    ax.plot(t, alpha[0] + slope / t, lw=3, color=s.style["color"], solid_capstyle="butt",
             label=fr"$\alpha = {alpha[0]:.2f} \pm {spread:.2f}$ (p = {s.p:g}, N = {s.n})")
-    ax.fill_between([t0, t1], alpha[0] - spread, alpha[0] + spread, color=s.style["color"],
+    ax.plot([t1, 4 * t1], [alpha[0]] * 2, lw=1.5, ls="--", color=s.style["color"])
+    ax.fill_between([t1, 4 * t1], alpha[0] - spread, alpha[0] + spread, color=s.style["color"],
                     alpha=0.25, lw=0)
 
 

@@ -31,8 +31,11 @@ status=0; wait "$pid" || status=$?
 [[ $status -eq 143 && -f b.checkpoint.h5 ]] || { echo "SIGTERM: status $status, no checkpoint"; exit 1; }
 "$sbgen" --resume b.checkpoint.h5 --pressure-final 1e8 --out b.h5 --quiet
 
-[[ "$(ls -a | grep '\.tmp-' || true)" == "$killed_temporaries" ]] ||
-    { echo "temporary file left behind by a run that was not killed"; exit 1; }
+# Only the killed run's temporaries may remain (a later write of the same file removes them).
+for temporary in $(ls -a | grep '\.tmp-' || true); do
+    grep -qxF "$temporary" <<< "$killed_temporaries" ||
+        { echo "temporary file $temporary left behind by a run that was not killed"; exit 1; }
+done
 
 if [[ -n "$analyze" ]]; then
     "$analyze" info a.h5 b.h5 | tee info.txt

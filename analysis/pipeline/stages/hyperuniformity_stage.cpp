@@ -76,7 +76,7 @@ bool runHyperuniformity(FileContext& context, schema::Record& record) {
 
 void poolSpreadability(schema::Record& e) {
     const ExponentWindow window{e.number("t_fit_min"), e.number("t_fit_max")};
-    e.set("alpha_pooled", sampledExponent(e.floats("t"), e.floats("excess"), window));
+    e.set("alpha_pooled", sampledExponent(e.floats("t"), e.floats("excess"), window).alpha);
 }
 
 } // namespace sbpack::stages
