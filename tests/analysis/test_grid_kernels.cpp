@@ -7,6 +7,7 @@
 #include "gpu/particle_images.hpp"
 #include "hyperuniformity/discrete_spectrum.hpp"
 #include "io/packing_io.hpp"
+#include "pipeline/run_settings.hpp"
 #include "pores/distance_transform.hpp"
 #include "spectral/spectral_density.hpp"
 #include "spectral/voxel_fourier_transform.hpp"
@@ -247,6 +248,21 @@ TEST(GpuMemory, PlanAddsTheGrids) {
         EXPECT_NE(std::string(e.what()).find("0.10 GiB free"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("--pore-voxels"), std::string::npos) << e.what();
     }
+}
+
+TEST(ComputeDevice, RefinedPoresKeepAutoOnTheGpuAndRefuseCuda) {
+    // Refined pore sizes (the default) run on the CPU beside the GPU's grids under auto; cuda,
+    // which asks for every grid on the GPU, refuses them and names the way out.
+    RunSettings s;
+    s.analyses = {Analysis::PoreSizes, Analysis::SpectralDensity};
+    s.poreMethod = PoreMethod::Refined;
+    EXPECT_EQ(s.cpuOnlyReason(), "");
+    EXPECT_NE(s.cudaRefusal().find("--pores voxel"), std::string::npos) << s.cudaRefusal();
+    s.poreMethod = PoreMethod::Voxel;
+    EXPECT_EQ(s.cudaRefusal(), "");
+    s.distribute = Distribution::Grids; // the whole run stays on the CPU, auto or not
+    EXPECT_NE(s.cpuOnlyReason(), "");
+    EXPECT_EQ(s.cudaRefusal(), s.cpuOnlyReason());
 }
 
 TEST(ComputeDevice, NamesAndRefusals) {
