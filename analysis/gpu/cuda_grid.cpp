@@ -2,9 +2,8 @@
 
 #include "gpu/compact_cube.hpp"
 #include "gpu/particle_images.hpp"
+#include "parallel/parallel.hpp"
 #include "voxels/voxelization.hpp"
-
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -70,15 +69,16 @@ CudaGrid::Spectra CudaGrid::spectralDensity(const Packing& packing,
 
 namespace {
 
-/// The host's half of a staged copy: one slice of the chunk per OpenMP thread, so that the
-/// first touches of the fresh host pages (page faults) run in parallel.
+/// The host's half of a staged copy: the chunk's pages shared out over the run's threads
+/// (parallelFor), so that the first touches of the fresh host pages (page faults) run in
+/// parallel.
 void parallelCopy(void* to, const void* from, std::size_t bytes) {
-    const auto threads = static_cast<std::size_t>(omp_get_max_threads());
-    const std::size_t slice = (bytes / threads + 4095) / 4096 * 4096;
-#pragma omp parallel for schedule(static)
-    for (std::size_t begin = 0; begin < bytes; begin += slice)
-        std::memcpy(static_cast<char*>(to) + begin, static_cast<const char*>(from) + begin,
-                    std::min(slice, bytes - begin));
+    constexpr std::int64_t kPage = 4096, kPagesPerTask = 256;
+    const auto size = static_cast<std::int64_t>(bytes);
+    parallelFor(0, (size + kPage - 1) / kPage, kPagesPerTask, [&](std::int64_t b, std::int64_t e) {
+        std::memcpy(static_cast<char*>(to) + b * kPage, static_cast<const char*>(from) + b * kPage,
+                    static_cast<std::size_t>(std::min(e * kPage, size) - b * kPage));
+    });
 }
 
 } // namespace
