@@ -207,8 +207,6 @@ template <EngineShape Shape> class EventDrivenMd {
         return m;
     }
 
-    std::uint64_t pairKey(int i, int j) const { return sbpack::pairKey(i, j, state_.size()); }
-
     void schedule(int i) { queue_.set(i, std::min(collision_[i].time, exit_[i])); }
 
     /// Predicts the pair, moving as `m` from time t, up to the earliest of i's best so far, j's
@@ -216,9 +214,8 @@ template <EngineShape Shape> class EventDrivenMd {
     void consider(int i, int j, double t, const PairMotion& m) {
         const double limit =
             std::min(std::min(collision_[i].time, exit_[i]), std::min(queue_.time(j), horizon_));
-        const bool resolved = t == resolvedAt_ && pairKey(i, j) == resolvedPair_;
-        const Prediction next =
-            memories_.predictWith(i, j, t, {counter_, changedAt_}, [&](auto& memory) {
+        const Prediction next = memories_.predictWith(
+            i, j, t, {counter_, changedAt_}, [&](auto& memory, const auto* resolved) {
                 return shape_.collisionTime(m, limit - t, memory, resolved);
             });
         const double when = t + next.time;
@@ -270,7 +267,9 @@ template <EngineShape Shape> class EventDrivenMd {
         advance(j, t);
         const PairMotion m = motion(i, j, t);
         const PairContact contact =
-            memories_.collideWith(i, j, [&](auto& memory) { return shape_.contact(m, memory); });
+            memories_.collideWith(i, j, t, [&](auto& memory, auto& resolved) {
+                return shape_.contact(m, memory, resolved);
+            });
         const double impulse = shape_.resolve(m, contact, state_[i], state_[j]);
         report.virial += impulse * contact.normal.dot(m.displacement);
         ++report.collisions;
@@ -282,8 +281,6 @@ template <EngineShape Shape> class EventDrivenMd {
         ++counter_[i];
         ++counter_[j];
         changedAt_[i] = changedAt_[j] = t;
-        resolvedPair_ = pairKey(i, j);
-        resolvedAt_ = t;
         predictExit(i);
         predictExit(j);
         predict(i, t);
@@ -316,7 +313,7 @@ template <EngineShape Shape> class EventDrivenMd {
         lists_ = NeighbourLists(box_, shape_.circumscribedRatio() * maximum + 2.0 * exitRadius_,
                                 std::move(anchors));
         memories_.retainListed(lists_);
-        resolvedAt_ = -kNever;
+        memories_.forgetResolved();
         time_.assign(size(), 0.0);
         turned_.assign(size(), 0.0);
         counter_.assign(size(), 0);
@@ -349,9 +346,6 @@ template <EngineShape Shape> class EventDrivenMd {
     std::vector<std::uint64_t> collidedInRun_; ///< the last run() each particle collided in
     double horizon_ = kNever;
     double exitRadius_ = 0.0;
-    /// The last collision's pair and time: its predictions at that time start separated.
-    std::uint64_t resolvedPair_ = 0;
-    double resolvedAt_ = -kNever;
     bool dirty_ = true;
 };
 

@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -72,13 +74,18 @@ template <class Memory> class PairMemories {
             records_[key(e.i, e.j)] = {e.memory, 0.0, 0, 0};
     }
 
-    /// use(memory) with the pair's memory for a prediction of i against j at time t, as seen from
-    /// i: its gap bound moved on to t while both particles still fly as they did when it was left
-    /// (their counters unchanged, or advanced by one collision at t itself), else the normal
-    /// alone; what use leaves in it is kept, stamped with t and the counters now.
+    /// use(memory, resolved) with the pair's memory for a prediction of i against j at time t, as
+    /// seen from i: its gap bound moved on to t while both particles still fly as they did when it
+    /// was left (their counters unchanged, or advanced by one collision at t itself), else the
+    /// normal alone; what use leaves in it is kept, stamped with t and the counters now.
+    /// `resolved` (seen from i) where the pair's collision was the last one and at t, else null.
     template <class Use>
     auto predictWith(int i, int j, double t, ParticleClocks clocks, Use&& use) {
-        Record& record = records_[key(i, j)];
+        const std::uint64_t k = key(i, j);
+        std::optional<Resolved> resolved;
+        if (k == resolvedKey_ && t == resolvedAt_)
+            resolved = i > j ? resolved_.seenFromOther() : resolved_;
+        Record& record = records_[k];
         const auto unchanged = [&](int k, std::uint64_t counter) {
             return clocks.counter[k] == counter ||
                    (clocks.counter[k] == counter + 1 && clocks.changedAt[k] == t);
@@ -90,7 +97,7 @@ template <class Memory> class PairMemories {
         else
             memory.forgetMotions();
         if (i > j) memory.flip();
-        const auto answer = use(memory);
+        const auto answer = use(memory, resolved ? &*resolved : nullptr);
         if (i > j) memory.flip();
         record.time = t;
         record.counterLow = clocks.counter[low];
@@ -98,18 +105,27 @@ template <class Memory> class PairMemories {
         return answer;
     }
 
-    /// use(memory) with the pair's memory as seen from i at their collision; what use leaves in
-    /// it replaces the memory (its stamp is kept).
-    template <class Use> auto collideWith(int i, int j, Use&& use) {
-        Record& record = records_[key(i, j)];
+    /// use(memory, resolved) with the pair's memory as seen from i at their collision at time t;
+    /// what use leaves in the memory replaces it (its stamp is kept), and what it leaves in
+    /// `resolved` (seen from i) is handed to the pair's predictions at t (predictWith).
+    template <class Use> auto collideWith(int i, int j, double t, Use&& use) {
+        resolvedKey_ = key(i, j);
+        resolvedAt_ = t;
+        Record& record = records_[resolvedKey_];
         Memory& memory = record.memory;
+        Resolved resolved;
         if (i > j) memory.flip();
-        const auto answer = use(memory);
+        const auto answer = use(memory, resolved);
         if (i > j) memory.flip();
+        resolved_ = i > j ? resolved.seenFromOther() : resolved;
         return answer;
     }
 
+    /// No collision is the last one (a rebuild's predictions start afresh).
+    void forgetResolved() { resolvedAt_ = -std::numeric_limits<double>::infinity(); }
+
   private:
+    using Resolved = typename Memory::Resolved;
     struct Record {
         Memory memory;
         double time = 0.0;
@@ -122,6 +138,10 @@ template <class Memory> class PairMemories {
 
     std::uint64_t particles_ = 0;
     PairTable<Record> records_;
+    /// The last collision's pair, time and contact (seen from the lower index).
+    std::uint64_t resolvedKey_ = 0;
+    double resolvedAt_ = -std::numeric_limits<double>::infinity();
+    Resolved resolved_;
 };
 
 /// Nothing to keep: the memory is an empty value, made for each use.
@@ -139,12 +159,14 @@ template <> class PairMemories<NoPairMemory> {
     template <class Use>
     auto predictWith(int /*i*/, int /*j*/, double /*t*/, ParticleClocks /*clocks*/, Use&& use) {
         NoPairMemory memory;
-        return use(memory);
+        return use(memory, static_cast<const NoPairMemory::Resolved*>(nullptr));
     }
-    template <class Use> auto collideWith(int /*i*/, int /*j*/, Use&& use) {
+    template <class Use> auto collideWith(int /*i*/, int /*j*/, double /*t*/, Use&& use) {
         NoPairMemory memory;
-        return use(memory);
+        NoPairMemory::Resolved resolved;
+        return use(memory, resolved);
     }
+    void forgetResolved() {}
 };
 
 } // namespace sbpack

@@ -2,11 +2,14 @@
 // What a shape's predictor and contact function see of a pair: everything in the pair's local
 // frame (displacement first, then motion), so gaps of 1e-13 D survive (docs/design.md §2).
 
+#include "pair/pair_geometry.hpp"
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace sbpack {
 
@@ -139,11 +142,38 @@ struct PairMemory {
         normal = -normal;
         witness = witness.seenFromOther();
     }
+
+    /// What the pair's predictions right after its collision, at that very state, are given
+    /// (engine/pair_memories.hpp keeps the last collision's).
+    struct Resolved;
+};
+
+/// A pair the engine has just resolved at this very state: touching now is no contact (the
+/// impulse left the surfaces separating at the contact point), and the contact it was resolved
+/// at, seen from i, stands in for an evaluation of that state where known.
+struct PairMemory::Resolved {
+    Vector3d displacement = Vector3d::Zero(); ///< of the pair, from i
+    std::optional<SignedDistanceResult> contact;
+
+    /// The same seen from j: the normal and both points mirrored.
+    Resolved seenFromOther() const {
+        Resolved other{-displacement, contact};
+        if (contact) {
+            other.contact->normal = -contact->normal;
+            other.contact->contactA = contact->contactB - displacement;
+            other.contact->contactB = contact->contactA - displacement;
+        }
+        return other;
+    }
 };
 
 /// What a shape whose exact predictor needs nothing from a pair's last prediction keeps of it
 /// (the sphere): nothing (engine/pair_memories.hpp stores no record for it).
-struct NoPairMemory {};
+struct NoPairMemory {
+    struct Resolved {
+        Resolved seenFromOther() const { return {}; }
+    };
+};
 
 /// Where two touching bodies meet.
 struct PairContact {

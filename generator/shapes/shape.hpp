@@ -9,8 +9,10 @@
 //                pair's orientations and spins in its PairMotion
 //   prediction:  Memory, what the predictor keeps of a pair between predictions;
 //                inPredictionOrder(count, motionOf, consider), the order neighbours are asked in;
-//                collisionTime(m, horizon, memory, resolved)
-//   collision:   contact(m, memory), resolve(m, contact, i, j) (the elastic impulse, returned)
+//                collisionTime(m, horizon, memory, resolved) (resolved: Memory::Resolved, where
+//                the pair's collision at this very state was the engine's last, else null)
+//   collision:   contact(m, memory, resolved) (leaves the contact in resolved),
+//                resolve(m, contact, i, j) (the elastic impulse, returned)
 //   statistics:  takeStats(), the predictor's counters since the last call
 
 #include "shapes/pair_motion.hpp"
@@ -22,15 +24,15 @@ namespace sbpack {
 
 template <class S>
 concept EngineShape = requires(S shape, const S& constShape, const PairMotion& m, PairMotion& out,
-                               typename S::Memory& memory, const PairContact& contact,
-                               ParticleState& body, const Quaterniond& q, const Vector3d& omega,
-                               double x) {
+                               typename S::Memory& memory, typename S::Memory::Resolved& resolved,
+                               const PairContact& contact, ParticleState& body,
+                               const Quaterniond& q, const Vector3d& omega, double x) {
     { constShape.circumscribedRatio() } -> std::convertible_to<double>;
     { constShape.inertiaPerMass(x) } -> std::convertible_to<double>;
     { constShape.turned(q, omega, x) } -> std::convertible_to<Quaterniond>;
     constShape.orient(out, body, x, body, x);
-    { shape.collisionTime(m, x, memory, true) } -> std::same_as<Prediction>;
-    { shape.contact(m, memory) } -> std::same_as<PairContact>;
+    { shape.collisionTime(m, x, memory, &resolved) } -> std::same_as<Prediction>;
+    { shape.contact(m, memory, resolved) } -> std::same_as<PairContact>;
     { constShape.resolve(m, contact, body, body) } -> std::convertible_to<double>;
     { shape.takeStats() } -> std::same_as<PredictorStats>;
 };

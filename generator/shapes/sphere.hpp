@@ -50,7 +50,7 @@ struct SphereShape {
     }
     /// The engine's form: exact, so beyond the horizon too (touching and separating: +inf).
     Prediction collisionTime(const PairMotion& m, double /*horizon*/, Memory& /*memory*/,
-                             bool /*resolved*/) {
+                             const Memory::Resolved* /*resolved*/) {
         return {collisionTime(m)};
     }
 
@@ -61,7 +61,9 @@ struct SphereShape {
         const Vector3d n = m.displacement / distance;
         return {n, 0.5 * distance * n, -0.5 * distance * n, distance};
     }
-    PairContact contact(const PairMotion& m, Memory& /*memory*/) { return contact(m); }
+    PairContact contact(const PairMotion& m, Memory& /*memory*/, Memory::Resolved& /*resolved*/) {
+        return contact(m);
+    }
 
     /// The impulse along the centre line (no torque).
     double resolve(const PairMotion& m, const PairContact& c, ParticleState& i,

@@ -34,7 +34,7 @@ double SuperballShape::inertiaPerMass(double diameter) const {
 // (shapes/first_contact_search.hpp over superball/pair_gap.hpp); the
 // witness record was of the cached normal's plane, so it goes where the normal moves on.
 Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, PairMemory& memory,
-                                         bool resolved) {
+                                         const PairMemory::Resolved* resolved) {
     ++stats.calls;
     Vector3d& normal = memory.normal;
     const double remembered = memory.gap;
@@ -53,8 +53,8 @@ Prediction SuperballShape::collisionTime(const PairMotion& m, double horizon, Pa
     if (!cached) return none;
     const Vector3d recorded = normal;
     FirstContactSearch search(gap, window->end, m.diameter, limits, stats);
-    const Found found = search.advance(window->enter, normal, *cached, resolved,
-                                       resolved ? resolvedContactSeenFrom(m) : std::nullopt);
+    const Found found = search.advance(window->enter, normal, *cached, resolved != nullptr,
+                                       resolved ? resolved->contact : std::nullopt);
     if (found.sampled) memory.gap = -kNoContact; // the samples moved the normal on
     if (normal != recorded) memory.witness = {};
     if (found.contact && found.time < kNoContact) {
@@ -106,22 +106,8 @@ std::optional<PlaneGap> SuperballShape::separatingPlane(const PairMotion& m,
     return cached;
 }
 
-// The engine re-predicts the pair right after contact() at the same state, from i (the same
-// displacement) and from j (its exact negation: minimumImage is odd).
-std::optional<SignedDistanceResult>
-SuperballShape::resolvedContactSeenFrom(const PairMotion& m) const {
-    const Vector3d& d = resolved_.displacement;
-    if (m.diameter != resolved_.diameter) return std::nullopt;
-    if (m.displacement == d) return resolved_.contact;
-    if (m.displacement != -d) return std::nullopt;
-    SignedDistanceResult r = resolved_.contact; // from j: the normal and both points mirrored
-    r.normal = -r.normal;
-    r.contactA = resolved_.contact.contactB - d;
-    r.contactB = resolved_.contact.contactA - d;
-    return r;
-}
-
-PairContact SuperballShape::contact(const PairMotion& m, PairMemory& memory) {
+PairContact SuperballShape::contact(const PairMotion& m, PairMemory& memory,
+                                    PairMemory::Resolved& resolved) {
     Vector3d& normal = memory.normal;
     const SuperballPair pair{Superball(p_, 0.5 * m.diameter), m.orientationI.toRotationMatrix(),
                              m.orientationJ.toRotationMatrix(), m.displacement};
@@ -139,7 +125,7 @@ PairContact SuperballShape::contact(const PairMotion& m, PairMemory& memory) {
     normal = r.normal;
     memory.gap = -kNoContact; // a new normal: its gap bound is unknown
     memory.atContact = false;
-    resolved_ = {m.displacement, m.diameter, r};
+    resolved = {m.displacement, r};
     const Vector3d armI = 0.5 * (r.contactA + r.contactB);
     return {r.normal, armI, armI - m.displacement, m.displacement.norm()};
 }

@@ -86,20 +86,21 @@ class SuperballShape {
     /// from i to j (zero when unknown), updated when the pair is evaluated exactly, and the bound
     /// on its plane gap now (its own or the last one's, moved on), left for the next prediction;
     /// where the answer is a contact, its normal there (atContact) for contact().
-    /// `resolved`: the engine has just applied this pair's impulse at this very state, which left
-    /// the surfaces separating at the resolver's contact point, so touching now is no contact (on
-    /// near-flat faces a re-evaluation can pick another point of the face and see it closing:
-    /// zero impulses would repeat at one instant, and no time would pass).
+    /// `resolved` (else null): the engine has just applied this pair's impulse at this very state,
+    /// which left the surfaces separating at the resolver's contact point, so touching now is no
+    /// contact (on near-flat faces a re-evaluation can pick another point of the face and see it
+    /// closing: zero impulses would repeat at one instant, and no time would pass); its contact,
+    /// where known, is the sample at that state.
     Prediction collisionTime(const PairMotion& m, double horizon, PairMemory& memory,
-                             bool resolved = false);
+                             const PairMemory::Resolved* resolved = nullptr);
 
     /// Contact of touching bodies now: normal from i to j, arms to the midpoint of the two support
     /// points (the same point for both, so impulses conserve angular momentum). The normal is
     /// memory.normal where the pair's last prediction found this contact there (atContact) and
     /// its plane still touches, else the exact one warm-started from it; it is left there, its gap
-    /// bound dropped, and kept with the contact for the pair's predictions at this instant
+    /// bound dropped, and the contact in `resolved` for the pair's predictions at this instant
     /// (collisionTime's `resolved`).
-    PairContact contact(const PairMotion& m, PairMemory& memory);
+    PairContact contact(const PairMotion& m, PairMemory& memory, PairMemory::Resolved& resolved);
 
     /// The elastic impulse at the contact point, spins included (collision_resolver.hpp).
     double resolve(const PairMotion& m, const PairContact& c, ParticleState& i,
@@ -115,14 +116,6 @@ class SuperballShape {
     PredictorStats stats{};
 
   private:
-    /// The last contact, seen from i of its pair, and that pair's displacement and diameter.
-    struct ResolvedContact {
-        Vector3d displacement = Vector3d::Zero();
-        double diameter = 0.0;
-        SignedDistanceResult contact;
-    };
-    /// The last contact seen from m's i, if m is its pair at that state (from either side).
-    std::optional<SignedDistanceResult> resolvedContactSeenFrom(const PairMotion& m) const;
     /// Tier 2 of collisionTime: none where a plane of the pair's normal separates it up to
     /// `end` (`remembered`: the memory's gap bound moved on to now), else that
     /// plane's gap now; leaves the plane's bounds and witness record in `memory`.
@@ -130,7 +123,6 @@ class SuperballShape {
                                             const superball::SuperballPairGap& gap, double end,
                                             double remembered, PairMemory& memory);
 
-    ResolvedContact resolved_;
     double p_;
     double c_;
     double cIn_;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <optional>
 #include <random>
 #include <unordered_map>
 #include <utility>
@@ -77,15 +78,17 @@ TEST(PairMemories, KeepTheNormalAndTheRebasedWitnessAcrossASynchronisation) {
     const std::vector<double> changed(4, -1.0);
     const Vector3d n = Vector3d(1.0, 2.0, 2.0) / 3.0;
     for (const auto& [i, j] : {std::pair(0, 1), std::pair(3, 2), std::pair(1, 3)})
-        memories.predictWith(i, j, 0.5, {counters, changed}, [&](PairMemory& m) {
-            m.normal = n;
-            m.gap = 0.25;
-            m.rate = -1.0;
-            m.span = 1.0;
-            m.atContact = true;
-            m.witness = {Vector3d(0.1, 0.0, 0.0), Vector3d(0.0, 0.2, 0.0), 0.5 + i, 0.5 + j};
-            return 0;
-        });
+        memories.predictWith(
+            i, j, 0.5, {counters, changed},
+            [&](PairMemory& m, const PairMemory::Resolved* /*resolved*/) {
+                m.normal = n;
+                m.gap = 0.25;
+                m.rate = -1.0;
+                m.span = 1.0;
+                m.atContact = true;
+                m.witness = {Vector3d(0.1, 0.0, 0.0), Vector3d(0.0, 0.2, 0.0), 0.5 + i, 0.5 + j};
+                return 0;
+            });
     memories.synchronise({1.0, 2.0, 3.0, 4.0});
     memories.retainListed(Lists{{{1}, {0}, {}, {}}}); // only the pair (0, 1) is still listed
     const auto records = memories.records();
@@ -102,10 +105,51 @@ TEST(PairMemories, KeepTheNormalAndTheRebasedWitnessAcrossASynchronisation) {
     PairMemories<PairMemory> restored(4);
     restored.restore(records);
     for (PairMemories<PairMemory>* table : {&memories, &restored})
-        table->predictWith(1, 0, 0.0, {counters, changed}, [&](PairMemory& m) {
-            EXPECT_EQ(m.normal, -n);
-            EXPECT_EQ(m.witness.turnedI, 1.5 - 2.0);
-            EXPECT_EQ(m.witness.pointI, Vector3d(0.0, -0.2, 0.0));
-            return 0;
-        });
+        table->predictWith(1, 0, 0.0, {counters, changed},
+                           [&](PairMemory& m, const PairMemory::Resolved* /*resolved*/) {
+                               EXPECT_EQ(m.normal, -n);
+                               EXPECT_EQ(m.witness.turnedI, 1.5 - 2.0);
+                               EXPECT_EQ(m.witness.pointI, Vector3d(0.0, -0.2, 0.0));
+                               return 0;
+                           });
+}
+
+// The last collision's contact (issue 40, part 4): handed to the pair's predictions at that very
+// time alone, from either side (mirrored for j), and no longer after a rebuild.
+TEST(PairMemories, HandTheLastCollisionsContactToThePairsPredictionsAtThatTime) {
+    PairMemories<PairMemory> memories(4);
+    const std::vector<std::uint64_t> counters(4, 0);
+    const std::vector<double> changed(4, -1.0);
+    const Vector3d d(1.0, 0.0, 0.0);
+    SignedDistanceResult contact;
+    contact.normal = Vector3d::UnitX();
+    contact.contactA = Vector3d(0.5, 0.1, 0.0);
+    contact.contactB = Vector3d(0.5, 0.2, 0.0);
+    memories.collideWith(2, 1, 0.75, [&](PairMemory& /*m*/, PairMemory::Resolved& resolved) {
+        resolved = {d, contact}; // seen from 2
+        return 0;
+    });
+    auto seen = [&](int i, int j, double t) {
+        std::optional<PairMemory::Resolved> handed;
+        memories.predictWith(i, j, t, {counters, changed},
+                             [&](PairMemory& /*m*/, const PairMemory::Resolved* resolved) {
+                                 if (resolved) handed = *resolved;
+                                 return 0;
+                             });
+        return handed;
+    };
+    const auto fromTwo = seen(2, 1, 0.75);
+    ASSERT_TRUE(fromTwo && fromTwo->contact);
+    EXPECT_EQ(fromTwo->displacement, d);
+    EXPECT_EQ(fromTwo->contact->contactB, contact.contactB);
+    const auto fromOne = seen(1, 2, 0.75);
+    ASSERT_TRUE(fromOne && fromOne->contact);
+    EXPECT_EQ(fromOne->displacement, -d);
+    EXPECT_EQ(fromOne->contact->normal, -contact.normal);
+    EXPECT_EQ(fromOne->contact->contactA, contact.contactB - d);
+    EXPECT_EQ(fromOne->contact->contactB, contact.contactA - d);
+    EXPECT_FALSE(seen(1, 2, 0.8));  // another time
+    EXPECT_FALSE(seen(1, 3, 0.75)); // another pair
+    memories.forgetResolved();
+    EXPECT_FALSE(seen(1, 2, 0.75));
 }

@@ -478,14 +478,15 @@ TEST(SuperballPredictor, AJustResolvedPairIsNotAContactAtThatInstant) {
             PairMemory memory;
             EXPECT_EQ(shape.collisionTime(m, 1.0, memory).time, 0.0) << where;
             memory = {};
-            const Prediction later = shape.collisionTime(m, 1.0, memory, true);
+            const PairMemory::Resolved resolved{m.displacement, std::nullopt};
+            const Prediction later = shape.collisionTime(m, 1.0, memory, &resolved);
             ASSERT_TRUE(later.contact) << where;
             EXPECT_GT(later.time, 0.0) << where;
             EXPECT_LE(later.time, 1e-9) << where;
             EXPECT_GE(relativeGapAt(p, m, later.time), -1e-12) << where;
             m.relativeVelocity = 0.5 * n; // separating
             memory = {};
-            EXPECT_TRUE(std::isinf(shape.collisionTime(m, 1.0, memory, true).time)) << where;
+            EXPECT_TRUE(std::isinf(shape.collisionTime(m, 1.0, memory, &resolved).time)) << where;
         }
     }
 }
@@ -505,7 +506,8 @@ TEST(SuperballPredictor, AJustResolvedPairJustApartIsNotAContactAtThatInstantEit
             m.angularVelocityJ = random.normalVector();
             SuperballShape shape{p};
             PairMemory memory;
-            const Prediction later = shape.collisionTime(m, 1.0, memory, true);
+            const PairMemory::Resolved resolved{m.displacement, std::nullopt};
+            const Prediction later = shape.collisionTime(m, 1.0, memory, &resolved);
             const std::string where = "p " + number(p) + " #" + std::to_string(trial);
             EXPECT_FALSE(later.contact && later.time == 0.0) << where;
             if (later.contact && std::isfinite(later.time)) {
@@ -553,7 +555,8 @@ TEST(SuperballPredictor, TheContactAtAPredictedRootTakesThePredictedNormal) {
             const Vector3d predicted = memory.normal;
             const PairMotion atRoot = advancedPair(m, next.time);
             const double s = relativeGapAt(p, atRoot, 0.0);
-            const PairContact taken = shape.contact(atRoot, memory);
+            PairMemory::Resolved resolved;
+            const PairContact taken = shape.contact(atRoot, memory, resolved);
             EXPECT_EQ(shape.stats.predictedContacts, 1) << where;
             EXPECT_EQ(taken.normal, predicted) << where;
             // The predicted plane is optimal to rounding: its gap is s (a plane's gap never
@@ -568,8 +571,8 @@ TEST(SuperballPredictor, TheContactAtAPredictedRootTakesThePredictedNormal) {
 /// The engine's predictions of a pair it has just resolved: the first with `resolved`, then on
 /// from each safe recheck time (predictLikeTheEngine); the contact, +inf if none to the horizon.
 double resolvedThenLikeTheEngine(SuperballShape& shape, const PairMotion& m, double horizon,
-                                 PairMemory& memory) {
-    const Prediction first = shape.collisionTime(m, horizon, memory, true);
+                                 PairMemory& memory, const PairMemory::Resolved& resolved) {
+    const Prediction first = shape.collisionTime(m, horizon, memory, &resolved);
     if (first.contact || std::isinf(first.time)) return first.time;
     memory = memory.after(first.time);
     const EnginePrediction rest =
@@ -592,22 +595,25 @@ TEST(SuperballPredictor, TheResolvedPairStartsFromItsContactAsFromAnEvaluation) 
             const Prediction next = shape.collisionTime(m, 3.0, memory);
             if (!next.contact || std::isinf(next.time)) continue;
             PairMotion after = advancedPair(m, next.time);
-            const PairContact contact = shape.contact(after, memory);
+            PairMemory::Resolved resolved;
+            const PairContact contact = shape.contact(after, memory, resolved);
             ParticleState i{Vector3d::Zero(), Vector3d::Zero(), {}, after.angularVelocityI};
             ParticleState j{after.displacement, after.relativeVelocity, {}, after.angularVelocityJ};
             shape.resolve(after, contact, i, j);
             after.relativeVelocity = j.velocity - i.velocity;
             after.angularVelocityI = i.angularVelocity;
             after.angularVelocityJ = j.angularVelocity;
-            for (const PairMotion& side : {after, seenFromJ(after)}) {
+            for (const bool fromI : {true, false}) {
+                const PairMotion side = fromI ? after : seenFromJ(after);
                 const std::string where = "p " + number(p) + " #" + std::to_string(trial);
                 SuperballShape fresh{p};
-                PairMemory mine{(side.displacement == after.displacement ? 1.0 : -1.0) *
-                                contact.normal};
+                PairMemory mine{(fromI ? 1.0 : -1.0) * contact.normal};
                 PairMemory theirs = mine;
                 const long before = shape.stats.evaluations;
-                const double reused = resolvedThenLikeTheEngine(shape, side, 3.0, mine);
-                const double evaluated = resolvedThenLikeTheEngine(fresh, side, 3.0, theirs);
+                const double reused = resolvedThenLikeTheEngine(
+                    shape, side, 3.0, mine, fromI ? resolved : resolved.seenFromOther());
+                const double evaluated = resolvedThenLikeTheEngine(
+                    fresh, side, 3.0, theirs, {side.displacement, std::nullopt});
                 saved += fresh.stats.evaluations - (shape.stats.evaluations - before);
                 if (std::isinf(evaluated)) {
                     EXPECT_TRUE(std::isinf(reused)) << where << ": " << reused;
