@@ -3,7 +3,9 @@
 # same command at once (one core each, so the shared machine's load falls on both alike), first
 # just past the switch pressure (the fast phase: --pressure-final must exceed the switch), then
 # to the default final pressure. Prints, per run, collisions, CPU seconds and collisions per CPU
-# second of each build and NEW over BASE (bench/RESULTS.md, "Witness-point certificates").
+# second of each build, NEW over BASE, and each build's phi (the fast phase sets it: a change
+# that alters trajectories keeps the ensemble when phi at the switch does; bench/RESULTS.md,
+# "Witness-point certificates", "Pair records across windows").
 # PHASES (default "fast whole"): "fast" alone for exponents whose whole runs take hours.
 # usage: bench/throughput_side_by_side.sh BASE_SBGEN NEW_SBGEN "P..." "SEED..." [N] [SECONDS_CAP] [PHASES]
 set -euo pipefail
@@ -14,8 +16,8 @@ fi
 base=$1 new=$2 exponents=$3 seeds=$4 n=${5:-1000} cap=${6:-36000} phases=${7:-fast whole}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-echo "| p | seed | phase | base collisions | base CPU s | base rate | new collisions | new CPU s | new rate | new / base |"
-echo "|---|---|---|---:|---:|---:|---:|---:|---:|---:|"
+echo "| p | seed | phase | base collisions | base CPU s | base rate | new collisions | new CPU s | new rate | new / base | base phi | new phi |"
+echo "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for p in $exponents; do
     for seed in $seeds; do
         for phase in $phases; do
@@ -34,12 +36,16 @@ import h5py
 p, seed, phase, *paths = sys.argv[1:]
 cells = []
 rates = []
+phis = []
 for path in paths:
-    log = h5py.File(path, "r")["provenance"].attrs
+    packing = h5py.File(path, "r")
+    log = packing["provenance"].attrs
+    phis.append(f"{packing.attrs['phi']:.6f}")
     collisions, cpu = float(log["collisions"]), float(log["cpu_time_s"])
     rates.append(collisions / cpu)
     cells += [f"{collisions / 1e6:.2f} M", f"{cpu:.1f}", f"{rates[-1]:.3g}"]
-print(f"| {p} | {seed} | {phase} | " + " | ".join(cells) + f" | {rates[1] / rates[0]:.2f} |")
+print(f"| {p} | {seed} | {phase} | " + " | ".join(cells) + f" | {rates[1] / rates[0]:.2f} | "
+      + " | ".join(phis) + " |")
 EOF
             rm -f "$work"/*.h5
         done
