@@ -1,8 +1,5 @@
 #include "pair/pair_geometry.hpp"
 
-#include "pair/line_search.hpp"
-#include "pair/normal_newton.hpp"
-
 #include <Eigen/Dense>
 
 #include <array>
@@ -17,8 +14,6 @@ namespace {
 
 using Vector2d = Eigen::Vector2d;
 using Matrix2d = Eigen::Matrix2d;
-using pair_search::exactLineSearch;
-using pair_search::newtonDirection;
 
 /// H(u) = h_A(u) + h_B(u) and its derivatives in the lab frame (u need not be unit).
 class MinkowskiSum {
@@ -57,10 +52,81 @@ class MinkowskiSum {
     const SuperballPair& pair_;
 };
 
+/// A bracket [lo, hi] of the root of phi', phi'(lo) = dlo < 0 <= dhi = phi'(hi), refined by
+/// Illinois regula falsi with bisection safeguards.
+struct Bracket {
+    double lo, dlo, hi, dhi;
+    int side = 0; ///< Illinois: which end was kept last time
+
+    /// One regula falsi step (its end's value halved when the same end is kept twice), and a
+    /// bisection when the bracket shrank by less than half; the root if a step hit it exactly.
+    template <class Derivative> std::optional<double> refine(Derivative& derivative) {
+        double t = lo - dlo * (hi - lo) / (dhi - dlo);
+        const double width = hi - lo;
+        if (!(t > lo && t < hi)) t = 0.5 * (lo + hi);
+        const double dt = derivative(t);
+        if (dt == 0.0) return t;
+        if (dt < 0.0) {
+            lo = t;
+            dlo = dt;
+            if (side == -1) dhi *= 0.5;
+            side = -1;
+        } else {
+            hi = t;
+            dhi = dt;
+            if (side == 1) dlo *= 0.5;
+            side = 1;
+        }
+        if (hi - lo > 0.5 * width) { // slow secant progress: bisect once
+            const double mid = 0.5 * (lo + hi);
+            const double dm = derivative(mid);
+            if (dm == 0.0) return mid;
+            (dm < 0.0 ? lo : hi) = mid;
+            (dm < 0.0 ? dlo : dhi) = dm;
+            side = 0;
+        }
+        return std::nullopt;
+    }
+};
+
+/// Solves phi'(t) = 0 for 0 < t <= tMax along a search direction, given phi'(0) < 0 and
+/// phi' nondecreasing past its root (convex phi, or a local maximum of -phi): the full
+/// Newton step t = 1 is tried first; otherwise the root is bracketed and refined (Bracket).
+/// tTolerance is absolute in t.
+template <class Derivative>
+double exactLineSearch(Derivative&& derivative, double slope0, double tTolerance, double tMax,
+                       int maxIterations) {
+    Bracket b{0.0, slope0, std::min(1.0, tMax), 0.0};
+    b.dhi = derivative(b.hi);
+    if (std::abs(b.dhi) <= 1e-2 * std::abs(slope0)) return b.hi; // Newton's step will do
+    int iteration = 0;
+    while (b.dhi < 0.0 && b.hi < tMax && iteration++ < maxIterations) { // bracket the root
+        b.lo = b.hi;
+        b.dlo = b.dhi;
+        b.hi = std::min(2.0 * b.hi, tMax);
+        b.dhi = derivative(b.hi);
+    }
+    if (b.dhi < 0.0) return b.hi;
+    while (b.hi - b.lo > tTolerance && iteration++ < maxIterations)
+        if (const std::optional<double> root = b.refine(derivative)) return *root;
+    return 0.5 * (b.lo + b.hi);
+}
+
 /// Largest t with |c + t v| <= radius, for |c| <= radius.
 double rayExit(const Vector2d& c, const Vector2d& v, double radius) {
     const double a = v.squaredNorm(), b = c.dot(v), e = c.squaredNorm() - radius * radius;
     return (-b + std::sqrt(std::max(0.0, b * b - a * e))) / a;
+}
+
+/// Newton direction for minimising a function with 2x2 Hessian h and gradient g; a tiny
+/// shift keeps the octahedral (singular) Hessians solvable, steepest descent otherwise.
+Vector2d newtonDirection(const Matrix2d& h, const Vector2d& g, double shift) {
+    const Matrix2d m = h + shift * Matrix2d::Identity();
+    const double det = m(0, 0) * m(1, 1) - m(0, 1) * m(1, 0);
+    Vector2d direction(-(m(1, 1) * g[0] - m(0, 1) * g[1]) / det,
+                       -(m(0, 0) * g[1] - m(1, 0) * g[0]) / det);
+    if (!(direction.dot(g) < 0.0) || !direction.allFinite()) direction = -g;
+    return direction;
 }
 
 // ---- Octahedron p = 0.5: K = A + B is a polytope --------------------------------------
@@ -329,17 +395,45 @@ ScaleFactorResult generalScaleFactor(const MinkowskiSum& k, const Vector3d& warm
     return result;
 }
 
-/// Ascent of f(n) = n.d - H(n) on the unit sphere from the normal of mu, which is exact at
-/// contact (normal_newton.hpp), then its certificate, else the cutting-plane finish.
+/// Ascent of f(n) = n.d - H(n) on the unit sphere from the normal of mu, which is exact
+/// at contact: Newton on the tangent plane of the current normal, f(u/|u|) = f~(u)/|u|.
 void generalSignedDistance(const MinkowskiSum& k, const PairTolerances& tolerances,
                            SignedDistanceResult& result) {
     const Vector3d& d = k.displacement();
-    const NormalNewton ascent =
-        normalNewton(k.pair(), result.normal, {tolerances, NewtonStep::lineSearch});
-    result.iterations += ascent.result.iterations;
-    k.evaluations += ascent.result.evaluations;
-    Vector3d n = ascent.result.normal;
-    double f = ascent.result.signedDistance;
+    Vector3d n = result.normal;
+    double f = n.dot(d) - k.support(n);
+    // Derivative of f(normalize(u)) along direction v at u: (grad f~ - f~ u / |u|^2) . v / |u|.
+    auto slope = [&](const Vector3d& u, const Vector3d& v) {
+        const double r2 = u.squaredNorm();
+        const double fu = u.dot(d) - k.support(u);
+        return (d - k.supportPoint(u) - fu * u / r2).dot(v) / std::sqrt(r2);
+    };
+    const double curvatureShift = 1e-12 * k.shape().semiAxis();
+    for (int iteration = 0; iteration < tolerances.maxNewtonIterations; ++iteration) {
+        ++result.iterations;
+        const Eigen::Matrix<double, 3, 2> basis = tangentBasis(n);
+        const Vector2d gradient = basis.transpose() * (d - k.supportPoint(n)); // of f
+        if (gradient.isZero(0.0)) break;
+        // Tangent Hessian of -f: P^T d2H P + f I.
+        const Matrix2d hessian =
+            basis.transpose() * k.supportHessian(n) * basis + f * Matrix2d::Identity();
+        Matrix2d shifted = hessian;
+        const double smallest = Eigen::SelfAdjointEigenSolver<Matrix2d>(hessian).eigenvalues()[0];
+        if (smallest < curvatureShift)
+            shifted += (curvatureShift - smallest) * Matrix2d::Identity();
+        const Vector2d direction = newtonDirection(shifted, -gradient, 0.0);
+        const Vector3d v = basis * direction;
+        const double length = direction.norm();
+        const double t = exactLineSearch(
+            [&](double s) { return -slope(n + s * v, v); }, -gradient.dot(direction),
+            tolerances.normalTolerance / length, 1.0 / length, tolerances.maxLineSearchIterations);
+        const Vector3d candidate = (n + t * v).normalized();
+        const double fCandidate = candidate.dot(d) - k.support(candidate);
+        if (!(fCandidate >= f)) break; // no further ascent at rounding level
+        n = candidate;
+        f = fCandidate;
+        if (t * length <= tolerances.normalTolerance) break;
+    }
     // Certificate: the contact points are separated by s along n (d - grad H(n) = s n), or,
     // where a face's support point is ill-conditioned, the supporting planes of n have a common
     // perpendicular between the bodies.

@@ -1,7 +1,6 @@
 #include "shapes/superball/warm_distance.hpp"
 
 #include "geometry/superball.hpp"
-#include "pair/normal_newton.hpp"
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -12,17 +11,142 @@
 namespace sbpack::superball {
 namespace {
 
-/// Warm Newton (common/pair/normal_newton.hpp) within the predictor's limits: limits.newtonSteps
-/// steps (slow near face normals of p > 1, where the Hessian diverges, and in most evaluations
-/// of near-cubes), stopping where a lower bound above `enough` will do (limits.boundAscentRatio).
-WarmNewton newtonSignedDistance(const SuperballPair& pair, const Vector3d& n,
-                                const SuperballPredictorLimits& limits, const PairRates* rates,
-                                double enough) {
-    PairTolerances tolerances;
-    tolerances.maxNewtonIterations = limits.newtonSteps;
-    const NormalNewton ascent = normalNewton(
-        pair, n, {tolerances, NewtonStep::backtracking, enough, limits.boundAscentRatio, rates});
-    return {ascent.result, ascent.converged, ascent.normalRate};
+/// The fraction of a Newton step on the normal to try first. Where the step drives a
+/// body-frame component u of the normal through zero, h ~ |u|^q there: for q < 2 its second
+/// derivative diverges, Newton overshoots, and u flips sign for dozens of iterations, each
+/// nearly as far out. In z = sgn(u) |u|^{q-1}, where h' is linear, Newton lands it:
+/// z' = z + (q - 1) |u|^{q-2} du, so u' = u (1 - w)^{1/(q-1)} with w = (q - 1) r, r = -du / u > 1
+/// (u' = -u (w - 1)^{1/(q-1)} past zero), the fraction (u' - u) / du of the step. The smallest
+/// over both bodies' components is returned (1 where none crosses).
+double crossingFraction(const SuperballPair& pair, const Vector3d& n, const Vector3d& move) {
+    const double q = pair.shape.dualExponent();
+    double fraction = 1.0;
+    if (q == 2.0 || !std::isfinite(q)) return fraction;
+    for (const Matrix3d* rotation : {&pair.rotationA, &pair.rotationB}) {
+        const Vector3d u = rotation->transpose() * n, du = rotation->transpose() * move;
+        for (int c = 0; c < 3; ++c) {
+            if (!(u[c] * (u[c] + du[c]) < 0.0)) continue;
+            const double r = -du[c] / u[c], w = (q - 1.0) * r;
+            const double landed = w < 1.0 ? 1.0 - std::pow(1.0 - w, 1.0 / (q - 1.0))
+                                          : 1.0 + std::pow(w - 1.0, 1.0 / (q - 1.0));
+            fraction = std::min(fraction, landed / r);
+        }
+    }
+    return fraction;
+}
+
+/// dn/dtau of the optimal normal by the implicit function theorem: its tangent gradient
+/// g = B^T (d - x_i - x_j) stays zero, so dn = B H^{-1} dg/dtau with H the tangent Hessian of
+/// -f, and at fixed n each support point moves as x_k' = omega_k x x_k + d2h_k (n x omega_k) +
+/// strain x_k (the body frame's direction of n turns at n x omega_k; d2h_k in the lab frame).
+Vector3d optimalNormalRate(const PairRates& rates, const Vector3d& n,
+                           const Eigen::Matrix<double, 3, 2>& basis, const Eigen::Matrix2d& hessian,
+                           const Vector3d& xi, const Vector3d& xj, const Matrix3d& hi,
+                           const Matrix3d& hj) {
+    const Vector3d drift = rates.velocity - rates.strain * (xi + xj) -
+                           rates.angularVelocityI.cross(xi) - hi * n.cross(rates.angularVelocityI) -
+                           rates.angularVelocityJ.cross(xj) - hj * n.cross(rates.angularVelocityJ);
+    return basis * hessian.inverse() * (basis.transpose() * drift);
+}
+
+/// f(n) = n.d - h_i(n) - h_j(n) at a unit normal, with both bodies' support jets.
+struct NormalPoint {
+    Vector3d n;
+    Superball::SupportJet ji, jj;
+    double f;
+};
+NormalPoint normalPoint(const SuperballPair& pair, const Vector3d& n) {
+    NormalPoint point{n, pair.shape.supportJet(pair.rotationA.transpose() * n),
+                      pair.shape.supportJet(pair.rotationB.transpose() * n), 0.0};
+    point.f = n.dot(pair.displacement) - point.ji.value - point.jj.value;
+    return point;
+}
+
+/// Newton's step H^{-1} g on the tangent plane (Cramer's rule); none unless H is positive
+/// definite.
+std::optional<Eigen::Vector2d> tangentStep(const Eigen::Matrix2d& h, const Eigen::Vector2d& g) {
+    const double det = h(0, 0) * h(1, 1) - h(0, 1) * h(1, 0);
+    if (!(h(0, 0) > 0.0 && det > 0.0)) return std::nullopt;
+    return Eigen::Vector2d((h(1, 1) * g[0] - h(0, 1) * g[1]) / det,
+                           (h(0, 0) * g[1] - h(1, 0) * g[0]) / det);
+}
+
+/// Backtracking: the fraction `first` of the tangent step (`basis` times `step`), halved until f
+/// does not decrease (beyond rounding), at most down to an eighth of it; whether `now` ascended.
+bool backtrack(const SuperballPair& pair, NormalPoint& now,
+               const Eigen::Matrix<double, 3, 2>& basis, const Eigen::Vector2d& step,
+               double first) {
+    for (double t = first; t >= 0.125 * first; t *= 0.5) {
+        const NormalPoint next = normalPoint(pair, (now.n + basis * (t * step)).normalized());
+        if (next.f >= now.f - 1e-15 * pair.shape.diameter()) {
+            now = next;
+            return true;
+        }
+    }
+    return false;
+}
+
+/// s at a warm normal by Newton steps on the unit sphere with backtracking, f(n) = n.d - h_i(n) -
+/// h_j(n) being concave about its maximum near contact (docs/design.md §2); the tangent Hessian of
+/// -f is P^T (d2h_i + d2h_j) P + f I. Unconverged when an eighth of a step still does not ascend,
+/// the Hessian is not positive definite or it takes more than limits.newtonSteps steps (slow near
+/// face normals of p > 1, where the Hessian diverges, and most evaluations of near-cubes), or,
+/// where a lower bound above `enough` will do, as soon as its plane is one
+/// (limits.boundAscentRatio).
+WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n,
+                                const SuperballPredictorLimits& limits,
+                                const PairRates* rates = nullptr, double enough = kNoContact) {
+    const Matrix3d& qi = pair.rotationA;
+    const Matrix3d& qj = pair.rotationB;
+    const Vector3d& d = pair.displacement;
+    const double size = pair.shape.diameter();
+    NormalPoint now = normalPoint(pair, n);
+    auto answer = [&](int iterations, bool converged) {
+        WarmNewton w{{}, converged};
+        w.result.signedDistance = now.f;
+        w.result.normal = now.n;
+        w.result.contactA = qi * now.ji.point;
+        w.result.contactB = d - qj * now.jj.point;
+        w.result.iterations = iterations;
+        return w;
+    };
+    for (int iteration = 0; iteration < limits.newtonSteps; ++iteration) {
+        const Vector3d xi = qi * now.ji.point, xj = qj * now.jj.point;
+        const Eigen::Matrix<double, 3, 2> basis = tangentBasis(now.n);
+        const Eigen::Vector2d gradient = basis.transpose() * (d - xi - xj);
+        const Matrix3d hi = qi * now.ji.hessian * qi.transpose();
+        const Matrix3d hj = qj * now.jj.hessian * qj.transpose();
+        Eigen::Matrix2d hessian = basis.transpose() * (hi + hj) * basis;
+        hessian.diagonal().array() += now.f;
+        const std::optional<Eigen::Vector2d> step = tangentStep(hessian, gradient);
+        if (!step) return answer(iteration, false);
+        // Converged when the tangent gradient vanishes (a step alone can be tiny under the
+        // clamped, huge Hessians of flat faces) and the predicted ascent g . step is at
+        // rounding level: f(n) is a lower bound on s, accurate to ~1e-17 D then.
+        auto converged = [&] {
+            WarmNewton w = answer(iteration + 1, true);
+            if (rates)
+                w.normalRate = optimalNormalRate(*rates, now.n, basis, hessian, xi, xj, hi, hj);
+            return w;
+        };
+        const double ascent = gradient.dot(*step);
+        if (gradient.norm() <= 1e-9 * size && ascent <= 1e-17 * size) return converged();
+        if (iteration > 0 && now.f > enough && ascent <= limits.boundAscentRatio * (now.f - enough))
+            return answer(iteration + 1, false);
+        // Where a body presents a face (p > 1.5: Newton on its support function, ~|x|^q with
+        // q < 1.5 across the face normal, overshoots) the gradient stays large at the optimum:
+        // the supporting planes' common perpendicular certifies s instead; not where the plane
+        // is already the lower bound needed (bench/RESULTS.md, "Warm Newton stops where its
+        // plane will do").
+        if (pair.shape.p() > 1.5 && now.f <= enough &&
+            supportPlaneMismatch(pair, now.n, now.f, xi, d - xj) <=
+                PairTolerances{}.mismatchTolerance * size)
+            return converged();
+        // Backtracking from the fraction that lands components crossing zero.
+        if (!backtrack(pair, now, basis, *step, crossingFraction(pair, now.n, basis * *step)))
+            return answer(iteration + 1, false);
+    }
+    return answer(limits.newtonSteps, false);
 }
 
 /// Whether the point x (relative to r_A) lies strictly inside both bodies of the pair.

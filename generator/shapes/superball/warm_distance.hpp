@@ -5,12 +5,19 @@
 // common/pair as the fallback); far from contact an unconverged Newton's plane gap serves as a
 // lower bound, and an overlap stands only with a witness point inside both bodies.
 
-#include "pair/normal_newton.hpp"
 #include "pair/pair_geometry.hpp"
 #include "shapes/predictor_stats.hpp"
 #include "shapes/superball/predictor_limits.hpp"
 
 namespace sbpack::superball {
+
+/// How the evaluated pair moves at that instant: d' = velocity, each body turns at its omega and
+/// grows at R'/R = strain.
+struct PairRates {
+    Vector3d velocity;
+    Vector3d angularVelocityI, angularVelocityJ;
+    double strain;
+};
 
 /// Warm Newton's answer: s when converged, else its last iterate, whose f(n) is still a lower
 /// bound on s (every plane's gap is). `normalRate`: dn/dtau of the optimal normal when converged
