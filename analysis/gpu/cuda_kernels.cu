@@ -126,21 +126,15 @@ __global__ void rowPass(const std::uint32_t* words, int m, std::uint32_t* distan
     rowDistances(words + row * wordsPerRow(m), m, distances + row * m);
 }
 
-/// The lines of one axis: line l starts at (l / inner) outerStride + (l % inner), its voxels
-/// `stride` apart.
-struct LineSet {
-    std::int64_t count, inner, outerStride, stride;
-};
-
-/// One thread per line, blockDim.x lines a block, each thread's envelope in the block's
-/// shared memory (envelopeBytesPerLine each, lane-interleaved); from `in` into `out`.
-__global__ void envelopePass(const std::uint32_t* in, std::uint32_t* out, int m, LineSet lines) {
-    extern __shared__ std::uint16_t sites[];
-    const int lanes = static_cast<int>(blockDim.x), lane = static_cast<int>(threadIdx.x);
-    const std::int64_t l = blockIdx.x * std::int64_t{lanes} + lane;
-    if (l >= lines.count) return;
-    const std::int64_t start = (l / lines.inner) * lines.outerStride + l % lines.inner;
-    envelopeLine(in + start, lines.stride, m, out + start, EnvelopeStack{sites + lane, lanes});
+/// One thread per voxel of the M^3 grid, consecutive threads along z (coalesced): the search of
+/// searchedMinimum along the axis whose voxels lie `stride` apart (M: y, M^2: x), from `in`
+/// into `out`.
+__global__ void searchPass(const std::uint32_t* in, std::uint32_t* out, int m,
+                           std::int64_t stride) {
+    const std::int64_t i = blockIdx.x * std::int64_t{blockDim.x} + threadIdx.x;
+    if (i >= std::int64_t{m} * m * m) return;
+    const auto p = static_cast<int>((i / stride) % m);
+    out[i] = searchedMinimum(in + (i - p * stride), stride, m, p);
 }
 
 /// Counts of the nonzero values below `levels` (the void voxels' squared distances) into bins,
@@ -166,19 +160,6 @@ __global__ void histogramOf(const std::uint32_t* values, std::int64_t count, int
     __syncthreads();
     for (int n = static_cast<int>(threadIdx.x); n < levels; n += blockDim.x)
         if (counts[n] != 0) atomicAdd(bins + n, static_cast<unsigned long long>(counts[n]));
-}
-
-/// Lines a block of envelopePass: at most 32 (a warp, the lines side by side along z), halved
-/// until their shared memory fits the device's opt-in limit; 0 when one line does not fit.
-int envelopeLanes(int m) {
-    int device = 0, limit = 0;
-    check(cudaGetDevice(&device), "cudaGetDevice");
-    check(cudaDeviceGetAttribute(&limit, cudaDevAttrMaxSharedMemoryPerBlockOptin, device),
-          "cudaDeviceGetAttribute");
-    int lanes = 32;
-    while (lanes > 0 && lanes * envelopeBytesPerLine(m) > limit)
-        lanes /= 2;
-    return lanes;
 }
 
 } // namespace
@@ -401,30 +382,18 @@ std::size_t fftWorkBytes(int voxels, bool single) {
 }
 
 DeviceBuffer squaredDistances(const DeviceBuffer& words, int voxels) {
-    const std::int64_t m = voxels, lines = m * m;
-    const int lanes = envelopeLanes(voxels);
-    if (lanes == 0)
-        throw std::runtime_error("--device cuda: pores at M = " + std::to_string(voxels) +
-                                 " need " + std::to_string(envelopeBytesPerLine(voxels)) +
-                                 " bytes of shared memory per block, more than this GPU has; "
-                                 "choose a smaller --pore-voxels or --device cpu");
-    const auto sharedBytes = static_cast<int>(lanes * envelopeBytesPerLine(voxels));
-    check(cudaFuncSetAttribute(envelopePass, cudaFuncAttributeMaxDynamicSharedMemorySize,
-                               sharedBytes),
-          "cudaFuncSetAttribute");
+    const std::int64_t m = voxels;
     const std::size_t bytes = static_cast<std::size_t>(m * m * m) * sizeof(std::uint32_t);
     DeviceBuffer distances(bytes);
     auto* d = static_cast<std::uint32_t*>(distances.get());
-    rowPass<<<blocksFor(lines), kThreads>>>(static_cast<const std::uint32_t*>(words.get()), voxels,
+    rowPass<<<blocksFor(m * m), kThreads>>>(static_cast<const std::uint32_t*>(words.get()), voxels,
                                             d);
     synchronize("rowPass");
     const DeviceBuffer along(bytes); // the pass along y, read by the pass along x
     auto* e = static_cast<std::uint32_t*>(along.get());
-    const auto blocks = static_cast<unsigned>((lines + lanes - 1) / lanes);
-    // Along y: line (x, z) at x M^2 + z, stride M; along x: line (y, z) at y M + z, stride M^2.
-    envelopePass<<<blocks, lanes, sharedBytes>>>(d, e, voxels, LineSet{lines, m, m * m, m});
-    envelopePass<<<blocks, lanes, sharedBytes>>>(e, d, voxels, LineSet{lines, m, m, m * m});
-    synchronize("envelopePass");
+    searchPass<<<blocksFor(m * m * m), kThreads>>>(d, e, voxels, m);
+    searchPass<<<blocksFor(m * m * m), kThreads>>>(e, d, voxels, m * m);
+    synchronize("searchPass");
     return distances;
 }
 

@@ -81,9 +81,8 @@ std::size_t fftWorkBytes(int voxels, bool single);
 
 /// The exact periodic squared distances (voxel units) from every voxel to the nearest solid one
 /// (kNoSite everywhere when there is none), as uint32 at (x M + y) M + z: rowDistances along z,
-/// then envelopeLine along y (into a second M^3 buffer, freed on return) and back along x
-/// (docs/gpu.md). Throws std::runtime_error when one line's envelope (envelopeBytesPerLine)
-/// exceeds the device's shared memory per block.
+/// then searchedMinimum at every voxel along y (into a second M^3 buffer, freed on return) and
+/// back along x (docs/gpu.md).
 DeviceBuffer squaredDistances(const DeviceBuffer& words, int voxels);
 
 /// The counts of each value 0 .. largest of the uint32 values (largestValue), the count of

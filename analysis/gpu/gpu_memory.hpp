@@ -13,7 +13,7 @@ struct GpuMemoryPlan {
     /// cuFFT's work area (0 without a spectral grid).
     double spectralBytes = 0.0;
     /// Pores on the pore grid: voxel bits and two M^3 buffers of squared distances (the
-    /// envelope passes read one and write the other; the envelopes live in shared memory).
+    /// search passes read one and write the other).
     double poreBytes = 0.0;
     /// The larger of the two, with the spectral grid's voxel bits kept while pores run.
     double peakBytes = 0.0;

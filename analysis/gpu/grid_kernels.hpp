@@ -3,7 +3,8 @@
 // kernels of cuda_kernels.cu) and the host compiler (the tests, tests/analysis/
 // test_grid_kernels.cpp, which run every function here against the CPU path) compile: the
 // voxels of one particle image along one grid row, the first distance pass along a bit row, and
-// the exact periodic min-plus transform of one line (paper Sec. III B; docs/design.md §5).
+// the exact periodic min-plus transform at one voxel of a line (paper Sec. III B; docs/design.md
+// §5).
 
 #include "geometry/norm_parts.hpp"
 
@@ -133,65 +134,25 @@ SBPACK_HD inline void rowDistances(const std::uint32_t* words, int m, std::uint3
     }
 }
 
-/// One line's lower envelope: the image position plus M/2 of each of its parabolas, 2M entries
-/// `stride` apart (per-thread scratch in the block's shared memory on the device). 16 bits
-/// suffice for M <= maxPoreSizeVoxels (2M <= 32768).
-struct EnvelopeStack {
-    std::uint16_t* site;
-    int stride;
-};
-
-/// Bytes of one line's EnvelopeStack (the envelope kernel's shared memory per line).
-SBPACK_HD constexpr std::int64_t envelopeBytesPerLine(int m) {
-    return 2 * std::int64_t{m} * static_cast<std::int64_t>(sizeof(std::uint16_t));
-}
-
-/// Floor of n / d for d > 0.
-SBPACK_HD inline std::int64_t floorDivide(std::int64_t n, std::int64_t d) {
-    return n >= 0 ? n / d : -((-n + d - 1) / d);
-}
-
-/// The exact periodic min-plus transform of one line (Meijster, Roerdink & Hesselink's lower
-/// envelope in integers):
-///   out(p) = min_q [ f(q) + (min-image |p - q|)^2 ],  p, q in [0, M),  f = kNoSite: no site,
-/// f read at f[q * stride], written at out[p * stride] (other memory: f is read while out is
-/// written). The images q' in [-M/2, M + M/2) enter as further parabolas (a minimum image lies
-/// within M/2). A parabola is the lowest from the first integer p past its separator with the
-/// one below it on the stack, the floor of an exact integer quotient, so the result is the exact
-/// minimum, as the CPU's (pores/distance_transform.cpp); the separators are recomputed from the
-/// sites, which is why the stack holds nothing else.
-SBPACK_HD inline void envelopeLine(const std::uint32_t* f, std::int64_t stride, int m,
-                                   std::uint32_t* out, const EnvelopeStack& s) {
-    const int h = m / 2;
-    auto value = [&](std::int64_t image) {
-        return std::int64_t{f[(image < 0 ? image + m : (image >= m ? image - m : image)) * stride]};
-    };
-    auto site = [&](int k) { return std::int64_t{s.site[k * s.stride]} - h; };
-    auto firstBelow = [&](std::int64_t i, std::int64_t u) { // where u becomes lower than i
-        return 1 + floorDivide(u * u - i * i + value(u) - value(i), 2 * (u - i));
-    };
-    auto start = [&](int k) { return k == 0 ? std::int64_t{0} : firstBelow(site(k - 1), site(k)); };
-    auto height = [&](std::int64_t p, std::int64_t image) {
-        return (p - image) * (p - image) + value(image);
-    };
-    int top = -1;
-    for (std::int64_t u = -h; u < m + h; ++u) {
-        if (value(u) == kNoSite) continue;
-        while (top >= 0 && height(start(top), site(top)) > height(start(top), u))
-            --top;
-        if (top >= 0 && firstBelow(site(top), u) >= m) continue;
-        ++top;
-        s.site[top * s.stride] = static_cast<std::uint16_t>(u + h);
+/// The exact periodic min-plus transform of a line at voxel p, by search:
+///   out(p) = min_q [ f(q) + (min-image |p - q|)^2 ],  q in [0, M),  f = kNoSite: no site,
+/// f read at f[q * stride]. q = p, p +- 1, p +- 2, ... (minimum images, k <= M/2) until k^2
+/// reaches the best value so far: every farther q adds at least k^2, so the result is the exact
+/// minimum, the CPU's (pores/distance_transform.cpp). A voxel takes about sqrt(out(p)) + 1 steps
+/// (none on a solid voxel, where f(p) = 0), at most M/2 + 1 where its plane has no solid; one
+/// thread per voxel, neighbours along z side by side (docs/gpu.md, "The search passes").
+SBPACK_HD inline std::uint32_t searchedMinimum(const std::uint32_t* f, std::int64_t stride, int m,
+                                               int p) {
+    std::uint64_t best = f[p * stride]; // kNoSite lies above every finite candidate
+    for (std::int64_t k = 1; 2 * k <= m && static_cast<std::uint64_t>(k * k) < best; ++k) {
+        const std::int64_t after = p + k >= m ? p + k - m : p + k;
+        const std::int64_t before = p - k < 0 ? p - k + m : p - k;
+        const auto k2 = static_cast<std::uint64_t>(k * k);
+        const std::uint64_t a = f[after * stride], b = f[before * stride];
+        if (a != kNoSite && a + k2 < best) best = a + k2;
+        if (b != kNoSite && b + k2 < best) best = b + k2;
     }
-    std::int64_t from = top >= 0 ? start(top) : 0;
-    for (std::int64_t p = m - 1; p >= 0; --p) {
-        if (top < 0) {
-            out[p * stride] = kNoSite;
-            continue;
-        }
-        out[p * stride] = static_cast<std::uint32_t>(height(p, site(top)));
-        if (p == from && --top >= 0) from = start(top);
-    }
+    return static_cast<std::uint32_t>(best);
 }
 
 } // namespace sbpack::gpu

@@ -1,6 +1,7 @@
 // The GPU grid analysis against the CPU path on a real GPU (docs/gpu.md): the acceptance of the
 // voxels (bit for bit), the distances (exactly) and chi_V (1e-10 relative in double precision).
 // Every test reports skipped, not passed, where no CUDA device is present.
+#include "../analysis/test_packings.hpp"
 #include "gpu/compute_device.hpp"
 #include "gpu/cuda_grid.hpp"
 #include "gpu/gpu_memory.hpp"
@@ -14,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -66,26 +68,41 @@ TEST_F(CudaGridTest, VoxelsEqualTheCpuBitForBit) {
     }
 }
 
+/// The GPU's squared distances, void count, largest distance and their histogram equal the CPU
+/// transform's exactly; the seconds of the GPU's map printed.
+void expectDistancesEqualTheCpu(const Packing& packing, int m, const std::string& label) {
+    const CudaGrid grid(packing, m);
+    const PoreSizeMap cpu = periodicDistanceTransform(cpuMask(packing, m), m, grid.voxelSize());
+    const auto start = std::chrono::steady_clock::now();
+    const PoreSizeMap gpu = grid.poreSizeMap().map;
+    std::cout << "[ distances ] " << label << " M " << m << ": "
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+              << " s on the GPU, map copied\n";
+    ASSERT_TRUE(std::ranges::equal(gpu.squaredDistances(), cpu.squaredDistances()))
+        << label << " M " << m;
+    EXPECT_EQ(gpu.voidCount(), cpu.voidCount());
+    EXPECT_EQ(gpu.maxSquaredDistance(), cpu.maxSquaredDistance());
+    std::vector<std::int64_t> counts(cpu.maxSquaredDistance() + std::size_t{1}, 0);
+    for (const std::uint32_t n : cpu.squaredDistances())
+        ++counts[n];
+    EXPECT_EQ(grid.poreHistogram(), counts) << label << " M " << m;
+}
+
 TEST_F(CudaGridTest, DistancesEqualTheCpuExactly) {
-    // M = 700 beside the stored cases: more envelope sites a line than at 500 (which copies
-    // back in two staged chunks); odd M are 257 and the random masks of the host tests.
+    // M = 700 beside the stored cases: pores of more voxels than at 500 (which copies back in
+    // two staged chunks); odd M are 257 and the random masks of the host tests.
     std::vector<Case> cases(std::begin(kCases), std::end(kCases));
     cases.push_back({"mrj-p1.5-1000.h5", 700});
-    for (const Case& c : cases) {
-        const Packing packing = storedPacking(c.file);
-        const CudaGrid grid(packing, c.voxels);
-        const PoreSizeMap cpu =
-            periodicDistanceTransform(cpuMask(packing, c.voxels), c.voxels, grid.voxelSize());
-        const PoreSizeMap gpu = grid.poreSizeMap().map;
-        ASSERT_TRUE(std::ranges::equal(gpu.squaredDistances(), cpu.squaredDistances()))
-            << c.file << " M " << c.voxels;
-        EXPECT_EQ(gpu.voidCount(), cpu.voidCount());
-        EXPECT_EQ(gpu.maxSquaredDistance(), cpu.maxSquaredDistance());
-        std::vector<std::int64_t> counts(cpu.maxSquaredDistance() + std::size_t{1}, 0);
-        for (const std::uint32_t n : cpu.squaredDistances())
-            ++counts[n];
-        EXPECT_EQ(grid.poreHistogram(), counts) << c.file << " M " << c.voxels;
-    }
+    for (const Case& c : cases)
+        expectDistancesEqualTheCpu(storedPacking(c.file), c.voxels, c.file);
+}
+
+/// One superball in a box of 12 of its widths: most planes hold no solid, where the search passes
+/// run farthest (M/2 + 1 steps a voxel, docs/gpu.md "The search passes").
+TEST_F(CudaGridTest, DistancesOfADiluteSceneEqualTheCpuExactly) {
+    const Packing one = testing::singleParticle(1.5, 0.5, 12.0, Vector3d(3.1, 4.2, 5.3));
+    for (const int m : {97, 300})
+        expectDistancesEqualTheCpu(one, m, "one superball in a box of 12 widths");
 }
 
 /// Largest |chi - chi_cpu| / chi_cpu over the shells.
