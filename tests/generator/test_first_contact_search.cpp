@@ -21,7 +21,9 @@ namespace sbpack {
 namespace {
 
 /// Two balls of radii summing to `reach`, ball k centred at Q_k(tau) e_k about particle k
-/// (Q_k the rotation by omega_k tau), particle j at d + w tau from particle i.
+/// (Q_k the rotation by omega_k tau), particle j at d + w tau from particle i. Every vector is
+/// given: `{}` would leave an Eigen vector uninitialised (the CI once found a receding pair
+/// touching so).
 struct EccentricSpheres {
     Vector3d d, w, omegaI, omegaJ, offsetI, offsetJ;
     double reach = 1.0;
@@ -80,6 +82,8 @@ class EccentricGap {
 };
 static_assert(GapFunction<EccentricGap>);
 
+const Vector3d kZero = Vector3d::Zero(); ///< no velocity, spin or offset
+
 /// The search from tau = 0 over [0, end], starting from the centre line's plane.
 Found search(const EccentricSpheres& balls, double end, int* samples = nullptr) {
     EccentricGap gap(balls);
@@ -105,21 +109,21 @@ void expectTheRoot(const EccentricSpheres& balls, const Found& found, double roo
 
 TEST(FirstContactSearch, HeadOnSpheresTouchAtTheClosedFormRoot) {
     // |d| - reach = 0.5 closed at speed 2: the root is 0.25 exactly.
-    const EccentricSpheres balls{{1.5, 0, 0}, {-2, 0, 0}, {}, {}, {}, {}, 1.0};
+    const EccentricSpheres balls{{1.5, 0, 0}, {-2, 0, 0}, kZero, kZero, kZero, kZero, 1.0};
     const Found found = search(balls, 10.0);
     expectTheRoot(balls, found, 0.25);
     EXPECT_NEAR(found.normal.x(), 1.0, 1e-15);
 }
 
 TEST(FirstContactSearch, ARecedingOrGrazingPairIsNeverAContact) {
-    const EccentricSpheres receding{{1.5, 0, 0}, {2, 0, 0}, {}, {}, {}, {}, 1.0};
+    const EccentricSpheres receding{{1.5, 0, 0}, {2, 0, 0}, kZero, kZero, kZero, kZero, 1.0};
     EXPECT_EQ(search(receding, 10.0).time, kNoContact);
     // Passing at 1 + 1e-9 from centre to centre: s falls to 1e-9 and rises again.
-    const EccentricSpheres grazing{{-3, 1 + 1e-9, 0}, {1, 0, 0}, {}, {}, {}, {}, 1.0};
+    const EccentricSpheres grazing{{-3, 1 + 1e-9, 0}, {1, 0, 0}, kZero, kZero, kZero, kZero, 1.0};
     const Found missed = search(grazing, 10.0);
     EXPECT_FALSE(missed.contact && missed.time < 10.0) << missed.time;
     // And 1e-9 closer: a root exists, at sqrt(reach^2 - b^2) before the closest approach.
-    const EccentricSpheres clipping{{-3, 1 - 1e-9, 0}, {1, 0, 0}, {}, {}, {}, {}, 1.0};
+    const EccentricSpheres clipping{{-3, 1 - 1e-9, 0}, {1, 0, 0}, kZero, kZero, kZero, kZero, 1.0};
     expectTheRoot(clipping, search(clipping, 10.0), 3.0 - std::sqrt(1.0 - std::pow(1 - 1e-9, 2)));
 }
 
@@ -129,7 +133,8 @@ TEST(FirstContactSearch, ASpinDrivenDipIsCaughtAtItsFirstRoot) {
     // 0.1125 / 0.21. The rate bound is spin alone, so the first-order steps are long against
     // the dip: the curvature (chord) bound has to certify them.
     const double omega = 40.0;
-    const EccentricSpheres balls{{1.05, 0, 0}, {}, {0, 0, -omega}, {}, {0, 0.1, 0}, {}, 1.0};
+    const EccentricSpheres balls{{1.05, 0, 0}, kZero, {0, 0, -omega}, kZero, {0, 0.1, 0},
+                                 kZero,        1.0};
     expectTheRoot(balls, search(balls, 10.0), std::asin(0.1125 / 0.21) / omega);
 }
 
@@ -138,7 +143,7 @@ TEST(FirstContactSearch, AShallowDipBeforeThePairRecedesIsNotSteppedOver) {
     // (by 6e-5 of the reach, for about 2e-3 of the time), every later one falls short.
     const double omega = 40.0;
     const EccentricSpheres balls{
-        {1.1 - 1e-4, 0, 0}, {1e-3, 0, 0}, {0, 0, -omega}, {}, {0, 0.1, 0}, {}, 1.0};
+        {1.1 - 1e-4, 0, 0}, {1e-3, 0, 0}, {0, 0, -omega}, kZero, {0, 0.1, 0}, kZero, 1.0};
     double left = 0.0, right = 0.5 * M_PI / omega; // s(left) > 0 > s(right): bisect
     ASSERT_LT(balls.s(right), 0.0);
     while (right - left > 1e-16)

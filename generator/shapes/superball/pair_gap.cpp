@@ -19,7 +19,10 @@ double planeGapRate(const PairMotion& m, double diameter, const Vector3d& n, con
 
 std::optional<SphereWindow> circumscribedWindow(const PairMotion& m, double c, double horizon) {
     const double D = m.diameter, gamma = m.growthRate;
-    const PairMotion spheres{m.displacement, m.relativeVelocity, {}, {}, {}, {}, c * D, c * gamma};
+    const PairMotion spheres{.displacement = m.displacement,
+                             .relativeVelocity = m.relativeVelocity,
+                             .diameter = c * D,
+                             .growthRate = c * gamma};
     const double enter =
         m.displacement.squaredNorm() <= c * c * D * D ? 0.0 : SphereShape{}.collisionTime(spheres);
     if (enter >= horizon) return std::nullopt;
