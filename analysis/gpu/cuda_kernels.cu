@@ -127,14 +127,13 @@ __global__ void rowPass(const std::uint32_t* words, int m, std::uint32_t* distan
 }
 
 /// One thread per voxel of the M^3 grid, consecutive threads along z (coalesced): the search of
-/// searchedMinimum along the axis whose voxels lie `stride` apart (M: y, M^2: x), from `in`
+/// searchedMinimumAt along the axis whose voxels lie `stride` apart (M: y, M^2: x), from `in`
 /// into `out`.
 __global__ void searchPass(const std::uint32_t* in, std::uint32_t* out, int m,
                            std::int64_t stride) {
     const std::int64_t i = blockIdx.x * std::int64_t{blockDim.x} + threadIdx.x;
     if (i >= std::int64_t{m} * m * m) return;
-    const auto p = static_cast<int>((i / stride) % m);
-    out[i] = searchedMinimum(in + (i - p * stride), stride, m, p);
+    out[i] = searchedMinimumAt(in, i, m, stride);
 }
 
 /// Counts of the nonzero values below `levels` (the void voxels' squared distances) into bins,

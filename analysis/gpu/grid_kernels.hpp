@@ -155,4 +155,12 @@ SBPACK_HD inline std::uint32_t searchedMinimum(const std::uint32_t* f, std::int6
     return static_cast<std::uint32_t>(best);
 }
 
+/// searchedMinimum at voxel i of the M^3 grid ((x M + y) M + z) along the axis whose voxels lie
+/// `stride` apart (M: y, M^2: x): the work of one thread of the search passes.
+SBPACK_HD inline std::uint32_t searchedMinimumAt(const std::uint32_t* f, std::int64_t i, int m,
+                                                 std::int64_t stride) {
+    const auto p = static_cast<int>((i / stride) % m);
+    return searchedMinimum(f + (i - p * stride), stride, m, p);
+}
+
 } // namespace sbpack::gpu

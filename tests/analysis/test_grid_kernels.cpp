@@ -66,10 +66,8 @@ std::vector<std::uint32_t> hostSquaredDistances(const std::vector<std::uint32_t>
     std::vector<std::uint32_t> e(d.size()); // the kernels' second buffer: d -> e -> d
     auto pass = [m, mm](const std::vector<std::uint32_t>& in, std::vector<std::uint32_t>& out,
                         std::int64_t stride) {
-        for (std::int64_t i = 0; i < mm * mm * mm; ++i) {
-            const auto p = static_cast<int>((i / stride) % mm);
-            out[i] = gpu::searchedMinimum(in.data() + (i - p * stride), stride, m, p);
-        }
+        for (std::int64_t i = 0; i < mm * mm * mm; ++i)
+            out[i] = gpu::searchedMinimumAt(in.data(), i, m, stride);
     };
     pass(d, e, mm);      // along y
     pass(e, d, mm * mm); // along x
