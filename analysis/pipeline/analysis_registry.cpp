@@ -113,7 +113,7 @@ constexpr std::array<AnalysisInfo, 8> kRegistry{{
      .grid = VoxelGrid::Spectral,
      .needs = kHyperuniformityNeeds,
      .run = stages::runHyperuniformity,
-     .finishEnsemble = stages::poolSpreadability,
+     .finishEnsemble = stages::poolHyperuniformity,
      .options = kHyperuniformityOptions,
      .pythonClass = "Hyperuniformity"},
     {.analysis = Analysis::Order,
@@ -135,12 +135,6 @@ std::vector<const schema::Group*> collectGroups() {
 }
 
 } // namespace
-
-const AnalysisInfo* analysisOfGroup(std::string_view group) {
-    for (const AnalysisInfo& info : kRegistry)
-        if (info.group().name == group) return &info;
-    return nullptr;
-}
 
 std::vector<std::string_view> analysisOptions(const AnalysisInfo& info) {
     std::vector<std::string_view> options(info.options.begin(), info.options.end());

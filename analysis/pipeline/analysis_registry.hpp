@@ -12,6 +12,8 @@
 namespace sbpack {
 
 class FileContext;
+struct EnsembleResults;
+struct FileResults;
 struct RunSettings;
 struct Packing;
 namespace schema {
@@ -46,9 +48,10 @@ struct StageMemory {
 using StageRun = bool (*)(FileContext& context, schema::Record& record);
 /// Estimates a stage's largest transient allocation; nullptr where it is negligible.
 using StageMemoryEstimate = StageMemory (*)(const Packing& packing, const RunSettings& settings);
-/// Adds to an ensemble's statistics of the analysis's group what the generic reduction cannot
-/// (the schema's Reduce::Pooled fields), from the reduced record itself.
-using EnsembleFinish = void (*)(schema::Record& ensembleGroup);
+/// Adds to an ensemble's statistics of the analysis's groups what the generic reduction cannot
+/// (the schema's Reduce::Pooled fields), from the reduced groups and the members' own records
+/// (`files[m]` for m in ensemble.members). Runs once per ensemble, after every group is reduced.
+using EnsembleFinish = void (*)(EnsembleResults& ensemble, std::span<const FileResults> files);
 
 struct AnalysisInfo {
     Analysis analysis;
@@ -74,10 +77,6 @@ struct AnalysisInfo {
 
 /// The options of `info` and of what it needs, recursively, each once, its own first.
 std::vector<std::string_view> analysisOptions(const AnalysisInfo& info);
-
-/// The analysis whose own results group is called `group`; nullptr for groups an analysis adds
-/// beside its own (e.g. hyper's hyperuniformity).
-const AnalysisInfo* analysisOfGroup(std::string_view group);
 
 /// The results groups of every analysis, in registry order (docs/results-schema.md's order).
 std::span<const schema::Group* const> resultGroups();

@@ -9,6 +9,7 @@
 #include <map>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
 namespace sbpack {
 
@@ -218,6 +219,10 @@ const schema::Record* EnsembleResults::group(std::string_view name) const {
     return nullptr;
 }
 
+schema::Record* EnsembleResults::group(std::string_view name) {
+    return const_cast<schema::Record*>(std::as_const(*this).group(name));
+}
+
 std::vector<std::vector<std::size_t>> ensembleMembers(std::span<const FileResults> files) {
     std::vector<std::vector<std::size_t>> ensembles;
     for (std::size_t i = 0; i < files.size(); ++i) {
@@ -261,10 +266,10 @@ EnsembleResults computeEnsemble(std::span<const FileResults> files,
         if (in.records.empty()) continue;
         e.groups.push_back(reduce(g, schema::ensembleGroup(g), in));
         e.groups.back().set("n_files", in.records.size());
-        if (const AnalysisInfo* info = analysisOfGroup(g.name); info && info->finishEnsemble)
-            info->finishEnsemble(e.groups.back());
     }
     e.members = std::move(members);
+    for (const AnalysisInfo& info : analysisRegistry())
+        if (info.finishEnsemble && e.group(info.group().name)) info.finishEnsemble(e, files);
     return e;
 }
 

@@ -48,6 +48,7 @@ struct EnsembleResults {
 
     /// The statistics of analysis group `name`; nullptr if no member has that group.
     const schema::Record* group(std::string_view name) const;
+    schema::Record* group(std::string_view name);
 };
 
 /// The files grouped by (p, N), each group in input order, groups in order of first appearance.

@@ -121,6 +121,12 @@ std::optional<Value> perWidth(const detail::OwnerOf<Path...>& result, const Scal
     return detail::divideByWidth<K>(member<Path...>(result, scales), scales.meanWidth);
 }
 
+/// A Reduce::Pooled column: never read from one file's result (the analysis's EnsembleFinish
+/// sets it on the ensemble, pipeline/analysis_registry.hpp).
+template <class R> std::optional<Value> ensembleOnly(const R&, const Scales&) {
+    return std::nullopt;
+}
+
 /// The columns of one group and the Field list its schema Group spans, built at compile time.
 template <class R, std::size_t N> class FieldTable {
   public:

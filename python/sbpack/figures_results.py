@@ -160,9 +160,11 @@ def small_q_points(ax, s, series, qmax):
     keep, scale = x <= qmax, chi_scale(s)
     f = s.files[0]
     h = scalar(s, "hyperuniformity", "H")
-    fit_text = ("" if h is None else
-                fr"; $H = {h[0]:.2g} \pm {h[1]:.1g}$ over {len(s.members('hyperuniformity'))}"
-                " fits" if s.averaged else "")
+    pooled = s.averaged and "H_pooled" in (s.ensemble or {}).get("hyperuniformity", {})
+    fit_text = ("" if h is None or not s.averaged else
+                fr"; $H = {h[0]:.2g} \pm {h[1]:.1g}$, "
+                + (f"one fit of {len(s.members('hyperuniformity'))} inputs" if pooled else
+                   f"over {len(s.members('hyperuniformity'))} fits"))
     degenerate = (not s.averaged and "hyperuniformity" in f
                   and not fit_drawable(f["hyperuniformity"]))
     label = label_with_grid(s, series, "spectral_density") + fit_text + \
@@ -174,6 +176,17 @@ def small_q_points(ax, s, series, qmax):
                 mfc="none", ms=7, color=s.style["color"], label="exact (spheres), same shells")
     if not s.averaged and "hyperuniformity" in f and not degenerate:
         small_q_fit(ax, s, f)
+    if pooled:
+        pooled_fit(ax, s, x[keep][0])
+
+
+def pooled_fit(ax, s, qw_min):
+    """The ensemble's one fit a0 + a1 Q^alpha through every input's wave vectors, at its pooled
+    alpha (docs/hyperuniformity.md, "Ensembles"), over the fit window."""
+    h, alpha = s.ensemble["hyperuniformity"], s.ensemble["spreadability"]["alpha_pooled"]
+    x = np.geomspace(qw_min * 0.8, s.first("hyperuniformity")["q_fit_max_w"], 100)
+    ax.plot(x, h["a0_pooled"] + h["a1_pooled"] * x ** alpha, "-", color=s.style["color"], lw=1.5,
+            label=fr"fit of all inputs: $\alpha = {alpha:.2f}$ (pooled)")
 
 
 def small_q(series, qmax=4.0):

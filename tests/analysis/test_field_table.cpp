@@ -151,8 +151,6 @@ TEST(FieldTable, EveryResultsGroupHasAUniqueNameAndUniqueFields) {
             EXPECT_TRUE(fields.insert(f.name).second) << g->name << "/" << f.name << " twice";
         EXPECT_EQ(findResultGroup(g->name), g);
     }
-    for (const AnalysisInfo& info : analysisRegistry())
-        EXPECT_EQ(analysisOfGroup(info.group().name), &info);
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 #include "io/hdf5_handles.hpp"
 #include "io/packing_io.hpp"
 #include "parallel/parallel.hpp"
+#include "hyperuniformity/hyperuniformity_fields.hpp"
 #include "pipeline/analysis_registry.hpp"
 #include "pipeline/ensemble.hpp"
 #include "pipeline/resources.hpp"
@@ -315,6 +316,50 @@ TEST(Pipeline, InputsOfOtherPOrNFormSeparateEnsembles) {
     EXPECT_DOUBLE_EQ(results.ensembles[1].root.number("p"), 1.5);
     std::vector<FileResults> mixed{results.files[0], results.files[1]};
     EXPECT_THROW(computeEnsemble(mixed, {0, 1}), std::invalid_argument);
+}
+
+/// A member of p = 1.5 as hyper records it: E(t) = t^{-(3 + alpha) / 2} exactly (so the local
+/// alpha is alpha at every t), the window [1, 10], and fitted wave vectors at `qw` whose chi_V
+/// is a0 + a1 Q^alpha + `shift`.
+FileResults hyperMember(double alpha, double a0, double a1, std::vector<double> qw, double shift) {
+    FileResults f;
+    f.root.set("p", 1.5).set("n_particles", 100);
+    schema::Record s(kSpreadabilityGroup), h(kHyperuniformityGroup);
+    std::vector<double> t, excess, chi;
+    for (int k = 0; k <= 40; ++k) {
+        t.push_back(std::pow(10.0, -1.0 + 0.1 * k));
+        excess.push_back(std::pow(t.back(), -0.5 * (3.0 + alpha)));
+    }
+    for (std::size_t i = 0; i < qw.size(); ++i)
+        chi.push_back(a0 + a1 * std::pow(qw[i], alpha) + shift);
+    s.set("t", t).set("excess", excess).set("t_fit_min", 1.0).set("t_fit_max", 10.0);
+    h.set("fit_Q_w", qw).set("fit_chi", chi).set("chi_peak", 0.02);
+    f.groups = {std::move(s), std::move(h)};
+    return f;
+}
+
+// The ensemble's small-Q fit is one fit through every member's wave vectors at the pooled alpha:
+// members that scatter about one law a0 + a1 Q^alpha (here +- 1e-3 at the same wave vectors)
+// give it back, with their scatter as its error.
+TEST(Pipeline, EnsembleFitsEveryMembersWaveVectorsAtThePooledAlpha) {
+    const double alpha = 0.4, a0 = 3e-4, a1 = 2e-3;
+    const std::vector<FileResults> files{hyperMember(alpha, a0, a1, {0.6, 0.6, 1.2, 1.2}, 1e-3),
+                                         hyperMember(alpha, a0, a1, {0.6, 0.6, 1.2, 1.2}, -1e-3),
+                                         hyperMember(alpha, a0, a1, {0.85, 1.04, 1.04}, 0.0)};
+    const EnsembleResults e = computeEnsemble(files, {0, 1, 2});
+    EXPECT_NEAR(e.group("spreadability")->number("alpha_pooled"), alpha, 1e-12);
+    const schema::Record& h = *e.group("hyperuniformity");
+    EXPECT_NEAR(h.number("a0_pooled"), a0, 1e-15);
+    EXPECT_NEAR(h.number("a1_pooled"), a1, 1e-15);
+    EXPECT_NEAR(h.number("H_pooled"), a0 / 0.02, 1e-13);
+    EXPECT_GT(h.number("a0_pooled_stderr"), 1e-4);
+    EXPECT_LT(h.number("a0_pooled_stderr"), 1e-2);
+    EXPECT_NEAR(h.number("chi_peak"), 0.02, 1e-17);
+    // One member alone: its own shifted law, exactly.
+    const EnsembleResults alone = computeEnsemble(files, {0});
+    const schema::Record& first = *alone.group("hyperuniformity");
+    EXPECT_NEAR(first.number("a0_pooled"), a0 + 1e-3, 1e-15);
+    EXPECT_LT(first.number("a0_pooled_stderr"), 1e-15);
 }
 
 TEST(Pipeline, EnsembleCurvesShareAGridInQw) {

@@ -3,6 +3,7 @@
 // --chi-exact-qmax.
 #include "hyperuniformity/debye_medium.hpp"
 #include "hyperuniformity/hyperuniformity_fields.hpp"
+#include "pipeline/ensemble.hpp"
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
 #include "spectral/exact_spectral_density.hpp"
@@ -74,9 +75,41 @@ bool runHyperuniformity(FileContext& context, schema::Record& record) {
     return true;
 }
 
-void poolSpreadability(schema::Record& e) {
-    const ExponentWindow window{e.number("t_fit_min"), e.number("t_fit_max")};
-    e.set("alpha_pooled", sampledExponent(e.floats("t"), e.floats("excess"), window).alpha);
+namespace {
+
+/// Every member's fitted wave vectors (fit_Q_w, fit_chi of its hyperuniformity group) together.
+SmallQPoints pooledPoints(const EnsembleResults& e, std::span<const FileResults> files) {
+    SmallQPoints all;
+    for (std::size_t m : e.members)
+        if (const schema::Record* h = files[m].group(kHyperuniformityGroup.name)) {
+            const std::vector<double>& qw = h->floats("fit_Q_w");
+            const std::vector<double>& chi = h->floats("fit_chi");
+            all.qw.insert(all.qw.end(), qw.begin(), qw.end());
+            all.chi.insert(all.chi.end(), chi.begin(), chi.end());
+        }
+    return all;
+}
+
+} // namespace
+
+void poolHyperuniformity(EnsembleResults& e, std::span<const FileResults> files) {
+    schema::Record& s = *e.group(kSpreadabilityGroup.name);
+    const ExponentWindow window{s.number("t_fit_min"), s.number("t_fit_max")};
+    const double alpha = sampledExponent(s.floats("t"), s.floats("excess"), window).alpha;
+    s.set("alpha_pooled", alpha);
+    // The members' wave vectors in one fit at the pooled alpha: the fit of the ensemble-mean
+    // chi_V, which one member's near-degenerate fit (alpha near 0: a0 and a1 Q^alpha nearly
+    // collinear) cannot dominate as it does the mean of the members' a0 (docs/hyperuniformity.md).
+    schema::Record* h = e.group(kHyperuniformityGroup.name);
+    if (!h) return;
+    const PowerLawFit fit = fitFixedExponent(pooledPoints(e, files), alpha);
+    const double peak = h->number("chi_peak");
+    h->set("a0_pooled", fit.a0)
+        .set("a0_pooled_stderr", fit.a0Error)
+        .set("a1_pooled", fit.a1)
+        .set("a1_pooled_stderr", fit.a1Error)
+        .set("H_pooled", fit.a0 / peak)
+        .set("H_pooled_stderr", fit.a0Error / peak);
 }
 
 } // namespace sbpack::stages

@@ -10,6 +10,7 @@
 #include "spectral/spectral_density.hpp"
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -43,8 +44,9 @@ struct KeptSpectrum {
     SpectralPeak peak;
 };
 bool runHyperuniformity(FileContext& context, schema::Record& record);
-/// alpha_pooled of an ensemble from its mean E(t) over the mean window.
-void poolSpreadability(schema::Record& ensembleGroup);
+/// An ensemble's alpha_pooled from its mean E(t) over the mean window, and the fit of every
+/// member's wave vectors at that alpha (a0_pooled, a1_pooled, H_pooled).
+void poolHyperuniformity(EnsembleResults& ensemble, std::span<const FileResults> files);
 
 /// Writes `voxels` where --vdb exports them; the file written, nothing without --vdb.
 std::optional<std::string> exportVoxels(const FileContext& context, const Voxelization& voxels);
