@@ -87,6 +87,9 @@ def draw_points(ax, rows, x_of=lambda s: s.p, label=""):
     """One (p, N) series per point: coloured by p, marked by N, error bar its std; a grey line
     joins the points of one N on each side of the sphere (p <= 1, p >= 1: the cusp at p = 1 is
     not bridged) where a side has three points or more."""
+    rows = [r for r in rows if np.isfinite(r[1])]  # e.g. Z where contacts are not resolved
+    if not rows:
+        return
     xs = np.array([x_of(r[3]) for r in rows])
     ys = np.array([r[1] for r in rows])
     ps = np.array([r[0] for r in rows])
@@ -94,7 +97,8 @@ def draw_points(ax, rows, x_of=lambda s: s.p, label=""):
         if side.sum() >= 3:
             ax.plot(xs[side], ys[side], "-", color="0.6", lw=0.8, zorder=1)
     for x, (p, mean, std, s) in zip(xs, rows):
-        ax.errorbar([x], [mean], yerr=[std], fmt=s.style["marker"], color=s.style["color"],
+        ax.errorbar([x], [mean], yerr=[std] if np.isfinite(std) else None,
+                    fmt=s.style["marker"], color=s.style["color"],
                     ms=5, capsize=3, zorder=3)
     ax.plot([], [], rows[0][3].style["marker"], ls="none", color="0.4", label=label)
 
