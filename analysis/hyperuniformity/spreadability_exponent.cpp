@@ -1,5 +1,6 @@
 #include "hyperuniformity/spreadability_exponent.hpp"
 
+#include "numerics/sample_statistics.hpp"
 #include "parallel/parallel.hpp"
 #include "random/random.hpp"
 
@@ -72,17 +73,6 @@ std::pair<double, double> replicaExponents(std::span<const DiscreteSpectrum> mem
         replica.push_back(resampled(s, random));
     const SpreadabilityCurve curve(replica);
     return {extrapolatedExponent(curve, window).alpha, windowExponent(curve, window)};
-}
-
-/// Sample standard deviation of the values (Welford).
-double standardDeviation(const std::vector<double>& values) {
-    double mean = 0.0, m2 = 0.0;
-    for (std::size_t r = 0; r < values.size(); ++r) {
-        const double delta = values[r] - mean;
-        mean += delta / static_cast<double>(r + 1);
-        m2 += delta * (values[r] - mean);
-    }
-    return std::sqrt(m2 / static_cast<double>(values.size() - 1));
 }
 
 /// The least-squares line y = alpha + slope x through (x_k, y_k).
@@ -170,8 +160,8 @@ ExponentEstimate estimateExponent(const SpreadabilityCurve& curve,
             std::tie(alphas[r], means[r]) =
                 replicaExponents(members, window, seed, static_cast<int>(r));
     });
-    e.standardError = standardDeviation(alphas);
-    e.windowMeanError = standardDeviation(means);
+    e.standardError = sampleStatistics(alphas).std;
+    e.windowMeanError = sampleStatistics(means).std;
     return e;
 }
 

@@ -1,5 +1,6 @@
 #include "pipeline/ensemble.hpp"
 
+#include "numerics/sample_statistics.hpp"
 #include "pipeline/analysis_registry.hpp"
 
 #include <fmt/format.h>
@@ -14,19 +15,8 @@
 namespace sbpack {
 
 EnsembleScalar ensembleScalar(std::span<const double> values) {
-    EnsembleScalar s;
-    s.files = static_cast<int>(values.size());
-    if (values.empty()) return s;
-    for (double v : values)
-        s.mean += v;
-    s.mean /= static_cast<double>(values.size());
-    if (values.size() > 1) {
-        double squares = 0.0;
-        for (double v : values)
-            squares += (v - s.mean) * (v - s.mean);
-        s.std = std::sqrt(squares / static_cast<double>(values.size() - 1));
-    }
-    return s;
+    const SampleStatistics s = sampleStatistics(values);
+    return {s.mean, s.std, static_cast<int>(values.size())};
 }
 
 namespace {
