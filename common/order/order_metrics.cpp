@@ -56,8 +56,9 @@ OrderMetrics measureOrder(const Packing& packing,
 OrderVerdict orderVerdict(const OrderMetrics& metrics) {
     std::string reason;
     if (metrics.cutoffBonds && metrics.cutoffBonds->q6.meanLocalOrder >= kOrderedLocalQ6)
-        reason = fmt::format("mean local q6 = {:.3f} >= {} (fcc 0.575, MRJ 0.39-0.44)",
-                             metrics.cutoffBonds->q6.meanLocalOrder, kOrderedLocalQ6);
+        reason = fmt::format("mean local q6 = {:.3f} >= {} (fcc 0.575, MRJ {}-{})",
+                             metrics.cutoffBonds->q6.meanLocalOrder, kOrderedLocalQ6,
+                             kMrjLocalQ6Low, kMrjLocalQ6High);
     // T over fewer than its 12 shells is dominated by the contact shell (a dense disordered
     // box of N = 40 spheres reaches 0.46 over 2): not evidence of order.
     const TranslationalOrderParameters full;

@@ -19,7 +19,7 @@ FCC_Q6 = 0.575  # 13 / sqrt(512) = 0.57452: fcc's first shell (docs/order-metric
 Q6_ORDERED = _sbpack.order_thresholds["q6_local_mean"]
 T_ORDERED = _sbpack.order_thresholds["T"]
 P4_ORDERED = _sbpack.order_thresholds["P4"]
-MRJ_Q6 = (0.39, 0.44)  # the mean local q6 of every MRJ packing of N >= 200 measured (section 5)
+MRJ_Q6 = _sbpack.mrj_local_q6  # the mean local q6 of the MRJ packings measured (section 5)
 Q6_BIN = 0.01  # the histogram's bins of q6
 G2_TOP = 5.0  # g2 axis: at least this high; main peaks above it are clipped, their height named
 HEADROOM = 1.25  # axes' top over the highest value they show unclipped

@@ -179,6 +179,7 @@ void registerAnalyses(py::module_& m) {
     thresholds["T"] = kOrderedT;
     thresholds["P4"] = kOrderedP4;
     m.attr("order_thresholds") = thresholds;
+    m.attr("mrj_local_q6") = py::make_tuple(kMrjLocalQ6Low, kMrjLocalQ6High);
     m.def("analysis_options", &optionRows,
           "sbanalyze's options by name (without --): value (its name; empty for a flag), default "
           "(as --help prints it; empty where it prints none) and help");
