@@ -39,7 +39,7 @@ OrderMetrics measureOrder(const Packing& packing,
                           const std::vector<std::pair<int, int>>* contacts = nullptr);
 
 /// The thresholds of the verdict (docs/order-metrics.md §5, measured on 25 packings): the mean
-/// local q6 over the cutoff bonds, N-independent, is 0.39-0.44 in every MRJ packing of N >= 200
+/// local q6 over the cutoff bonds, N-independent, is 0.37-0.44 in every MRJ packing of N >= 200
 /// and at most 0.47 in the disordered boxes of N = 40-100, 0.53-0.57 in the ordered ones (fcc:
 /// 0.575); T, which counts only over all 12 of its shells (N of about 500 and more; over fewer the
 /// contact shell dominates it), is 0.04-0.07 at N >= 1000; the cubatic P4 is 0.00-0.06 at N >= 200
@@ -48,7 +48,7 @@ OrderMetrics measureOrder(const Packing& packing,
 inline constexpr double kOrderedLocalQ6 = 0.5;
 /// The range of the mean local q6 over the MRJ packings measured (docs/order-metrics.md §5), which
 /// the verdict's message and the figures quote beside fcc's.
-inline constexpr double kMrjLocalQ6Low = 0.39;
+inline constexpr double kMrjLocalQ6Low = 0.37;
 inline constexpr double kMrjLocalQ6High = 0.44;
 inline constexpr double kOrderedT = 0.3;
 inline constexpr double kOrderedP4 = 0.5;
