@@ -8,8 +8,8 @@ import matplotlib.pyplot as plt
 import matplotlib.ticker as ticker
 import numpy as np
 
-from .figures_series import (curve, grids_title, group_label, label_with_grid, line_style, scalar,
-                             sides)
+from .figures_series import (curve, grids_title, group_label, label_with_grid, line_style, pooled,
+                             scalar, sides)
 
 QW = r"$Q\bar w$"
 FLOOR = 1e-30  # a band's lower edge on a log axis where mean - std <= 0 (drawn to the axis)
@@ -160,10 +160,10 @@ def small_q_points(ax, s, series, qmax):
     keep, scale = x <= qmax, chi_scale(s)
     f = s.files[0]
     h = scalar(s, "hyperuniformity", "H")
-    pooled = s.averaged and "H_pooled" in (s.ensemble or {}).get("hyperuniformity", {})
+    one_fit = pooled(s, "hyperuniformity", "H")
     fit_text = ("" if h is None or not s.averaged else
                 fr"; $H = {h[0]:.2g} \pm {h[1]:.1g}$, "
-                + (f"one fit of {len(s.members('hyperuniformity'))} inputs" if pooled else
+                + (f"one fit of {len(s.members('hyperuniformity'))} inputs" if one_fit else
                    f"over {len(s.members('hyperuniformity'))} fits"))
     degenerate = (not s.averaged and "hyperuniformity" in f
                   and not fit_drawable(f["hyperuniformity"]))
@@ -176,7 +176,7 @@ def small_q_points(ax, s, series, qmax):
                 mfc="none", ms=7, color=s.style["color"], label="exact (spheres), same shells")
     if not s.averaged and "hyperuniformity" in f and not degenerate:
         small_q_fit(ax, s, f)
-    if pooled:
+    if one_fit:
         pooled_fit(ax, s, x[keep][0])
 
 

@@ -137,13 +137,20 @@ def _at(xs, ys, grid, step):
     return np.interp(grid, xs, ys, left=ys[0], right=0.0)
 
 
+def pooled(s, group, name):
+    """True where the series' ensemble has NAME_pooled and NAME_pooled_stderr in `group` (e.g.
+    H: its one fit through every input's data, docs/hyperuniformity.md "Ensembles")."""
+    g = s.ensemble if group is None else (s.ensemble or {}).get(group)
+    return s.averaged and g is not None and name + "_pooled_stderr" in g
+
+
 def scalar(s, group, name):
-    """(mean, std) of the series' group/name: its ensemble's (two inputs or more; where the
-    ensemble has NAME_pooled and NAME_pooled_stderr, e.g. H, its one fit through every input's
-    data and that fit's error instead), or its one input's (std 0); None where absent."""
+    """(mean, std) of the series' group/name: its ensemble's (two inputs or more; where it is
+    `pooled`, that one fit's value and error instead), or its one input's (std 0); None where
+    absent."""
     if s.averaged:
         g = s.ensemble if group is None else (s.ensemble or {}).get(group)
-        if g is not None and name + "_pooled_stderr" in g:
+        if pooled(s, group, name):
             return g[name + "_pooled"], g[name + "_pooled_stderr"]
         return (g[name], g.get(name + "_std", 0.0)) if g is not None and name in g else None
     f = s.files[0] if group is None else s.first(group)

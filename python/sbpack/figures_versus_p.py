@@ -11,7 +11,7 @@ import numpy as np
 
 from . import _sbpack
 from .figures_results import new_figure, note
-from .figures_series import scalar
+from .figures_series import pooled, scalar
 
 REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "mst-reference-values.csv")
 PAPER = "paper (Maher et al.)"
@@ -113,12 +113,16 @@ def panels_with_data(series):
     return [panel for panel in PANELS if points(series, panel[0], panel[1])]
 
 
-def n_label(rows):
-    """'N = 250 (mean +- std of 3 inputs)', or '... (one input per p)'."""
+def n_label(rows, group=None, name=None):
+    """'N = 250 (mean +- std of 3 inputs)', '... (one fit of 3 inputs +- its error)' where
+    group/name is `pooled`, or '... (one input per p)'."""
     counts = sorted({len(r[3].files) for r in rows})
     if counts == [1]:
         return f"N = {rows[0][3].n} (one input per p)"
-    return f"N = {rows[0][3].n} (mean $\\pm$ std of {'/'.join(map(str, counts))} inputs)"
+    inputs = "/".join(map(str, counts))
+    if name is not None and all(pooled(r[3], group, name) for r in rows):
+        return f"N = {rows[0][3].n} (one fit of {inputs} inputs $\\pm$ its error)"
+    return f"N = {rows[0][3].n} (mean $\\pm$ std of {inputs} inputs)"
 
 
 def versus_p(series):
@@ -131,7 +135,7 @@ def versus_p(series):
     fig, axes = new_figure(columns, rows, width=3.9, height=3.3)
     for ax, (group, name, ylabel, column, scale) in zip(axes.ravel(), panels):
         for n, rows_n in points(series, group, name).items():
-            draw_points(ax, rows_n, label=n_label(rows_n))
+            draw_points(ax, rows_n, label=n_label(rows_n, group, name))
             if group == "order":
                 mark_ordered(ax, rows_n)
         ps = [s.p for s in series]
@@ -145,8 +149,8 @@ def versus_p(series):
     for ax in axes.ravel()[len(panels):]:
         ax.set_axis_off()
     note(fig, "Against the superball exponent p (every quantity dimensionless): points coloured "
-              "by p as in the other figures, marked by N, error bars the ensemble's std, grey "
-              "lines joining three points or more on one side of p = 1; squares: the paper "
+              "by p as in the other figures, marked by N, error bars the ensemble's std (H: the "
+              "standard error of its one fit through every input), grey lines joining three points or more on one side of p = 1; squares: the paper "
               "(Maher et al.)" + ("; the order metrics (cutoff bonds: shorter than the first "
                                   "minimum of g₂) are not in the paper, and Q₆ and T depend "
                                   "on N (compare one N)" if any(p[0] == "order" for p in panels)

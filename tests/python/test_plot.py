@@ -198,6 +198,22 @@ def test_versus_p_draws_the_ensembles_and_the_paper(ensemble, ensemble_figures):
     assert any(t.startswith("$H$") for t in titles)  # H against p (paper Fig. H_Xk)
 
 
+def test_versus_p_h_is_the_pooled_fit_and_says_so(ensemble, ensemble_figures):
+    """The H panel draws each ensemble's one fit through every member (H_pooled +- its
+    standard error, docs/hyperuniformity.md "Ensembles"), and its legend says so where the
+    other panels say mean +- std."""
+    ensembles = sbpack.read_results(ensemble)["ensembles"]
+    axes = {ax.get_ylabel(): ax for ax in ensemble_figures["versus_p"].axes if ax.axison}
+    h_axis = next(ax for label, ax in axes.items() if label.startswith("$H$"))
+    drawn = {c.lines[0].get_ydata()[0] for c in h_axis.containers
+             if c.get_label() != figures_versus_p.PAPER}
+    assert drawn == {e["hyperuniformity"]["H_pooled"] for e in ensembles}
+    legend = [t.get_text() for t in h_axis.get_legend().get_texts()]
+    assert any("one fit of 3 inputs" in t for t in legend), legend
+    phi_legend = [t.get_text() for t in axes[r"$\phi$"].get_legend().get_texts()]
+    assert any("mean $\\pm$ std of 3 inputs" in t for t in phi_legend), phi_legend
+
+
 def test_versus_p_title_fits_with_hyper_only(ensemble):
     """Only hyper results (phi, alpha and H: three panels): the note above them is not
     clipped."""
