@@ -14,11 +14,6 @@
 
 namespace sbpack {
 
-EnsembleScalar ensembleScalar(std::span<const double> values) {
-    const SampleStatistics s = sampleStatistics(values);
-    return {s.mean, s.std, static_cast<int>(values.size())};
-}
-
 namespace {
 
 /// One file's count-weighted sums of Q w, Q and the value in one bin.
@@ -61,13 +56,14 @@ void appendBin(const std::vector<FileBin>& perFile, EnsembleCurve& out) {
         q += b.q / c;
         count += b.count;
     }
-    const EnsembleScalar s = ensembleScalar(values);
-    out.qw.push_back(qw / s.files);
-    out.q.push_back(q / s.files);
+    const SampleStatistics s = sampleStatistics(values);
+    const auto files = static_cast<double>(values.size());
+    out.qw.push_back(qw / files);
+    out.q.push_back(q / files);
     out.mean.push_back(s.mean);
     out.std.push_back(s.std);
     out.count.push_back(count);
-    out.files.push_back(s.files);
+    out.files.push_back(static_cast<std::int64_t>(values.size()));
 }
 
 } // namespace
@@ -99,7 +95,7 @@ void reduceScalar(const schema::Field& f, const Sources& in, schema::Record& out
     for (const schema::Record* r : in.records)
         if (r->has(f.name)) values.push_back(r->number(f.name));
     if (values.empty()) return; // an optional field no member has
-    const EnsembleScalar s = ensembleScalar(values);
+    const SampleStatistics s = sampleStatistics(values);
     out.set(f.name, s.mean).set(std::string(f.name) + "_std", s.std);
 }
 
@@ -131,7 +127,7 @@ pointwiseStatistics(std::size_t size, std::size_t members, ValueAt&& valueAt) {
     for (std::size_t j = 0; j < size; ++j) {
         for (std::size_t i = 0; i < members; ++i)
             values[i] = valueAt(i, j);
-        const EnsembleScalar s = ensembleScalar(values);
+        const SampleStatistics s = sampleStatistics(values);
         mean[j] = s.mean;
         std[j] = s.std;
     }

@@ -14,13 +14,6 @@
 
 namespace sbpack {
 
-/// Mean and sample standard deviation (n - 1; 0 for one file) over the files that have it.
-struct EnsembleScalar {
-    double mean = 0.0;
-    double std = 0.0;
-    int files = 0;
-};
-
 /// A curve on the common grid: bin b holds the shells with round(Q w / dQw) = b, where dQw is
 /// the mean over the files of 2 pi w / L (so files with equal L / w keep their own shells).
 /// A file with several shells in one bin contributes their count-weighted mean.
@@ -34,8 +27,6 @@ struct EnsembleCurve {
     std::vector<std::int64_t> files; ///< files with a shell in the bin
 };
 
-/// Statistics of scalars given per file.
-EnsembleScalar ensembleScalar(std::span<const double> values);
 /// Curves (Q w, value) of several files on the common grid.
 EnsembleCurve ensembleCurve(std::span<const ShellAverage> curves,
                             std::span<const double> meanWidths, std::span<const double> boxLengths);

@@ -2,6 +2,7 @@
 #include "hyperuniformity/hyperuniformity_fields.hpp"
 #include "io/hdf5_handles.hpp"
 #include "io/packing_io.hpp"
+#include "numerics/sample_statistics.hpp"
 #include "parallel/parallel.hpp"
 #include "pipeline/analysis_registry.hpp"
 #include "pipeline/ensemble.hpp"
@@ -375,7 +376,7 @@ TEST(Pipeline, EnsembleCurvesShareAGridInQw) {
     EXPECT_DOUBLE_EQ(c.mean[1], 25.0);
     EXPECT_DOUBLE_EQ(c.qw[1], 2.01);
     EXPECT_EQ(c.files[1], 2);
-    const EnsembleScalar one = ensembleScalar(std::vector<double>{3.0});
+    const SampleStatistics one = sampleStatistics(std::vector<double>{3.0});
     EXPECT_EQ(one.std, 0.0);
 }
 
