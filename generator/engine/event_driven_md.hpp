@@ -312,8 +312,7 @@ template <EngineShape Shape> class EventDrivenMd {
             anchors[i] = state_[i].position;
         lists_ = NeighbourLists(box_, shape_.circumscribedRatio() * maximum + 2.0 * exitRadius_,
                                 std::move(anchors));
-        memories_.retainListed(lists_);
-        memories_.forgetResolved();
+        memories_.rebuilt(lists_);
         time_.assign(size(), 0.0);
         turned_.assign(size(), 0.0);
         counter_.assign(size(), 0);

@@ -40,15 +40,17 @@ template <class Memory> class PairMemories {
         });
     }
 
-    /// Keeps the records of the pairs in `lists` (a rebuild's neighbour lists, `lists.of(i)`),
-    /// forgets the others.
-    template <class Lists> void retainListed(const Lists& lists) {
+    /// At a rebuild: keeps the records of the pairs in `lists` (its neighbour lists,
+    /// `lists.of(i)`), forgets the others, and no collision is the last one any more (the
+    /// rebuild's predictions start afresh).
+    template <class Lists> void rebuilt(const Lists& lists) {
         PairTable<Record> kept;
         for (int i = 0; i < static_cast<int>(particles_); ++i)
             for (const int j : lists.of(i))
                 if (i < j)
                     if (const Record* record = records_.find(key(i, j))) kept[key(i, j)] = *record;
         records_ = std::move(kept);
+        resolvedAt_ = -std::numeric_limits<double>::infinity();
     }
 
     /// Every synchronised record as (i, j, memory seen from i), i < j, in ascending order.
@@ -121,9 +123,6 @@ template <class Memory> class PairMemories {
         return answer;
     }
 
-    /// No collision is the last one (a rebuild's predictions start afresh).
-    void forgetResolved() { resolvedAt_ = -std::numeric_limits<double>::infinity(); }
-
   private:
     using Resolved = typename Memory::Resolved;
     struct Record {
@@ -149,7 +148,7 @@ template <> class PairMemories<NoPairMemory> {
   public:
     explicit PairMemories(int /*particles*/ = 0) {}
     void synchronise(const std::vector<double>& /*turned*/) {}
-    template <class Lists> void retainListed(const Lists& /*lists*/) {}
+    template <class Lists> void rebuilt(const Lists& /*lists*/) {}
     struct Entry {
         int i, j;
         NoPairMemory memory;
@@ -166,7 +165,6 @@ template <> class PairMemories<NoPairMemory> {
         NoPairMemory::Resolved resolved;
         return use(memory, resolved);
     }
-    void forgetResolved() {}
 };
 
 } // namespace sbpack

@@ -90,7 +90,7 @@ TEST(PairMemories, KeepTheNormalAndTheRebasedWitnessAcrossASynchronisation) {
                 return 0;
             });
     memories.synchronise({1.0, 2.0, 3.0, 4.0});
-    memories.retainListed(Lists{{{1}, {0}, {}, {}}}); // only the pair (0, 1) is still listed
+    memories.rebuilt(Lists{{{1}, {0}, {}, {}}}); // only the pair (0, 1) is still listed
     const auto records = memories.records();
     ASSERT_EQ(records.size(), 1u);
     EXPECT_EQ(records[0].i, 0);
@@ -148,8 +148,8 @@ TEST(PairMemories, HandTheLastCollisionsContactToThePairsPredictionsAtThatTime) 
     EXPECT_EQ(fromOne->contact->normal, -contact.normal);
     EXPECT_EQ(fromOne->contact->contactA, contact.contactB - d);
     EXPECT_EQ(fromOne->contact->contactB, contact.contactA - d);
-    EXPECT_FALSE(seen(1, 2, 0.8));  // another time
-    EXPECT_FALSE(seen(1, 3, 0.75)); // another pair
-    memories.forgetResolved();
+    EXPECT_FALSE(seen(1, 2, 0.8));               // another time
+    EXPECT_FALSE(seen(1, 3, 0.75));              // another pair
+    memories.rebuilt(Lists{{{}, {2}, {1}, {}}}); // the pair still listed, its contact forgotten
     EXPECT_FALSE(seen(1, 2, 0.75));
 }
