@@ -137,10 +137,15 @@ def _at(xs, ys, grid, step):
     return np.interp(grid, xs, ys, left=ys[0], right=0.0)
 
 
+def _ensemble_group(s, group):
+    """The series' ensemble record (group None) or its `group`; None where absent."""
+    return s.ensemble if group is None else (s.ensemble or {}).get(group)
+
+
 def pooled(s, group, name):
     """True where the series' ensemble has NAME_pooled and NAME_pooled_stderr in `group` (e.g.
     H: its one fit through every input's data, docs/hyperuniformity.md "Ensembles")."""
-    g = s.ensemble if group is None else (s.ensemble or {}).get(group)
+    g = _ensemble_group(s, group)
     return s.averaged and g is not None and name + "_pooled_stderr" in g
 
 
@@ -149,7 +154,7 @@ def scalar(s, group, name):
     `pooled`, that one fit's value and error instead), or its one input's (std 0); None where
     absent."""
     if s.averaged:
-        g = s.ensemble if group is None else (s.ensemble or {}).get(group)
+        g = _ensemble_group(s, group)
         if pooled(s, group, name):
             return g[name + "_pooled"], g[name + "_pooled_stderr"]
         return (g[name], g.get(name + "_std", 0.0)) if g is not None and name in g else None

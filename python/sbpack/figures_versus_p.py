@@ -113,14 +113,14 @@ def panels_with_data(series):
     return [panel for panel in PANELS if points(series, panel[0], panel[1])]
 
 
-def n_label(rows, group=None, name=None):
+def n_label(rows, group, name):
     """'N = 250 (mean +- std of 3 inputs)', '... (one fit of 3 inputs +- its error)' where
     group/name is `pooled`, or '... (one input per p)'."""
     counts = sorted({len(r[3].files) for r in rows})
     if counts == [1]:
         return f"N = {rows[0][3].n} (one input per p)"
     inputs = "/".join(map(str, counts))
-    if name is not None and all(pooled(r[3], group, name) for r in rows):
+    if all(pooled(r[3], group, name) for r in rows):
         return f"N = {rows[0][3].n} (one fit of {inputs} inputs $\\pm$ its error)"
     return f"N = {rows[0][3].n} (mean $\\pm$ std of {inputs} inputs)"
 
@@ -150,11 +150,11 @@ def versus_p(series):
         ax.set_axis_off()
     note(fig, "Against the superball exponent p (every quantity dimensionless): points coloured "
               "by p as in the other figures, marked by N, error bars the ensemble's std (H: the "
-              "standard error of its one fit through every input), grey lines joining three points or more on one side of p = 1; squares: the paper "
-              "(Maher et al.)" + ("; the order metrics (cutoff bonds: shorter than the first "
-                                  "minimum of g₂) are not in the paper, and Q₆ and T depend "
-                                  "on N (compare one N)" if any(p[0] == "order" for p in panels)
-                                  else ""))
+              "standard error of its one fit through every input), grey lines joining three "
+              "points or more on one side of p = 1; squares: the paper (Maher et al.)"
+              + ("; the order metrics (cutoff bonds: shorter than the first minimum of g₂) are "
+                 "not in the paper, and Q₆ and T depend on N (compare one N)"
+                 if any(p[0] == "order" for p in panels) else ""))
     return fig
 
 
@@ -188,7 +188,7 @@ def phi_vs_width(series):
     ax = axes[0, 0]
     for n, rows_n in rows.items():
         draw_points(ax, rows_n, x_of=lambda s: 1.0 / s.major_axis_over_width(),
-                    label=n_label(rows_n))
+                    label=n_label(rows_n, None, "phi"))
     paper_markers(ax, paper_values(), "phi", 1.0,
                   x=lambda p: np.array([width_over_major_axis(q) for q in p]))
     ax.set(xlabel=r"$\bar w/A$ ($A = 2R$)", ylabel=r"$\phi$")
