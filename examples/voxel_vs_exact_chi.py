@@ -32,8 +32,8 @@ def main():
     w = packing.mean_width
     fig, ax = plt.subplots(figsize=(6, 4))
     for m in args.voxels:
-        chi = sbpack.SpectralDensity(voxels=m, fft_plan="estimate", fft_wisdom="none")
-        chi.compute(packing)
+        chi = sbpack.SpectralDensity(voxels=m, fft_plan="estimate", fft_wisdom="none").compute(
+            packing)
         small = chi.Q_w <= SMALL_QW
         rms = np.sqrt(np.mean((chi.chi[small] - chi.chi_exact[small]) ** 2)) / chi.chi_exact.max()
         print(f"M = {m}: RMS(chi_voxel - chi_exact) / peak at Q w <= {SMALL_QW:g}: {rms:.2e}; "

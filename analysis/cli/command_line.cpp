@@ -1,8 +1,8 @@
 #include "cli/command_line.hpp"
 
 #include "cli/commands.hpp"
-#include "cli/option_table.hpp"
 #include "info/library_versions.hpp"
+#include "pipeline/option_table.hpp"
 #include "pores/distance_transform.hpp"
 #include "progress/progress.hpp"
 #include "version.hpp"
@@ -126,22 +126,17 @@ void CommandLine::addSubcommands() {
 void CommandLine::finishAnalysis() {
     settings_.inputs.assign(inputs_.begin(), inputs_.end());
     if (!settings_.vdbDirectory.empty()) settings_.analyses.insert(Analysis::Voxels);
-    // The distributed grid's pore sizes are the voxel method's (docs/scale-out.md).
-    if (settings_.distribute == Distribution::Grids && app_.count("--pores") == 0)
-        settings_.poreMethod = PoreMethod::Voxel;
-    if (settings_.poreMethod == PoreMethod::Voxel && app_.count("--pore-voxels") == 0)
-        settings_.poreVoxels = RunSettings::kPaperPoreVoxels; // the paper's method at its M
-    if (settings_.poreMethod == PoreMethod::Refined &&
-        settings_.poreVoxels > maxFeatureTransformVoxels)
+    const PoreMethod method = settings_.poreMethod();
+    const std::int64_t m = settings_.poreVoxels();
+    if (method == PoreMethod::Refined && m > maxFeatureTransformVoxels)
         throw std::invalid_argument(
             fmt::format("option --pore-voxels: {} is above {}, the largest grid of --pores refined",
-                        settings_.poreVoxels, maxFeatureTransformVoxels));
-    const std::int64_t m = settings_.poreVoxels;
-    if (settings_.poreMethod != PoreMethod::Exact && settings_.porePoints > m * m * m)
+                        m, maxFeatureTransformVoxels));
+    if (method != PoreMethod::Exact && settings_.pores.points > m * m * m)
         throw std::invalid_argument(fmt::format(
             "option --pore-points: K = {} random void voxels exceed the {}^3 = {} voxels of "
             "--pore-voxels (every void voxel, --pore-points 0, is the exact answer and cheaper)",
-            settings_.porePoints, m, m * m * m));
+            settings_.pores.points, m, m * m * m));
     static_cast<void>(ContactNetwork(settings_.contacts)); // throws on a bad tolerance or threshold
     if (!app_.get_subcommands().empty()) return;           // info, convert, schema: no grids
     settings_.device = resolveComputeDevice(settings_.requestedDevice,

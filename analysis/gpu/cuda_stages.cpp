@@ -26,9 +26,9 @@ GpuMemoryPlan planFor(const RunSettings& settings) {
     const bool spectral =
         settings.runs(Analysis::Voxels) || settings.runs(Analysis::SpectralDensity);
     const bool pores =
-        settings.runs(Analysis::PoreSizes) && settings.poreMethod == PoreMethod::Voxel;
-    const int m = spectral ? settings.voxels : 0;
-    return planGpuMemory(m, pores ? settings.poreVoxels : 0, settings.fftSingle,
+        settings.runs(Analysis::PoreSizes) && settings.poreMethod() == PoreMethod::Voxel;
+    const int m = spectral ? settings.voxelization.voxels : 0;
+    return planGpuMemory(m, pores ? settings.poreVoxels() : 0, settings.fftSingle,
                          m > 0 ? gpu::cuda::fftWorkBytes(m, settings.fftSingle) : 0);
 }
 
@@ -40,7 +40,7 @@ void checkCudaRun(const RunSettings& settings) {
 }
 
 bool runCudaVoxels(FileContext& context, schema::Record& record) {
-    const int m = context.settings().voxels;
+    const int m = context.settings().voxelization.voxels;
     CudaGrid grid(context.packing(), m);
     const double phiExact = context.packing().packingFraction();
     context.progress().stageDone("voxelization (cuda)", grid.runtimeSeconds(),

@@ -28,6 +28,9 @@ struct HyperuniformityParameters {
     std::uint64_t seed = 1;
     /// The alpha window, t D / w^2; unset: found (findExponentWindow).
     std::optional<ExponentWindow> window;
+    /// The hyper stage's spectrum: chi_V exact (ExactSpectralDensity, no voxels) at Q w <= this,
+    /// where the fit and alpha read it, the voxel grid's beyond; 0: the voxel grid's alone.
+    double chiExactQw = ExactSpectralDensityParameters{}.maxQw;
 };
 
 /// The principal peak of chi_V (from a shell average), in the paper's units.

@@ -1,6 +1,7 @@
 #include "pipeline/results_file.hpp"
 
 #include "io/hdf5_handles.hpp"
+#include "pipeline/option_table.hpp"
 #include "version.hpp"
 
 #include <string>
@@ -65,6 +66,7 @@ schema::Record runRecord(const RunResults& results, const RunSettings& settings)
         .set("format_version", schema::kFormatVersion)
         .set("sbanalyze_version", kVersion)
         .set("compute", analysisNames(settings.analyses))
+        .set("options", runOptions(settings))
         .set("threads", settings.threads)
         .set("device", settings.device.description())
         .set("ranks", results.ranks)

@@ -44,7 +44,7 @@ std::vector<const AnalysisInfo*> exporters(const RunSettings& settings, std::str
         if (info.vdbSuffix.empty()) continue;
         names += (names.empty() ? "" : " or ") + std::string(info.name);
         const bool noMap = info.analysis == Analysis::PoreSizes &&
-                           settings.poreMethod == PoreMethod::Exact; // no voxels, no map
+                           settings.poreMethod() == PoreMethod::Exact; // no voxels, no map
         if (settings.runs(info.analysis) && !noMap) run.push_back(&info);
     }
     return run;

@@ -70,9 +70,9 @@ void checkDistribution(const RunSettings& settings, const Communicator& comm) {
         why = "hyper (it needs every wave vector on one rank; leave it out of --compute)";
     else if (!settings.vdbDirectory.empty())
         why = "--vdb (a slab is not a whole grid)";
-    else if (settings.porePoints > 0)
+    else if (settings.pores.points > 0)
         why = "--pore-points (random points of the whole grid)";
-    else if (settings.runs(Analysis::PoreSizes) && settings.poreMethod != PoreMethod::Voxel)
+    else if (settings.runs(Analysis::PoreSizes) && settings.poreMethod() != PoreMethod::Voxel)
         why = "--pores refined or exact (the distributed grid's pore sizes are --pores voxel)";
     if (why != nullptr)
         throw std::invalid_argument(std::string("option --distribute grids: does not take ") + why);
@@ -88,10 +88,11 @@ void checkPlanMemory(const RunSettings& settings, const std::vector<Packing>& pa
     for (const Packing& packing : packings) {
         double bytes = 0.0;
         if (settings.grids().count(VoxelGrid::Spectral))
-            bytes = spectralGridPlan(packing, settings.voxels, ranks).memoryPerRankBytes;
+            bytes =
+                spectralGridPlan(packing, settings.voxelization.voxels, ranks).memoryPerRankBytes;
         if (settings.grids().count(VoxelGrid::Pore))
-            bytes = std::max(bytes,
-                             poreGridPlan(packing, settings.poreVoxels, ranks).memoryPerRankBytes);
+            bytes = std::max(
+                bytes, poreGridPlan(packing, settings.poreVoxels(), ranks).memoryPerRankBytes);
         if (bytes > *available)
             throw std::invalid_argument(fmt::format(
                 "--distribute grids: each of the {} ranks needs about {} of memory, more than "
@@ -118,11 +119,11 @@ std::string filePlan(const RunSettings& settings, const Packing& packing, int ra
     }
     std::string text;
     if (settings.grids().count(VoxelGrid::Spectral))
-        text += gridLine("spectral (--voxels)", settings.voxels,
-                         spectralGridPlan(packing, settings.voxels, ranks));
+        text += gridLine("spectral (--voxels)", settings.voxelization.voxels,
+                         spectralGridPlan(packing, settings.voxelization.voxels, ranks));
     if (settings.grids().count(VoxelGrid::Pore))
-        text += gridLine("pore (--pore-voxels)", settings.poreVoxels,
-                         poreGridPlan(packing, settings.poreVoxels, ranks));
+        text += gridLine("pore (--pore-voxels)", settings.poreVoxels(),
+                         poreGridPlan(packing, settings.poreVoxels(), ranks));
     return text.empty() ? "  no grid: every rank runs the analyses alike\n" : text;
 }
 

@@ -95,8 +95,8 @@ class ExactPoreSizes {
 };
 
 struct ExactPoreSizeParameters {
-    std::int64_t randomPoints = 1'000'000; ///< K random points of the void (paper: 10^6)
-    std::uint64_t seed = 1;
+    std::int64_t randomPoints = 1'000'000;          ///< K random points of the void (paper: 10^6)
+    std::uint64_t seed = PoreSizeParameters{}.seed; ///< as the voxel methods' (--pore-seed)
     int densityBins = 64;
 };
 

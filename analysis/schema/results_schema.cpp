@@ -20,6 +20,9 @@ constexpr Field kRun[] = {
      "4 (this layout; 2 and 3 differ in the fields renamed, \"Names\")"},
     {"sbanalyze_version", A, S, "", "version of the sbanalyze that wrote the file"},
     {"compute", A, S, "", "the analyses run, comma-separated (--compute with what they need)"},
+    {"options", A, S, "",
+     "the options of the analyses run, with their values (--qmax 30 --voxels 300 ...): given to "
+     "sbanalyze with --compute, they repeat these results"},
     {"threads", A, I, "1", "threads of the run (--threads), per rank"},
     {"device", A, S, "",
      "where the grids were computed (--device): \"cpu\", or \"cuda: \" and the GPU (docs/gpu.md)"},

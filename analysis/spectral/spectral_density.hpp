@@ -8,6 +8,7 @@
 #include "shells/shell_average.hpp"
 #include "spectral/fftw_wisdom.hpp"
 #include "spectral/voxel_fourier_transform.hpp"
+#include "structure/structure_factor.hpp"
 #include "voxels/voxelization.hpp"
 
 #include <Eigen/Core>
@@ -22,8 +23,9 @@ double cubeFormFactor(const Eigen::Vector3d& q, double edge);
 double sphereFormFactor(double q, double radius);
 
 struct SpectralDensityParameters {
-    /// Shells up to Q w <= maxQw (w the mean width), and below the grid's Nyquist limit.
-    double maxQw = 30.0;
+    /// Shells up to Q w <= maxQw (w the mean width), and below the grid's Nyquist limit; by
+    /// default S(Q)'s range, as --qmax sets both.
+    double maxQw = StructureFactorParameters{}.maxQw;
     FftSettings fft;
 };
 

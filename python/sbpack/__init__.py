@@ -4,11 +4,11 @@ The C++ core (the libraries of sbgen and sbanalyze) is the extension ``sbpack._s
 package adds the analyses as objects, a reader of results files and the figures (``sbpack.plot``).
 """
 from ._sbpack import Packing, __version__, expected_collisions, generate
-from .analyses import ANALYSES, analyze
-from .analyses import (Contacts, Hyperuniformity, Order, PoreSizes,  # noqa: F401 (made from
-                       SpectralDensity, StructureFactor, Transport,  # the registry)
-                       Voxelization)
+from .analyses import analyze
+from .analysis_base import Analysis, Result
+from .analysis_classes import *  # noqa: F401,F403 (Contacts, ContactsResult, ...: __all__)
+from .analysis_classes import __all__ as _analysis_names
 from .results import read_results
 
-__all__ = ["Packing", "generate", "expected_collisions", "ANALYSES", "analyze", "read_results",
-           "__version__"] + [cls.__name__ for cls in ANALYSES]
+__all__ = ["Packing", "generate", "expected_collisions", "analyze", "read_results", "Analysis",
+           "Result", "__version__", *_analysis_names]

@@ -60,7 +60,7 @@ def form_factor_of(p, voxels, threads):
     """(Q D / 2 pi, <m^2>^(1/2) / v) of one superball at p: sbanalyze's spectral density of one
     particle in a box (chi_V = <|m(Q)|^2> / V over each shell: the orientation average), D the
     diameter of the sphere of the same volume v."""
-    from .analyses import SpectralDensity
+    from .analysis_classes import SpectralDensity
     packing = one_superball(p)
     volume = packing.phi * packing.box_length**3
     chi = SpectralDensity(voxels=voxels, qmax=1e3, threads=threads, fft_plan="estimate",

@@ -4,11 +4,11 @@
 #include "bindings.hpp"
 
 #include "cli/command_line.hpp"
-#include "cli/option_table.hpp"
 #include "order/order_metrics.hpp"
 #include "parallel/parallel.hpp"
 #include "pipeline/analysis_registry.hpp"
 #include "pipeline/file_analysis.hpp"
+#include "pipeline/option_table.hpp"
 #include "pipeline/run.hpp"
 #include "pores/distance_transform.hpp"
 #include "progress/progress.hpp"
@@ -125,7 +125,7 @@ py::tuple voxelSlice(const Packing& packing, int voxels, int plane, int threads)
 }
 
 /// The registry's rows (pipeline/analysis_registry.hpp), from which sbpack's analysis classes
-/// are made (python/sbpack/analyses.py).
+/// are written out (python/generate_analysis_classes.py).
 py::list registryRows() {
     py::list rows;
     for (const AnalysisInfo& info : analysisRegistry()) {
@@ -135,18 +135,24 @@ py::list registryRows() {
             groups.append(std::string(g->name));
         for (std::string_view option : analysisOptions(info))
             options.append(std::string(option));
+        py::list needGroups;
+        for (Analysis need : runOrder(resolveAnalyses(info.name)))
+            if (need != info.analysis)
+                for (const schema::Group* g : analysisInfo(need).groups)
+                    needGroups.append(std::string(g->name));
         py::dict row;
         row["name"] = std::string(info.name);
         row["python_class"] = std::string(info.pythonClass);
         row["description"] = std::string(info.description);
         row["groups"] = groups;
         row["options"] = options;
+        row["need_groups"] = needGroups;
         rows.append(row);
     }
     return rows;
 }
 
-/// The option table (cli/option_table.hpp): each option's name, value name, default and help
+/// The option table (pipeline/option_table.hpp): each option's name, value name, default and help
 /// as the command line prints them, for the analysis classes' docstrings.
 py::dict optionRows() {
     const RunSettings defaults = defaultRunSettings();
@@ -154,8 +160,9 @@ py::dict optionRows() {
     for (const OptionRow& row : analysisOptionTable()) {
         py::dict entry;
         entry["value"] = std::string(row.valueName);
-        entry["default"] = row.shownDefault != nullptr ? row.shownDefault(defaults) : "";
+        entry["default"] = row.shownValue != nullptr ? row.shownValue(defaults) : "";
         entry["help"] = optionHelp(row, defaults);
+        entry["dependent_default"] = row.dependentDefault != nullptr;
         rows[py::str(std::string(row.name))] = entry;
     }
     return rows;
@@ -173,7 +180,8 @@ void registerAnalyses(py::module_& m) {
         .def_property_readonly("threads", &Analyzer::threads);
     m.def("analysis_registry", &registryRows,
           "sbanalyze's analyses: name (--compute), python_class, description, groups (its own "
-          "first) and options (the command line's, without --, besides threads)");
+          "first), need_groups (those of the analyses it needs) and options (the command line's, "
+          "without --, besides threads)");
     py::dict thresholds; // order/order_metrics.hpp; docs/order-metrics.md §5
     thresholds["q6_local_mean"] = kOrderedLocalQ6;
     thresholds["T"] = kOrderedT;
@@ -182,7 +190,8 @@ void registerAnalyses(py::module_& m) {
     m.attr("mrj_local_q6") = py::make_tuple(kMrjLocalQ6Low, kMrjLocalQ6High);
     m.def("analysis_options", &optionRows,
           "sbanalyze's options by name (without --): value (its name; empty for a flag), default "
-          "(as --help prints it; empty where it prints none) and help");
+          "(as --help prints it; empty where it prints none), dependent_default (the default "
+          "depends on another option, as the help says) and help");
     m.def("analyze", &analyzeFiles, py::arg("args"),
           "sbanalyze FILE... [options] in-process (args without the program name)");
     m.def("voxel_slice", &voxelSlice, py::arg("packing"), py::arg("voxels"), py::arg("plane"),

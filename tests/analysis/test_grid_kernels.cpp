@@ -256,10 +256,10 @@ TEST(ComputeDevice, RefinedPoresKeepAutoOnTheGpuAndRefuseCuda) {
     // which asks for every grid on the GPU, refuses them and names the way out.
     RunSettings s;
     s.analyses = {Analysis::PoreSizes, Analysis::SpectralDensity};
-    s.poreMethod = PoreMethod::Refined;
+    s.pores.method = PoreMethod::Refined;
     EXPECT_EQ(s.cpuOnlyReason(), "");
     EXPECT_NE(s.cudaRefusal().find("--pores voxel"), std::string::npos) << s.cudaRefusal();
-    s.poreMethod = PoreMethod::Voxel;
+    s.pores.method = PoreMethod::Voxel;
     EXPECT_EQ(s.cudaRefusal(), "");
     s.distribute = Distribution::Grids; // the whole run stays on the CPU, auto or not
     EXPECT_NE(s.cpuOnlyReason(), "");

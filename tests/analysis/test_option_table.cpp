@@ -1,15 +1,16 @@
-// The option table (analysis/cli/option_table.hpp): each option declared once, its printed
+// The option table (analysis/pipeline/option_table.hpp): each option declared once, its printed
 // default the default the run uses, every analysis's options in it, the command line built
 // from it.
 
 #include "cli/command_line.hpp"
-#include "cli/option_table.hpp"
 #include "pipeline/analysis_registry.hpp"
+#include "pipeline/option_table.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <set>
+#include <sstream>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -18,10 +19,10 @@ namespace sbpack {
 namespace {
 
 /// Every default the table prints, from `s`.
-std::vector<std::string> shownDefaults(const RunSettings& s) {
+std::vector<std::string> shownValues(const RunSettings& s) {
     std::vector<std::string> shown;
     for (const OptionRow& row : analysisOptionTable())
-        shown.push_back(row.shownDefault != nullptr ? row.shownDefault(s) : "");
+        shown.push_back(row.shownValue != nullptr ? row.shownValue(s) : "");
     return shown;
 }
 
@@ -38,25 +39,72 @@ TEST(OptionTable, NamesAreUniqueAndEachHasHelp) {
 // changes no printed default, and the settings equal those of no option at all.
 TEST(OptionTable, PrintedDefaultsAreTheDefaultsUsed) {
     const RunSettings defaults = defaultRunSettings();
-    const std::vector<std::string> before = shownDefaults(defaults);
+    const std::vector<std::string> before = shownValues(defaults);
     for (const OptionRow& row : analysisOptionTable()) {
-        if (row.shownDefault == nullptr || row.name == "fft-wisdom") continue; // a description
+        if (row.shownValue == nullptr || row.shownValue(defaults).empty()) continue; // unset
         RunSettings s = defaults;
-        const std::string shown = row.shownDefault(defaults);
+        const std::string shown = row.shownValue(defaults);
         row.parse(s, "--" + std::string(row.name), shown);
-        EXPECT_EQ(shownDefaults(s), before) << "--" << row.name << ' ' << shown;
+        EXPECT_EQ(shownValues(s), before) << "--" << row.name << ' ' << shown;
     }
     const RunSettings parsed = parseAnalyzeArguments({"a.h5", "--out", "r.h5"});
-    EXPECT_EQ(shownDefaults(parsed), before);
-    EXPECT_EQ(parsed.voxels, 300);
-    EXPECT_EQ(parsed.poreVoxels, 200);
-    EXPECT_EQ(parsed.poreMethod, PoreMethod::Refined);
+    EXPECT_EQ(shownValues(parsed), before);
+    EXPECT_EQ(parsed.voxelization.voxels, 300);
+    EXPECT_EQ(parsed.poreVoxels(), 200);
+    EXPECT_EQ(parsed.poreMethod(), PoreMethod::Refined);
     EXPECT_DOUBLE_EQ(parsed.hyperuniformity.fitQmaxW, 1.4); // the paper's fit range
+}
+
+/// The shown value of option `name` in `s`.
+std::string shown(const RunSettings& s, std::string_view name) {
+    return findOption(name).shownValue(s);
+}
+
+// Each default is written once, in the analysis's own parameter struct: the table's printed
+// defaults are those the compute objects take when nobody sets them, also where two compute
+// objects share an option (--qmax, --pore-seed) or a default hangs on another option.
+TEST(OptionTable, DefaultsAreTheComputeObjectsOwn) {
+    const RunSettings d = defaultRunSettings();
+    RunSettings s;
+    s.structureFactor.maxQw = SpectralDensityParameters{}.maxQw;
+    EXPECT_EQ(shown(s, "qmax"), shown(d, "qmax"));
+    s.hyperuniformity.chiExactQw = ExactSpectralDensityParameters{}.maxQw;
+    EXPECT_EQ(shown(s, "chi-exact-qmax"), shown(d, "chi-exact-qmax"));
+    s.pores.seed = ExactPoreSizeParameters{}.seed;
+    EXPECT_EQ(shown(s, "pore-seed"), shown(d, "pore-seed"));
+    EXPECT_EQ(d.voxelization.voxels, VoxelizationParameters{}.voxels);
+    EXPECT_EQ(d.pores.gridParameters().randomPoints, PoreSizeParameters{}.randomPoints);
+    EXPECT_EQ(d.pores.exactParameters().randomPoints, ExactPoreSizeParameters{}.randomPoints);
+    EXPECT_NE(optionHelp(findOption("pore-points"), d).find("(0: 1e6, as the paper)"),
+              std::string::npos);
+    EXPECT_EQ(d.poreVoxels(), PoreSizeSettings::defaultVoxels(PoreSizeSettings::kDefaultMethod));
+    EXPECT_NE(usage().find("(default 200; with --pores voxel\n"), std::string::npos) << usage();
+}
+
+// The results' provenance names the options of the analyses run, with the values used, and
+// given back to the command line they set the same values.
+TEST(OptionTable, RunOptionsRepeatTheRun) {
+    const RunSettings sq = parseAnalyzeArguments(
+        {"a.h5", "--json", "-", "--compute", "sq", "--qmax", "12.5", "--voxels", "64"});
+    EXPECT_EQ(runOptions(sq), "--qmax 12.5"); // --voxels is not sq's
+    const RunSettings all = parseAnalyzeArguments(
+        {"a.h5", "--json", "-", "--pores", "voxel", "--alpha-window", "1,5.8", "--qmax", "20"});
+    const std::string options = runOptions(all);
+    for (const char* expected :
+         {"--tolerance 1e-10", "--qmax 20", "--voxels 300", "--pore-voxels 500", "--pores voxel",
+          "--alpha-window 1,5.8", "--fit-qmax 1.4", "--fft-plan measure"})
+        EXPECT_NE(options.find(expected), std::string::npos) << expected << " in " << options;
+    EXPECT_EQ(options.find("--threads"), std::string::npos) << options;
+    std::vector<std::string> args{"a.h5", "--json", "-"};
+    std::istringstream words(options);
+    for (std::string word; words >> word;)
+        args.push_back(word);
+    EXPECT_EQ(shownValues(parseAnalyzeArguments(args)), shownValues(all)) << options;
 }
 
 TEST(OptionTable, HelpPrintsTheDefaultFromTheSettings) {
     RunSettings s = defaultRunSettings();
-    s.voxels = 123;
+    s.voxelization.voxels = 123;
     EXPECT_NE(optionHelp(findOption("voxels"), s).find("(default 123)"), std::string::npos);
     EXPECT_NE(optionHelp(findOption("spread-times"), s).find("(default 1e-3,1e4)"),
               std::string::npos);
@@ -80,13 +128,13 @@ TEST(OptionTable, ParsesAndRefusesNamingTheOption) {
     const RunSettings s = parseAnalyzeArguments(
         {"a.h5", "--json", "-", "--voxels", "64", "--spread-times", "0.01,100", "--quiet",
          "--plan-ranks", "3", "--fft-planning-budget", "none", "--device", "cpu"});
-    EXPECT_EQ(s.voxels, 64);
+    EXPECT_EQ(s.voxelization.voxels, 64);
     EXPECT_DOUBLE_EQ(s.hyperuniformity.tMin, 0.01);
     EXPECT_DOUBLE_EQ(s.hyperuniformity.tMax, 100.0);
     EXPECT_TRUE(s.quiet);
     EXPECT_TRUE(s.plan);
     EXPECT_EQ(s.planRanks, 3);
-    EXPECT_TRUE(std::isinf(s.fft.planningBudget));
+    EXPECT_TRUE(std::isinf(s.spectralDensity.fft.planningBudget));
     EXPECT_EQ(s.requestedDevice, ComputeDevice::Cpu);
     for (const auto& [option, value, message] :
          {std::tuple{"--spread-times", "3,1", "option --spread-times: needs 0 < T1 < T2"},

@@ -54,11 +54,11 @@ RunSettings settingsFor(std::vector<fs::path> inputs, const fs::path& output) {
     s.inputs = std::move(inputs);
     s.output = output;
     s.threads = 2;
-    s.voxels = 40;
-    s.poreVoxels = 40;
-    s.maxQw = 8.0;
+    s.voxelization.voxels = 40;
+    s.pores.voxels = 40;
+    s.structureFactor.maxQw = s.spectralDensity.maxQw = 8.0;
     s.analyses = resolveAnalyses("all");
-    s.fft = {FftPlanning::Estimate, {}};
+    s.spectralDensity.fft = {FftPlanning::Estimate, {}};
     s.quiet = true;
     return s;
 }
@@ -87,41 +87,43 @@ TEST(CommandLine, ParsesTheAnalysisOptions) {
     EXPECT_EQ(s.inputs, (std::vector<fs::path>{"a.h5", "b.h5"}));
     EXPECT_EQ(s.analyses, (AnalysisSet{Analysis::StructureFactor, Analysis::Voxels})); // --vdb
     EXPECT_EQ(s.threads, 1);
-    EXPECT_EQ(s.voxels, 64);
-    EXPECT_EQ(s.poreVoxels, 200);
-    EXPECT_DOUBLE_EQ(s.maxQw, 12.5);
-    EXPECT_EQ(s.fft.planning, FftPlanning::Estimate);
-    EXPECT_TRUE(s.fft.wisdomFile.empty());
+    EXPECT_EQ(s.voxelization.voxels, 64);
+    EXPECT_EQ(s.poreVoxels(), 200);
+    EXPECT_DOUBLE_EQ(s.structureFactor.maxQw, 12.5);
+    EXPECT_DOUBLE_EQ(s.spectralDensity.maxQw, 12.5);
+    EXPECT_EQ(s.spectralDensity.fft.planning, FftPlanning::Estimate);
+    EXPECT_TRUE(s.spectralDensity.fft.wisdomFile.empty());
     EXPECT_TRUE(s.quiet);
     const RunSettings pores =
         parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--pores", "exact", "--pore-points", "1000",
                                "--fft-planning-budget", "0.5"});
-    EXPECT_EQ(pores.poreMethod, PoreMethod::Exact);
-    EXPECT_EQ(pores.porePoints, 1000);
-    EXPECT_DOUBLE_EQ(pores.fft.planningBudget, 0.5);
+    EXPECT_EQ(pores.poreMethod(), PoreMethod::Exact);
+    EXPECT_EQ(pores.pores.points, 1000);
+    EXPECT_DOUBLE_EQ(pores.spectralDensity.fft.planningBudget, 0.5);
     EXPECT_EQ(pores.grids(), std::set<VoxelGrid>{VoxelGrid::Spectral}); // exact needs no grid
-    EXPECT_EQ(parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--pores", "refined"}).poreMethod,
+    EXPECT_EQ(parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--pores", "refined"}).poreMethod(),
               PoreMethod::Refined);
     EXPECT_TRUE(
         std::isinf(parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--fft-planning-budget", "none"})
-                       .fft.planningBudget));
+                       .spectralDensity.fft.planningBudget));
     const RunSettings defaults = parseAnalyzeArguments({"a.h5", "--out", "r.h5"});
-    EXPECT_EQ(defaults.poreMethod, PoreMethod::Refined);
-    EXPECT_EQ(defaults.poreVoxels, 200);
+    EXPECT_EQ(defaults.poreMethod(), PoreMethod::Refined);
+    EXPECT_EQ(defaults.poreVoxels(), 200);
     // The paper's voxel method at the paper's M unless --pore-voxels says otherwise; the
     // distributed grid's pores are voxel pores.
-    EXPECT_EQ(parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--pores", "voxel"}).poreVoxels, 500);
+    EXPECT_EQ(parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--pores", "voxel"}).poreVoxels(),
+              500);
     EXPECT_EQ(
         parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--pores", "voxel", "--pore-voxels", "300"})
-            .poreVoxels,
+            .poreVoxels(),
         300);
     const RunSettings distributed =
         parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--distribute", "grids"});
-    EXPECT_EQ(distributed.poreMethod, PoreMethod::Voxel);
-    EXPECT_EQ(distributed.poreVoxels, 500);
-    EXPECT_DOUBLE_EQ(defaults.fft.planningBudget, kDefaultFftPlanningBudget);
-    EXPECT_EQ(defaults.voxels, 300);
-    EXPECT_DOUBLE_EQ(defaults.maxQw, 30.0);
+    EXPECT_EQ(distributed.poreMethod(), PoreMethod::Voxel);
+    EXPECT_EQ(distributed.poreVoxels(), 500);
+    EXPECT_DOUBLE_EQ(defaults.spectralDensity.fft.planningBudget, kDefaultFftPlanningBudget);
+    EXPECT_EQ(defaults.voxelization.voxels, 300);
+    EXPECT_DOUBLE_EQ(defaults.structureFactor.maxQw, 30.0);
     EXPECT_EQ(defaults.analyses, resolveAnalyses("all"));
     for (const std::vector<std::string>& bad :
          {std::vector<std::string>{"a.h5", "--threads", "0"},
@@ -392,7 +394,7 @@ TEST(Pipeline, BadInputLeavesNoOutput) {
     RunSettings invalid = settingsFor({dir / "good.h5", dir / "bad.h5"}, dir / "r.h5");
     EXPECT_THROW(runAnalyses(invalid, log, out), std::exception);
     RunSettings coarse = settingsFor({dir / "good.h5"}, dir / "r.h5");
-    coarse.voxels = 8;
+    coarse.voxelization.voxels = 8;
     try {
         runAnalyses(coarse, log, out);
         FAIL() << "accepted a coarse grid";
@@ -400,7 +402,7 @@ TEST(Pipeline, BadInputLeavesNoOutput) {
         EXPECT_NE(std::string(e.what()).find("--voxels 8"), std::string::npos) << e.what();
     }
     RunSettings huge = settingsFor({dir / "good.h5"}, dir / "r.h5");
-    huge.voxels = 50000;
+    huge.voxelization.voxels = 50000;
     try {
         runAnalyses(huge, log, out);
         FAIL() << "accepted a grid larger than memory";

@@ -1,6 +1,7 @@
 """The module's analyses give sbanalyze's results bit for bit (the same stages on the same
 packing): every dataset and number of every group, for every data/*.h5, but the timings."""
 import glob
+import inspect
 import os
 import warnings
 
@@ -39,7 +40,8 @@ def assert_same_group(cli, module, where):
 
 @pytest.mark.parametrize("cls,compute,extra", ANALYSES, ids=[a[1] for a in ANALYSES])
 def test_module_equals_cli(sbanalyze, tmp_path, cls, compute, extra):
-    options = {k: v for k, v in {**OPTIONS, **extra}.items() if k in cls._options}
+    keywords = inspect.signature(cls).parameters
+    options = {k: v for k, v in {**OPTIONS, **extra}.items() if k in keywords}
     out = tmp_path / "cli.h5"
     r = run([sbanalyze, *PACKINGS, "--compute", compute, "--quiet", "--out", str(out),
              *cli_args(options)])
@@ -58,29 +60,59 @@ def test_module_equals_cli(sbanalyze, tmp_path, cls, compute, extra):
 
 
 def test_attributes_are_the_groups_values():
-    s = sbpack.StructureFactor(qmax=10, threads=2)
-    with pytest.raises(AttributeError, match="compute"):
-        s.S
-    s.compute(sbpack.Packing.read(os.path.join(DATA, "mrj-p1.5-1000.h5")))
+    s = sbpack.StructureFactor(qmax=10, threads=2).compute(
+        sbpack.Packing.read(os.path.join(DATA, "mrj-p1.5-1000.h5")))
+    assert isinstance(s, sbpack.StructureFactorResult)
     assert np.array_equal(s.S, s.groups["structure_factor"]["S"])
     assert s.qmax == 10 and len(s.Q) == s.max_shell
-    with pytest.raises(AttributeError, match="no result"):
+    with pytest.raises(AttributeError):
         s.chi
 
 
 def test_dir_lists_the_results():
-    """dir() (and so tab completion) lists the results once computed: its own group's names and
-    the other groups' (issue 43); each one it lists is an attribute."""
-    c = sbpack.Contacts(threads=2)
-    assert "compute" in dir(c) and "z_mean" not in dir(c)
-    c.compute(sbpack.Packing.read(os.path.join(DATA, "sc-lattice-p1.5.txt")))
+    """dir() and help() list a result's fields before any run (they are properties of its class,
+    issue 61): its own groups' names, then its needs' and the file's; each is the group's value."""
+    assert {"z_mean", "rattler_fraction", "counts", "phi", "mean_width"} <= set(
+        dir(sbpack.ContactsResult))
+    assert "mean contact number Z" in sbpack.ContactsResult.z_mean.__doc__
+    c = sbpack.Contacts(threads=2).compute(
+        sbpack.Packing.read(os.path.join(DATA, "sc-lattice-p1.5.txt")))
     names = set(dir(c))
-    assert {"z_mean", "rattler_fraction", "counts", "phi", "mean_width", "groups"} <= names
     for group in c.groups.values():
-        assert set(group) - {"units"} <= names
-    for name in names - set(dir(sbpack.Contacts)):
-        getattr(c, name)
+        assert set(group) - {"units"} <= names | {"input"}
     assert c.z_mean == c.groups["contacts"]["z_mean"] == 6
+    assert c.phi == c.groups["file"]["phi"]
+
+
+def as_printed(value):
+    """A default as numbers where it is numbers (30 and "30", (1e-3, 1e4) and "1e-3,1e4")."""
+    words = value if isinstance(value, tuple) else str(value).split(",")
+    try:
+        return tuple(float(w) for w in words)
+    except ValueError:
+        return tuple(str(w) for w in words)
+
+
+def test_signatures_are_the_option_tables():
+    """Each class takes its registry row's options as keyword-only parameters, with the defaults
+    the command line prints (None where the default is the machine's or hangs on another
+    option), and documents each (issue 61: one declaration)."""
+    table = sbpack._sbpack.analysis_options()
+    rows = {row["python_class"]: row for row in sbpack._sbpack.analysis_registry()}
+    assert [cls.__name__ for cls in sbpack.ANALYSES] == list(rows)
+    for cls in sbpack.ANALYSES:
+        parameters = inspect.signature(cls).parameters
+        names = ["threads", *rows[cls.__name__]["options"]]
+        assert list(parameters) == [n.replace("-", "_") for n in names], cls.__name__
+        for name in names[1:]:
+            row, default = table[name], parameters[name.replace("-", "_")].default
+            assert parameters[name.replace("-", "_")].kind is inspect.Parameter.KEYWORD_ONLY
+            if default is None:
+                assert row["dependent_default"] or row["default"] == "", name
+            else:
+                assert as_printed(default) == as_printed(row["default"]), (name, default, row)
+            assert f"{name.replace('-', '_')} : " in cls.__doc__, (cls.__name__, name)
+    assert "qmax=30" in str(inspect.signature(sbpack.StructureFactor))
 
 
 def test_a_warning_of_several_lines_is_one_runtime_warning():
@@ -113,12 +145,11 @@ def test_analyze_warns_once_per_message_and_prints_its_stage_lines(tmp_path, cap
 
 def test_hyperuniformity_skipped_on_a_small_box_warns():
     packing = sbpack.Packing.read(os.path.join(DATA, "dense-p10-200.h5"))
-    h = sbpack.Hyperuniformity(voxels=100, **FAST)
     with pytest.warns(RuntimeWarning, match="alpha window"):
-        h.compute(packing)
+        h = sbpack.Hyperuniformity(voxels=100, **FAST).compute(packing)
     assert "spreadability" not in h.groups and "spectral_density" in h.groups
 
 
 def test_unknown_option_is_a_type_error():
-    with pytest.raises(TypeError, match="unknown option.*voxels"):
+    with pytest.raises(TypeError, match="unexpected keyword argument 'voxels'"):
         sbpack.StructureFactor(voxels=10)

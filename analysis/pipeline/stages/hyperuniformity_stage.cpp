@@ -18,7 +18,7 @@ namespace {
 
 /// The voxel spectrum with the exact values at small Q (none when --chi-exact-qmax is 0).
 DiscreteSpectrum spectrumOf(FileContext& context, const DiscreteSpectrum& voxel) {
-    const double qmax = context.settings().chiExactQw;
+    const double qmax = context.settings().hyperuniformity.chiExactQw;
     if (qmax == 0.0) return voxel;
     ExactSpectralDensityParameters parameters;
     parameters.maxQw = qmax;
@@ -65,7 +65,8 @@ bool runHyperuniformity(FileContext& context, schema::Record& record) {
                     describe(h.fit.a0Error / h.peak.chi, 2), describe(h.fit.a0, 3),
                     describe(h.peak.chi, 4), describe(h.peak.qw, 3)));
     const HyperuniformityFigures figures{std::move(h), spectrum.source, spectrum.phi,
-                                         context.settings().chiExactQw, clock.seconds()};
+                                         context.settings().hyperuniformity.chiExactQw,
+                                         clock.seconds()};
     hyperuniformity_fields::kSpreadability.fill(record, figures, context.scales());
     context.addGroup(hyperRecord(kHyperuniformityGroup, hyperuniformity_fields::kHyperuniformity,
                                  figures, context.scales()));

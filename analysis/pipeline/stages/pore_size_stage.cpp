@@ -19,11 +19,10 @@
 namespace sbpack::stages {
 
 StageMemory poreSizesMemory(const Packing& packing, const RunSettings& settings) {
-    const int m = settings.poreVoxels;
-    switch (settings.poreMethod) {
+    const int m = settings.poreVoxels();
+    switch (settings.poreMethod()) {
     case PoreMethod::Exact: {
-        const std::int64_t k =
-            settings.porePoints > 0 ? settings.porePoints : RunSettings::kDefaultExactPorePoints;
+        const std::int64_t k = settings.pores.exactParameters().randomPoints;
         return {static_cast<double>(k) * 2.0 * sizeof(double) +
                     static_cast<double>(packing.size()) * 100.0,
                 fmt::format("exact pore sizes of {} points", k), "--pore-points"};
@@ -71,28 +70,22 @@ PoreSizeMap poreSizeMap(const FileContext& context, int m, bool features) {
 PoreSizeDistributionResult measurePores(const FileContext& context, std::optional<PoreSizeMap>& map,
                                         double& mapSeconds) {
     const RunSettings& s = context.settings();
-    if (s.poreMethod == PoreMethod::Exact) {
-        ExactPoreSizeParameters parameters;
-        parameters.randomPoints =
-            s.porePoints > 0 ? s.porePoints : RunSettings::kDefaultExactPorePoints;
-        parameters.seed = s.poreSeed;
-        return ExactPoreSizeDistribution(parameters).compute(context.packing(), context.progress());
-    }
-    const bool refined = s.poreMethod == PoreMethod::Refined;
-    PoreSizeParameters parameters;
-    parameters.randomPoints = s.porePoints;
-    parameters.seed = s.poreSeed;
+    if (s.poreMethod() == PoreMethod::Exact)
+        return ExactPoreSizeDistribution(s.pores.exactParameters())
+            .compute(context.packing(), context.progress());
+    const bool refined = s.poreMethod() == PoreMethod::Refined;
+    const PoreSizeParameters parameters = s.pores.gridParameters();
     const Stopwatch clock;
 #ifdef SBPACK_WITH_CUDA
     // All voxels counted and no export: the histogram alone comes back from the GPU.
-    if (s.device.device == ComputeDevice::Cuda && !refined && s.porePoints == 0 &&
+    if (s.device.device == ComputeDevice::Cuda && !refined && s.pores.points == 0 &&
         context.vdbExport(Analysis::PoreSizes) == nullptr) {
-        PoreSizeDistributionResult pores = cudaPoreSizes(context, s.poreVoxels, parameters);
+        PoreSizeDistributionResult pores = cudaPoreSizes(context, s.poreVoxels(), parameters);
         mapSeconds = clock.seconds() - pores.runtimeSeconds;
         return pores;
     }
 #endif
-    map.emplace(poreSizeMap(context, s.poreVoxels, refined));
+    map.emplace(poreSizeMap(context, s.poreVoxels(), refined));
     mapSeconds = clock.seconds();
     if (refined)
         return RefinedPoreSizeDistribution(parameters)
@@ -116,8 +109,8 @@ std::string poreDetail(const PoreSizeDistributionResult& pores) {
 bool runDistributedPoreSizes(FileContext& context, schema::Record& record) {
     DistributionFigures figures;
     PoreSizeDistributionResult pores = context.grids()->poreSizes(
-        context.packing(), context.settings().poreVoxels, PoreSizeParameters{}, context.meanWidth(),
-        context.progress(), figures);
+        context.packing(), context.settings().poreVoxels(), PoreSizeParameters{},
+        context.meanWidth(), context.progress(), figures);
     context.progress().stageDone("pore sizes", pores.runtimeSeconds,
                                  fmt::format("{} ranks, <delta>/w = {}, max/w = {}", figures.ranks,
                                              describe(pores.meanOverWidth()),
@@ -136,14 +129,14 @@ bool runPoreSizes(FileContext& context, schema::Record& record) {
     double mapSeconds = 0.0;
     PoreSizeDistributionResult pores = measurePores(context, map, mapSeconds);
     context.progress().stageDone(
-        fmt::format("pore sizes ({})", poreMethodName(context.settings().poreMethod)),
+        fmt::format("pore sizes ({})", poreMethodName(context.settings().poreMethod())),
         pores.runtimeSeconds, poreDetail(pores));
     if (const VdbExport* vdb = context.vdbExport(Analysis::PoreSizes); vdb != nullptr && map) {
         const Stopwatch clock;
         vdb->output->write(map->vdbImage());
         context.progress().stageDone("pore vdb export", clock.seconds(), vdb->destination.string());
     }
-    const bool gridded = context.settings().poreMethod != PoreMethod::Exact;
+    const bool gridded = context.settings().poreMethod() != PoreMethod::Exact;
     PoreSizeFigures recorded{std::move(pores), gridded ? std::optional(mapSeconds) : std::nullopt,
                              std::nullopt};
     pore_size_fields::kTable.fill(record, recorded, context.scales());

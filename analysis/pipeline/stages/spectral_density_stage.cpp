@@ -15,11 +15,11 @@
 namespace sbpack::stages {
 
 StageMemory spectralDensityMemory(const Packing& packing, const RunSettings& settings) {
-    const int m = settings.voxels;
+    const int m = settings.voxelization.voxels;
     double bytes = SpectralDensity::memoryEstimateBytes(m);
     if (packing.shape().isSphere()) {
-        const int shell = SpectralDensity::maxShellFor(settings.maxQw, packing.boxLength,
-                                                       packing.shape().meanWidth(), m);
+        const int shell = SpectralDensity::maxShellFor(
+            settings.spectralDensity.maxQw, packing.boxLength, packing.shape().meanWidth(), m);
         bytes += collectiveDensityBytes(packing, std::max(shell, 1));
     }
     return {bytes, fmt::format("FFT grid {}^3", m), "--voxels"};
@@ -70,9 +70,7 @@ SpectralDensityResult wholeGrid(FileContext& context, const SpectralDensityParam
 } // namespace
 
 bool runSpectralDensity(FileContext& context, schema::Record& record) {
-    SpectralDensityParameters parameters;
-    parameters.maxQw = context.settings().maxQw;
-    parameters.fft = context.settings().fft;
+    const SpectralDensityParameters& parameters = context.settings().spectralDensity;
     DistributionFigures figures;
     SpectralDensityResult s;
     if (context.grids() != nullptr)

@@ -10,18 +10,18 @@
 namespace sbpack::stages {
 
 StageMemory structureFactorMemory(const Packing& packing, const RunSettings& settings) {
-    const int shell = StructureFactor::maxShellFor(settings.maxQw, packing.boxLength,
-                                                   packing.shape().meanWidth());
+    const int shell = StructureFactor::maxShellFor(settings.structureFactor.maxQw,
+                                                   packing.boxLength, packing.shape().meanWidth());
     return {collectiveDensityBytes(packing, std::max(shell, 1)), "S(Q) tables", "--qmax"};
 }
 
 bool runStructureFactor(FileContext& context, schema::Record& record) {
-    const double maxQw = context.settings().maxQw;
+    const StructureFactorParameters& parameters = context.settings().structureFactor;
     const StructureFactorResult s =
-        StructureFactor({maxQw}).compute(context.packing(), context.progress());
+        StructureFactor(parameters).compute(context.packing(), context.progress());
     context.progress().stageDone(
         "structure factor", s.runtimeSeconds,
-        fmt::format("{} shells up to Q w = {}", s.maxShell, describe(maxQw)));
+        fmt::format("{} shells up to Q w = {}", s.maxShell, describe(parameters.maxQw)));
     structure_factor_fields::kTable.fill(record, s, context.scales());
     return true;
 }

@@ -14,15 +14,15 @@ namespace sbpack::stages {
 StageMemory voxelsMemory(const Packing&, const RunSettings& settings) {
     if (settings.vdbDirectory.empty()) return {};
     // Float leaves of the .vdb export: 8^3 floats and their masks per block, at most every block.
-    return {std::pow(std::ceil(settings.voxels / 8.0), 3) * (512.0 * 4.0 + 200.0), ".vdb export",
-            "--voxels"};
+    return {std::pow(std::ceil(settings.voxelization.voxels / 8.0), 3) * (512.0 * 4.0 + 200.0),
+            ".vdb export", "--voxels"};
 }
 
 namespace {
 
 /// --distribute grids: this rank's slab, kept for chi; the whole grid's figures.
 bool runSlabVoxels(FileContext& context, schema::Record& record) {
-    const int m = context.settings().voxels;
+    const int m = context.settings().voxelization.voxels;
     SlabVoxels voxels = context.grids()->voxelize(context.packing(), m, context.progress());
     context.progress().stageDone(
         "voxelization", voxels.slab.runtimeSeconds(),
@@ -60,8 +60,9 @@ bool runVoxels(FileContext& context, schema::Record& record) {
     if (context.settings().device.device == ComputeDevice::Cuda)
         return runCudaVoxels(context, record);
 #endif
-    const int m = context.settings().voxels;
-    Voxelization voxels = Voxelizer({m}).compute(context.packing(), context.progress());
+    const int m = context.settings().voxelization.voxels;
+    Voxelization voxels =
+        Voxelizer(context.settings().voxelization).compute(context.packing(), context.progress());
     context.progress().stageDone(
         "voxelization", voxels.runtimeSeconds(),
         fmt::format("{}^3, phi_voxel = {} (phi = {}), OpenVDB tree {}", m,

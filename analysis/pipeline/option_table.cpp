@@ -1,4 +1,4 @@
-#include "cli/option_table.hpp"
+#include "pipeline/option_table.hpp"
 
 #include "cli/option_values.hpp"
 #include "parallel/parallel.hpp"
@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <set>
 #include <stdexcept>
 #include <thread>
 
@@ -80,11 +81,12 @@ void parseThreads(Settings& s, Text option, Text v) {
 
 void parsePlanningBudget(Settings& s, Text option, Text v) {
     if (v == "none") {
-        s.fft.planningBudget = std::numeric_limits<double>::infinity();
+        s.spectralDensity.fft.planningBudget = std::numeric_limits<double>::infinity();
         return;
     }
-    s.fft.planningBudget = parseNumber(option, v);
-    if (!(s.fft.planningBudget >= 0.0) || !std::isfinite(s.fft.planningBudget))
+    s.spectralDensity.fft.planningBudget = parseNumber(option, v);
+    if (!(s.spectralDensity.fft.planningBudget >= 0.0) ||
+        !std::isfinite(s.spectralDensity.fft.planningBudget))
         throw std::invalid_argument(
             fmt::format("option {}: must be >= 0 and finite, or none", option));
 }
@@ -151,41 +153,44 @@ constexpr std::array kRunRows{
 constexpr std::array kGridRows{
     OptionRow{"voxels", "M",
               "spectral grid, M^3 voxels of the box, for chi and voxels (default {})",
-              [](Settings& s, Text o, Text v) { s.voxels = parseGrid(o, v); },
-              [](const Settings& d) { return std::to_string(d.voxels); }},
+              [](Settings& s, Text o, Text v) { s.voxelization.voxels = parseGrid(o, v); },
+              [](const Settings& d) { return std::to_string(d.voxelization.voxels); }},
     OptionRow{"pore-voxels", "M",
               "pore grid, M^3 voxels, of pores and transport (default {}; with --pores voxel\n"
-              "500, the paper's); the exact periodic distance transform needs 5 bytes per voxel",
-              [](Settings& s, Text o, Text v) { s.poreVoxels = parseGrid(o, v); },
-              [](const Settings& d) { return std::to_string(d.poreVoxels); }},
+              "{}, the paper's); the exact periodic distance transform needs 5 bytes per voxel",
+              [](Settings& s, Text o, Text v) { s.pores.voxels = parseGrid(o, v); },
+              [](const Settings& d) { return std::to_string(d.poreVoxels()); }, nullptr,
+              [] { return std::to_string(PoreSizeSettings::defaultVoxels(PoreMethod::Voxel)); }},
     OptionRow{"pores", "voxel|refined|exact",
               "pore sizes (default {}; voxel under --distribute grids): refined (each void\n"
-              "voxel centre's distance to the nearest particle surface, certified; within 0.1 %\n"
-              "of exact at M = 200; 4 more bytes per voxel), voxel (distance between voxel\n"
-              "centres, as the paper; +21-29 % on <delta> at M = 500) or exact (K random\n"
-              "points, no voxels)",
-              [](Settings& s, Text, Text v) { s.poreMethod = poreMethodFromName(v); },
-              [](const Settings& d) { return std::string(poreMethodName(d.poreMethod)); }},
+              "voxel centre's distance to the nearest particle surface, certified; 4 more bytes\n"
+              "per voxel), voxel (distance between voxel centres, as the paper) or exact (K\n"
+              "random points, no voxels); their error against run time: docs/design.md §5",
+              [](Settings& s, Text, Text v) { s.pores.method = poreMethodFromName(v); },
+              [](const Settings& d) { return std::string(poreMethodName(d.poreMethod())); }},
     OptionRow{"pore-points", "K",
               "K random points: voxel and refined, K random void voxels instead of every\n"
               "one (default {}: every one; refused where the void is under 1e-3 of the voxels);\n"
-              "exact, K points of the void (default 0: 10^6, as the paper); random samples\n"
-              "record the standard errors of the moments",
+              "exact, K points of the void (0: {}, as the paper); random samples record the\n"
+              "standard errors of the moments",
               [](Settings& s, Text o, Text v) {
-                  s.porePoints = parseInteger(o, v, 0, std::int64_t(1) << 40);
+                  s.pores.points = parseInteger(o, v, 0, std::int64_t(1) << 40);
               },
-              [](const Settings& d) { return std::to_string(d.porePoints); }},
+              [](const Settings& d) { return std::to_string(d.pores.points); }, nullptr,
+              [] { return number(double(PoreSizeSettings{}.exactParameters().randomPoints)); }},
     OptionRow{"pore-seed", "S", "seed of the random points of --pore-points (default {})",
               [](Settings& s, Text o, Text v) {
-                  s.poreSeed = static_cast<std::uint64_t>(
+                  s.pores.seed = static_cast<std::uint64_t>(
                       parseInteger(o, v, 0, std::numeric_limits<std::int64_t>::max()));
               },
-              [](const Settings& d) { return std::to_string(d.poreSeed); }},
+              [](const Settings& d) { return std::to_string(d.pores.seed); }},
     OptionRow{"qmax", "X",
               "S(Q) and chi(Q) up to Q w <= X, w the mean width (default {}); chi also below\n"
               "the grid's Nyquist limit |n| < M/2",
-              [](Settings& s, Text o, Text v) { s.maxQw = parsePositive(o, v); },
-              [](const Settings& d) { return number(d.maxQw); }},
+              [](Settings& s, Text o, Text v) {
+                  s.structureFactor.maxQw = s.spectralDensity.maxQw = parsePositive(o, v);
+              },
+              [](const Settings& d) { return number(d.structureFactor.maxQw); }},
 };
 
 // The hyperuniformity analysis (docs/hyperuniformity.md).
@@ -193,8 +198,10 @@ constexpr std::array kHyperuniformityRows{
     OptionRow{"chi-exact-qmax", "X",
               "hyper: chi_V without voxels at Q w <= X, where alpha, a0 and H are fitted\n"
               "(default {}; 0: voxel data alone)",
-              [](Settings& s, Text o, Text v) { s.chiExactQw = parsePositive(o, v, true); },
-              [](const Settings& d) { return number(d.chiExactQw); }},
+              [](Settings& s, Text o, Text v) {
+                  s.hyperuniformity.chiExactQw = parsePositive(o, v, true);
+              },
+              [](const Settings& d) { return number(d.hyperuniformity.chiExactQw); }},
     OptionRow{"fit-qmax", "X",
               "hyper: fit chi_V = a0 + a1 Q^alpha over 0 < Q w <= X (default {}, as the paper)",
               [](Settings& s, Text o, Text v) { s.hyperuniformity.fitQmaxW = parsePositive(o, v); },
@@ -202,7 +209,11 @@ constexpr std::array kHyperuniformityRows{
     OptionRow{"alpha-window", "T1,T2",
               "hyper: alpha from E(t) over t D / w^2 in [T1, T2] (default: from the chi_V peak's\n"
               "decay, 10 / (Q_peak w)^2, to a quarter of the box's cutoff time)",
-              [](Settings& s, Text o, Text v) { s.hyperuniformity.window = parseTimes(o, v); }},
+              [](Settings& s, Text o, Text v) { s.hyperuniformity.window = parseTimes(o, v); },
+              [](const Settings& d) {
+                  const auto& w = d.hyperuniformity.window;
+                  return w ? number(w->tMin) + ',' + number(w->tMax) : std::string();
+              }},
     OptionRow{
         "bootstrap", "R",
         "hyper: bootstrap replicas over the wave vectors for alpha's error (default {};\n"
@@ -223,31 +234,33 @@ constexpr std::array kHyperuniformityRows{
 
 // FFTW (docs/design.md, "FFT planning").
 constexpr std::array kFftRows{
-    OptionRow{"fft-plan", "P",
-              "FFTW planning: estimate, measure or patient (default {}); measured plans are\n"
-              "kept in the wisdom file, so only the first run per size pays",
-              [](Settings& s, Text, Text v) { s.fft.planning = fftPlanningFromName(v); },
-              [](const Settings& d) { return std::string(fftPlanningName(d.fft.planning)); }},
+    OptionRow{
+        "fft-plan", "P",
+        "FFTW planning: estimate, measure or patient (default {}); measured plans are\n"
+        "kept in the wisdom file, so only the first run per size pays",
+        [](Settings& s, Text, Text v) { s.spectralDensity.fft.planning = fftPlanningFromName(v); },
+        [](const Settings& d) {
+            return std::string(fftPlanningName(d.spectralDensity.fft.planning));
+        }},
     OptionRow{"fft-planning-budget", "SECONDS|none",
               "seconds measure/patient planning may take when the wisdom has no plan\n"
               "(default {}): planning predicted to take longer uses estimate; none:\n"
               "no limit (a measured 300^3 plan takes ~20 s once, then is wisdom)",
-              parsePlanningBudget, [](const Settings& d) { return number(d.fft.planningBudget); }},
+              parsePlanningBudget,
+              [](const Settings& d) { return number(d.spectralDensity.fft.planningBudget); }},
     OptionRow{
         "fft-precision", "double|single",
         "chi's transform on the GPU: double or single (default {}; single: cuFFT,\n"
         "--device cuda; its error against double is tabulated in docs/gpu.md)",
         [](Settings& s, Text o, Text v) { s.fftSingle = isSecondOf(o, v, "double", "single"); },
         [](const Settings& d) { return std::string(d.fftSingle ? "single" : "double"); }},
-    OptionRow{
-        "fft-wisdom", "FILE|none", "wisdom file; none: no file; failures only warn\n(default {})",
-        [](Settings& s, Text, Text v) {
-            s.fft.wisdomFile = v == "none" ? std::filesystem::path() : std::filesystem::path(v);
-        },
-        [](const Settings&) {
-            return std::string(
-                "$XDG_CACHE_HOME/sbpack/fftw-wisdom, else ~/.cache/sbpack/fftw-wisdom");
-        }},
+    OptionRow{"fft-wisdom", "FILE|none",
+              "wisdom file; none: no file; failures only warn (default\n"
+              "$XDG_CACHE_HOME/sbpack/fftw-wisdom, else ~/.cache/sbpack/fftw-wisdom)",
+              [](Settings& s, Text, Text v) {
+                  s.spectralDensity.fft.wisdomFile =
+                      v == "none" ? std::filesystem::path() : std::filesystem::path(v);
+              }},
 };
 
 // The outputs (docs/results-schema.md).
@@ -294,14 +307,32 @@ RunSettings defaultRunSettings() {
     RunSettings s;
     s.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     s.analyses = resolveAnalyses("all");
-    s.fft.wisdomFile = defaultWisdomFile();
+    s.spectralDensity.fft.wisdomFile = defaultWisdomFile();
     return s;
+}
+
+std::string runOptions(const RunSettings& settings) {
+    std::set<std::string_view> used;
+    for (Analysis a : settings.analyses)
+        for (std::string_view name : analysisOptions(analysisInfo(a)))
+            used.insert(name);
+    std::string text;
+    for (const OptionRow& row : kOptionTable) {
+        if (used.count(row.name) == 0 || row.shownValue == nullptr) continue;
+        const std::string value = row.shownValue(settings);
+        if (!value.empty())
+            text += fmt::format("{}--{} {}", text.empty() ? "" : " ", row.name, value);
+    }
+    return text;
 }
 
 std::string optionHelp(const OptionRow& row, const RunSettings& defaults) {
     std::string text(row.help);
-    if (row.shownDefault != nullptr)
-        text = fmt::format(fmt::runtime(row.help), row.shownDefault(defaults));
+    if (row.dependentDefault != nullptr)
+        text =
+            fmt::format(fmt::runtime(row.help), row.shownValue(defaults), row.dependentDefault());
+    else if (row.shownValue != nullptr)
+        text = fmt::format(fmt::runtime(row.help), row.shownValue(defaults));
     if (row.moreHelp != nullptr) text += row.moreHelp();
     return text;
 }

@@ -1,0 +1,64 @@
+"""The base classes of sbpack's analyses (docs/python.md, "Analyses"); the classes themselves,
+one per analysis of sbanalyze's registry, are written out at build time into
+sbpack.analysis_classes (python/generate_analysis_classes.py).
+
+An analysis's keywords are the command line's options (``qmax=20`` is ``--qmax 20``; a pair such
+as ``alpha_window=(1, 5.8)`` is ``--alpha-window 1,5.8``), checked by sbanalyze's own parser, so
+the defaults and the messages (``ValueError``) are the command line's. ``compute(packing)`` runs
+the same stages as ``sbanalyze --compute NAME`` on that packing and returns its result object.
+
+What sbanalyze prints as a warning is one RuntimeWarning per message, its continuation lines (the
+gap distribution of unresolved contacts, ...) included, raised at the caller's line.
+"""
+from . import _sbpack
+
+
+def command_line_option(name, value):
+    """``--name value`` of one keyword (underscores to dashes; a pair joined by a comma)."""
+    if isinstance(value, (tuple, list)):
+        value = ",".join(str(v) for v in value)
+    return ["--" + name.replace("_", "-"), str(value)]
+
+
+class Result:
+    """The results of one compute(): ``groups``, every results group the run filled (dicts of
+    numpy arrays and numbers, named as in docs/results-schema.md), and a property per field."""
+
+    __slots__ = ("groups",)
+
+    def __init__(self, groups):
+        self.groups = groups
+
+    def _field(self, group, name):
+        return self.groups.get(group, {}).get(name)
+
+    def __repr__(self):
+        return f"<sbpack.{type(self).__name__} of groups {', '.join(self.groups)}>"
+
+
+class Analysis:
+    """One analysis of sbanalyze, set up once and computed on any number of packings."""
+
+    _compute = ""  # the --compute name
+    _result = Result
+
+    def __init__(self, **options):
+        args = ["--compute", self._compute]
+        for name, value in options.items():
+            if value is not None:
+                args += command_line_option(name, value)
+        self._analyzer = _sbpack.Analyzer(args)
+
+    @property
+    def threads(self):
+        """The threads the analysis runs on (``threads``, else the hardware's)."""
+        return self._analyzer.threads
+
+    def compute(self, packing, input="<python>"):
+        """Runs the analysis on ``packing`` (an sbpack.Packing); returns its result object.
+        ``input`` is the name the results give the packing (``file['input']``). The GIL is
+        released; Ctrl-C stops it at its next chunk (KeyboardInterrupt)."""
+        return self._result(self._analyzer.compute(packing, input))
+
+    def __repr__(self):
+        return f"<sbpack.{type(self).__name__} (--compute {self._compute})>"
