@@ -54,7 +54,8 @@ inline constexpr schema::FieldTable kSpreadability{std::array<schema::Column<R>,
      member<&R::h, &H::alpha, &ExponentEstimate::endHigh>},
     {{"alpha_window_mean", A, F, "1",
       "-3 - 2 ln(E(t_fit_max) / E(t_fit_min)) / ln(t_fit_max / t_fit_min): the window's mean "
-      "local alpha (the paper's estimate; biased by the finite times, bench/RESULTS.md)",
+      "local alpha (the paper's estimate; biased by the finite times; docs/hyperuniformity.md, "
+      "\"alpha from the long-time decay\")",
       Mean},
      member<&R::h, &H::alpha, &ExponentEstimate::windowMean>},
     {{"alpha_window_mean_stderr", A, F, "1",

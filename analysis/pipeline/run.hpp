@@ -8,25 +8,24 @@
 
 #include "packing/packing.hpp"
 #include "parallel/communicator.hpp"
+#include "stop/stop_request.hpp"
 
 #include <filesystem>
 #include <iosfwd>
 
-#include "stop/stop_request.hpp"
-
 namespace sbpack {
 
-/// Runs `settings`. Stage lines go to `log` unless settings.quiet; warnings always do; a JSON
-/// summary requested as "-" goes to `out`. Throws on bad input (before any analysis starts:
-/// threads, output paths, unreadable or invalid packings, grids too coarse, memory) and on
-/// failures, naming the file and the problem.
 /// The checks a packing passes before its analyses start (each grid puts at least 4 voxels across
 /// a particle; the memory the run needs is available); std::invalid_argument naming `input` and
 /// the option. runAnalyses makes them for every input; the Python module (python/) for its own.
 void checkPackingForRun(const Packing& packing, const RunSettings& settings,
                         const std::filesystem::path& input);
 
-/// `stop`: the request its stages poll (Interrupted once made).
+/// Runs `settings`. Stage lines go to `log` unless settings.quiet; warnings always do; a JSON
+/// summary requested as "-" goes to `out`. Throws on bad input (before any analysis starts:
+/// threads, output paths, unreadable or invalid packings, grids too coarse, memory) and on
+/// failures, naming the file and the problem. `stop`: the request its stages poll (Interrupted
+/// once made).
 RunResults runAnalyses(const RunSettings& settings, std::ostream& log, std::ostream& out,
                        const StopRequest& stop = processStopRequest());
 

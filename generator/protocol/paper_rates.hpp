@@ -1,12 +1,9 @@
 #pragma once
 // The expansion rates of the paper's protocol at each p (Sec. III A: "gamma in (0.05, 0.005) up
-// to P = 1e6", then "gamma ~ 0.001"; the paper states a range and an order of magnitude, not the
-// rates it used at each p). The defaults are the rates at which sbgen reproduces the paper's
-// tables at N = 1000: the fast rate its phi (bench/RESULTS.md, "Fidelity", E8;
-// bench/fidelity/rate_calibration.spec), the slow rate of superballs its Z (E11;
-// bench/fidelity/slow_rate.spec), measured after the conventions that could explain the
-// difference were tested and excluded (E1-E7: engine continuity at p = 1, system size, inertia,
-// thermostat, thermostat interval, slow rate, final pressure). docs/design.md §3.
+// to P = 1e6", then "gamma ~ 0.001"): the paper states a range, not the rate it used at each p,
+// so the defaults are the rates at which sbgen reproduces the paper's phi (fast) and Z (slow,
+// superballs) at N = 1000. How they were measured, and the conventions tested and excluded
+// first: docs/design.md §3.
 
 #include <vector>
 

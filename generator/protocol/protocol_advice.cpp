@@ -51,7 +51,8 @@ constexpr double kColumnBoxDiameters = 8.0;
 /// measured (bench/RESULTS.md, "Small boxes order": p = 0.85 to 1.5, N = 40 to 200, defaults).
 constexpr int kSmallBoxParticles = 250;
 
-/// The box edge in diameters at jamming, with phi about 0.85 (near-cubes, bench/RESULTS.md).
+/// The box edge in diameters at jamming, with phi about 0.85 (bench/RESULTS.md, "Near-cubes after
+/// the jam check").
 double jammedBoxDiameters(const ProtocolParameters& parameters) {
     const double unitVolume = Superball(parameters.p, 0.5).volume(); // D = 1
     return std::cbrt(parameters.particles * unitVolume / 0.85);

@@ -22,7 +22,8 @@ struct ExpectedCost {
 /// CPU seconds at collisionRate(p).
 ExpectedCost expectedCost(const ProtocolParameters& parameters);
 
-/// Collisions per CPU second measured at exponent p (N = 1000 and 200 runs, bench/RESULTS.md),
+/// Collisions per CPU second measured at exponent p (N = 1000 and 200 runs; bench/RESULTS.md,
+/// "Results (collisions per CPU second, median over 5 seeds)"),
 /// interpolated log-linearly in p.
 double collisionRate(double p);
 

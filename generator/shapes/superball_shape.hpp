@@ -1,30 +1,11 @@
 #pragma once
 // The superball as a shape of the event-driven engine (docs/design.md §2-3): collision prediction
-// for two translating, rotating, growing superballs that never misses a contact.
-//
-// Motion over tau >= 0 in the pair's frame: d(tau) = d + w tau, q_k(tau) = exp(omega_k tau / 2) q_k
-// (lab-frame omega), R(tau) = (D + gamma tau) / 2, c = circumradius / R. For a fixed unit n the
-// separating-plane gap g_n(tau) = n.d(tau) - h_i(n) - h_j(n) is a lower bound on the signed
-// distance s(tau) = max_n g_n(tau), and, the support point x_k of body k moving at omega_k x x_k
-// plus growth (envelope theorem), with |x_k| <= c R and x_k . n = h_k >= c_in R,
-//   g_n(tau) >= g_n(0) + tau [n.w - (|n x omega_i| + |n x omega_j|) R(tau) sqrt(c^2 - c_in^2)
-//                             - c gamma].
-// Also g_n'' <= M_n = sum_k |n x omega_k| (c gamma + c R |omega_k|) (support functions are
-// convex), so g_n lies above its chord minus M_n (t - t0)(t1 - t) / 2: one plane gap at t1
-// certifies [t0, t1] (the chord step), however fast the first-order bound says s could fall.
-// Tiers, cheapest first: the circumscribed spheres do not meet before the horizon; the cached
-// normal's plane separates up to it (first from the bound on its gap that the pair's last
-// prediction left, moved on by its rate bound: no support point; then from the pair's witness
-// record, two material points kept through collisions (shapes/witness_bound.hpp); then from its
-// exact gap, whose support points become the record); then the shape-independent first-contact
-// search (shapes/first_contact_search.hpp: advancement on planes, Newton steps in time near
-// contact, the refinement and the certificate of the root) over the pair's gap function
-// (shapes/superball/pair_gap.hpp: plane gaps and their bounds, exact signed distances from
-// warm_distance.hpp: warm Newton on the sphere, restarted from the best face normal for p > 1,
-// the robust pair solver as fallback; far from contact an unconverged Newton's plane gap serves
-// as a lower bound, and an overlap stands only with a witness point inside both bodies). A
-// prediction that reaches its step limit returns a safe time up to which nothing touches
-// (Prediction::contact = false) instead of guessing.
+// for two translating, rotating, growing superballs that never misses a contact. Its contract: a
+// predicted time is no later than the pair's first contact, and a prediction that reaches its step
+// limit returns a time up to which nothing touches (Prediction::contact = false). How: tiers from
+// the circumscribed spheres and the cached plane to the shape-independent first-contact search on
+// the pair's plane gaps and exact distances, with the bounds that certify each step
+// (docs/architecture.md, "generator/: the engine and the superball predictor").
 
 #include "pair/pair_geometry.hpp"
 #include "shapes/collision_resolver.hpp"
