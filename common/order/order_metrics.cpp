@@ -33,6 +33,15 @@ std::optional<double> firstMinimumOf(const PairCorrelationResult& g2) {
     }
 }
 
+/// The solid-like particles over the SANN bonds; none where a SANN shell does not close in the box.
+std::optional<SolidLikeResult> solidLikeParticles(const Packing& packing) {
+    try {
+        return SolidLikeParticles().compute(sannBonds(packing));
+    } catch (const std::runtime_error&) {
+        return std::nullopt; // a box too small for the rule
+    }
+}
+
 } // namespace
 
 OrderMetrics measureOrder(const Packing& packing,
@@ -50,6 +59,7 @@ OrderMetrics measureOrder(const Packing& packing,
     t.shellCount = fccShellsThatFit(packing, t);
     if (t.shellCount > 0) m.translational = TranslationalOrder(t).compute(packing);
     if (!packing.shape().isSphere()) m.cubatic = cubaticOrder(packing.orientations);
+    m.solidLike = solidLikeParticles(packing);
     return m;
 }
 
@@ -69,6 +79,13 @@ OrderVerdict orderVerdict(const OrderMetrics& metrics) {
     if (metrics.cubatic && metrics.cubatic->order >= kOrderedP4)
         reason += fmt::format("{}P4 = {:.3f} >= {} (aligned axes 1, MRJ 0.00-0.06)",
                               reason.empty() ? "" : "; ", metrics.cubatic->order, kOrderedP4);
+    if (const auto& s = metrics.solidLike; s && s->solidFraction >= kOrderedSolidFraction)
+        reason += fmt::format("{}solid-like fraction = {:.3f} >= {} (lattices 1, MRJ <= 0.09)",
+                              reason.empty() ? "" : "; ", s->solidFraction, kOrderedSolidFraction);
+    if (const auto& s = metrics.solidLike; s && s->largestClusterFraction >= kOrderedCrystalCluster)
+        reason += fmt::format("{}largest crystalline cluster = {:.3f} N >= {} N (MRJ <= 0.031 N)",
+                              reason.empty() ? "" : "; ", s->largestClusterFraction,
+                              kOrderedCrystalCluster);
     return {!reason.empty(), reason};
 }
 
