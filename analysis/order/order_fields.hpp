@@ -142,7 +142,8 @@ inline constexpr schema::FieldTable kTable{schema::joinColumns(
                  return static_cast<std::int64_t>(s.largestClusterSize);
              });
          }},
-        {{"crystal_cluster_fraction", A, F, "1", "crystal_cluster / N", Mean, true},
+        {{"crystal_cluster_fraction", A, F, "1",
+          "the largest crystalline cluster over N, crystal_cluster / N", Mean, true},
          +[](const R& r, const Scales&) {
              return partOf<&M::solidLike>(
                  r, [](const SolidLikeResult& s) { return s.largestClusterFraction; });
