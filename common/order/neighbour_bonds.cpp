@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
+#include <vector>
 
 namespace sbpack {
 
@@ -49,9 +51,11 @@ NeighbourBonds shellBonds(const Packing& packing, const std::vector<std::vector<
                           const std::vector<std::size_t>& shellSize) {
     std::vector<std::pair<int, int>> pairs;
     for (std::size_t i = 0; i < near.size(); ++i)
-        for (std::size_t k = 0; k < shellSize[i]; ++k)
-            pairs.emplace_back(std::min<int>(i, near[i][k].index),
-                               std::max<int>(i, near[i][k].index));
+        for (std::size_t k = 0; k < shellSize[i]; ++k) {
+            const auto a = static_cast<int>(i);
+            const int b = near[i][k].index;
+            pairs.emplace_back(std::min(a, b), std::max(a, b));
+        }
     std::sort(pairs.begin(), pairs.end());
     pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
     return contactBonds(packing, pairs);

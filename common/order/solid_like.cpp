@@ -54,13 +54,17 @@ std::vector<double> bondCorrelations(const NeighbourBonds& bonds, const BondHarm
     return correlation;
 }
 
+/// A crystal-like bond: d_l above the threshold (NaN is not).
+bool crystalLike(double correlation, const SolidLikeParameters& parameters) {
+    return correlation > parameters.bondThreshold;
+}
+
 /// The largest set of solid-like particles joined by crystal-like bonds.
 std::size_t largestCluster(const NeighbourBonds& bonds, const SolidLikeResult& r) {
     Clusters clusters(bonds.particleCount);
     for (std::size_t k = 0; k < bonds.bonds.size(); ++k) {
         const Bond& b = bonds.bonds[k];
-        if (r.bondCorrelation[k] > r.parameters.bondThreshold && r.solidLike[b.i] &&
-            r.solidLike[b.j])
+        if (crystalLike(r.bondCorrelation[k], r.parameters) && r.solidLike[b.i] && r.solidLike[b.j])
             clusters.join(b.i, b.j);
     }
     std::size_t largest = 0;
@@ -92,7 +96,7 @@ SolidLikeResult SolidLikeParticles::compute(const NeighbourBonds& bonds) const {
     r.crystalBonds.assign(n, 0);
     for (std::size_t k = 0; k < bonds.bonds.size(); ++k) {
         const Bond& b = bonds.bonds[k];
-        if (r.bondCorrelation[k] > parameters_.bondThreshold) { // NaN is not crystal-like
+        if (crystalLike(r.bondCorrelation[k], parameters_)) {
             ++r.crystalBonds[b.i];
             ++r.crystalBonds[b.j];
         }
