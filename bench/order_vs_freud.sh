@@ -2,7 +2,9 @@
 # Cross-checks sbanalyze --compute order against the peer freud (freud.order.Steinhardt,
 # freud.density.RDF) on one packing and times both on one thread (issue 44; bench/RESULTS.md,
 # "Order metrics against freud"). Exits non-zero when q_l(i), Q_l or g2 disagree beyond the
-# tolerances stated in bench/order_vs_freud.py.
+# tolerances stated in bench/order_vs_freud.py. Then bench/solid_like_vs_freud.py checks the
+# solid-like particles against freud.order.SolidLiquid on PACKING and on eight lattices (issue 63;
+# bench/RESULTS.md, "Solid-like particles against freud").
 # usage: bash bench/order_vs_freud.sh [SBANALYZE] [PACKING]
 #   SBANALYZE  default build/analysis/sbanalyze; PACKING  default data/mrj-spheres-5000.h5
 # environment:
@@ -26,3 +28,5 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 "$venv/bin/python" "$root/bench/order_vs_freud.py" "$sbanalyze" "$packing" \
     --repeats "${REPEATS:-5}" --work "$work"
+"$venv/bin/python" "$root/bench/solid_like_vs_freud.py" "$sbanalyze" "$packing" --lattices \
+    --work "$work"

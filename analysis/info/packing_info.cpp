@@ -24,11 +24,13 @@ PackingInfo packingInfo(const std::filesystem::path& file, const ContactParamete
 
 namespace {
 
-/// "  order  mean local q6 = ..., T = ..., P4 = ...: disordered" and the warning when ordered.
+/// "  order  mean local q6 = ..., solid-like ..., T = ..., P4 = ...: disordered" and the warning
+/// when ordered.
 void printOrder(const PackingInfo& info, std::ostream& out) {
     const OrderMetrics& m = info.order;
     out << "  order                ";
     if (m.cutoffBonds) out << "mean local q6 = " << m.cutoffBonds->q6.meanLocalOrder << ", ";
+    if (m.solidLike) out << "solid-like " << m.solidLike->solidFraction << ", ";
     if (m.translational)
         out << "T = " << m.translational->order << " (" << m.translational->parameters.shellCount
             << " fcc shells), ";

@@ -124,7 +124,41 @@ inline constexpr schema::FieldTable kTable{schema::joinColumns(
              return Value(std::move(x));
          }},
     }},
-    std::array<schema::Column<R>, 3>{{
+    std::array<schema::Column<R>, 4>{{
+        {{"solid_like_fraction", A, F, "1",
+          "fraction of the particles solid-like: enough crystal-like bonds among their SANN bonds "
+          "(ten Wolde et al.; docs/order-metrics.md §5); absent where a SANN shell does not "
+          "close within L / 2",
+          Mean, true},
+         +[](const R& r, const Scales&) {
+             return partOf<&M::solidLike>(r,
+                                          [](const SolidLikeResult& s) { return s.solidFraction; });
+         }},
+        {{"crystal_cluster", A, I, "1",
+          "particles in the largest cluster of solid-like particles joined by crystal-like bonds",
+          No, true},
+         +[](const R& r, const Scales&) {
+             return partOf<&M::solidLike>(r, [](const SolidLikeResult& s) {
+                 return static_cast<std::int64_t>(s.largestClusterSize);
+             });
+         }},
+        {{"crystal_cluster_fraction", A, F, "1",
+          "the largest crystalline cluster over N, crystal_cluster / N", Mean, true},
+         +[](const R& r, const Scales&) {
+             return partOf<&M::solidLike>(
+                 r, [](const SolidLikeResult& s) { return s.largestClusterFraction; });
+         }},
+        {{"sann_neighbours_mean", A, F, "1",
+          "mean number of SANN bonds of a particle (van Meel et al. 2012; fcc 12, bcc 14, sc 18)",
+          Mean, true},
+         +[](const R& r, const Scales&) { // each bond counts at both ends
+             return partOf<&M::solidLike>(r, [](const SolidLikeResult& s) {
+                 return 2.0 * static_cast<double>(s.bondCorrelation.size()) /
+                        static_cast<double>(s.neighbourCount.size());
+             });
+         }},
+    }},
+    std::array<schema::Column<R>, 4>{{
         {{"g2", D, F, "1",
           "pair correlation g2(r) of the centroids, 2 n_pairs / (N rho V_shell) (Eq. 1.1)"},
          member<&R::metrics, &M::pairCorrelation, &G::g2>},
@@ -137,12 +171,22 @@ inline constexpr schema::FieldTable kTable{schema::joinColumns(
              const auto& b = r.metrics.cutoffBonds;
              return b ? Optional(Value(b->q6.localOrder)) : std::nullopt;
          }},
+        {{"crystal_bonds", D, I, "1",
+          "crystal-like bonds xi(i) of each particle among its SANN bonds (docs/order-metrics.md "
+          "§5)",
+          No, true},
+         +[](const R& r, const Scales&) {
+             return partOf<&M::solidLike>(r, [](const SolidLikeResult& s) {
+                 return std::vector<std::int64_t>(s.crystalBonds.begin(), s.crystalBonds.end());
+             });
+         }},
     }})};
 } // namespace order_fields
 
 inline constexpr schema::Group kOrderGroup{
     "order", "files/<i>/order",
-    "order metrics: g2, Q4 and Q6, T, the cubatic P4 and the verdict (order; "
+    "order metrics: g2, Q4 and Q6, T, the cubatic P4, the solid-like particles and the verdict "
+    "(order; "
     "docs/order-metrics.md)",
     order_fields::kTable.fields()};
 

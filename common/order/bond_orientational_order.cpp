@@ -11,8 +11,6 @@
 namespace sbpack {
 namespace {
 
-using Harmonics = std::vector<std::complex<double>>; ///< sums of Y_lm, m = 0..l
-
 /// Adds Y_lm(theta, phi) of the direction of `bond`, m = 0..l, to `sum`: Y_lm = sph_legendre(l,
 /// m, theta) e^{i m phi} (libstdc++'s normalised associated Legendre function, Condon-Shortley
 /// phase). theta from atan2, accurate near the poles.
@@ -25,14 +23,10 @@ void addHarmonics(const Vector3d& bond, int degree, Harmonics& sum) {
                   std::complex<double>(std::cos(m * phi), std::sin(m * phi));
 }
 
-/// sqrt(4 pi / (2l + 1) sum_{m=-l..l} |sum_m / count|^2), with |q_{l,-m}| = |q_lm| (Y_{l,-m} =
-/// (-1)^m conj Y_lm).
+/// sqrt(4 pi / (2l + 1) sum_{m=-l..l} |sum_m / count|^2).
 double rotationalInvariant(const Harmonics& sum, double count) {
-    double squares = std::norm(sum[0]);
-    for (std::size_t m = 1; m < sum.size(); ++m)
-        squares += 2.0 * std::norm(sum[m]);
     const auto l = static_cast<double>(sum.size() - 1);
-    return std::sqrt(4.0 * std::numbers::pi / (2.0 * l + 1.0) * squares) / count;
+    return std::sqrt(4.0 * std::numbers::pi / (2.0 * l + 1.0) * harmonicProduct(sum, sum)) / count;
 }
 
 void checkBond(const Bond& bond, std::size_t particleCount) {
@@ -49,32 +43,46 @@ void checkBond(const Bond& bond, std::size_t particleCount) {
 
 } // namespace
 
-SteinhardtOrder steinhardtOrder(const NeighbourBonds& bonds, int degree) {
+BondHarmonics bondHarmonics(const NeighbourBonds& bonds, int degree) {
     if (degree < 0)
         throw std::invalid_argument(
             fmt::format("Steinhardt order: the degree l must be >= 0, not {}", degree));
-    if (bonds.bonds.empty()) throw std::invalid_argument("Steinhardt order: there are no bonds");
     const std::size_t n = bonds.particleCount;
-    std::vector<Harmonics> local(n, Harmonics(degree + 1));
-    SteinhardtOrder result;
-    result.degree = degree;
-    result.bondCount = bonds.bonds.size();
-    result.neighbourCount.assign(n, 0);
+    BondHarmonics result{degree, std::vector<Harmonics>(n, Harmonics(degree + 1)),
+                         std::vector<int>(n, 0)};
     for (const Bond& bond : bonds.bonds) { // each bond seen from i (r_ij) and from j (-r_ij)
         checkBond(bond, n);
-        addHarmonics(bond.vector, degree, local[bond.i]);
-        addHarmonics(-bond.vector, degree, local[bond.j]);
+        addHarmonics(bond.vector, degree, result.sums[bond.i]);
+        addHarmonics(-bond.vector, degree, result.sums[bond.j]);
         ++result.neighbourCount[bond.i];
         ++result.neighbourCount[bond.j];
     }
+    return result;
+}
+
+double harmonicProduct(const Harmonics& a, const Harmonics& b) {
+    double product = (a[0] * std::conj(b[0])).real();
+    for (std::size_t m = 1; m < a.size(); ++m) // the terms m and -m are complex conjugates
+        product += 2.0 * (a[m] * std::conj(b[m])).real();
+    return product;
+}
+
+SteinhardtOrder steinhardtOrder(const NeighbourBonds& bonds, int degree) {
+    if (bonds.bonds.empty()) throw std::invalid_argument("Steinhardt order: there are no bonds");
+    const BondHarmonics local = bondHarmonics(bonds, degree);
+    const std::size_t n = bonds.particleCount;
+    SteinhardtOrder result;
+    result.degree = degree;
+    result.bondCount = bonds.bonds.size();
+    result.neighbourCount = local.neighbourCount;
     Harmonics global(degree + 1);
     result.localOrder.assign(n, std::numeric_limits<double>::quiet_NaN());
     double localSum = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
         if (result.neighbourCount[i] == 0) continue;
         for (int m = 0; m <= degree; ++m)
-            global[m] += local[i][m];
-        result.localOrder[i] = rotationalInvariant(local[i], result.neighbourCount[i]);
+            global[m] += local.sums[i][m];
+        result.localOrder[i] = rotationalInvariant(local.sums[i], result.neighbourCount[i]);
         localSum += result.localOrder[i];
         ++result.bondedParticles;
     }

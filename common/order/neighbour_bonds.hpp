@@ -1,6 +1,7 @@
 #pragma once
 // The neighbour bonds of a packing, the input of the bond-orientational order
-// (docs/order-metrics.md §2): the contact network's pairs, or the pairs within a distance cutoff.
+// (docs/order-metrics.md §2): the contact network's pairs, the pairs within a distance cutoff, or
+// the solid-angle based nearest neighbours (SANN).
 
 #include "packing/packing.hpp"
 
@@ -33,5 +34,14 @@ NeighbourBonds contactBonds(const Packing& packing, const std::vector<std::pair<
 /// minimum of g2: order/pair_correlation.hpp). Throws std::invalid_argument unless
 /// 0 < cutoff w <= L / 2.
 NeighbourBonds distanceBonds(const Packing& packing, double cutoff);
+
+/// The bonds of the solid-angle based nearest neighbours (SANN: van Meel, Filion, Valeriani &
+/// Frenkel, J. Chem. Phys. 136, 234107 (2012), Eq. 3; docs/order-metrics.md §2): particle i's
+/// N_b(i) nearest, N_b(i) the smallest m >= 3 with sum_{k=1..m} r_k / (m - 2) < r_{m+1} over its
+/// centre distances r_1 <= r_2 <= ... A pair is a bond when either particle has the other in its
+/// shell (the rule is not symmetric). It needs no cutoff and takes each lattice's full shells:
+/// simple cubic 18 (6 + 12), bcc 14 (8 + 6), fcc and hcp 12. Throws std::runtime_error where a
+/// particle's shell does not close within L / 2 (a box too small for the rule).
+NeighbourBonds sannBonds(const Packing& packing);
 
 } // namespace sbpack

@@ -1,12 +1,13 @@
 #pragma once
 // The order metrics of one packing together (docs/order-metrics.md §5): g2 and its first minimum,
-// Q4 and Q6 over two neighbour definitions, T and P4, each where the packing allows it, and the
-// verdict whether the packing has ordered (what sbanalyze's order group, `sbanalyze info` and
-// sbgen's final report say).
+// Q4 and Q6 over two neighbour definitions, T and P4, the solid-like particles over the SANN
+// bonds, each where the packing allows it, and the verdict whether the packing has ordered (what
+// sbanalyze's order group, `sbanalyze info` and sbgen's final report say).
 
 #include "order/bond_orientational_order.hpp"
 #include "order/cubatic_order.hpp"
 #include "order/pair_correlation.hpp"
+#include "order/solid_like.hpp"
 #include "order/translational_order.hpp"
 #include "packing/packing.hpp"
 
@@ -32,6 +33,9 @@ struct OrderMetrics {
     std::optional<TranslationalOrderResult> translational;
     /// The particles' cubic axes; absent for spheres (p = 1), whose orientations mean nothing.
     std::optional<CubaticOrderResult> cubatic;
+    /// The solid-like particles over the SANN bonds (docs/order-metrics.md §5); absent where a
+    /// particle's SANN shell does not close within L / 2.
+    std::optional<SolidLikeResult> solidLike;
 };
 
 /// Every metric of `packing`; `contacts` (e.g. ContactResult::contacts) adds the contact bonds.
@@ -52,6 +56,12 @@ inline constexpr double kMrjLocalQ6Low = 0.37;
 inline constexpr double kMrjLocalQ6High = 0.44;
 inline constexpr double kOrderedT = 0.3;
 inline constexpr double kOrderedP4 = 0.5;
+/// The thresholds on the solid-like particles over the SANN bonds (docs/order-metrics.md §5: the
+/// measurement): the 23 MRJ packings of N >= 1000 in data/ have a solid-like fraction of at most
+/// 0.087 and a largest crystalline cluster of at most 0.031 N; lattices, perfect or displaced, 1
+/// and 1; a 20 % fcc nucleus carved into MRJ spheres 0.195 and 0.188 N.
+inline constexpr double kOrderedSolidFraction = 0.15;
+inline constexpr double kOrderedCrystalCluster = 0.1;
 
 /// Whether the metrics say the packing has ordered (docs/order-metrics.md §5: the thresholds and
 /// how they were measured), and why, in one line ("" when not).

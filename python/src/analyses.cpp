@@ -186,6 +186,8 @@ void registerAnalyses(py::module_& m) {
     thresholds["q6_local_mean"] = kOrderedLocalQ6;
     thresholds["T"] = kOrderedT;
     thresholds["P4"] = kOrderedP4;
+    thresholds["solid_like_fraction"] = kOrderedSolidFraction;
+    thresholds["crystal_cluster_fraction"] = kOrderedCrystalCluster;
     m.attr("order_thresholds") = thresholds;
     m.attr("mrj_local_q6") = py::make_tuple(kMrjLocalQ6Low, kMrjLocalQ6High);
     m.def("analysis_options", &optionRows,

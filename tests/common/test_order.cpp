@@ -5,9 +5,11 @@
 #include "order/cubatic_order.hpp"
 #include "order/neighbour_bonds.hpp"
 #include "order/pair_correlation.hpp"
+#include "order/solid_like.hpp"
 #include "order/translational_order.hpp"
 
 #include "contacts/contact_network.hpp"
+#include "order_lattices.hpp"
 #include "random/random.hpp"
 
 #include <gtest/gtest.h>
@@ -22,35 +24,7 @@
 namespace sbpack {
 namespace {
 
-/// Spheres of diameter 1 (mean width w = 1) at the given centres, aligned.
-Packing pointPacking(const std::vector<Vector3d>& positions, double boxLength) {
-    Packing packing;
-    packing.p = 1.0;
-    packing.semiAxis = 0.5;
-    packing.boxLength = boxLength;
-    for (const Vector3d& r : positions)
-        packing.positions.push_back(wrapIntoBox(r, boxLength));
-    packing.orientations.assign(positions.size(), Quaterniond::Identity());
-    return packing;
-}
-
-/// cells^3 cubic unit cells of edge a with the given basis (in units of a), shifted by `offset`
-/// so that points lie on no box face.
-Packing cubicCrystal(int cells, double a, const std::vector<Vector3d>& basis,
-                     const Vector3d& offset = Vector3d(0.13, 0.29, 0.41)) {
-    std::vector<Vector3d> positions;
-    for (int i = 0; i < cells; ++i)
-        for (int j = 0; j < cells; ++j)
-            for (int k = 0; k < cells; ++k)
-                for (const Vector3d& b : basis)
-                    positions.push_back(a * (Vector3d(i, j, k) + b + offset));
-    return pointPacking(positions, cells * a);
-}
-
-const std::vector<Vector3d> kSimpleCubic = {Vector3d(0, 0, 0)};
-const std::vector<Vector3d> kBodyCentred = {Vector3d(0, 0, 0), Vector3d(0.5, 0.5, 0.5)};
-const std::vector<Vector3d> kFaceCentred = {Vector3d(0, 0, 0), Vector3d(0.5, 0.5, 0),
-                                            Vector3d(0.5, 0, 0.5), Vector3d(0, 0.5, 0.5)};
+using namespace lattices;
 
 /// N uniformly random points in a box of edge L (ideal gas).
 Packing idealGas(int count, double boxLength, std::uint64_t seed) {
@@ -210,6 +184,118 @@ TEST(OrderSteinhardt, RefusesWhatHasNoOrder) {
     EXPECT_THROW(contactBonds(crystal, {{3, 3}}), std::invalid_argument);
     EXPECT_THROW(distanceBonds(crystal, 1.1), std::invalid_argument);
     EXPECT_THROW(distanceBonds(crystal, 0.0), std::invalid_argument);
+}
+
+// --- SANN neighbours and solid-like particles (docs/order-metrics.md §2 and §5) ---
+
+/// Every particle solid-like, all in one cluster.
+void expectAllSolidLike(const SolidLikeResult& result, std::size_t particles) {
+    EXPECT_EQ(result.solidCount, particles);
+    EXPECT_EQ(result.largestClusterSize, particles);
+    EXPECT_DOUBLE_EQ(result.solidFraction, 1.0);
+    EXPECT_DOUBLE_EQ(result.largestClusterFraction, 1.0);
+}
+
+TEST(OrderSann, LatticesGiveTheirFullShells) {
+    // van Meel et al. 2012: sc 6 + 12 (R(18) = 1.44 a < sqrt 3 a), bcc 8 + 6, fcc and hcp 12; on
+    // a Bravais lattice every particle sees the same shell, so d_l = 1 on every bond.
+    struct Case {
+        const char* name;
+        Packing crystal;
+        int shell;
+        bool bravais;
+    };
+    const Case cases[] = {{"sc", cubicCrystal(5, 1.0, kSimpleCubic), 18, true},
+                          {"bcc", cubicCrystal(4, 1.0, kBodyCentred), 14, true},
+                          {"fcc", cubicCrystal(4, 1.0, kFaceCentred), 12, true},
+                          {"hcp", hcpCrystal(1.0), 12, false}};
+    for (const Case& c : cases) {
+        SCOPED_TRACE(c.name);
+        const NeighbourBonds bonds = sannBonds(c.crystal);
+        EXPECT_EQ(bonds.bonds.size(), c.crystal.size() * c.shell / 2);
+        const SolidLikeResult result = SolidLikeParticles().compute(bonds);
+        for (std::size_t i = 0; i < c.crystal.size(); ++i)
+            EXPECT_EQ(result.neighbourCount[i], c.shell);
+        for (double d : result.bondCorrelation)
+            EXPECT_GT(d, c.bravais ? 1.0 - 1e-12 : 0.7);
+        expectAllSolidLike(result, c.crystal.size());
+    }
+}
+
+TEST(OrderSann, RefusesABoxTooSmallForTheShell) {
+    // 8 sites of a simple-cubic lattice of edge 1 in a box of 2: no neighbour closer than L / 2.
+    EXPECT_THROW(sannBonds(cubicCrystal(2, 1.0, kSimpleCubic)), std::runtime_error);
+}
+
+TEST(OrderSolidLike, BondCorrelationObeysTheAdditionTheorem) {
+    // d_l(i, j) = sum_{a in i, b in j} P_l(u_a . u_b) / sqrt(same over i, i times over j, j).
+    const NeighbourBonds bonds = randomBonds(13);
+    const auto byParticle = bondsByParticle(bonds);
+    for (int degree : {4, 6}) {
+        SCOPED_TRACE(degree);
+        const SolidLikeResult result = SolidLikeParticles({degree, 0.5, 3}).compute(bonds);
+        for (std::size_t k = 0; k < bonds.bonds.size(); ++k) {
+            const auto& a = byParticle[bonds.bonds[k].i];
+            const auto& b = byParticle[bonds.bonds[k].j];
+            double cross = 0.0;
+            for (const Vector3d& u : a)
+                for (const Vector3d& v : b)
+                    cross += legendre(degree, u.normalized().dot(v.normalized()));
+            const double self =
+                std::sqrt(additionTheoremSquare(a, degree) * additionTheoremSquare(b, degree)) *
+                static_cast<double>(a.size() * b.size());
+            EXPECT_NEAR(result.bondCorrelation[k], cross / self, 1e-12);
+        }
+    }
+}
+
+TEST(OrderSolidLike, CountsCrystalBondsAndJoinsOnlySolidLikeParticles) {
+    // A chain 0-1-2-3 of parallel bonds (d_l = 1 on each) beside a bond 4-5 crossing it:
+    // crystal-like bonds xi = 1, 2, 2, 1; with at least 2 needed, 1 and 2 are solid-like and form
+    // the largest cluster; 0 and 3 are not, though joined to it by crystal-like bonds.
+    NeighbourBonds bonds{6, {}};
+    for (int i = 0; i < 3; ++i)
+        bonds.bonds.push_back({i, i + 1, Vector3d::UnitX()});
+    bonds.bonds.push_back({4, 5, Vector3d::UnitY()});
+    const SolidLikeResult result = SolidLikeParticles({6, 0.7, 2}).compute(bonds);
+    EXPECT_EQ(result.crystalBonds, (std::vector<int>{1, 2, 2, 1, 1, 1}));
+    EXPECT_EQ(result.solidLike, (std::vector<bool>{false, true, true, false, false, false}));
+    EXPECT_EQ(result.solidCount, 2u);
+    EXPECT_EQ(result.largestClusterSize, 2u);
+    EXPECT_DOUBLE_EQ(result.largestClusterFraction, 2.0 / 6.0);
+}
+
+TEST(OrderSolidLike, TwoCrystallitesInAGasAreTwoClusters) {
+    // Two equal fcc balls of 2.4 d in an ideal gas at the same density: none of the gas is
+    // solid-like, each ball's core is (the largest cluster is one ball, half the solid-like
+    // particles); the crystal-like bonds do not join the balls across the gas.
+    Packing packing = idealGas(2000, std::cbrt(2000.0 / std::sqrt(2.0)), 3); // fcc's rho d^3
+    const double edge = packing.boxLength;
+    const std::size_t first =
+        carveFccNucleus(packing, Vector3d::Constant(0.25 * edge), 2.4, 1.0, 1.0);
+    const std::size_t second =
+        carveFccNucleus(packing, Vector3d::Constant(0.75 * edge), 2.4, 1.0, 1.0);
+    ASSERT_EQ(first, second);
+    const std::size_t gas = packing.size() - first - second;
+    const SolidLikeResult result = SolidLikeParticles().compute(sannBonds(packing));
+    for (std::size_t i = 0; i < gas; ++i)
+        EXPECT_FALSE(result.solidLike[i]) << i;
+    EXPECT_GT(result.solidCount, first); // more than one ball's worth
+    EXPECT_LE(result.largestClusterSize, first);
+    EXPECT_GE(2 * result.largestClusterSize, result.solidCount);
+}
+
+TEST(OrderSolidLike, AnIdealGasHasNoCrystal) {
+    const SolidLikeResult result = SolidLikeParticles().compute(sannBonds(idealGas(2000, 12.0, 5)));
+    EXPECT_LT(result.solidFraction, 0.01);
+    EXPECT_LT(result.largestClusterSize, 5u);
+}
+
+TEST(OrderSolidLike, RefusesParametersWithoutMeaning) {
+    EXPECT_THROW(SolidLikeParticles({0, 0.7, 7}), std::invalid_argument);
+    EXPECT_THROW(SolidLikeParticles({6, 1.0, 7}), std::invalid_argument);
+    EXPECT_THROW(SolidLikeParticles({6, 0.7, 0}), std::invalid_argument);
+    EXPECT_THROW(SolidLikeParticles().compute(NeighbourBonds{}), std::invalid_argument);
 }
 
 // --- g2 (docs/order-metrics.md §1) ---

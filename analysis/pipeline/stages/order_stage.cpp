@@ -1,6 +1,6 @@
 // order: the order metrics of common/order (docs/order-metrics.md) over the centroids, the
-// contact network kept by contacts and the particles' axes, and the verdict whether the packing
-// has ordered.
+// contact network kept by contacts, the SANN bonds and the particles' axes, and the verdict
+// whether the packing has ordered.
 #include "order/order_fields.hpp"
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
@@ -11,12 +11,13 @@ namespace sbpack::stages {
 
 namespace {
 
-/// "Q6 = 0.0213, T = 0.0721, P4 = 0.0037": the metrics the packing has.
+/// "Q6 = 0.0213, T = 0.0721, P4 = 0.0037, solid-like 0.0088": the metrics the packing has.
 std::string orderDetail(const OrderMetrics& m) {
     std::string detail = m.cutoffBonds ? "Q6 = " + describe(m.cutoffBonds->q6.globalOrder, 3)
                                        : std::string("Q6 undetermined (no g2 minimum)");
     if (m.translational) detail += ", T = " + describe(m.translational->order, 3);
     if (m.cubatic) detail += ", P4 = " + describe(m.cubatic->order, 3);
+    if (m.solidLike) detail += ", solid-like " + describe(m.solidLike->solidFraction, 3);
     return detail;
 }
 
