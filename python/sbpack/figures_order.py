@@ -19,6 +19,8 @@ FCC_Q6 = 0.575  # 13 / sqrt(512) = 0.57452: fcc's first shell (docs/order-metric
 Q6_ORDERED = _sbpack.order_thresholds["q6_local_mean"]
 T_ORDERED = _sbpack.order_thresholds["T"]
 P4_ORDERED = _sbpack.order_thresholds["P4"]
+SOLID_ORDERED = _sbpack.order_thresholds["solid_like_fraction"]
+CLUSTER_ORDERED = _sbpack.order_thresholds["crystal_cluster_fraction"]
 MRJ_Q6 = _sbpack.mrj_local_q6  # the mean local q6 of the MRJ packings measured (section 5)
 Q6_BIN = 0.01  # the histogram's bins of q6
 G2_TOP = 5.0  # g2 axis: at least this high; main peaks above it are clipped, their height named
@@ -63,8 +65,9 @@ def is_ordered(s):
 
 
 def series_text(s, clipped):
-    """The series' legend entry: its label, the verdict, and its cutoff, mean local q6, T and
-    P4 (ensembles: mean +- std); `clipped` the heights of its peaks beyond the axes."""
+    """The series' legend entry: its label, the verdict, and its cutoff, mean local q6, T, P4,
+    solid-like fraction and largest crystal (ensembles: mean +- std); `clipped` the heights of
+    its peaks beyond the axes."""
     verdict = verdict_text(s)
     head = group_label(s, "order") + (f": {verdict}" if verdict else "")
     shells = sorted({int(o["T_shells"]) for o in order_values(s) if "T_shells" in o})
@@ -73,7 +76,10 @@ def series_text(s, clipped):
     values = [value_text(s, "cutoff_w", r"r_c/\bar w", 2),
               value_text(s, "q6_local_mean", r"\langle q_6\rangle"), t,
               value_text(s, "P4", "P_4")]
-    return head + "\n" + ", ".join(v for v in values + clipped if v)
+    crystal = [value_text(s, "solid_like_fraction", r"f_\mathrm{solid}"),
+               value_text(s, "crystal_cluster_fraction", r"n_\mathrm{crystal}/N")]
+    lines = [", ".join(v for v in values + clipped if v), ", ".join(v for v in crystal if v)]
+    return head + "".join("\n" + line for line in lines if line)
 
 
 def g2_top(part):
@@ -209,6 +215,8 @@ def order_note(series, with_q6):
                  + bands(series, "ensembles: every member's particles pooled")
                  + "), the series' marker at the top its mean local q₆; dashed fcc "
                  f"{FCC_Q6}, dash-dotted the verdict's threshold {Q6_ORDERED} (ordered: mean "
-                 f"local q₆ ≥ {Q6_ORDERED}, T ≥ {T_ORDERED} over 12 shells or P4 ≥ {P4_ORDERED}; "
+                 f"local q₆ ≥ {Q6_ORDERED}, T ≥ {T_ORDERED} over 12 shells, P4 ≥ {P4_ORDERED}, "
+                 f"solid-like fraction f_solid ≥ {SOLID_ORDERED} or largest crystal "
+                 f"≥ {CLUSTER_ORDERED} N (ten Wolde-Frenkel, SANN neighbours); "
                  "drawn filled), grey the MRJ range of the mean local q₆")
     return text + ". Peaks beyond the axes are clipped: the legend names their height."
