@@ -1,7 +1,7 @@
 // The CUDA kernels of the GPU grid analysis (docs/gpu.md): each thread runs one function of
-// analysis/grid/ (voxel_rows.hpp, wave_index.hpp, distance_lines.hpp), the code the host runs too
-// and the host tests run against the CPU path. Built with -fmad=false
-// (CMake), so that the voxel test rounds as the host's does (no contracted multiply-adds).
+// analysis/grid/ (voxel_rows.hpp, wave_index.hpp, distance_lines.hpp), the code that the host
+// runs too and that the host tests run against the CPU path. Built with -fmad=false (CMake), so
+// that the voxel test rounds as the host's does (no contracted multiply-adds).
 #include "gpu/cuda_kernels.hpp"
 
 #include "grid/distance_lines.hpp"
