@@ -1,6 +1,6 @@
 #include "gpu/compact_cube.hpp"
 
-#include "gpu/grid_kernels.hpp"
+#include "grid/wave_index.hpp"
 
 #include <cstdint>
 
@@ -14,7 +14,8 @@ SpectrumSlab compactCubeSlab(const std::vector<double>& cube, int voxels, int s)
 PowerAt compactCubePower(const std::vector<double>& cube, int voxels, int s) {
     return [&cube, voxels, s](int kx, int ky, int kz) {
         const int r = 2 * s + 1, m = voxels;
-        const std::int64_t ox = (signedIndex(kx, m) + r) % r, oy = (signedIndex(ky, m) + r) % r;
+        const std::int64_t ox = (grid::signedIndex(kx, m) + r) % r,
+                           oy = (grid::signedIndex(ky, m) + r) % r;
         const double* c = cube.data() + ((ox * r + oy) * (s + 1) + kz) * 2;
         return c[0] * c[0] + c[1] * c[1];
     };

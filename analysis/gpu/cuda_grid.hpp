@@ -31,7 +31,7 @@ class CudaGrid {
     /// Device memory of the voxel bits.
     std::size_t deviceBytes() const { return words_.bytes(); }
 
-    /// The voxel bits on the host (grid_kernels.hpp's rows), e.g. for Voxelizer::fromRowBits.
+    /// The voxel bits on the host (grid/voxel_rows.hpp's rows), e.g. for Voxelizer::fromRowBits.
     std::vector<std::uint32_t> rowBits() const;
 
     /// chi_V(Q) as SpectralDensity::compute, the indicator transformed by cuFFT (single

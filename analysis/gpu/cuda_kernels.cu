@@ -1,7 +1,11 @@
 // The CUDA kernels of the GPU grid analysis (docs/gpu.md): each thread runs one function of
-// grid_kernels.hpp, the code the host tests run against the CPU path. Built with -fmad=false
-// (CMake), so that the voxel test rounds as the host's does (no contracted multiply-adds).
+// analysis/grid/ (voxel_rows.hpp, wave_index.hpp, distance_lines.hpp), the code that the host
+// runs too and that the host tests run against the CPU path. Built with -fmad=false (CMake), so
+// that the voxel test rounds as the host's does (no contracted multiply-adds).
 #include "gpu/cuda_kernels.hpp"
+
+#include "grid/distance_lines.hpp"
+#include "grid/wave_index.hpp"
 
 #include <cuda_runtime.h>
 #include <cufft.h>
@@ -13,6 +17,16 @@
 #include <utility>
 
 namespace sbpack::gpu::cuda {
+
+using grid::imageRow;
+using grid::ImageRows;
+using grid::imageRows;
+using grid::ParticleImage;
+using grid::rowDistances;
+using grid::searchedMinimumAt;
+using grid::signedIndex;
+using grid::VoxelGeometry;
+using grid::wordsPerRow;
 
 namespace {
 

@@ -4,7 +4,7 @@
 // cross between nvcc and the host compiler (docs/gpu.md). Every call throws std::runtime_error
 // naming the CUDA or cuFFT call and its error.
 
-#include "gpu/grid_kernels.hpp"
+#include "grid/voxel_rows.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -52,8 +52,9 @@ class DeviceBuffer {
     std::size_t bytes_ = 0;
 };
 
-/// The solid voxels of every image, as M x M rows of wordsPerRow(M) words (grid_kernels.hpp).
-DeviceBuffer voxelize(const std::vector<ParticleImage>& images, const VoxelGeometry& geometry);
+/// The solid voxels of every image, as M x M rows of wordsPerRow(M) words (grid/voxel_rows.hpp).
+DeviceBuffer voxelize(const std::vector<grid::ParticleImage>& images,
+                      const grid::VoxelGeometry& geometry);
 
 /// Number of set bits of the voxel words.
 std::int64_t countSolid(const DeviceBuffer& words);
@@ -80,8 +81,8 @@ SpectrumCube spectrumCube(const DeviceBuffer& words, int voxels, int s, bool sin
 std::size_t fftWorkBytes(int voxels, bool single);
 
 /// The exact periodic squared distances (voxel units) from every voxel to the nearest solid one
-/// (kNoSite everywhere when there is none), as uint32 at (x M + y) M + z: rowDistances along z,
-/// then searchedMinimum at every voxel along y (into a second M^3 buffer, freed on return) and
+/// (grid::kNoSite everywhere when there is none), as uint32 at (x M + y) M + z: rowDistances along
+/// z, then searchedMinimum at every voxel along y (into a second M^3 buffer, freed on return) and
 /// back along x (docs/gpu.md).
 DeviceBuffer squaredDistances(const DeviceBuffer& words, int voxels);
 

@@ -1,6 +1,6 @@
 #include "gpu/gpu_memory.hpp"
 
-#include "gpu/cuda_kernels.hpp"
+#include "grid/voxel_rows.hpp"
 
 #include <fmt/format.h>
 
@@ -18,7 +18,7 @@ constexpr double kGiB = 1024.0 * 1024.0 * 1024.0;
 
 double gpuVoxelBytes(int voxels) {
     const double m = voxels;
-    return m * m * gpu::wordsPerRow(voxels) * 4.0;
+    return m * m * grid::wordsPerRow(voxels) * 4.0;
 }
 
 double gpuFftGridBytes(int voxels, bool single) {

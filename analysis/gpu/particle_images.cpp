@@ -6,9 +6,9 @@
 
 namespace sbpack::gpu {
 
-std::vector<ParticleImage> particleImages(const Packing& packing) {
-    std::vector<ParticleImage> images;
-    ParticleImage image{};
+std::vector<grid::ParticleImage> particleImages(const Packing& packing) {
+    std::vector<grid::ParticleImage> images;
+    grid::ParticleImage image{};
     int rotated = -1; // the particle whose rotation `image` holds
     forEachPeriodicImage(packing, Voxelizer::reach(packing.shape()), [&](const Vector3d& c, int j) {
         if (j != rotated) {
@@ -24,7 +24,7 @@ std::vector<ParticleImage> particleImages(const Packing& packing) {
     return images;
 }
 
-VoxelGeometry voxelGeometry(const Packing& packing, int voxels) {
+grid::VoxelGeometry voxelGeometry(const Packing& packing, int voxels) {
     const Superball shape = packing.shape();
     return {voxels, packing.boxLength / voxels, Voxelizer::reach(shape), shape.semiAxis(),
             shape.p()};

@@ -1,6 +1,6 @@
 #include "hyperuniformity/discrete_spectrum.hpp"
 
-#include "gpu/grid_kernels.hpp"
+#include "grid/wave_index.hpp"
 #include "parallel/parallel.hpp"
 
 #include <algorithm>
@@ -18,7 +18,7 @@ namespace {
 /// number of threads.
 constexpr int kPlaneBlocks = 16;
 
-using gpu::signedIndex;
+using grid::signedIndex;
 
 double sinc(double x) {
     return x == 0.0 ? 1.0 : std::sin(x) / x;

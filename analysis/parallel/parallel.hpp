@@ -1,11 +1,11 @@
 #pragma once
 // The one parallel-for of sbanalyze (docs/design.md §7): TBB over an index range, run in order on
-// one thread when the execution context asks (Progress::serial), so that every parallel result
+// one thread when the execution context asks (LoopSchedule::serial), so that every parallel result
 // can be compared with a serial one; and the one ordered reduce over it (partials per fixed
 // chunk, combined in chunk order). Thread count is set once per run by ThreadBudget and honoured
 // by TBB and by FFTW, whose threads are OpenMP's (libfftw3_omp), alike (no oversubscription).
 
-#include "progress/progress.hpp"
+#include "parallel/loop_schedule.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -20,13 +20,13 @@
 namespace sbpack {
 
 /// Calls body(begin, end) over consecutive chunks of [begin, end) of about `grain` indices each.
-/// With context.serial() the chunks run in order on the calling thread.
+/// With schedule.serial() the chunks run in order on the calling thread.
 template <class Body>
 void parallelFor(std::int64_t begin, std::int64_t end, std::int64_t grain, const Body& body,
-                 const Progress& context = Progress()) {
+                 const LoopSchedule& schedule = LoopSchedule()) {
     if (end <= begin) return;
     if (grain < 1) grain = 1;
-    if (context.serial()) {
+    if (schedule.serial()) {
         for (std::int64_t b = begin; b < end; b += grain)
             body(b, std::min(end, b + grain));
         return;
@@ -39,11 +39,11 @@ void parallelFor(std::int64_t begin, std::int64_t end, std::int64_t grain, const
 /// a partial result, mapChunk(c) -> T, in parallel (over parallelFor), then folds the partials
 /// into init in chunk order, combine(T& total, T&& partial), on the calling thread. The chunks
 /// are the caller's, fixed, so the result does not depend on the threads and equals the serial
-/// one (context.serial()) bit for bit. Interrupt polls and progress belong in mapChunk, once per
+/// one (schedule.serial()) bit for bit. Interrupt polls and progress belong in mapChunk, once per
 /// chunk. Every partial is kept until the fold: size the chunks for that.
 template <class T, class Map, class Combine>
 T orderedReduce(std::int64_t chunks, T init, const Map& mapChunk, const Combine& combine,
-                const Progress& context = Progress()) {
+                const LoopSchedule& schedule = LoopSchedule()) {
     std::vector<std::optional<T>> partials(
         static_cast<std::size_t>(std::max<std::int64_t>(0, chunks)));
     parallelFor(
@@ -52,7 +52,7 @@ T orderedReduce(std::int64_t chunks, T init, const Map& mapChunk, const Combine&
             for (std::int64_t c = begin; c < end; ++c)
                 partials[c].emplace(mapChunk(c));
         },
-        context);
+        schedule);
     for (std::optional<T>& partial : partials)
         combine(init, std::move(*partial));
     return init;

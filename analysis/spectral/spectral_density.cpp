@@ -1,6 +1,6 @@
 #include "spectral/spectral_density.hpp"
 
-#include "gpu/grid_kernels.hpp"
+#include "grid/wave_index.hpp"
 #include "parallel/parallel.hpp"
 #include "spectral/exact_spectral_density.hpp"
 #include "spectral/voxel_fourier_transform.hpp"
@@ -24,7 +24,7 @@ double sinc(double x) {
     return std::abs(x) < 1e-4 ? 1.0 - x * x / 6.0 : std::sin(x) / x;
 }
 
-using gpu::signedIndex;
+using grid::signedIndex;
 
 } // namespace
 

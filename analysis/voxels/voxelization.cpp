@@ -2,7 +2,7 @@
 // build (bench/RESULTS.md, "Measurement history moved out of code comments").
 #include "voxels/voxelization.hpp"
 
-#include "gpu/grid_kernels.hpp"
+#include "grid/voxel_rows.hpp"
 #include "io/atomic_file.hpp"
 #include "parallel/parallel.hpp"
 #include "voxels/vdb_image.hpp"
@@ -45,7 +45,7 @@ struct Candidate {
     int particle;
 };
 
-using gpu::voxelRange;
+using grid::voxelRange;
 
 /// Superball::contains for body-frame points, mostly without std::pow. With y = |x| / R and the
 /// integers lo = floor(2p) <= 2p <= hi = ceil(2p), sum y_i^hi <= sum y_i^2p <= sum y_i^lo while
@@ -128,7 +128,7 @@ struct BlockGeometry {
 /// interval, the body being convex. `inner` is solid without a test (inner.first > inner.last:
 /// none); the test runs from each end inwards up to the first solid voxel.
 template <class Solid>
-std::uint64_t rowWord(int z0, int z1, gpu::IndexRange inner, int shift, const Solid& solidAt) {
+std::uint64_t rowWord(int z0, int z1, grid::IndexRange inner, int shift, const Solid& solidAt) {
     const auto [in0, in1] = inner;
     if (in0 <= in1) {
         std::uint64_t word = rowBits(in0, in1, shift);
@@ -185,9 +185,9 @@ std::array<std::uint64_t, kBlock> voxelizeBlock(int ox, int oy, int oz,
                 auto solidAt = [&](int z) {
                     return inside(rotation * Vector3d(dx, dy, (z + 0.5) * g.a - c.z()));
                 };
-                const gpu::IndexRange inner =
+                const grid::IndexRange inner =
                     rxy2 < ri2 ? voxelRange(c.z(), std::sqrt(ri2 - rxy2), g.a, z0, z1)
-                               : gpu::IndexRange{z1 + 1, z1};
+                               : grid::IndexRange{z1 + 1, z1};
                 words[x - ox] |= rowWord(z0, z1, inner, (y - oy) * kBlock - oz, solidAt);
             }
         }
@@ -449,10 +449,10 @@ BlockMasks voxelizeBlocks(const BlockCandidates& in, const std::vector<Eigen::Ma
     return out;
 }
 
-/// The whole grid's blocks from row bits (gpu/grid_kernels.hpp: M x M rows of ceil(M / 32)
+/// The whole grid's blocks from row bits (grid/voxel_rows.hpp: M x M rows of ceil(M / 32)
 /// words, bit z & 31 of word z >> 5): a block's 8 z-bits never straddle a word (8 | 32).
 BlockMasks blocksFromRowBits(std::span<const std::uint32_t> rows, const BlockGeometry& g) {
-    const std::int64_t m = g.m, perRow = gpu::wordsPerRow(g.m);
+    const std::int64_t m = g.m, perRow = grid::wordsPerRow(g.m);
     BlockMasks out(g.blockCount());
     parallelFor(0, g.blockCount(), kBlocksPerTask, [&](std::int64_t begin, std::int64_t end) {
         for (std::int64_t b = begin; b < end; ++b) {
@@ -527,7 +527,7 @@ Voxelization Voxelizer::fromRowBits(std::span<const std::uint32_t> rows, const P
                                     int voxels, double runtimeSeconds) {
     const std::int64_t m = voxels;
     if (voxels < 1 || voxels > kMaxVoxels ||
-        rows.size() != static_cast<std::size_t>(m * m * gpu::wordsPerRow(voxels)))
+        rows.size() != static_cast<std::size_t>(m * m * grid::wordsPerRow(voxels)))
         throw std::invalid_argument("voxel grid from row bits: " + std::to_string(rows.size()) +
                                     " words are not the rows of a " + std::to_string(voxels) +
                                     "^3 grid");

@@ -145,7 +145,7 @@ class Voxelizer {
     static double memoryEstimateBytes(const Packing& packing, int voxels);
 
     /// The voxelization of `packing` on M^3 voxels whose solid voxels are given as row bits
-    /// (gpu/grid_kernels.hpp's layout: M x M rows (x, y) of ceil(M / 32) words, bit z & 31 of
+    /// (grid/voxel_rows.hpp's layout: M x M rows (x, y) of ceil(M / 32) words, bit z & 31 of
     /// word z >> 5, as the GPU voxeliser makes them): the tree compute() would build from the
     /// same voxels, for the host's export (--vdb with --device cuda). Throws
     /// std::invalid_argument unless `rows` holds exactly those words.

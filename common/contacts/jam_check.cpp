@@ -1,8 +1,9 @@
 #include "contacts/jam_check.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 namespace sbpack {
@@ -13,12 +14,6 @@ namespace {
 /// network has formed yet, so a refusal says so rather than blaming a chain of near contacts.
 bool isCompressing(double reducedPressure, const JamCheckParameters& parameters) {
     return parameters.gapsPerPressure / reducedPressure > parameters.maxTolerance;
-}
-
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
-    char line[160];
-    std::snprintf(line, sizeof line, pattern, a, b, c);
-    return line;
 }
 
 /// The axes along which a lattice vector wraps, e.g. "y" or "x and z".
@@ -73,29 +68,30 @@ std::string verdictOf(const JamCheck& check, const Packing& packing, double redu
                       const JamCheckParameters& parameters) {
     const double rattlers = check.contacts.rattlerFraction;
     std::string network =
-        format("rattler fraction %.3f at contact gap < %.0e D", rattlers, check.tolerance);
+        fmt::format("rattler fraction {:.3f} at contact gap < {:.0e} D", rattlers, check.tolerance);
     if (check.untrappedFraction > rattlers)
-        network += format(", %.3f with the particles not locally jammed (contacts in one "
-                          "hemisphere)",
-                          check.untrappedFraction);
+        network += fmt::format(", {:.3f} with the particles not locally jammed (contacts in one "
+                               "hemisphere)",
+                               check.untrappedFraction);
     if (check.jammed) return "jammed: " + network;
     if (isCompressing(reducedPressure, parameters))
-        return format("not jammed: still compressing (at reduced pressure %.3g the load-bearing "
-                      "gaps, about %.0f / P D, exceed the largest contact gap %.0e D)",
-                      reducedPressure, parameters.gapsPerPressure, parameters.maxTolerance);
+        return fmt::format(
+            "not jammed: still compressing (at reduced pressure {:.3g} the load-bearing "
+            "gaps, about {:.0f} / P D, exceed the largest contact gap {:.0e} D)",
+            reducedPressure, parameters.gapsPerPressure, parameters.maxTolerance);
     if (check.chain) {
         const SpanningChain& c = *check.chain;
         return "not jammed: a chain of " + std::to_string(c.cycle.size()) +
                " particles in contact wraps around the periodic box along " + axesOf(c.wrap) +
-               format(" (box %.2f D) and carries the pressure; ",
-                      packing.boxLength / packing.shape().diameter()) +
+               fmt::format(" (box {:.2f} D) and carries the pressure; ",
+                           packing.boxLength / packing.shape().diameter()) +
                network +
                (packing.p >= kNearCubeExponent
                     ? ". Near-cubes stack into such columns in boxes a few D long"
                     : ". In a box this few D across, a few particles in a row span it") +
                ": use more particles";
     }
-    return "not jammed: " + network + format(" (above %.2f)", parameters.maxRattlerFraction);
+    return "not jammed: " + network + fmt::format(" (above {:.2f})", parameters.maxRattlerFraction);
 }
 
 } // namespace

@@ -1,7 +1,7 @@
 #pragma once
 // The parts of the l_e norm ||u||_e = (sum |u_i|^e)^{1/e} (paper Eq. 1: the gauge of a superball
 // is ||x / R||_{2p}, its support function R ||n||_q), in plain doubles so that the host and the
-// CUDA kernels of sbanalyze (analysis/gpu/, docs/gpu.md) evaluate the same arithmetic: one
+// CUDA kernels of sbanalyze (analysis/grid/, docs/gpu.md) evaluate the same arithmetic: one
 // definition of the inside test on every device.
 
 #include <cmath>

@@ -1,8 +1,9 @@
 #pragma once
 // One way to stop long work (docs/design.md §7): a request that a signal handler, Python's
 // Ctrl-C watch or a test makes, and that the work polls at its safe points. The analysis stops
-// at its next chunk (analysis/progress, Progress::checkInterrupt); sbgen at the end of its window
-// on the first request, at its next event on a second (generator/protocol, JammingProtocol::run).
+// at its next chunk (analysis/progress, Interrupter::checkInterrupt); sbgen at the end of its
+// window on the first request, at its next event on a second (generator/protocol,
+// JammingProtocol::run).
 
 #include <atomic>
 

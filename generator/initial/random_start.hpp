@@ -4,7 +4,7 @@
 // fraction phi_init; Maxwell velocities at kT = 1 (m = 1) with zero total momentum, and random
 // angular velocities at rotational kT = 1.
 
-#include "engine/event_driven_md.hpp"
+#include "packing/packing.hpp"
 #include "random/random.hpp"
 
 #include <vector>

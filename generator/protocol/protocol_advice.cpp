@@ -3,9 +3,10 @@
 #include "geometry/superball.hpp"
 #include "protocol/paper_rates.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 namespace sbpack {
 namespace {
@@ -58,17 +59,12 @@ double jammedBoxDiameters(const ProtocolParameters& parameters) {
     return std::cbrt(parameters.particles * unitVolume / 0.85);
 }
 
-std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0) {
-    char line[512];
-    std::snprintf(line, sizeof line, pattern, a, b, c);
-    return line;
-}
-
 std::string costText(const ExpectedCost& cost) {
     const double hours = cost.cpuSeconds / 3600.0;
-    return hours >= 1.0 ? format("about %.3g CPU hours (%.2g collisions)", hours, cost.collisions)
-                        : format("about %.2g CPU minutes (%.2g collisions)", cost.cpuSeconds / 60.0,
-                                 cost.collisions);
+    return hours >= 1.0
+               ? fmt::format("about {:.3g} CPU hours ({:.2g} collisions)", hours, cost.collisions)
+               : fmt::format("about {:.2g} CPU minutes ({:.2g} collisions)", cost.cpuSeconds / 60.0,
+                             cost.collisions);
 }
 
 } // namespace
@@ -93,45 +89,49 @@ std::vector<std::string> protocolWarnings(const ProtocolParameters& parameters) 
     std::vector<std::string> warnings;
     const ExpectedCost cost = expectedCost(parameters);
     if (cost.cpuSeconds > kSlowRunSeconds)
-        warnings.push_back("a very slow run: expected " + costText(cost) +
-                           " from the measured collision counts and rates (docs/design.md §3)" +
-                           (parameters.costLimit > 0.0
-                                ? format("; --cost-limit stops it, not jammed, after %g times that",
-                                         parameters.costLimit)
-                                : std::string()));
+        warnings.push_back(
+            "a very slow run: expected " + costText(cost) +
+            " from the measured collision counts and rates (docs/design.md §3)" +
+            (parameters.costLimit > 0.0
+                 ? fmt::format("; --cost-limit stops it, not jammed, after {:g} times that",
+                               parameters.costLimit)
+                 : std::string()));
     const double fast = parameters.fastGrowthRate();
     if (fast > kPaperFastMax)
         warnings.push_back(
-            format("gamma-fast %g is above the paper's range (0.005, 0.05): the fast "
-                   "phase ends far from jamming and the slow phase densifies the "
-                   "packing, to larger phi and Z than MRJ (paper Sec. III A)",
-                   fast));
+            fmt::format("gamma-fast {:g} is above the paper's range (0.005, 0.05): the fast "
+                        "phase ends far from jamming and the slow phase densifies the "
+                        "packing, to larger phi and Z than MRJ (paper Sec. III A)",
+                        fast));
     if (fast < kPaperFastMin)
-        warnings.push_back(format("gamma-fast %g is below the paper's range (0.005, 0.05): the "
-                                  "compression follows the equilibrium branch and may crystallise "
-                                  "(paper Sec. III A)",
-                                  fast));
+        warnings.push_back(
+            fmt::format("gamma-fast {:g} is below the paper's range (0.005, 0.05): the "
+                        "compression follows the equilibrium branch and may crystallise "
+                        "(paper Sec. III A)",
+                        fast));
     if (parameters.p > 10.0)
         warnings.push_back(
-            format("p = %g: near-cubes this flat run at a few hundred collisions per "
-                   "CPU second (p = 100 and 1000: about 300 at N = 50), so a jam "
-                   "takes days; p <= 10 is practical (bench/RESULTS.md, \"Extreme "
-                   "p\")",
-                   parameters.p));
+            fmt::format("p = {:g}: near-cubes this flat run at a few hundred collisions per "
+                        "CPU second (p = 100 and 1000: about 300 at N = 50), so a jam "
+                        "takes days; p <= 10 is practical (bench/RESULTS.md, \"Extreme "
+                        "p\")",
+                        parameters.p));
     const double box = jammedBoxDiameters(parameters);
     if (parameters.p >= kNearCubeExponent && box < kColumnBoxDiameters)
-        warnings.push_back(format("p = %g, N = %g: the box will be about %.1f diameters across, so "
-                                  "a column of near-cubes can span it and carry the pressure "
-                                  "alone; such runs end refused as not jammed (at N = 200 most "
-                                  "did); N >= 1000 avoids it",
-                                  parameters.p, parameters.particles, box));
+        warnings.push_back(
+            fmt::format("p = {:g}, N = {}: the box will be about {:.1f} diameters across, so "
+                        "a column of near-cubes can span it and carry the pressure "
+                        "alone; such runs end refused as not jammed (at N = 200 most "
+                        "did); N >= 1000 avoids it",
+                        parameters.p, parameters.particles, box));
     else if (parameters.particles < kSmallBoxParticles)
-        warnings.push_back(format("N = %g: a box this small often jams partly ordered, phi and Z "
-                                  "above MRJ's (a third to two thirds of the seeds at N = 40-100, "
-                                  "p = 0.85-1.5, and still one of three at N = 200, p = 1.5: "
-                                  "bench/RESULTS.md, \"Small boxes order\"); N >= %g for MRJ, the "
-                                  "paper's N is 1000 and 5000",
-                                  parameters.particles, kSmallBoxParticles));
+        warnings.push_back(
+            fmt::format("N = {}: a box this small often jams partly ordered, phi and Z "
+                        "above MRJ's (a third to two thirds of the seeds at N = 40-100, "
+                        "p = 0.85-1.5, and still one of three at N = 200, p = 1.5: "
+                        "bench/RESULTS.md, \"Small boxes order\"); N >= {} for MRJ, the "
+                        "paper's N is 1000 and 5000",
+                        parameters.particles, kSmallBoxParticles));
     return warnings;
 }
 

@@ -1,10 +1,12 @@
-// The GPU's per-thread code (analysis/gpu/grid_kernels.hpp) run on the host against the CPU path,
-// and the host side of --device cuda: what can be tested without a GPU (docs/gpu.md).
+// The host-and-device arithmetic of the grids (analysis/grid/), the GPU kernels' per-thread code,
+// run on the host against the CPU path, and the host side of --device cuda (analysis/gpu/): what
+// can be tested without a GPU (docs/gpu.md).
 #include "gpu/compact_cube.hpp"
 #include "gpu/compute_device.hpp"
 #include "gpu/gpu_memory.hpp"
-#include "gpu/grid_kernels.hpp"
 #include "gpu/particle_images.hpp"
+#include "grid/distance_lines.hpp"
+#include "grid/voxel_rows.hpp"
 #include "hyperuniformity/discrete_spectrum.hpp"
 #include "io/packing_io.hpp"
 #include "pipeline/run_settings.hpp"
@@ -24,23 +26,24 @@
 namespace sbpack {
 namespace {
 
-using gpu::kNoSite;
+using grid::kNoSite;
 
 /// The voxel words of a packing as the kernel voxelizeImages makes them, on the host.
 std::vector<std::uint32_t> hostVoxelWords(const Packing& packing, int m) {
-    const gpu::VoxelGeometry g = gpu::voxelGeometry(packing, m);
-    std::vector<std::uint32_t> words(static_cast<std::size_t>(m) * m * gpu::wordsPerRow(m), 0);
-    for (const gpu::ParticleImage& image : gpu::particleImages(packing)) {
-        const gpu::ImageRows rows = gpu::imageRows(image, g);
+    const grid::VoxelGeometry g = gpu::voxelGeometry(packing, m);
+    std::vector<std::uint32_t> words(static_cast<std::size_t>(m) * m * grid::wordsPerRow(m), 0);
+    for (const grid::ParticleImage& image : gpu::particleImages(packing)) {
+        const grid::ImageRows rows = grid::imageRows(image, g);
         for (int r = 0; r < rows.count(); ++r)
-            gpu::imageRow(image, rows.xOf(r), rows.yOf(r), g,
-                          [&words](std::int64_t word, std::uint32_t bits) { words[word] |= bits; });
+            grid::imageRow(
+                image, rows.xOf(r), rows.yOf(r), g,
+                [&words](std::int64_t word, std::uint32_t bits) { words[word] |= bits; });
     }
     return words;
 }
 
 std::vector<std::uint8_t> maskOfWords(const std::vector<std::uint32_t>& words, int m) {
-    const std::int64_t w = gpu::wordsPerRow(m);
+    const std::int64_t w = grid::wordsPerRow(m);
     std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m);
     for (std::int64_t row = 0; row < std::int64_t{m} * m; ++row)
         for (int k = 0; k < m; ++k)
@@ -49,7 +52,7 @@ std::vector<std::uint8_t> maskOfWords(const std::vector<std::uint32_t>& words, i
 }
 
 std::vector<std::uint32_t> wordsOfMask(const std::vector<std::uint8_t>& mask, int m) {
-    const std::int64_t w = gpu::wordsPerRow(m);
+    const std::int64_t w = grid::wordsPerRow(m);
     std::vector<std::uint32_t> words(static_cast<std::size_t>(m) * m * w, 0);
     for (std::int64_t row = 0; row < std::int64_t{m} * m; ++row)
         for (int k = 0; k < m; ++k)
@@ -59,15 +62,15 @@ std::vector<std::uint32_t> wordsOfMask(const std::vector<std::uint8_t>& mask, in
 
 /// The kernels rowPass and searchPass (along y, then x) on the host, one voxel at a time.
 std::vector<std::uint32_t> hostSquaredDistances(const std::vector<std::uint32_t>& words, int m) {
-    const std::int64_t mm = m, w = gpu::wordsPerRow(m);
+    const std::int64_t mm = m, w = grid::wordsPerRow(m);
     std::vector<std::uint32_t> d(static_cast<std::size_t>(mm * mm * mm));
     for (std::int64_t row = 0; row < mm * mm; ++row)
-        gpu::rowDistances(words.data() + row * w, m, d.data() + row * mm);
+        grid::rowDistances(words.data() + row * w, m, d.data() + row * mm);
     std::vector<std::uint32_t> e(d.size()); // the kernels' second buffer: d -> e -> d
     auto pass = [m, mm](const std::vector<std::uint32_t>& in, std::vector<std::uint32_t>& out,
                         std::int64_t stride) {
         for (std::int64_t i = 0; i < mm * mm * mm; ++i)
-            out[i] = gpu::searchedMinimumAt(in.data(), i, m, stride);
+            out[i] = grid::searchedMinimumAt(in.data(), i, m, stride);
     };
     pass(d, e, mm);      // along y
     pass(e, d, mm * mm); // along x
@@ -122,10 +125,10 @@ TEST(GridKernels, RowBitsMakeTheVoxelisersTree) {
 TEST(GridKernels, RowDistancesWrapAroundTheBox) {
     std::uint32_t word = 1u; // one solid voxel at z = 0 of a row of 10
     std::vector<std::uint32_t> out(10);
-    gpu::rowDistances(&word, 10, out.data());
+    grid::rowDistances(&word, 10, out.data());
     EXPECT_EQ(out, (std::vector<std::uint32_t>{0, 1, 4, 9, 16, 25, 16, 9, 4, 1}));
     word = 0u;
-    gpu::rowDistances(&word, 10, out.data());
+    grid::rowDistances(&word, 10, out.data());
     EXPECT_EQ(out, std::vector<std::uint32_t>(10, kNoSite));
 }
 
@@ -146,7 +149,7 @@ TEST(GridKernels, SearchedMinimumIsTheBruteForceMinimum) {
                     const std::int64_t d = std::min(std::abs(p - q), m - std::abs(p - q));
                     expected = std::min<std::uint32_t>(expected, f[q] + d * d);
                 }
-                ASSERT_EQ(gpu::searchedMinimum(f.data(), 1, m, p), expected)
+                ASSERT_EQ(grid::searchedMinimum(f.data(), 1, m, p), expected)
                     << "M " << m << " trial " << trial << " voxel " << p;
             }
         }

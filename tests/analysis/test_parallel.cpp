@@ -17,8 +17,8 @@ TEST(Parallel, ThreadBudgetRejectsZeroAndTooMany) {
 TEST(Parallel, SerialAndParallelVisitEveryIndexOnce) {
     const ThreadBudget budget(2);
     for (const bool serial : {true, false}) {
-        Progress context;
-        context.setSerial(serial);
+        LoopSchedule schedule;
+        schedule.setSerial(serial);
         std::vector<std::atomic<int>> visits(1001);
         parallelFor(
             0, 1001, 7,
@@ -26,7 +26,7 @@ TEST(Parallel, SerialAndParallelVisitEveryIndexOnce) {
                 for (std::int64_t i = b; i < e; ++i)
                     ++visits[i];
             },
-            context);
+            schedule);
         for (const auto& v : visits)
             ASSERT_EQ(v.load(), 1);
     }
@@ -45,11 +45,11 @@ TEST(Parallel, OrderedReduceFoldsInChunkOrderWhateverTheThreads) {
     for (const int threads : {1, 2, 4})
         for (const bool serial : {true, false}) {
             const ThreadBudget budget(threads);
-            Progress context;
-            context.setSerial(serial);
+            LoopSchedule schedule;
+            schedule.setSerial(serial);
             const std::vector<double> folded = orderedReduce(
                 1000, std::vector<double>{0.0},
-                [&](std::int64_t c) { return std::vector<double>{term(c)}; }, add, context);
+                [&](std::int64_t c) { return std::vector<double>{term(c)}; }, add, schedule);
             ASSERT_EQ(folded, expected) << threads << " threads, serial " << serial;
         }
 }

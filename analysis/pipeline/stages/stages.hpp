@@ -52,7 +52,7 @@ void poolHyperuniformity(EnsembleResults& ensemble, std::span<const FileResults>
 std::optional<std::string> exportVoxels(const FileContext& context, const Voxelization& voxels);
 
 #ifdef SBPACK_WITH_CUDA
-// --device cuda (gpu/cuda_stages.cpp, docs/gpu.md): the grids on the GPU.
+// --device cuda (cuda_stages.cpp, docs/gpu.md): the grids on the GPU.
 /// Refuses the run up front when its grids do not fit the device (gpu/gpu_memory.hpp).
 void checkCudaRun(const RunSettings& settings);
 /// voxels: the spectral grid voxelised on the GPU and kept there (a CudaGrid) for chi.

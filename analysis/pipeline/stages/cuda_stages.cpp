@@ -1,5 +1,6 @@
-// --device cuda (docs/gpu.md): the voxels, chi and pore-grid stages on the GPU, with the CPU
-// stages' progress lines and results (pipeline/stages/).
+// --device cuda (docs/gpu.md): the voxels, chi and pore-grid stages on the GPU (gpu/cuda_grid.hpp),
+// with the progress lines and results of the CPU stages beside it; built with SBPACK_WITH_CUDA
+// only.
 #include "gpu/cuda_grid.hpp"
 #include "gpu/gpu_memory.hpp"
 #include "pipeline/resources.hpp"
