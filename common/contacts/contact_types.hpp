@@ -32,9 +32,15 @@ std::string_view pairTypeName(std::size_t type);
 /// The index of the unordered pair {a, b} in 0 .. kContactPairTypes - 1 (symmetric in a, b).
 std::size_t contactPairType(ContactRegion a, ContactRegion b);
 
+/// Fractions of the sphere nearest <100>, <110>, <111>: the solid angles of the spherical
+/// polygons that split the symmetry triangle, by Girard's theorem (docs/contact-types.md Eq.
+/// 2.4); the region fractions of normals uniform on the sphere, e.g. of spheres.
+inline constexpr std::array<double, kContactRegions> kUniformRegionFractions{
+    0.27466734722856545, 0.44376753451290213, 0.28156511825853253};
+
 /// theta_max = arccos(1 / sqrt 3): the largest angle from the nearest body axis, at <111>.
 inline constexpr double kMaxAxisAngleDegrees = 54.735610317245346;
-/// Equal bins of theta over [0, theta_max] (no option: docs/contact-types.md §2).
+/// Equal bins of theta over [0, theta_max]: a constant, not an option (docs/contact-types.md §5).
 inline constexpr int kAxisAngleBins = 30;
 
 /// One end of a contact: the region of its body-frame normal and theta = arccos(max_k |n_k|),

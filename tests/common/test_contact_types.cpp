@@ -155,11 +155,9 @@ TEST(ContactTypes, RegionFractionsOfUniformNormalsAreTheirSolidAngles) {
         EXPECT_NEAR(counts[r] / double(kSample), q.regions[r], 4.0 * sd)
             << regionName(ContactRegion(r));
     }
-    // docs/contact-types.md Eq. 2.4 has them exactly (Girard's theorem): 0.27467, 0.44377,
-    // 0.28157.
-    EXPECT_NEAR(q.regions[0], 0.274667, 3e-5);
-    EXPECT_NEAR(q.regions[1], 0.443768, 3e-5);
-    EXPECT_NEAR(q.regions[2], 0.281565, 3e-5);
+    // Eq. 2.4, the spherical polygons' areas by Girard's theorem.
+    for (std::size_t r = 0; r < kContactRegions; ++r)
+        EXPECT_NEAR(q.regions[r], kUniformRegionFractions[r], 3e-5);
 }
 
 TEST(ContactTypes, BinsOfThetaCarryTheUniformDensity) {
