@@ -35,7 +35,7 @@ inline Value unlessUndetermined(const R& r, double value) {
     return Value(r.undetermined() ? std::numeric_limits<double>::quiet_NaN() : value);
 }
 
-/// Fraction K of the contact types' `Fractions` (NaN if not resolved).
+/// Fraction K of the contact types' `Fractions`: NaN if not resolved, or without contacts.
 template <auto Fractions, std::size_t K> Optional typeFraction(const R& r, const Scales&) {
     return unlessUndetermined(r, (r.types.*Fractions)[K]);
 }
@@ -47,7 +47,7 @@ inline constexpr std::array<schema::Column<R>, 13> kTypeColumns{{
     {{"axis_fraction", A, F, "1",
       "fraction of the contact ends (non-rattlers) whose body-frame normal is nearest a <100> "
       "body axis: the cube's face (p > 1), the octahedron's vertex (p < 1) "
-      "(docs/contact-types.md; NaN if not resolved)",
+      "(docs/contact-types.md; NaN if not resolved or if no contact joins two non-rattlers)",
       Mean},
      typeFraction<kRegion, 0>},
     {{"edge_fraction", A, F, "1", "the same, nearest a <110> direction: an edge", Mean},
@@ -69,7 +69,7 @@ inline constexpr std::array<schema::Column<R>, 13> kTypeColumns{{
      typeFraction<kPair, 5>},
     {{"axis_angle_mean", A, F, "deg",
       "mean over the contact ends of theta, the angle of the body-frame normal to the nearest "
-      "body axis, arccos max_k |n_k| (NaN if not resolved)",
+      "body axis, arccos max_k |n_k| (NaN as the fractions)",
       Mean},
      +[](const R& r, const Scales&) -> Optional {
          return unlessUndetermined(r, r.types.meanAxisAngleDegrees);
@@ -78,7 +78,7 @@ inline constexpr std::array<schema::Column<R>, 13> kTypeColumns{{
       "edges of the equal bins of theta over [0, arccos(1 / sqrt 3)] = [0, 54.74 deg]", Same},
      member<&R::types, &T::axisAngleEdges>},
     {{"axis_angle_density", D, F, "1/deg",
-      "probability density of theta over the contact ends, per bin (NaN if not resolved)",
+      "probability density of theta over the contact ends, per bin (NaN as the fractions)",
       Pointwise},
      +[](const R& r, const Scales&) -> Optional {
          std::vector<double> density = r.types.axisAngleDensity;
