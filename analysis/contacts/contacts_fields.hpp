@@ -1,9 +1,11 @@
 #pragma once
 // The results group of contacts, declared once (schema/field_table.hpp, docs/results-schema.md):
-// the contact network of common/contacts and whether its tolerance resolves the contacts.
+// the contact network of common/contacts, whether its tolerance resolves the contacts, and where
+// on the particles the contacts sit (docs/contact-types.md).
 
 #include "contacts/contact_network.hpp"
 #include "contacts/contact_resolution.hpp"
+#include "contacts/contact_types.hpp"
 #include "schema/field_table.hpp"
 
 #include <limits>
@@ -14,6 +16,7 @@ namespace sbpack {
 struct ContactFigures {
     ContactResult network;
     ContactResolution resolution;
+    ContactTypeDistribution types{}; ///< of the contacts among the non-rattlers
     double seconds = 0.0;
 
     /// Z and phi_R are undetermined when the tolerance cuts through the load-bearing gaps
@@ -25,55 +28,119 @@ namespace contacts_fields {
 using namespace schema::columns;
 using R = ContactFigures;
 using N = ContactResult;
+using T = ContactTypeDistribution;
 
 /// `value` where the contacts are resolved, NaN where they are not.
 inline Value unlessUndetermined(const R& r, double value) {
     return Value(r.undetermined() ? std::numeric_limits<double>::quiet_NaN() : value);
 }
 
-inline constexpr schema::FieldTable kTable{std::array<schema::Column<R>, 13>{{
-    {{"z_mean", A, F, "1", "mean contact number Z over the non-rattlers (NaN if not resolved)",
+/// Fraction K of the contact types' `Fractions`: NaN if not resolved, or without contacts.
+template <auto Fractions, std::size_t K> Optional typeFraction(const R& r, const Scales&) {
+    return unlessUndetermined(r, (r.types.*Fractions)[K]);
+}
+inline constexpr auto kRegion = &T::regionFractions;
+inline constexpr auto kPair = &T::pairTypeFractions;
+
+/// Where on the particles the contacts sit (docs/contact-types.md): regions, pair types, theta.
+inline constexpr std::array<schema::Column<R>, 13> kTypeColumns{{
+    {{"axis_fraction", A, F, "1",
+      "fraction of the contact ends (non-rattlers) whose body-frame normal is nearest a <100> "
+      "body axis: the cube's face (p > 1), the octahedron's vertex (p < 1) "
+      "(docs/contact-types.md; NaN if not resolved or if no contact joins two non-rattlers)",
+      Mean},
+     typeFraction<kRegion, 0>},
+    {{"edge_fraction", A, F, "1", "the same, nearest a <110> direction: an edge", Mean},
+     typeFraction<kRegion, 1>},
+    {{"diagonal_fraction", A, F, "1",
+      "the same, nearest a <111> direction: the cube's vertex, the octahedron's face", Mean},
+     typeFraction<kRegion, 2>},
+    {{"axis_axis_fraction", A, F, "1",
+      "fraction of the contacts (non-rattlers) whose two ends are both axis ends", Mean},
+     typeFraction<kPair, 0>},
+    {{"axis_edge_fraction", A, F, "1", "the same, one axis end and one edge end", Mean},
+     typeFraction<kPair, 1>},
+    {{"axis_diagonal_fraction", A, F, "1", "the same, axis and diagonal", Mean},
+     typeFraction<kPair, 2>},
+    {{"edge_edge_fraction", A, F, "1", "the same, edge and edge", Mean}, typeFraction<kPair, 3>},
+    {{"edge_diagonal_fraction", A, F, "1", "the same, edge and diagonal", Mean},
+     typeFraction<kPair, 4>},
+    {{"diagonal_diagonal_fraction", A, F, "1", "the same, diagonal and diagonal", Mean},
+     typeFraction<kPair, 5>},
+    {{"axis_angle_mean", A, F, "deg",
+      "mean over the contact ends of theta, the angle of the body-frame normal to the nearest "
+      "body axis, arccos max_k |n_k| (NaN as the fractions)",
       Mean},
      +[](const R& r, const Scales&) -> Optional {
-         return unlessUndetermined(r, r.network.meanContactNumber);
+         return unlessUndetermined(r, r.types.meanAxisAngleDegrees);
      }},
-    {{"rattler_fraction", A, F, "1", "fraction of rattlers phi_R (NaN if not resolved)", Mean},
+    {{"axis_angle_edges", D, F, "deg",
+      "edges of the equal bins of theta over [0, arccos(1 / sqrt 3)] = [0, 54.74 deg]", Same},
+     member<&R::types, &T::axisAngleEdges>},
+    {{"axis_angle_density", D, F, "1/deg",
+      "probability density of theta over the contact ends, per bin (NaN as the fractions)",
+      Pointwise},
      +[](const R& r, const Scales&) -> Optional {
-         return unlessUndetermined(r, r.network.rattlerFraction);
+         std::vector<double> density = r.types.axisAngleDensity;
+         if (r.undetermined())
+             density.assign(density.size(), std::numeric_limits<double>::quiet_NaN());
+         return Value(std::move(density));
      }},
-    {{"tolerance", A, F, "D", "contact: gap < tolerance D (--tolerance)"},
-     member<&R::network, &N::parameters, &ContactParameters::tolerance>},
-    {{"resolved", A, I, "1",
-      "1 if tolerance >= tolerance_needed (contacts separated), 0 if not, -1 without a pressure"},
-     +[](const R& r, const Scales&) -> Optional {
-         const std::optional<bool> resolved = r.resolution.resolved;
-         return Value(resolved ? std::int64_t{*resolved} : std::int64_t{-1});
-     }},
-    {{"tolerance_needed", A, F, "D", "100 / P: load-bearing gaps at the reduced pressure P"},
-     member<&R::resolution, &ContactResolution::neededTolerance>},
-    {{"rattler_threshold", A, I, "1", "rattler: fewer contacts, removed iteratively"},
-     member<&R::network, &N::parameters, &ContactParameters::rattlerThreshold>},
-    {{"n_contacts", A, I, "1", "contacts (pairs)"},
-     +[](const R& r, const Scales&)
-         -> Optional { return Value(static_cast<std::int64_t>(r.network.contacts.size())); }},
-    {{"overlapping_pairs", A, I, "1", "pairs that overlap"},
-     member<&R::network, &N::overlappingPairs>},
-    {{"runtime_s", A, F, "s", kRuntime}, member<&R::seconds>},
-    {{"counts", D, I, "1", "contacts of each particle"}, member<&R::network, &N::counts>},
-    {{"rattler", D, I, "1", "1 for a rattler, else 0, per particle"},
-     member<&R::network, &N::rattler>},
-    {{"gap_edges", D, F, "D", "if not resolved: decade edges of gap / D, 1e-16 .. 1e-2", No, true},
-     +[](const R& r, const Scales&) -> Optional {
-         return r.resolution.gaps ? Optional(r.resolution.gaps->edges) : std::nullopt;
-     }},
-    {{"gap_counts", D, I, "1",
-      "if not resolved: pairs per decade (the first bin holds every gap below 1e-15 D)", No, true},
-     +[](const R& r, const Scales&) -> Optional {
-         if (!r.resolution.gaps) return std::nullopt;
-         const auto& counts = r.resolution.gaps->counts;
-         return Value(std::vector<std::int64_t>(counts.begin(), counts.end()));
-     }},
-}}};
+    {{"axis_angle_uniform", D, F, "1/deg",
+      "the density of theta for normals uniform on the sphere, in the same bins (the sphere's, "
+      "docs/contact-types.md Eq. 2.2)",
+      Same},
+     member<&R::types, &T::uniformAngleDensity>},
+}};
+
+inline constexpr schema::FieldTable kTable{schema::joinColumns(
+    std::array<schema::Column<R>, 13>{{
+        {{"z_mean", A, F, "1", "mean contact number Z over the non-rattlers (NaN if not resolved)",
+          Mean},
+         +[](const R& r, const Scales&) -> Optional {
+             return unlessUndetermined(r, r.network.meanContactNumber);
+         }},
+        {{"rattler_fraction", A, F, "1", "fraction of rattlers phi_R (NaN if not resolved)", Mean},
+         +[](const R& r, const Scales&) -> Optional {
+             return unlessUndetermined(r, r.network.rattlerFraction);
+         }},
+        {{"tolerance", A, F, "D", "contact: gap < tolerance D (--tolerance)"},
+         member<&R::network, &N::parameters, &ContactParameters::tolerance>},
+        {{"resolved", A, I, "1",
+          "1 if tolerance >= tolerance_needed (contacts separated), 0 if not, -1 without a "
+          "pressure"},
+         +[](const R& r, const Scales&) -> Optional {
+             const std::optional<bool> resolved = r.resolution.resolved;
+             return Value(resolved ? std::int64_t{*resolved} : std::int64_t{-1});
+         }},
+        {{"tolerance_needed", A, F, "D", "100 / P: load-bearing gaps at the reduced pressure P"},
+         member<&R::resolution, &ContactResolution::neededTolerance>},
+        {{"rattler_threshold", A, I, "1", "rattler: fewer contacts, removed iteratively"},
+         member<&R::network, &N::parameters, &ContactParameters::rattlerThreshold>},
+        {{"n_contacts", A, I, "1", "contacts (pairs)"},
+         +[](const R& r, const Scales&)
+             -> Optional { return Value(static_cast<std::int64_t>(r.network.contacts.size())); }},
+        {{"overlapping_pairs", A, I, "1", "pairs that overlap"},
+         member<&R::network, &N::overlappingPairs>},
+        {{"runtime_s", A, F, "s", kRuntime}, member<&R::seconds>},
+        {{"counts", D, I, "1", "contacts of each particle"}, member<&R::network, &N::counts>},
+        {{"rattler", D, I, "1", "1 for a rattler, else 0, per particle"},
+         member<&R::network, &N::rattler>},
+        {{"gap_edges", D, F, "D", "if not resolved: decade edges of gap / D, 1e-16 .. 1e-2", No,
+          true},
+         +[](const R& r, const Scales&) -> Optional {
+             return r.resolution.gaps ? Optional(r.resolution.gaps->edges) : std::nullopt;
+         }},
+        {{"gap_counts", D, I, "1",
+          "if not resolved: pairs per decade (the first bin holds every gap below 1e-15 D)", No,
+          true},
+         +[](const R& r, const Scales&) -> Optional {
+             if (!r.resolution.gaps) return std::nullopt;
+             const auto& counts = r.resolution.gaps->counts;
+             return Value(std::vector<std::int64_t>(counts.begin(), counts.end()));
+         }},
+    }},
+    kTypeColumns)};
 } // namespace contacts_fields
 
 inline constexpr schema::Group kContactsGroup{"contacts", "files/<i>/contacts",

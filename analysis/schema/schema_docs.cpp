@@ -41,8 +41,9 @@ Every dataset has a string attribute `units`; every numeric attribute `NAME` has
 attribute `NAME_units`. Units: `1` dimensionless; `length` the packing's length unit (that of
 `box_length`); `1/length`, `length^2`, `length^3`; `D` the major-axis length `2 semi_axis`;
 `time` the unit of the transport times (`length^2 / diffusion_coefficient`); `length^2/time`;
-`s` wall-clock seconds; `bytes`; in units of the mean width `w` (`mean_width`) and the diffusion
-coefficient `D`: `w^3`, `w^(3+alpha)`, `w^2/D`.
+`s` wall-clock seconds; `bytes`; `deg` angles in degrees and `1/deg` densities per degree; in
+units of the mean width `w` (`mean_width`) and the diffusion coefficient `D`: `w^3`,
+`w^(3+alpha)`, `w^2/D`.
 
 ## Names
 

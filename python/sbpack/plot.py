@@ -18,6 +18,10 @@ splits them, p <= 1 | p >= 1.
   order              g2(r) against r / w with the ideal-gas error and the neighbour cutoff, and
                      the density of the local q6 beside fcc, the verdict's threshold and the MRJ
                      range (sbanalyze --compute order; docs/order-metrics.md; not in the paper)
+  contact_types      the angle theta of the contact normals to the nearest body axis beside the
+                     uniform normals' (spheres'), and the pair types of the contacts' ends (axis,
+                     edge, diagonal) beside two independent uniform ends' (sbanalyze --compute
+                     contacts; docs/contact-types.md; the paper's closing question)
   versus_p           with two or more p: phi, Z, phi_R, alpha, H, k, tau, T1 against p, the
                      paper's values as markers, and with order results Q6, the mean local q6,
                      T and P4 (not in the paper)                          (Figs. 4, 5, 7, 13-15, 17)
@@ -39,6 +43,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from . import figures_contacts as contact_figures  # noqa: E402
 from . import figures_order as order_figures  # noqa: E402
 from . import figures_results as results_figures  # noqa: E402
 from . import figures_shape as shape_figures  # noqa: E402
@@ -61,6 +66,7 @@ FIGURES = {
     "spreadability": results_figures.spreadability,
     "pore_size": results_figures.pore_size,
     "order": order_figures.order,
+    "contact_types": contact_figures.contact_types,
     "versus_p": versus.versus_p,
     "phi_vs_width": versus.phi_vs_width,
     "mean_width": shape_figures.mean_width,

@@ -4,6 +4,7 @@
 #include "bindings.hpp"
 
 #include "cli/command_line.hpp"
+#include "contacts/contact_types.hpp"
 #include "order/order_metrics.hpp"
 #include "parallel/parallel.hpp"
 #include "pipeline/analysis_registry.hpp"
@@ -190,6 +191,10 @@ void registerAnalyses(py::module_& m) {
     thresholds["crystal_cluster_fraction"] = kOrderedCrystalCluster;
     m.attr("order_thresholds") = thresholds;
     m.attr("mrj_local_q6") = py::make_tuple(kMrjLocalQ6Low, kMrjLocalQ6High);
+    py::dict regions; // contacts/contact_types.hpp; docs/contact-types.md Eq. 2.4
+    for (std::size_t r = 0; r < kContactRegions; ++r)
+        regions[py::str(std::string(regionName(ContactRegion(r))))] = kUniformRegionFractions[r];
+    m.attr("uniform_region_fractions") = regions;
     m.def("analysis_options", &optionRows,
           "sbanalyze's options by name (without --): value (its name; empty for a flag), default "
           "(as --help prints it; empty where it prints none), dependent_default (the default "

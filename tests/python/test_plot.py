@@ -15,7 +15,8 @@ import pytest
 import sbpack
 import sbpack.plot as plot
 from sbpack import _sbpack
-from sbpack import figures_order, figures_results, figures_series, figures_shape, figures_versus_p
+from sbpack import (figures_contacts, figures_order, figures_results, figures_series,
+                    figures_shape, figures_versus_p)
 from conftest import DATA, FAST, cli_args, run
 
 INPUTS = [os.path.join(DATA, "mrj-p1.5-1000.h5"), os.path.join(DATA, "mrj-spheres-5000.h5")]
@@ -25,8 +26,8 @@ matplotlib.rcParams["figure.max_open_warning"] = 0  # the module's fixtures hold
 CHEAP = dict(slice_voxels=64, form_factor_voxels=64, threads=2)  # the engine's figures, small
 
 NAMES = ["structure_factor", "spectral_density", "small_q", "major_axis", "spreadability",
-                "pore_size", "order", "versus_p", "phi_vs_width", "mean_width", "form_factor",
-                "packing_slice"]
+                "pore_size", "order", "contact_types", "versus_p", "phi_vs_width", "mean_width",
+                "form_factor", "packing_slice"]
 
 
 def analyze(sbanalyze, paths, out):
@@ -488,3 +489,81 @@ def test_an_ordered_box_stands_out(sbanalyze, tmp_path):
     versus = figures_versus_p.versus_p(series)
     marks = [t for ax in versus.axes for t in ax.texts if t.get_text() == "ordered"]
     assert len(marks) == 4 and all(t.xy[0] == 1.2 for t in marks)  # Q6, q6, T, P4
+
+
+def bars_of(ax, label):
+    """The heights of the bars of the series `label` (their gid), in the order drawn."""
+    return [p.get_height() for p in ax.patches if p.get_gid() == label]
+
+
+PAIR_NAMES = [f"{a}_{b}_fraction" for a, b in figures_contacts.PAIRS]
+
+
+def test_contact_types_are_the_results(results, figures):
+    """The density of theta (the contacts' ends' angle to the nearest body axis) as steps on the
+    results' bins, beside the uniform normals' density (the sphere's); the six pair-type
+    fractions as bars beside two independent uniform ends' (the products of sbanalyze's solid
+    angles); the legend names Z, the mean theta and the ends' region fractions."""
+    files = sbpack.read_results(results)["files"]
+    theta_axis, pairs_axis = figures["contact_types"].axes[:2]  # one side, p >= 1
+    assert theta_axis.get_xlabel() == r"$\theta$ (degrees)"
+    uniform = [p for p in theta_axis.patches if p.get_linestyle() == "--"]
+    assert len(uniform) == 1
+    for f in files:
+        c = f["contacts"]
+        label = next(s for s in labelled_patches(theta_axis) if os.path.basename(
+            str(f["input"])) in s)
+        density, edges, _ = labelled_patches(theta_axis)[label].get_data()
+        assert np.array_equal(density, c["axis_angle_density"])
+        assert np.array_equal(edges, c["axis_angle_edges"])
+        assert np.array_equal(uniform[0].get_data()[0], c["axis_angle_uniform"])
+        assert bars_of(pairs_axis, label) == [c[name] for name in PAIR_NAMES]
+        assert sum(c[name] for name in PAIR_NAMES) == pytest.approx(1.0, abs=1e-12)
+        entry = next(t.get_text() for t in pairs_axis.get_legend().get_texts()
+                     if t.get_text().startswith(label))
+        assert f"axis {c['axis_fraction']:.3f}" in entry
+        assert f"{c['axis_angle_mean']:.2f}°" in entry and f"Z = {c['z_mean']:.2f}" in entry
+    ticks = [line for line in pairs_axis.collections if line.get_label().startswith("two ind")]
+    heights = [seg[0][1] for seg in ticks[0].get_segments()]
+    uniform_regions = _sbpack.uniform_region_fractions
+    assert sum(uniform_regions.values()) == pytest.approx(1.0, abs=1e-15)
+    assert heights == pytest.approx([uniform_regions["axis"] ** 2,
+                                     2 * uniform_regions["axis"] * uniform_regions["edge"],
+                                     2 * uniform_regions["axis"] * uniform_regions["diagonal"],
+                                     uniform_regions["edge"] ** 2,
+                                     2 * uniform_regions["edge"] * uniform_regions["diagonal"],
+                                     uniform_regions["diagonal"] ** 2], abs=1e-15)
+    # the physics the figure is for: at p = 1.5 the contacts sit near the faces; the spheres'
+    # normals (their stored orientations are all equal: the lab frame's) are near uniform
+    cube, sphere = sorted(files, key=lambda f: -f["p"])
+    assert cube["contacts"]["axis_fraction"] > 2 * uniform_regions["axis"]
+    assert cube["contacts"]["axis_angle_mean"] < 20.0 < 31.0 < sphere["contacts"][
+        "axis_angle_mean"] < 33.0
+
+
+def labelled_patches(ax):
+    """The axes' series steps, by their series' label (their gid)."""
+    return {p.get_gid(): p for p in ax.patches
+            if (p.get_gid() or "").startswith("p = ") and isinstance(p, StepPatch)}
+
+
+def test_contact_types_of_an_ensemble_are_its_means(ensemble, ensemble_figures):
+    """An ensemble: the pointwise mean of its members' densities in a band of +- std, its mean
+    fractions with their std as error bars (sbanalyze's reduction, checked against the
+    members)."""
+    r = sbpack.read_results(ensemble)
+    theta_axis, pairs_axis = ensemble_figures["contact_types"].axes[:2]
+    for e in r["ensembles"]:
+        members = [r["files"][int(m)]["contacts"] for m in e["members"]]
+        c = e["contacts"]
+        assert np.allclose(c["axis_angle_density"],
+                           np.mean([m["axis_angle_density"] for m in members], axis=0),
+                           rtol=0, atol=1e-15)
+        assert c["axis_fraction"] == pytest.approx(np.mean([m["axis_fraction"] for m in members]))
+        label = f"p = {e['p']:g}, N = {e['n_particles']} (mean $\\pm$ std of 3)"
+        density, edges, _ = labelled_patches(theta_axis)[label].get_data()
+        assert np.array_equal(density, c["axis_angle_density"])
+        assert np.array_equal(edges, c["axis_angle_edges"])
+        assert bars_of(pairs_axis, label) == [c[name] for name in PAIR_NAMES]
+    bands = [p for p in theta_axis.patches if p.get_fill()]
+    assert len(bands) == 2  # one per ensemble

@@ -1,4 +1,5 @@
-// contacts: the contact network of common/contacts (Z, rattlers).
+// contacts: the contact network of common/contacts (Z, rattlers) and where on the particles its
+// contacts sit (docs/contact-types.md).
 #include "contacts/contacts_fields.hpp"
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
@@ -11,6 +12,7 @@ bool runContacts(FileContext& context, schema::Record& record) {
     const Stopwatch clock;
     ContactFigures c{ContactNetwork(context.settings().contacts).compute(context.packing()),
                      resolveContacts(context.packing(), context.settings().contacts.tolerance)};
+    c.types = contactTypeDistribution(typedContacts(context.packing(), c.network));
     c.seconds = clock.seconds();
     if (c.undetermined())
         context.progress().warn("contacts: " + c.resolution.verdict + "\n" +

@@ -1,0 +1,148 @@
+"""sbpack.plot's figure of where the contacts sit on the particles (sbanalyze --compute contacts,
+group `contacts`; docs/contact-types.md): the density of theta, the angle between a contact
+end's body-frame normal and the nearest body axis, beside that of normals uniform on the sphere
+(what spheres give), and the fractions of the six pair types beside those of two independent
+uniform ends, split as the paper splits its curves (p <= 1 | p >= 1), one series per (p, N).
+
+Every value drawn is the results' (an ensemble's pointwise mean +- std of the density, its mean
++- std of the fractions) or sbanalyze's own constants (the uniform regions' solid angles,
+_sbpack.uniform_region_fractions); the independent ends' pair fractions are their products."""
+import numpy as np
+
+from . import _sbpack
+from .figures_results import bands, note, side_rows, with_group
+from .figures_series import curve, group_label, line_style, scalar
+
+REGIONS = ["axis", "edge", "diagonal"]
+PAIRS = [(a, b) for i, a in enumerate(REGIONS) for b in REGIONS[i:]]  # the schema's order
+UNIFORM = _sbpack.uniform_region_fractions  # solid angles over 4 pi (Eq. 2.4)
+THETA_MAX = float(np.degrees(np.arccos(1.0 / np.sqrt(3.0))))
+# theta of the symmetry directions, marked on the top axis, and what they are on each side
+DIRECTIONS = [(0.0, "⟨100⟩"), (45.0, "⟨110⟩"), (THETA_MAX, "⟨111⟩")]
+NAMES = {"low": ["vertex", "edge", "face"], "high": ["face", "edge", "vertex"],
+         "both": ["axis", "edge", "diagonal"]}  # octahedron-like, cube-like, spheres
+REFERENCE_COLOUR = "tab:red"
+HEADROOM = 1.12  # the density axis's top over its highest step (the mean markers above them)
+
+
+def with_types(series):
+    """The series whose contacts group has the contact types (older results have none)."""
+    return [s for s in with_group(series, "contacts")
+            if "axis_angle_density" in s.first("contacts")]
+
+
+def independent_pairs():
+    """Fractions of the six pair types for two independent ends uniform on the sphere: f_a f_b,
+    twice that for a != b."""
+    return [UNIFORM[a] * UNIFORM[b] * (1 if a == b else 2) for a, b in PAIRS]
+
+
+def series_text(s):
+    """The series' legend entry: its label, Z and the mean theta, and the fractions of its ends'
+    regions (ensembles: mean +- std)."""
+    def value(name, digits=3):
+        v = scalar(s, "contacts", name)
+        return f"{v[0]:.{digits}f}" + (fr" $\pm$ {v[1]:.{digits}f}" if s.averaged else "")
+
+    regions = ", ".join(f"{r} {value(r + '_fraction')}" for r in REGIONS)
+    return (f"{group_label(s, 'contacts')}\nZ = {value('z_mean', 2)}, "
+            fr"$\langle\theta\rangle$ = {value('axis_angle_mean', 2)}°" f"\nends: {regions}")
+
+
+def draw_theta(ax, s):
+    """The series' density of theta as steps, an ensemble's +- std as a band between steps, its
+    mean theta marked at the top of the axes."""
+    edges, density, std = curve(s, "contacts", "axis_angle_edges", "axis_angle_density")
+    style = line_style(s)
+    ax.stairs(density, edges, color=style["color"], ls=style["ls"], lw=1.4, gid=s.label)
+    if std is not None:
+        ax.stairs(density + std, edges, baseline=density - std, fill=True,
+                  color=style["color"], alpha=0.2, lw=0)
+    mean = scalar(s, "contacts", "axis_angle_mean")[0]
+    ax.plot([mean], [0.97], style["marker"], color=style["color"], ms=6,
+            transform=ax.get_xaxis_transform(), clip_on=False)
+
+
+def side_names(part):
+    """What the symmetry directions are on the particles of `part`: the octahedron's (p <= 1),
+    the cube's (p >= 1), or the neutral names (spheres only)."""
+    if all(s.p <= 1.0 for s in part) and any(s.p < 1.0 for s in part):
+        return NAMES["low"]
+    if all(s.p >= 1.0 for s in part) and any(s.p > 1.0 for s in part):
+        return NAMES["high"]
+    return NAMES["both"]
+
+
+def theta_axes(ax, part, side):
+    """The uniform normals' density (dashed), the symmetry directions on a top axis, named as
+    on the side's particles."""
+    first = part[0].first("contacts")
+    edges, uniform = first["axis_angle_edges"], first["axis_angle_uniform"]
+    ax.stairs(uniform, edges, color=REFERENCE_COLOUR, ls="--", lw=1.3)
+    top = ax.secondary_xaxis("top")
+    top.set_xticks([t for t, _ in DIRECTIONS],
+                   [f"{d}\n{name}" for (_, d), name in zip(DIRECTIONS, side_names(part))],
+                   fontsize=7)
+    highest = max(float(np.max(curve(s, "contacts", "axis_angle_edges", "axis_angle_density")[1]))
+                  for s in part)
+    ax.set(xlim=(0.0, THETA_MAX), ylim=(0.0, HEADROOM * max(highest, float(np.max(uniform)))),
+           xlabel=r"$\theta$ (degrees)", ylabel="probability density (1/degree)",
+           title=fr"Angle $\theta$ to the nearest body axis, {side}")
+
+
+def draw_pairs(ax, part, side):
+    """Bars of the six pair-type fractions per series (ensembles: their std as error bars), the
+    independent uniform ends' fractions as a tick across each group; the legend of the row."""
+    x, width = np.arange(len(PAIRS)), 0.8 / len(part)
+    ax.plot([], [], color=REFERENCE_COLOUR, ls="--",
+            label="normals uniform on the sphere (spheres):\ndensity of θ (Eqs. 2.1-2.2)")
+    ax.hlines(independent_pairs(), x - 0.45, x + 0.45, color=REFERENCE_COLOUR, lw=1.8,
+              label="two independent ends uniform on the\nsphere (spheres, random orientations)")
+    ax.plot([], [], ls="none", marker="o", color="0.4", ms=5,
+            label="marker above the densities: the mean θ")
+    for k, s in enumerate(part):
+        values = [scalar(s, "contacts", f"{a}_{b}_fraction") for a, b in PAIRS]
+        ax.bar(x - 0.4 + (k + 0.5) * width, [v[0] for v in values], width,
+               yerr=[v[1] for v in values] if s.averaged else None, color=s.style["color"],
+               gid=s.label, error_kw=dict(lw=0.8, capsize=1.5), label=series_text(s))
+    ax.set_xticks(x, [f"{a}–{b}" for a, b in PAIRS], fontsize=7, rotation=30, ha="right",
+                  rotation_mode="anchor")
+    ax.set(ylim=(0.0, None), ylabel="fraction of the contacts",
+           title=f"Pair types of the contacts' ends, {side}")
+
+
+def contact_types(series):
+    """The density of theta beside the uniform normals', and the pair-type fractions beside two
+    independent uniform ends'; p <= 1 | p >= 1."""
+    series = with_types(series)
+    if not series:
+        return None
+    fig, rows = side_rows(series, 2, width=4.8, height=3.8)
+    for side, part, (theta_ax, pairs_ax) in rows:
+        for s in part:
+            draw_theta(theta_ax, s)
+        theta_axes(theta_ax, part, side)
+        draw_pairs(pairs_ax, part, side)
+    note(fig, contact_types_note(series))
+    return fig
+
+
+def contact_types_note(series):
+    """What the figure draws; for spheres, why their pair types are like pairs only."""
+    text = ("Where the contacts sit on the particles (sbanalyze --compute contacts; "
+            "docs/contact-types.md). Each end of a contact between non-rattlers is classified by "
+            "its outward normal n in the particle's body frame: θ = arccos max |n_k| is its angle "
+            "to the nearest body axis, and its region the nearest symmetry direction: ⟨100⟩ axis "
+            "(θ = 0: the cube's face for p > 1, the octahedron's vertex for p < 1), ⟨110⟩ edge "
+            "(θ = 45°), ⟨111⟩ diagonal (θ = 54.7°: the cube's vertex, the octahedron's face). "
+            f"Left: density of θ in {len(series[0].first('contacts')['axis_angle_density'])} "
+            "bins, the marker at the top its mean"
+            + bands(series, "ensembles: mean ± std over the packings")
+            + "; dashed: normals uniform on the sphere (spheres lie on it). Right: "
+              "fractions of the contacts by the regions of their two ends; red ticks: two "
+              "independent uniform ends")
+    if any(s.p == 1.0 for s in series):
+        text += (". Spheres (p = 1): the orientations carry no physics; where all are equal "
+                 "(the packings in data/), a contact's two ends are n and -n in one frame and "
+                 "share a region, so only like pairs occur")
+    return text + "."
