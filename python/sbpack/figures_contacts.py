@@ -26,9 +26,11 @@ HEADROOM = 1.12  # the density axis's top over its highest step (the mean marker
 
 
 def with_types(series):
-    """The series whose contacts group has the contact types (older results have none)."""
+    """The series whose contacts group has the contact types (older results have none) and
+    defines them (NaN where the contacts are unresolved or no two non-rattlers touch)."""
     return [s for s in with_group(series, "contacts")
-            if "axis_angle_density" in s.first("contacts")]
+            if "axis_angle_density" in s.first("contacts")
+            and np.isfinite(scalar(s, "contacts", "axis_angle_mean")[0])]
 
 
 def independent_pairs():

@@ -183,10 +183,13 @@ TEST(Pipeline, WritesTheResultsFileOfOneInput) {
     std::ostringstream log, out;
     const RunResults results = runAnalyses(s, log, out);
     ASSERT_EQ(results.files.size(), 1u);
-    // Quiet: no stage lines; the one warning says why hyper is skipped in a box of 3^3 cells.
+    // Quiet: no stage lines; two warnings: hyper is skipped in a box of 3^3 cells, and the
+    // lattice is called ordered (its particles are solid-like, docs/order-metrics.md §5).
     const std::string warnings = log.str();
     EXPECT_NE(warnings.find("hyperuniformity skipped: alpha window"), std::string::npos);
-    EXPECT_EQ(std::count(warnings.begin(), warnings.end(), '\n'), 1) << warnings;
+    EXPECT_NE(warnings.find("order: this packing has ordered: solid-like fraction = 1.000"),
+              std::string::npos);
+    EXPECT_EQ(std::count(warnings.begin(), warnings.end(), '\n'), 2) << warnings;
     EXPECT_EQ(results.files[0].group("spreadability"), nullptr);
     const Hdf5Handle h5 = openFileReadOnly(dir / "r.h5");
     const hid_t root = h5.get();
