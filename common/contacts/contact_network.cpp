@@ -141,6 +141,7 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
         std::pair<int, int> pair;
         double gap; ///< / D
         Vector3d normal;
+        Vector3d point;
     };
     std::vector<Found> found;
     const CellList cells(packing.positions, packing.boxLength, range);
@@ -157,7 +158,7 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
         }
         if (s < -contactGap) ++result.overlappingPairs;
         if (s < contactGap) { // paper Sec. III A
-            found.push_back({{i, j}, s / diameter, pair.normal});
+            found.push_back({{i, j}, s / diameter, pair.normal, contactPoint(pair)});
             ++result.counts[i];
             ++result.counts[j];
         }
@@ -168,6 +169,7 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
         result.contacts.push_back(contact.pair);
         result.gaps.push_back(contact.gap);
         result.normals.push_back(contact.normal);
+        result.points.push_back(contact.point);
     }
     removeRattlers(result, parameters_.rattlerThreshold);
     return result;

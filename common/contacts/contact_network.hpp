@@ -21,6 +21,7 @@ struct ContactResult {
     std::vector<std::pair<int, int>> contacts; ///< pairs (i, j), i < j, sorted
     std::vector<double> gaps;                  ///< signed distance / D of each contact, same order
     std::vector<Vector3d> normals;             ///< unit contact normal, from i toward j, same order
+    std::vector<Vector3d> points;              ///< contactPoint, relative to r_i, same order
     std::vector<int> counts;                   ///< per particle, all contacts (rattlers included)
     std::vector<bool> rattler;                 ///< per particle
     /// Z: mean over the non-rattlers of their contacts with non-rattlers; 0 if all are rattlers.

@@ -543,4 +543,8 @@ SignedDistanceResult signedDistance(const SuperballPair& pair, const Vector3d& w
     return result;
 }
 
+Vector3d contactPoint(const SignedDistanceResult& result) {
+    return 0.5 * (result.contactA + result.contactB);
+}
+
 } // namespace sbpack

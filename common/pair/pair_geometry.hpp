@@ -97,6 +97,13 @@ struct LocalMaximum {
 LocalMaximum tangentMaximum(const SuperballPair& pair, const Vector3d& n, double radius,
                             double resolution, int iterations);
 
+/// The contact point of a pair, relative to r_A: the midpoint of the two support points
+/// contactA and contactB. At touching they coincide; at a gap or depth s they are the closest
+/// points (or the deepest), apart by s along the normal, so a lever arm to the midpoint gives
+/// each body the same first-order change of the gap as its own support point (docs/jamming.md
+/// §2). For spheres the midpoint of the centres, d / 2.
+Vector3d contactPoint(const SignedDistanceResult& result);
+
 /// mu of the pair. warmNormal, if non-zero, is a previous normal of the same pair.
 ScaleFactorResult scaleFactor(const SuperballPair& pair,
                               const Vector3d& warmNormal = Vector3d::Zero(),

@@ -187,6 +187,20 @@ TEST(ContactNetwork, FaceCentredCubicTouchingSpheresHaveTwelveContacts) {
     EXPECT_EQ(result.rattlerFraction, 0.0);
 }
 
+TEST(ContactNetwork, ContactPointsLieHalfwayFromTheFirstSphere) {
+    const std::vector<Vector3d> basis = {
+        {0.0, 0.0, 0.0}, {0.5, 0.5, 0.0}, {0.5, 0.0, 0.5}, {0.0, 0.5, 0.5}};
+    const Packing packing = latticePacking(1.0, 0.5, std::sqrt(2.0), 3, basis);
+    const ContactResult result = ContactNetwork({}).compute(packing);
+    ASSERT_EQ(result.points.size(), result.contacts.size());
+    for (std::size_t c = 0; c < result.contacts.size(); ++c) {
+        const auto [i, j] = result.contacts[c];
+        const Vector3d d =
+            minimumImage(packing.positions[j] - packing.positions[i], 3.0 * std::sqrt(2.0));
+        EXPECT_LT((result.points[c] - 0.5 * d).norm(), 1e-14) << "contact " << c;
+    }
+}
+
 TEST(ContactNetwork, AlignedSuperballsTouchingFaceToFaceHaveSixContacts) {
     // p = 1.5: circumradius 3^(1/6) R reaches beyond the face neighbours but not the diagonal ones.
     const Packing packing = simpleCubic(1.5, 0.5, 1.0, 4);

@@ -217,6 +217,34 @@ TEST_P(PairGeometry, WarmStartConvergesAtOnce) {
 
 INSTANTIATE_TEST_SUITE_P(Exponents, PairGeometry, ::testing::ValuesIn(kExponents));
 
+TEST(ContactPoint, SpheresTouchHalfwayBetweenTheCentresAtAnyGap) {
+    const Superball sphere(1.0, 0.5);
+    const Matrix3d identity = Matrix3d::Identity();
+    for (const double gap : {-1e-3, 0.0, 1e-10, 0.2}) {
+        const Vector3d d = (1.0 + gap) * Vector3d(2.0, -1.0, 2.0) / 3.0;
+        const Vector3d x = contactPoint(signedDistance({sphere, identity, identity, d}));
+        EXPECT_LT((x - 0.5 * d).norm(), 1e-15) << "gap " << gap;
+    }
+}
+
+TEST(ContactPoint, LiesOnBothSurfacesAtTouchingInBothArgumentOrders) {
+    std::mt19937_64 rng(21);
+    for (const double p : {0.85, 1.0, 1.5, 3.0}) {
+        const Superball shape(p, 0.5);
+        for (int trial = 0; trial < 50; ++trial) {
+            const Matrix3d ra = randomRotation(rng), rb = randomRotation(rng);
+            const Vector3d u = randomUnit(rng);
+            const Vector3d d = u / scaleFactor({shape, ra, rb, u}).scaleFactor; // touching
+            const Vector3d x = contactPoint(signedDistance({shape, ra, rb, d}));
+            EXPECT_NEAR(shape.gauge(ra.transpose() * x), 1.0, 1e-9) << "p " << p;
+            EXPECT_NEAR(shape.gauge(rb.transpose() * (x - d)), 1.0, 1e-9) << "p " << p;
+            // From B, relative to r_B: the same point.
+            const Vector3d fromB = contactPoint(signedDistance({shape, rb, ra, -d}));
+            EXPECT_LT((fromB + d - x).norm(), 1e-6) << "p " << p;
+        }
+    }
+}
+
 TEST(PairGeometryEdgeCases, CoincidentCentresAreOverlapsWithoutNaN) {
     for (double p : kExponents) {
         const Superball shape(p, 0.5);

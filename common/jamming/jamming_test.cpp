@@ -1,0 +1,207 @@
+#include "jamming/jamming_test.hpp"
+
+#include "random/random.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace sbpack {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// The rows of a program (units of Delta, x = dq / Delta): A^T, and for Strict the trace
+/// eps_xx + eps_yy + eps_zz last.
+Eigen::SparseMatrix<double> constraintRows(const Eigen::SparseMatrix<double>& a,
+                                           const DegreesOfFreedom& dof) {
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(a.nonZeros() + 3);
+    for (int gap = 0; gap < a.outerSize(); ++gap)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(a, gap); it; ++it)
+            entries.emplace_back(gap, static_cast<int>(it.row()), it.value());
+    const int traceRow = static_cast<int>(a.cols());
+    if (dof.strain)
+        for (int k = 0; k < 3; ++k)
+            entries.emplace_back(traceRow, dof.strainComponent(k), 1.0);
+    Eigen::SparseMatrix<double> rows(traceRow + (dof.strain ? 1 : 0), dof.count());
+    rows.setFromTriplets(entries.begin(), entries.end());
+    return rows;
+}
+
+/// The bounds of both programs: |x| <= 1, the strain's |eps| <= 1 / L, the fixed particle's
+/// translation 0 (none fixed: fixed < 0); the trace row <= 0.
+LinearProgram boundedProgram(const Eigen::SparseMatrix<double>& a, const DegreesOfFreedom& dof,
+                             double boxLength, int fixed) {
+    LinearProgram program;
+    program.constraints = constraintRows(a, dof);
+    const Eigen::Index columns = dof.count(), rows = program.constraints.rows();
+    program.columnLower = Eigen::VectorXd::Constant(columns, -1.0);
+    program.columnUpper = Eigen::VectorXd::Constant(columns, 1.0);
+    if (dof.strain) {
+        program.columnLower.tail(6).setConstant(-1.0 / boxLength);
+        program.columnUpper.tail(6).setConstant(1.0 / boxLength);
+    }
+    if (fixed >= 0) {
+        program.columnLower.segment<3>(dof.translation(fixed)).setZero();
+        program.columnUpper.segment<3>(dof.translation(fixed)).setZero();
+    }
+    program.rowLower = Eigen::VectorXd::Zero(rows);
+    program.rowUpper = Eigen::VectorXd::Zero(rows);
+    if (dof.strain) program.rowLower[rows - 1] = -kInfinity;
+    return program;
+}
+
+/// The contact behind column `gap` of A.
+int contactOf(int gap, JammingCategory category) {
+    return category == JammingCategory::Local ? gap / 2 : gap;
+}
+
+/// The opening program (Donev et al. 2004): maximise sum_c ds_c, ds_c >= -g_c / Delta.
+void makeOpening(LinearProgram& program, const Eigen::SparseMatrix<double>& a,
+                 const RigidityNetwork& network, JammingCategory category,
+                 const JammingParameters& parameters) {
+    program.objective = a * Eigen::VectorXd::Ones(a.cols());
+    for (int gap = 0; gap < a.cols(); ++gap) {
+        const double g = network.contacts[contactOf(gap, category)].gap;
+        program.rowLower[gap] = parameters.useGaps ? -g / parameters.maxStep : 0.0;
+        program.rowUpper[gap] = kInfinity;
+    }
+}
+
+/// The flex program: maximise c . x for a random c, A^T x = 0.
+void makeFlex(LinearProgram& program, const Eigen::SparseMatrix<double>& a, std::uint64_t seed) {
+    Random random(seed);
+    program.objective.resize(a.rows());
+    for (Eigen::Index k = 0; k < a.rows(); ++k)
+        program.objective[k] = 2.0 * random.uniform() - 1.0;
+    program.rowLower.head(a.cols()).setZero();
+    program.rowUpper.head(a.cols()).setZero();
+}
+
+/// eps from its components eps_xx, eps_yy, eps_zz, eps_yz, eps_xz, eps_xy.
+Matrix3d strainOf(const Eigen::VectorXd& dq, const DegreesOfFreedom& dof) {
+    const auto e = [&](int k) { return dq[dof.strainComponent(k)]; };
+    Matrix3d strain;
+    strain << e(0), e(5), e(4), e(5), e(1), e(3), e(4), e(3), e(2);
+    return strain;
+}
+
+/// The motion dq = Delta x per packing particle, its ds and the particles that move.
+UnjammingMotion motionOf(const Eigen::VectorXd& x, const Eigen::SparseMatrix<double>& a,
+                         const RigidityNetwork& network, const DegreesOfFreedom& dof,
+                         const JammingParameters& parameters) {
+    const Eigen::VectorXd dq = parameters.maxStep * x;
+    const double threshold = parameters.motionTolerance * parameters.maxStep;
+    UnjammingMotion motion;
+    motion.displacement.assign(network.packingSize, Vector3d::Zero());
+    if (dof.rotations) motion.rotation.assign(network.packingSize, Vector3d::Zero());
+    for (int b = 0; b < dof.particles; ++b) {
+        const int particle = network.backbone[b];
+        motion.displacement[particle] = dq.segment<3>(dof.translation(b));
+        double largest = motion.displacement[particle].lpNorm<Eigen::Infinity>();
+        if (dof.rotations) {
+            motion.rotation[particle] = dq.segment<3>(dof.rotation(b));
+            largest = std::max(largest, motion.rotation[particle].lpNorm<Eigen::Infinity>());
+        }
+        if (largest > threshold) motion.moving.push_back(particle);
+    }
+    if (dof.strain) motion.strain = strainOf(dq, dof);
+    motion.gapChange = a.transpose() * dq;
+    return motion;
+}
+
+/// Whether a flex moves a particle, or the box's images by eps L, by more than the tolerance.
+bool moves(const UnjammingMotion& motion, const RigidityNetwork& network,
+           const JammingParameters& parameters) {
+    const double boxMotion = motion.strain.cwiseAbs().maxCoeff() * network.boxLength;
+    return !motion.moving.empty() || boxMotion > parameters.motionTolerance * parameters.maxStep;
+}
+
+/// The particles an opening frees, and for spheres those a flex moves (sorted, unique).
+std::vector<int> freedParticles(const JammingResult& result, const RigidityNetwork& network) {
+    std::vector<int> freed;
+    if (result.opening) {
+        const double threshold = result.parameters.motionTolerance * result.parameters.maxStep;
+        const Eigen::VectorXd& ds = result.opening->gapChange;
+        const bool local = result.category == JammingCategory::Local;
+        for (int gap = 0; gap < ds.size(); ++gap) {
+            if (ds[gap] <= threshold) continue;
+            const RigidContact& contact = network.contacts[contactOf(gap, result.category)];
+            if (!local || gap % 2 == 0) freed.push_back(network.backbone[contact.i]);
+            if (!local || gap % 2 == 1) freed.push_back(network.backbone[contact.j]);
+        }
+    }
+    if (result.flex && !network.rotations)
+        freed.insert(freed.end(), result.flex->moving.begin(), result.flex->moving.end());
+    std::sort(freed.begin(), freed.end());
+    freed.erase(std::unique(freed.begin(), freed.end()), freed.end());
+    return freed;
+}
+
+FirstOrderVerdict verdictOf(const JammingResult& result, bool rotations) {
+    if (result.opening || (result.flex && !rotations)) return FirstOrderVerdict::Unjammed;
+    return result.flex ? FirstOrderVerdict::Undecided : FirstOrderVerdict::Jammed;
+}
+
+} // namespace
+
+JammingTest::JammingTest(JammingParameters parameters) : parameters_(parameters) {
+    const double tolerance = parameters_.motionTolerance;
+    if (!(parameters_.maxStep > 0.0) || !std::isfinite(parameters_.maxStep))
+        throw std::invalid_argument("jamming test: maximum step " +
+                                    std::to_string(parameters_.maxStep) +
+                                    " must be positive and finite");
+    if (!(tolerance > 0.0 && tolerance < 1.0))
+        throw std::invalid_argument("jamming test: motion tolerance " + std::to_string(tolerance) +
+                                    " must lie in (0, 1)");
+    const LinearProgramTolerances& solver = parameters_.solver;
+    if (!(solver.feasibility > 0.0 && solver.feasibility <= 1e-2 * tolerance &&
+          solver.optimality > 0.0 && solver.optimality <= 1e-2 * tolerance))
+        throw std::invalid_argument("jamming test: the solver's tolerances must be positive and "
+                                    "at most 1e-2 of the motion tolerance");
+}
+
+JammingResult JammingTest::compute(const RigidityNetwork& network, JammingCategory category) const {
+    if (network.backbone.empty())
+        throw std::invalid_argument("jamming test: the packing has no backbone (all rattlers)");
+    const auto start = std::chrono::steady_clock::now();
+    JammingResult result;
+    result.category = category;
+    result.parameters = parameters_;
+    result.contacts = static_cast<int>(network.contacts.size());
+    const DegreesOfFreedom dof = degreesOfFreedom(network, category);
+    const Eigen::SparseMatrix<double> a = rigidityMatrix(network, category);
+    const bool local = category == JammingCategory::Local;
+    if (!local) {
+        result.fixedParticle = network.backbone.front();
+        result.isostaticDeficit = dof.count() - 3 - result.contacts;
+    }
+    const LinearProgramMethod method =
+        local ? LinearProgramMethod::DualSimplex : LinearProgramMethod::Barrier;
+    LinearProgram program = boundedProgram(a, dof, network.boxLength, local ? -1 : 0);
+
+    makeOpening(program, a, network, category, parameters_);
+    UnjammingMotion opening =
+        motionOf(maximise(program, method, parameters_.solver), a, network, dof, parameters_);
+    result.largestOpening = opening.gapChange.size() > 0 ? opening.gapChange.maxCoeff() : 0.0;
+    if (result.largestOpening > parameters_.motionTolerance * parameters_.maxStep)
+        result.opening = std::move(opening);
+
+    makeFlex(program, a, parameters_.seed);
+    UnjammingMotion flex =
+        motionOf(maximise(program, method, parameters_.solver), a, network, dof, parameters_);
+    if (moves(flex, network, parameters_)) result.flex = std::move(flex);
+
+    result.verdict = verdictOf(result, network.rotations);
+    result.freed = freedParticles(result, network);
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+} // namespace sbpack

@@ -1,0 +1,87 @@
+#pragma once
+// The first-order test of the jamming categories (Torquato & Stillinger, J. Phys. Chem. B 105,
+// 11849 (2001)) by the linear programs of Donev, Torquato, Stillinger & Connelly, J. Comput.
+// Phys. 197, 139 (2004); docs/jamming.md §3. On the rigidity matrix A of the backbone
+// (jamming/rigidity_matrix.hpp), with dq bounded by Delta and trivial motions removed:
+//   opening:  maximise sum_c ds_c  subject to ds = A^T dq >= -g   (a contact opens, none closes)
+//   flex:     maximise c . dq      subject to A^T dq = 0,  c random (a motion that keeps every
+//             contact at its gap to first order, found with probability 1 if one exists)
+// Strict adds the strain eps with tr eps <= 0 to both.
+
+#include "jamming/linear_program.hpp"
+#include "jamming/rigidity_matrix.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace sbpack {
+
+struct JammingParameters {
+    /// Delta (units of D): |dr_a| <= Delta, |dtheta_a| <= Delta (radians, lever arms ~ D / 2) and
+    /// |eps_ab| <= Delta / L. The ideal-contact programs are homogeneous: Delta only scales them.
+    double maxStep = 1.0;
+    /// ds_c >= -g_c with the contacts' gaps; false: ideal contacts, g = 0 (Donev et al. 2004).
+    bool useGaps = false;
+    /// A contact opens, or a particle moves, when by more than this times Delta: far above CLP's
+    /// feasibility tolerance, far below a real motion's O(Delta) (docs/jamming.md §4).
+    double motionTolerance = 1e-6;
+    std::uint64_t seed = 1; ///< of the flex program's random objective
+    LinearProgramTolerances solver;
+};
+
+/// The answer at first order.
+enum class FirstOrderVerdict {
+    Jammed,   ///< no nontrivial first-order motion: neither an opening nor a flex
+    Unjammed, ///< a motion opens a contact; or, for spheres, a flex (Connelly 1988: a sphere
+              ///< packing is jammed iff it is first-order rigid; Donev et al. 2004 Sec. 3)
+    Undecided ///< p != 1: no contact opens, but flexes exist: the curvatures decide (second order)
+};
+
+/// A solution of one program, in units of D, per packing particle (rattlers do not move).
+struct UnjammingMotion {
+    std::vector<Vector3d> displacement; ///< dr
+    std::vector<Vector3d> rotation;     ///< dtheta, radians; empty for spheres
+    Matrix3d strain = Matrix3d::Zero(); ///< eps (Strict)
+    Eigen::VectorXd gapChange;          ///< ds = A^T dq, one per column of A
+    /// Packing indices of the particles displaced or rotated by more than the motion tolerance.
+    std::vector<int> moving;
+};
+
+struct JammingResult {
+    JammingCategory category = JammingCategory::Collective;
+    FirstOrderVerdict verdict = FirstOrderVerdict::Jammed;
+    double largestOpening = 0.0;            ///< max_c ds_c of the opening program, units of D
+    std::optional<UnjammingMotion> opening; ///< when a contact opens by > tolerance Delta
+    std::optional<UnjammingMotion> flex;    ///< when a flex moves by > tolerance Delta
+    /// Packing indices of the particles an opening contact frees (its two ends; Local: the end
+    /// whose test it belongs to) and, for spheres, those the flex moves.
+    std::vector<int> freed;
+    /// The particle held fixed against the trivial translations (Collective, Strict), or -1.
+    int fixedParticle = -1;
+    /// Degrees of freedom - 3 trivial - contacts (Collective, Strict; 0 for Local): above 0,
+    /// flexes must exist (the Maxwell count; isostatic: 0).
+    int isostaticDeficit = 0;
+    int contacts = 0;
+    double seconds = 0.0; ///< wall time of the matrix and both programs
+    JammingParameters parameters;
+};
+
+/// Compute object: parameters validated at construction, compute() returns the result.
+class JammingTest {
+  public:
+    /// Throws std::invalid_argument unless maxStep > 0 is finite, motionTolerance lies in
+    /// (0, 1) and the solver's tolerances are positive and at most 1e-2 motionTolerance.
+    explicit JammingTest(JammingParameters parameters);
+
+    /// The category's first-order verdict on `network` (backboneNetwork). Throws
+    /// std::invalid_argument for an empty backbone, std::runtime_error if CLP fails.
+    JammingResult compute(const RigidityNetwork& network, JammingCategory category) const;
+
+    const JammingParameters& parameters() const { return parameters_; }
+
+  private:
+    JammingParameters parameters_;
+};
+
+} // namespace sbpack

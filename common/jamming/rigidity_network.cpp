@@ -1,0 +1,48 @@
+#include "jamming/rigidity_network.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace sbpack {
+
+namespace {
+
+void checkSizes(const Packing& packing, const ContactResult& network) {
+    const std::size_t contacts = network.contacts.size();
+    if (network.rattler.size() != packing.size() || network.gaps.size() != contacts ||
+        network.normals.size() != contacts || network.points.size() != contacts)
+        throw std::invalid_argument(
+            "rigidity network: the contact network (" + std::to_string(network.rattler.size()) +
+            " particles, " + std::to_string(contacts) + " contacts) is not one of this packing (" +
+            std::to_string(packing.size()) + " particles)");
+}
+
+} // namespace
+
+RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& network) {
+    checkSizes(packing, network);
+    const double diameter = packing.shape().diameter();
+    RigidityNetwork result;
+    result.packingSize = static_cast<int>(packing.size());
+    result.rotations = !packing.shape().isSphere();
+    result.boxLength = packing.boxLength / diameter;
+    std::vector<int> backboneIndex(packing.size(), -1);
+    for (int k = 0; k < result.packingSize; ++k)
+        if (!network.rattler[k]) {
+            backboneIndex[k] = static_cast<int>(result.backbone.size());
+            result.backbone.push_back(k);
+        }
+    for (std::size_t c = 0; c < network.contacts.size(); ++c) {
+        const auto [i, j] = network.contacts[c];
+        if (network.rattler[i] || network.rattler[j]) continue;
+        const Vector3d separation =
+            minimumImage(packing.positions[j] - packing.positions[i], packing.boxLength) / diameter;
+        const Vector3d point = network.points[c] / diameter;
+        result.contacts.push_back({backboneIndex[i], backboneIndex[j], network.normals[c], point,
+                                   point - separation, separation, std::max(network.gaps[c], 0.0)});
+    }
+    return result;
+}
+
+} // namespace sbpack

@@ -1,0 +1,378 @@
+// First-order jamming categories (docs/jamming.md): the rigidity matrix against finite differences
+// of the exact pair distance, and the known answers of Torquato & Stillinger, J. Phys. Chem. B
+// 105, 11849 (2001) and Donev, Torquato, Stillinger & Connelly, J. Comput. Phys. 197, 139 (2004)
+// for sphere lattices; the MRJ sphere packing's answer is reported, not asserted.
+
+#include "contacts/contact_network.hpp"
+#include "contacts/jam_check.hpp"
+#include "io/packing_io.hpp"
+#include "io/text_io.hpp"
+#include "jamming/jamming_test.hpp"
+#include "pair/pair_geometry.hpp"
+#include "random/random.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sbpack {
+namespace {
+
+const std::string kData = SBPACK_DATA_DIR;
+
+/// Spheres of diameter 1 at the basis points (units of the lattice constant) of cells^3 cells.
+Packing sphereLattice(double latticeConstant, int cells, const std::vector<Vector3d>& basis) {
+    Packing packing;
+    packing.boxLength = cells * latticeConstant;
+    for (int x = 0; x < cells; ++x)
+        for (int y = 0; y < cells; ++y)
+            for (int z = 0; z < cells; ++z)
+                for (const Vector3d& b : basis) {
+                    packing.positions.push_back(latticeConstant * (Vector3d(x, y, z) + b));
+                    packing.orientations.push_back(Quaterniond::Identity());
+                }
+    return packing;
+}
+
+Packing simpleCubic(int cells) {
+    return sphereLattice(1.0, cells, {Vector3d::Zero()});
+}
+
+Packing bodyCentredCubic(int cells) {
+    return sphereLattice(2.0 / std::sqrt(3.0), cells, {Vector3d::Zero(), Vector3d(0.5, 0.5, 0.5)});
+}
+
+RigidityNetwork networkOf(const Packing& packing, const ContactParameters& parameters = {}) {
+    return backboneNetwork(packing, ContactNetwork(parameters).compute(packing));
+}
+
+JammingResult test(const RigidityNetwork& network, JammingCategory category,
+                   const JammingParameters& parameters = {}) {
+    return JammingTest(parameters).compute(network, category);
+}
+
+/// The contacts of unit spheres at `positions` in an orthorhombic periodic cell `box`, built
+/// directly (centre-to-centre normals, midpoints): for cells a Packing cannot hold (hcp).
+RigidityNetwork sphereNetwork(const std::vector<Vector3d>& positions, const Vector3d& box) {
+    RigidityNetwork network;
+    network.packingSize = static_cast<int>(positions.size());
+    network.boxLength = box.maxCoeff();
+    for (int i = 0; i < network.packingSize; ++i) {
+        network.backbone.push_back(i);
+        for (int j = i + 1; j < network.packingSize; ++j) {
+            Vector3d d = positions[j] - positions[i];
+            for (int k = 0; k < 3; ++k)
+                d[k] -= box[k] * std::nearbyint(d[k] / box[k]);
+            if (std::abs(d.norm() - 1.0) > 1e-9) continue;
+            network.contacts.push_back({i, j, d.normalized(), 0.5 * d, -0.5 * d, d, 0.0});
+        }
+    }
+    return network;
+}
+
+/// hcp of unit spheres in an orthorhombic cell of 4 x 2 x 2 cells (a, sqrt(3) a, c), 4 spheres
+/// each: layers A at z = 0 and B at z = c / 2 over the triangles' centres, c = sqrt(8 / 3).
+std::vector<Vector3d> hexagonalClosePacked(Vector3d& box) {
+    const double s = std::sqrt(3.0), c = std::sqrt(8.0 / 3.0);
+    const std::vector<Vector3d> basis = {{0.0, 0.0, 0.0},
+                                         {0.5, 0.5 * s, 0.0},
+                                         {0.5, s / 6.0, 0.5 * c},
+                                         {0.0, 2.0 * s / 3.0, 0.5 * c}};
+    box = Vector3d(4.0, 2.0 * s, 2.0 * c);
+    std::vector<Vector3d> positions;
+    for (int x = 0; x < 4; ++x)
+        for (int y = 0; y < 2; ++y)
+            for (int z = 0; z < 2; ++z)
+                for (const Vector3d& b : basis)
+                    positions.push_back(b + Vector3d(x, y * s, z * c));
+    return positions;
+}
+
+/// The signed distance of a packing's pair (0, 1) moved by t dq (dof's layout; strain affine).
+double movedDistance(const Packing& packing, const DegreesOfFreedom& dof, const Eigen::VectorXd& dq,
+                     double t) {
+    Matrix3d rotation[2];
+    for (int k = 0; k < 2; ++k) {
+        rotation[k] = packing.orientations[k].toRotationMatrix();
+        if (!dof.rotations) continue;
+        const Vector3d theta = t * dq.segment<3>(dof.rotation(k));
+        rotation[k] = Eigen::AngleAxisd(theta.norm(), theta.normalized()) * rotation[k];
+    }
+    const Vector3d d = packing.positions[1] - packing.positions[0];
+    Matrix3d strain;
+    strain << dq[dof.strainComponent(0)], dq[dof.strainComponent(5)], dq[dof.strainComponent(4)],
+        dq[dof.strainComponent(5)], dq[dof.strainComponent(1)], dq[dof.strainComponent(3)],
+        dq[dof.strainComponent(4)], dq[dof.strainComponent(3)], dq[dof.strainComponent(2)];
+    const Vector3d moved = d + t * (strain * d + dq.segment<3>(dof.translation(1)) -
+                                    dq.segment<3>(dof.translation(0)));
+    return signedDistance({packing.shape(), rotation[0], rotation[1], moved}).signedDistance;
+}
+
+TEST(RigidityMatrix, GapChangesAreTheDerivativesOfTheExactSignedDistance) {
+    Random random(7);
+    for (const double p : {0.85, 1.0, 1.5, 3.0}) {
+        for (int trial = 0; trial < 10; ++trial) {
+            Packing packing;
+            packing.p = p;
+            packing.boxLength = 10.0;
+            packing.orientations = {random.rotation(), random.rotation()};
+            const Vector3d u = random.normalVector().normalized();
+            const double touching =
+                1.0 / scaleFactor({packing.shape(), packing.orientations[0].toRotationMatrix(),
+                                   packing.orientations[1].toRotationMatrix(), u})
+                          .scaleFactor;
+            packing.positions = {Vector3d::Constant(5.0),
+                                 Vector3d::Constant(5.0) + (touching + 1e-4) * u};
+            const RigidityNetwork network = networkOf(packing, {1e-3, 1});
+            ASSERT_EQ(network.contacts.size(), 1u);
+            const DegreesOfFreedom dof = degreesOfFreedom(network, JammingCategory::Strict);
+            EXPECT_EQ(dof.count(), p == 1.0 ? 12 : 18);
+            Eigen::VectorXd dq(dof.count());
+            for (Eigen::Index k = 0; k < dq.size(); ++k)
+                dq[k] = random.normal();
+            const double h = 1e-5;
+            const double numeric =
+                (movedDistance(packing, dof, dq, h) - movedDistance(packing, dof, dq, -h)) /
+                (2.0 * h);
+            const double analytic =
+                (rigidityMatrix(network, JammingCategory::Strict).transpose() * dq)[0];
+            EXPECT_NEAR(analytic, numeric, 1e-6 * dq.norm()) << "p " << p << " trial " << trial;
+        }
+    }
+}
+
+TEST(RigidityMatrix, LocalSplitsEachContactIntoTheTwoParticlesTests) {
+    const RigidityNetwork network = networkOf(simpleCubic(3));
+    const Eigen::SparseMatrix<double> collective =
+        rigidityMatrix(network, JammingCategory::Collective);
+    const Eigen::SparseMatrix<double> local = rigidityMatrix(network, JammingCategory::Local);
+    ASSERT_EQ(local.cols(), 2 * collective.cols());
+    for (Eigen::Index c = 0; c < collective.cols(); ++c)
+        EXPECT_LT((Eigen::VectorXd(local.col(2 * c)) + Eigen::VectorXd(local.col(2 * c + 1)) -
+                   Eigen::VectorXd(collective.col(c)))
+                      .norm(),
+                  1e-15);
+}
+
+TEST(RigidityNetwork, DirectSphereNetworkMatchesTheContactNetworks) {
+    const Packing fcc = readTextPacking(kData + "/fcc-spheres.txt");
+    const RigidityNetwork fromContacts = networkOf(fcc);
+    const RigidityNetwork direct = sphereNetwork(fcc.positions, Vector3d::Constant(fcc.boxLength));
+    ASSERT_EQ(fromContacts.contacts.size(), direct.contacts.size());
+    EXPECT_EQ(fromContacts.backbone, direct.backbone);
+    EXPECT_FALSE(fromContacts.rotations);
+    for (std::size_t c = 0; c < direct.contacts.size(); ++c) {
+        const RigidContact &a = fromContacts.contacts[c], &b = direct.contacts[c];
+        EXPECT_EQ(a.i, b.i);
+        EXPECT_EQ(a.j, b.j);
+        EXPECT_LT((a.normal - b.normal).norm(), 1e-14);
+        EXPECT_LT((a.leverI - b.leverI).norm() + (a.leverJ - b.leverJ).norm(), 1e-14);
+        EXPECT_LT(a.gap, 1e-14);
+    }
+}
+
+TEST(JammingCategories, SimpleCubicIsLocallyButNotCollectivelyJammedARowSlides) {
+    const Packing packing = simpleCubic(4);
+    const RigidityNetwork network = networkOf(packing);
+    EXPECT_EQ(test(network, JammingCategory::Local).verdict, FirstOrderVerdict::Jammed);
+    const JammingResult collective = test(network, JammingCategory::Collective);
+    EXPECT_EQ(collective.verdict, FirstOrderVerdict::Unjammed);
+    EXPECT_FALSE(collective.opening); // no contact opens at first order: rows slide
+    EXPECT_LT(collective.largestOpening, 1e-9);
+    ASSERT_TRUE(collective.flex);
+    const UnjammingMotion& flex = *collective.flex;
+    EXPECT_LT(flex.gapChange.cwiseAbs().maxCoeff(), 1e-9);
+    // Every row along axis k moves rigidly along k: the k-components agree within the row.
+    for (int a = 0; a < 64; ++a)
+        for (int b = 0; b < 64; ++b)
+            for (int k = 0; k < 3; ++k) {
+                const Vector3d d = packing.positions[b] - packing.positions[a];
+                if (std::abs(d[(k + 1) % 3]) + std::abs(d[(k + 2) % 3]) > 0.0) continue;
+                EXPECT_NEAR(flex.displacement[a][k], flex.displacement[b][k], 1e-9);
+            }
+    EXPECT_GE(flex.moving.size(), 4u); // at least one whole row of 4
+    EXPECT_EQ(test(network, JammingCategory::Strict).verdict, FirstOrderVerdict::Unjammed);
+}
+
+TEST(JammingCategories, SimpleCubicVacancyFreesItsSixNeighbours) {
+    Packing packing = simpleCubic(4);
+    packing.positions.erase(packing.positions.begin());
+    packing.orientations.pop_back();
+    const RigidityNetwork network = networkOf(packing);
+    const JammingResult local = test(network, JammingCategory::Local);
+    EXPECT_EQ(local.verdict, FirstOrderVerdict::Unjammed);
+    ASSERT_TRUE(local.opening);
+    // The vacancy's neighbours (1,0,0), (3,0,0), (0,1,0), (0,3,0), (0,0,1), (0,0,3), indexed
+    // x 16 + y 4 + z - 1 after the erased particle 0.
+    EXPECT_EQ(local.freed, (std::vector<int>{0, 2, 3, 11, 15, 47}));
+}
+
+TEST(JammingCategories, FaceCentredCubicIsStrictlyJammed) {
+    const RigidityNetwork network = networkOf(readTextPacking(kData + "/fcc-spheres.txt"));
+    for (const JammingCategory category :
+         {JammingCategory::Local, JammingCategory::Collective, JammingCategory::Strict}) {
+        const JammingResult result = test(network, category);
+        EXPECT_EQ(result.verdict, FirstOrderVerdict::Jammed) << static_cast<int>(category);
+        EXPECT_LT(result.largestOpening, 1e-9);
+        EXPECT_TRUE(result.freed.empty());
+    }
+    EXPECT_EQ(test(network, JammingCategory::Collective).isostaticDeficit, 3 * 108 - 3 - 648);
+}
+
+TEST(JammingCategories, HexagonalClosePackedIsStrictlyJammed) {
+    Vector3d box;
+    const std::vector<Vector3d> positions = hexagonalClosePacked(box);
+    const RigidityNetwork network = sphereNetwork(positions, box);
+    ASSERT_EQ(network.contacts.size(), 6u * positions.size());
+    for (const JammingCategory category :
+         {JammingCategory::Local, JammingCategory::Collective, JammingCategory::Strict})
+        EXPECT_EQ(test(network, category).verdict, FirstOrderVerdict::Jammed)
+            << static_cast<int>(category);
+}
+
+TEST(JammingCategories, BodyCentredCubicIsLocallyButNotCollectivelyJammedSheetsSlide) {
+    const Packing packing = bodyCentredCubic(4);
+    const RigidityNetwork network = networkOf(packing);
+    ASSERT_EQ(network.contacts.size(), 4u * packing.size());
+    EXPECT_EQ(test(network, JammingCategory::Local).verdict, FirstOrderVerdict::Jammed);
+    const JammingResult collective = test(network, JammingCategory::Collective);
+    EXPECT_EQ(collective.verdict, FirstOrderVerdict::Unjammed);
+    EXPECT_FALSE(collective.opening); // the uniform self-stress: nothing opens at first order
+    EXPECT_TRUE(collective.flex);
+    EXPECT_EQ(test(network, JammingCategory::Strict).verdict, FirstOrderVerdict::Unjammed);
+    // The flex in closed form: the (1 -1 0) sheet x - y = 0 (mod L) slides along [1 1 0].
+    const DegreesOfFreedom dof = degreesOfFreedom(network, JammingCategory::Collective);
+    Eigen::VectorXd sheet = Eigen::VectorXd::Zero(dof.count());
+    int moved = 0;
+    for (int k = 0; k < dof.particles; ++k) {
+        const Vector3d& r = packing.positions[k];
+        const double offset = std::remainder(r.x() - r.y(), packing.boxLength);
+        if (std::abs(offset) > 1e-9) continue;
+        sheet.segment<3>(dof.translation(k)) = Vector3d(1.0, 1.0, 0.0);
+        ++moved;
+    }
+    EXPECT_EQ(moved, 2 * 4 * 4); // two atoms per cell on the sheet, 4 x 4 cells
+    EXPECT_LT((rigidityMatrix(network, JammingCategory::Collective).transpose() * sheet)
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-14);
+}
+
+/// The fcc scene with the contacts of particle `loose` on its +x side left out of the network:
+/// it keeps 8 contacts, so it is no rattler, but nothing holds it along +x.
+TEST(JammingCategories, AParticleWithContactsInOneHalfSpaceIsFreedAndMovesAlone) {
+    const Packing packing = readTextPacking(kData + "/fcc-spheres.txt");
+    ContactResult contacts = ContactNetwork({}).compute(packing);
+    const int loose = 5;
+    ContactResult kept = contacts;
+    kept.contacts.clear();
+    kept.gaps.clear();
+    kept.normals.clear();
+    kept.points.clear();
+    for (std::size_t c = 0; c < contacts.contacts.size(); ++c) {
+        const auto [i, j] = contacts.contacts[c];
+        const double outward =
+            i == loose ? contacts.normals[c].x() : (j == loose ? -contacts.normals[c].x() : 0.0);
+        if (outward > 0.1) continue;
+        kept.contacts.push_back(contacts.contacts[c]);
+        kept.gaps.push_back(contacts.gaps[c]);
+        kept.normals.push_back(contacts.normals[c]);
+        kept.points.push_back(contacts.points[c]);
+    }
+    ASSERT_EQ(kept.contacts.size(), contacts.contacts.size() - 4);
+    const RigidityNetwork network = backboneNetwork(packing, kept);
+
+    const JammingResult local = test(network, JammingCategory::Local);
+    EXPECT_EQ(local.verdict, FirstOrderVerdict::Unjammed);
+    EXPECT_EQ(local.freed, std::vector<int>{loose});
+    for (const JammingCategory category : {JammingCategory::Collective, JammingCategory::Strict}) {
+        const JammingResult result = test(network, category);
+        EXPECT_EQ(result.verdict, FirstOrderVerdict::Unjammed);
+        ASSERT_TRUE(result.opening);
+        EXPECT_EQ(result.opening->moving, std::vector<int>{loose});
+        EXPECT_LT((result.opening->displacement[loose] - Vector3d(1.0, 0.0, 0.0)).norm(), 1e-9);
+        EXPECT_NEAR(result.largestOpening, 1.0 / std::sqrt(2.0), 1e-9);
+    }
+}
+
+TEST(JammingCategories, GapsAllowMotionsOnlyOfTheirOwnSize) {
+    // Lattice constant 1 + 1e-10: every contact has a gap of 1e-10 D.
+    const RigidityNetwork network =
+        networkOf(sphereLattice(1.0 + 1e-10, 4, {Vector3d::Zero()}), {1e-9, 4});
+    JammingParameters parameters;
+    parameters.useGaps = true;
+    // Delta far above the gaps: the cage's motions lie below the tolerance, as if ideal.
+    EXPECT_EQ(test(network, JammingCategory::Local, parameters).verdict, FirstOrderVerdict::Jammed);
+    // Delta of the gaps' order: a particle crosses its cage, opening a contact by a gap.
+    parameters.maxStep = 1e-9;
+    const JammingResult cage = test(network, JammingCategory::Local, parameters);
+    EXPECT_EQ(cage.verdict, FirstOrderVerdict::Unjammed);
+    EXPECT_GT(cage.largestOpening, 0.5e-10);
+    EXPECT_LT(cage.largestOpening, 2.0e-10 + 1e-15);
+}
+
+TEST(JammingCategories, AlignedSuperballLatticeRotatesAtFirstOrderOnly) {
+    // p = 1.5 face to face: the normals pass through the centres, so every rotation is a flex;
+    // whether it is blocked is a question of curvature (second order).
+    const RigidityNetwork network = networkOf(readTextPacking(kData + "/sc-lattice-p1.5.txt"));
+    ASSERT_TRUE(network.rotations);
+    for (const JammingCategory category : {JammingCategory::Local, JammingCategory::Collective}) {
+        const JammingResult result = test(network, category);
+        EXPECT_EQ(result.verdict, FirstOrderVerdict::Undecided) << static_cast<int>(category);
+        EXPECT_FALSE(result.opening);
+        ASSERT_TRUE(result.flex);
+        EXPECT_EQ(result.flex->rotation.size(), 125u);
+        EXPECT_TRUE(result.freed.empty());
+    }
+}
+
+TEST(JammingTest, RejectsInvalidParametersAndAnEmptyBackbone) {
+    const auto with = [](double maxStep, double motionTolerance) {
+        JammingParameters parameters;
+        parameters.maxStep = maxStep;
+        parameters.motionTolerance = motionTolerance;
+        return parameters;
+    };
+    EXPECT_THROW(JammingTest(with(0.0, 1e-6)), std::invalid_argument);
+    EXPECT_THROW(JammingTest(with(INFINITY, 1e-6)), std::invalid_argument);
+    EXPECT_THROW(JammingTest(with(1.0, 1.0)), std::invalid_argument);
+    EXPECT_THROW(JammingTest(with(1.0, 1e-8)), std::invalid_argument); // the solver's 1e-9
+    EXPECT_NO_THROW(JammingTest(with(1e-9, 1e-6)));
+    RigidityNetwork empty;
+    empty.packingSize = 3;
+    EXPECT_THROW(JammingTest({}).compute(empty, JammingCategory::Collective),
+                 std::invalid_argument);
+    const Packing packing = simpleCubic(3);
+    ContactResult wrong = ContactNetwork({}).compute(simpleCubic(4));
+    EXPECT_THROW(backboneNetwork(packing, wrong), std::invalid_argument);
+}
+
+TEST(JammingCategories, MrjSpheresAreLocallyJammedWhereTheJamChecksHemisphereTestSaysSo) {
+    // The jam check's network (its tolerance at the recorded pressure, 1e-10 D: sbanalyze's
+    // default). Collective and strict: bench/bench_jamming (minutes; docs/jamming.md §5).
+    const Packing packing = readPacking(kData + "/mrj-spheres-5000.h5");
+    const RigidityNetwork network =
+        backboneNetwork(packing, checkJam(packing, *packing.reducedPressure).contacts);
+    const JammingResult local = test(network, JammingCategory::Local);
+    std::vector<std::vector<Vector3d>> normals(packing.size());
+    for (const RigidContact& c : network.contacts) {
+        normals[network.backbone[c.i]].push_back(c.normal);
+        normals[network.backbone[c.j]].push_back(-c.normal);
+    }
+    std::vector<int> untrapped;
+    for (const int k : network.backbone)
+        if (!isLocallyTrapped(normals[k])) untrapped.push_back(k);
+    EXPECT_EQ(untrapped.size(), 5u); // docs/design.md §3, "Jam check"
+    EXPECT_EQ(local.freed, untrapped);
+    EXPECT_LT(local.seconds, 30.0);
+}
+
+} // namespace
+} // namespace sbpack
