@@ -122,20 +122,65 @@ bool moves(const UnjammingMotion& motion, const RigidityNetwork& network,
     return !motion.moving.empty() || boxMotion > parameters.motionTolerance * parameters.maxStep;
 }
 
-/// The particles an opening frees, and for spheres those a flex moves (sorted, unique).
-std::vector<int> freedParticles(const JammingResult& result, const RigidityNetwork& network) {
-    std::vector<int> freed;
-    if (result.opening) {
-        const double threshold = result.parameters.motionTolerance * result.parameters.maxStep;
-        const Eigen::VectorXd& ds = result.opening->gapChange;
-        const bool local = result.category == JammingCategory::Local;
-        for (int gap = 0; gap < ds.size(); ++gap) {
-            if (ds[gap] <= threshold) continue;
-            const RigidContact& contact = network.contacts[contactOf(gap, result.category)];
-            if (!local || gap % 2 == 0) freed.push_back(network.backbone[contact.i]);
-            if (!local || gap % 2 == 1) freed.push_back(network.backbone[contact.j]);
+/// The two ends of column `gap` of A: the particle whose test it is first (Local: the other end
+/// is held fixed there, -1).
+std::pair<int, int> endsOf(int gap, const RigidityNetwork& network, JammingCategory category) {
+    const RigidContact& c = network.contacts[contactOf(gap, category)];
+    const int i = network.backbone[c.i], j = network.backbone[c.j];
+    if (category != JammingCategory::Local) return {i, j};
+    return gap % 2 == 0 ? std::pair{i, -1} : std::pair{j, -1};
+}
+
+/// Whether column `gap` stays closed (ds <= threshold) while its bodies slide or roll on each
+/// other: then curvature decides its second-order change, which for p != 1 can close it (a
+/// sphere contact only opens at second order, by |d_perp|^2 / 2D).
+bool slidesClosed(const UnjammingMotion& motion, const RigidityNetwork& network,
+                  JammingCategory category, int gap, double threshold) {
+    if (motion.gapChange[gap] > threshold) return false;
+    const RigidContact& c = network.contacts[contactOf(gap, category)];
+    const bool local = category == JammingCategory::Local;
+    const auto rigidMotion = [&](int backbone, bool held) {
+        const int k = network.backbone[backbone];
+        return held ? std::pair{Vector3d::Zero().eval(), Vector3d::Zero().eval()}
+                    : std::pair{motion.displacement[k], motion.rotation[k]};
+    };
+    const auto [dri, dti] = rigidMotion(c.i, local && gap % 2 == 1);
+    const auto [drj, dtj] = rigidMotion(c.j, local && gap % 2 == 0);
+    const Vector3d slip =
+        drj + dtj.cross(c.leverJ) - dri - dti.cross(c.leverI) + motion.strain * c.boxShift;
+    return std::max(slip.lpNorm<Eigen::Infinity>(), (dtj - dti).lpNorm<Eigen::Infinity>()) >
+           threshold;
+}
+
+/// The particles an opening certainly frees: the ends of its opening contacts (Local: the end
+/// whose test it is). For p != 1 only where no closed contact slides (slidesClosed): in the
+/// local test per particle, in the others for the whole motion.
+std::vector<int> openedParticles(const UnjammingMotion& opening, const RigidityNetwork& network,
+                                 JammingCategory category, double threshold) {
+    std::vector<char> opened(network.packingSize, 0), sliding(network.packingSize, 0);
+    bool anySliding = false;
+    for (int gap = 0; gap < opening.gapChange.size(); ++gap) {
+        const auto [a, b] = endsOf(gap, network, category);
+        if (opening.gapChange[gap] > threshold) {
+            opened[a] = 1;
+            if (b >= 0) opened[b] = 1;
+        } else if (network.rotations && slidesClosed(opening, network, category, gap, threshold)) {
+            sliding[a] = 1;
+            anySliding = anySliding || category != JammingCategory::Local;
         }
     }
+    std::vector<int> freed;
+    for (int k = 0; k < network.packingSize; ++k)
+        if (opened[k] && !sliding[k] && !anySliding) freed.push_back(k);
+    return freed;
+}
+
+/// The particles an opening certainly frees and, for spheres, those a flex moves (sorted).
+std::vector<int> freedParticles(const JammingResult& result, const RigidityNetwork& network) {
+    const double threshold = result.parameters.motionTolerance * result.parameters.maxStep;
+    std::vector<int> freed;
+    if (result.opening)
+        freed = openedParticles(*result.opening, network, result.category, threshold);
     if (result.flex && !network.rotations)
         freed.insert(freed.end(), result.flex->moving.begin(), result.flex->moving.end());
     std::sort(freed.begin(), freed.end());
@@ -143,9 +188,13 @@ std::vector<int> freedParticles(const JammingResult& result, const RigidityNetwo
     return freed;
 }
 
+/// Unjammed where a particle is certainly freed, or for spheres by any motion (a sphere packing
+/// is jammed iff first-order rigid); undecided where only motions that second order can block
+/// remain (p != 1).
 FirstOrderVerdict verdictOf(const JammingResult& result, bool rotations) {
-    if (result.opening || (result.flex && !rotations)) return FirstOrderVerdict::Unjammed;
-    return result.flex ? FirstOrderVerdict::Undecided : FirstOrderVerdict::Jammed;
+    if (!result.freed.empty()) return FirstOrderVerdict::Unjammed;
+    if (!result.opening && !result.flex) return FirstOrderVerdict::Jammed;
+    return rotations ? FirstOrderVerdict::Undecided : FirstOrderVerdict::Unjammed;
 }
 
 } // namespace
@@ -197,8 +246,8 @@ JammingResult JammingTest::compute(const RigidityNetwork& network, JammingCatego
         motionOf(maximise(program, method, parameters_.solver), a, network, dof, parameters_);
     if (moves(flex, network, parameters_)) result.flex = std::move(flex);
 
-    result.verdict = verdictOf(result, network.rotations);
     result.freed = freedParticles(result, network);
+    result.verdict = verdictOf(result, network.rotations);
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

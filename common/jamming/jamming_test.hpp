@@ -33,14 +33,15 @@ struct JammingParameters {
 /// The answer at first order.
 enum class FirstOrderVerdict {
     Jammed,   ///< no nontrivial first-order motion: neither an opening nor a flex
-    Unjammed, ///< a motion opens a contact; or, for spheres, a flex (Connelly 1988: a sphere
-              ///< packing is jammed iff it is first-order rigid; Donev et al. 2004 Sec. 3)
-    Undecided ///< p != 1: no contact opens, but flexes exist: the curvatures decide (second order)
+    Unjammed, ///< a particle is certainly freed (JammingResult::freed); for spheres any opening
+              ///< or flex (Connelly 1988: a sphere packing is jammed iff it is first-order rigid)
+    Undecided ///< p != 1: an opening along which a closed contact slides or rolls, or a flex:
+              ///< the curvatures decide at second order
 };
 
 /// A solution of one program, in units of D, per packing particle (rattlers do not move).
 struct UnjammingMotion {
-    std::vector<Vector3d> displacement; ///< dr
+    std::vector<Vector3d> displacement; ///< dr; Strict: the whole, eps r included
     std::vector<Vector3d> rotation;     ///< dtheta, radians; empty for spheres
     Matrix3d strain = Matrix3d::Zero(); ///< eps (Strict)
     Eigen::VectorXd gapChange;          ///< ds = A^T dq, one per column of A
@@ -55,7 +56,8 @@ struct JammingResult {
     std::optional<UnjammingMotion> opening; ///< when a contact opens by > tolerance Delta
     std::optional<UnjammingMotion> flex;    ///< when a flex moves by > tolerance Delta
     /// Packing indices of the particles an opening contact frees (its two ends; Local: the end
-    /// whose test it belongs to) and, for spheres, those the flex moves.
+    /// whose test it is), for p != 1 only where no closed contact slides or rolls (in the local
+    /// test per particle, else for the whole motion), and, for spheres, those the flex moves.
     std::vector<int> freed;
     /// The particle held fixed against the trivial translations (Collective, Strict), or -1.
     int fixedParticle = -1;

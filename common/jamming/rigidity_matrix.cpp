@@ -20,16 +20,18 @@ void addBody(Triplets& entries, const DegreesOfFreedom& dof, int particle, doubl
     }
 }
 
-/// The strain's part n . (eps r_ij) of ds_c: n_k r_k on eps_kk, n_a r_b + n_b r_a on eps_ab.
+/// The strain's part n . (eps w) of ds_c, w the box shift (none inside the box): n_k w_k on
+/// eps_kk, n_a w_b + n_b w_a on eps_ab.
 void addStrain(Triplets& entries, const DegreesOfFreedom& dof, const RigidContact& contact,
                int column) {
     const Vector3d& n = contact.normal;
-    const Vector3d& r = contact.separation;
+    const Vector3d& w = contact.boxShift;
+    if (w.isZero()) return;
     const int offDiagonal[3][2] = {{1, 2}, {0, 2}, {0, 1}};
     for (int k = 0; k < 3; ++k) {
-        entries.emplace_back(dof.strainComponent(k), column, n[k] * r[k]);
+        entries.emplace_back(dof.strainComponent(k), column, n[k] * w[k]);
         const int a = offDiagonal[k][0], b = offDiagonal[k][1];
-        entries.emplace_back(dof.strainComponent(3 + k), column, n[a] * r[b] + n[b] * r[a]);
+        entries.emplace_back(dof.strainComponent(3 + k), column, n[a] * w[b] + n[b] * w[a]);
     }
 }
 

@@ -5,7 +5,10 @@
 // rho = x - r to the contact point x,
 //   ds_c = n . [(dr_j + dtheta_j x rho_j) - (dr_i + dtheta_i x rho_i)] + n . (eps r_ij),
 // with the rotations only for p != 1 (a sphere's rotation moves no gap: its columns are left out)
-// and the symmetric strain eps of the box only for strict jamming.
+// and the symmetric strain eps of the box only for strict jamming. There the unknowns are the
+// particles' whole displacements, dr'_i = dr_i + eps r_i with r_i in the box, so that the strain
+// enters only the contacts that cross the box's faces, by n . (eps (r_ij - (r_j - r_i))): a
+// strain column touches those few rows, not all (docs/jamming.md §3, "Method").
 
 #include "jamming/rigidity_network.hpp"
 
@@ -20,8 +23,9 @@ enum class JammingCategory {
     Strict,     ///< all particles together with a volume-nonincreasing strain of the box
 };
 
-/// The layout of dq (the rows of A): 3 translations per backbone particle, then 3 rotations per
-/// particle (p != 1), then the strain eps_xx, eps_yy, eps_zz, eps_yz, eps_xz, eps_xy (Strict).
+/// The layout of dq (the rows of A): 3 translations per backbone particle (Strict: dr'), then 3
+/// rotations per particle (p != 1), then the strain eps_xx, eps_yy, eps_zz, eps_yz, eps_xz,
+/// eps_xy (Strict).
 struct DegreesOfFreedom {
     int particles = 0;
     bool rotations = false;

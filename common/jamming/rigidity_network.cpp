@@ -36,11 +36,12 @@ RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& net
     for (std::size_t c = 0; c < network.contacts.size(); ++c) {
         const auto [i, j] = network.contacts[c];
         if (network.rattler[i] || network.rattler[j]) continue;
-        const Vector3d separation =
-            minimumImage(packing.positions[j] - packing.positions[i], packing.boxLength) / diameter;
+        const Vector3d inBox = (packing.positions[j] - packing.positions[i]) / diameter;
+        const Vector3d separation = minimumImage(inBox, result.boxLength);
         const Vector3d point = network.points[c] / diameter;
         result.contacts.push_back({backboneIndex[i], backboneIndex[j], network.normals[c], point,
-                                   point - separation, separation, std::max(network.gaps[c], 0.0)});
+                                   point - separation, separation - inBox,
+                                   std::max(network.gaps[c], 0.0)});
     }
     return result;
 }

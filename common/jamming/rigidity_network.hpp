@@ -2,7 +2,7 @@
 // The backbone's contact network as the first-order jamming tests see it (docs/jamming.md §2):
 // the particles that are not rattlers and, per contact between two of them, what the rigidity
 // matrix needs: the unit normal, the lever arms from both centres to the contact point, the
-// minimum-image separation of the centres and the gap. Lengths in units of D.
+// lattice vector of the minimum image and the gap. Lengths in units of D.
 
 #include "contacts/contact_network.hpp"
 #include "packing/packing.hpp"
@@ -13,13 +13,15 @@ namespace sbpack {
 
 /// Contact c between backbone particles i and j.
 struct RigidContact {
-    int i = 0;                              ///< backbone index of the first particle
-    int j = 0;                              ///< backbone index of the second
-    Vector3d normal = Vector3d::Zero();     ///< n, unit, from i to j
-    Vector3d leverI = Vector3d::Zero();     ///< rho_i = x - r_i
-    Vector3d leverJ = Vector3d::Zero();     ///< rho_j = x - r_j
-    Vector3d separation = Vector3d::Zero(); ///< r_ij = r_j - r_i, minimum image
-    double gap = 0.0;                       ///< g_c >= 0: overlaps count as touching
+    int i = 0;                          ///< backbone index of the first particle
+    int j = 0;                          ///< backbone index of the second
+    Vector3d normal = Vector3d::Zero(); ///< n, unit, from i to j
+    Vector3d leverI = Vector3d::Zero(); ///< rho_i = x - r_i
+    Vector3d leverJ = Vector3d::Zero(); ///< rho_j = x - r_j
+    /// The lattice vector the minimum image adds, r_ij - (r_j - r_i) with r in the box: 0 for
+    /// a contact inside the box.
+    Vector3d boxShift = Vector3d::Zero();
+    double gap = 0.0; ///< g_c >= 0: overlaps count as touching
 };
 
 struct RigidityNetwork {

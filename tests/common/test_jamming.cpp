@@ -67,11 +67,12 @@ RigidityNetwork sphereNetwork(const std::vector<Vector3d>& positions, const Vect
     for (int i = 0; i < network.packingSize; ++i) {
         network.backbone.push_back(i);
         for (int j = i + 1; j < network.packingSize; ++j) {
-            Vector3d d = positions[j] - positions[i];
+            const Vector3d inBox = positions[j] - positions[i];
+            Vector3d d = inBox;
             for (int k = 0; k < 3; ++k)
                 d[k] -= box[k] * std::nearbyint(d[k] / box[k]);
             if (std::abs(d.norm() - 1.0) > 1e-9) continue;
-            network.contacts.push_back({i, j, d.normalized(), 0.5 * d, -0.5 * d, d, 0.0});
+            network.contacts.push_back({i, j, d.normalized(), 0.5 * d, -0.5 * d, d - inBox, 0.0});
         }
     }
     return network;
@@ -95,28 +96,36 @@ std::vector<Vector3d> hexagonalClosePacked(Vector3d& box) {
     return positions;
 }
 
-/// The signed distance of a packing's pair (0, 1) moved by t dq (dof's layout; strain affine).
+/// eps from dq's strain components (dof's layout).
+Matrix3d strainOf(const DegreesOfFreedom& dof, const Eigen::VectorXd& dq) {
+    const auto e = [&](int k) { return dq[dof.strainComponent(k)]; };
+    Matrix3d strain;
+    strain << e(0), e(5), e(4), e(5), e(1), e(3), e(4), e(3), e(2);
+    return strain;
+}
+
+/// The signed distance of a packing's pair (0, 1) moved by t dq, in the deformed box: the images
+/// follow (I + t eps), each particle moves by t (dr'_k - eps r_k) beyond the affine field.
 double movedDistance(const Packing& packing, const DegreesOfFreedom& dof, const Eigen::VectorXd& dq,
                      double t) {
     Matrix3d rotation[2];
+    Vector3d nonAffine[2];
+    const Matrix3d strain = strainOf(dof, dq);
     for (int k = 0; k < 2; ++k) {
         rotation[k] = packing.orientations[k].toRotationMatrix();
+        nonAffine[k] = dq.segment<3>(dof.translation(k)) - strain * packing.positions[k];
         if (!dof.rotations) continue;
         const Vector3d theta = t * dq.segment<3>(dof.rotation(k));
         rotation[k] = Eigen::AngleAxisd(theta.norm(), theta.normalized()) * rotation[k];
     }
-    const Vector3d d = packing.positions[1] - packing.positions[0];
-    Matrix3d strain;
-    strain << dq[dof.strainComponent(0)], dq[dof.strainComponent(5)], dq[dof.strainComponent(4)],
-        dq[dof.strainComponent(5)], dq[dof.strainComponent(1)], dq[dof.strainComponent(3)],
-        dq[dof.strainComponent(4)], dq[dof.strainComponent(3)], dq[dof.strainComponent(2)];
-    const Vector3d moved = d + t * (strain * d + dq.segment<3>(dof.translation(1)) -
-                                    dq.segment<3>(dof.translation(0)));
+    const Vector3d d = minimumImage(packing.positions[1] - packing.positions[0], packing.boxLength);
+    const Vector3d moved = d + t * (strain * d + nonAffine[1] - nonAffine[0]);
     return signedDistance({packing.shape(), rotation[0], rotation[1], moved}).signedDistance;
 }
 
 TEST(RigidityMatrix, GapChangesAreTheDerivativesOfTheExactSignedDistance) {
     Random random(7);
+    int crossing = 0;
     for (const double p : {0.85, 1.0, 1.5, 3.0}) {
         for (int trial = 0; trial < 10; ++trial) {
             Packing packing;
@@ -128,10 +137,12 @@ TEST(RigidityMatrix, GapChangesAreTheDerivativesOfTheExactSignedDistance) {
                 1.0 / scaleFactor({packing.shape(), packing.orientations[0].toRotationMatrix(),
                                    packing.orientations[1].toRotationMatrix(), u})
                           .scaleFactor;
-            packing.positions = {Vector3d::Constant(5.0),
-                                 Vector3d::Constant(5.0) + (touching + 1e-4) * u};
+            // Across the box's corner for odd trials: the strain enters through the image.
+            const Vector3d first = Vector3d::Constant(trial % 2 ? 0.1 : 5.0);
+            packing.positions = {first, wrapIntoBox(first + (touching + 1e-4) * u, 10.0)};
             const RigidityNetwork network = networkOf(packing, {1e-3, 1});
             ASSERT_EQ(network.contacts.size(), 1u);
+            crossing += !network.contacts[0].boxShift.isZero();
             const DegreesOfFreedom dof = degreesOfFreedom(network, JammingCategory::Strict);
             EXPECT_EQ(dof.count(), p == 1.0 ? 12 : 18);
             Eigen::VectorXd dq(dof.count());
@@ -146,6 +157,7 @@ TEST(RigidityMatrix, GapChangesAreTheDerivativesOfTheExactSignedDistance) {
             EXPECT_NEAR(analytic, numeric, 1e-6 * dq.norm()) << "p " << p << " trial " << trial;
         }
     }
+    EXPECT_GE(crossing, 10); // of the 20 odd trials
 }
 
 TEST(RigidityMatrix, LocalSplitsEachContactIntoTheTwoParticlesTests) {
@@ -265,12 +277,9 @@ TEST(JammingCategories, BodyCentredCubicIsLocallyButNotCollectivelyJammedSheetsS
               1e-14);
 }
 
-/// The fcc scene with the contacts of particle `loose` on its +x side left out of the network:
-/// it keeps 8 contacts, so it is no rattler, but nothing holds it along +x.
-TEST(JammingCategories, AParticleWithContactsInOneHalfSpaceIsFreedAndMovesAlone) {
-    const Packing packing = readTextPacking(kData + "/fcc-spheres.txt");
-    ContactResult contacts = ContactNetwork({}).compute(packing);
-    const int loose = 5;
+/// `contacts` without those of particle `loose` whose normal, outward from it, has a positive
+/// x component: nothing holds it along +x, though it keeps its other contacts (no rattler).
+ContactResult withoutPlusXContacts(const ContactResult& contacts, int loose) {
     ContactResult kept = contacts;
     kept.contacts.clear();
     kept.gaps.clear();
@@ -286,6 +295,15 @@ TEST(JammingCategories, AParticleWithContactsInOneHalfSpaceIsFreedAndMovesAlone)
         kept.normals.push_back(contacts.normals[c]);
         kept.points.push_back(contacts.points[c]);
     }
+    return kept;
+}
+
+/// The fcc scene with particle `loose`'s 4 contacts on its +x side left out: 8 remain.
+TEST(JammingCategories, AParticleWithContactsInOneHalfSpaceIsFreedAndMovesAlone) {
+    const Packing packing = readTextPacking(kData + "/fcc-spheres.txt");
+    const ContactResult contacts = ContactNetwork({}).compute(packing);
+    const int loose = 5;
+    const ContactResult kept = withoutPlusXContacts(contacts, loose);
     ASSERT_EQ(kept.contacts.size(), contacts.contacts.size() - 4);
     const RigidityNetwork network = backboneNetwork(packing, kept);
 
@@ -330,6 +348,30 @@ TEST(JammingCategories, AlignedSuperballLatticeRotatesAtFirstOrderOnly) {
         ASSERT_TRUE(result.flex);
         EXPECT_EQ(result.flex->rotation.size(), 125u);
         EXPECT_TRUE(result.freed.empty());
+    }
+}
+
+TEST(JammingCategories, AnOpeningFreesASphereButLeavesASlidingSuperballUndecided) {
+    // Simple cubic, particle 5 = (0, 1, 1) without its contact with 21 = (1, 1, 1): moving along
+    // +x opens its -x contact while its 4 side contacts slide, and 21 likewise along -x.
+    // Spheres: both freed. Aligned p = 1.5 superballs: their side contacts may close at second
+    // order, so first order cannot tell.
+    Packing packing = simpleCubic(4);
+    const int loose = 5;
+    for (const double p : {1.0, 1.5}) {
+        packing.p = p;
+        const RigidityNetwork network = backboneNetwork(
+            packing, withoutPlusXContacts(ContactNetwork({}).compute(packing), loose));
+        const JammingResult local = test(network, JammingCategory::Local);
+        ASSERT_TRUE(local.opening) << "p " << p;
+        EXPECT_GT(local.opening->displacement[loose].x(), 0.5);
+        if (p == 1.0) {
+            EXPECT_EQ(local.verdict, FirstOrderVerdict::Unjammed);
+            EXPECT_EQ(local.freed, (std::vector<int>{loose, 21}));
+        } else {
+            EXPECT_EQ(local.verdict, FirstOrderVerdict::Undecided);
+            EXPECT_TRUE(local.freed.empty());
+        }
     }
 }
 

@@ -1,0 +1,96 @@
+// bench_jamming: the first-order jamming categories of a packing (issue 62; docs/jamming.md §5;
+// bench/RESULTS.md, "First-order jamming categories"). For each contact tolerance (default: the
+// jam check's at the recorded pressure) and each category: the verdict, the Maxwell count, the
+// largest first-order opening, how many particles the opening and the flex move and how spread
+// the flex is (participation ratio), the particles freed, and the wall time of both programs.
+//
+//   bench_jamming FILE [TOLERANCES] [CATEGORIES]   (e.g. 1e-10,1e-8 and lcs; default: jam check's,
+//   lcs)
+
+#include "contacts/jam_check.hpp"
+#include "io/text_io.hpp"
+#include "jamming/jamming_test.hpp"
+
+#include <cstdio>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace sbpack;
+
+namespace {
+
+/// (sum a^2)^2 / (n sum a^4) over the backbone, a the largest motion of each particle: 1 when all
+/// move alike, 1 / n when one moves.
+double participationRatio(const UnjammingMotion& motion, const RigidityNetwork& network) {
+    double second = 0.0, fourth = 0.0;
+    for (const int k : network.backbone) {
+        double a = motion.displacement[k].norm();
+        if (!motion.rotation.empty()) a = std::max(a, 0.5 * motion.rotation[k].norm());
+        second += a * a;
+        fourth += a * a * a * a;
+    }
+    return fourth > 0.0 ? second * second / (fourth * static_cast<double>(network.backbone.size()))
+                        : 0.0;
+}
+
+std::string firstFew(const std::vector<int>& particles) {
+    std::string list;
+    for (std::size_t k = 0; k < particles.size() && k < 8; ++k) {
+        if (k > 0) list += ' ';
+        list += std::to_string(particles[k]);
+    }
+    return particles.size() > 8 ? list + " ..." : list;
+}
+
+void row(const char* name, const JammingResult& r, const RigidityNetwork& network) {
+    const char* verdicts[] = {"jammed", "unjammed", "undecided (second order)"};
+    std::printf("| %s | %s | %d | %.3g | %zu | %zu | %.2f | %zu: %s | %.2f |\n", name,
+                verdicts[static_cast<int>(r.verdict)], r.isostaticDeficit, r.largestOpening,
+                r.opening ? r.opening->moving.size() : 0, r.flex ? r.flex->moving.size() : 0,
+                r.flex ? participationRatio(*r.flex, network) : 0.0, r.freed.size(),
+                firstFew(r.freed).c_str(), r.seconds);
+}
+
+std::vector<double> parseList(const std::string& text) {
+    std::vector<double> values;
+    std::stringstream stream(text);
+    for (std::string item; std::getline(stream, item, ',');)
+        values.push_back(std::stod(item));
+    return values;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (argc < 2) {
+        std::fprintf(stderr, "usage: bench_jamming FILE [TOLERANCES] [CATEGORIES]\n");
+        return 1;
+    }
+    const Packing packing = readPackingFile(argv[1]);
+    const std::vector<double> tolerances =
+        argc > 2 ? parseList(argv[2])
+                 : std::vector<double>{
+                       checkJam(packing, packing.reducedPressure.value_or(1e12)).tolerance};
+    const std::string categories = argc > 3 ? argv[3] : "lcs";
+    const JammingTest test({});
+    std::printf("%s: N = %zu, p = %g\n", argv[1], packing.size(), packing.p);
+    for (const double tolerance : tolerances) {
+        const RigidityNetwork network =
+            backboneNetwork(packing, ContactNetwork({tolerance, 4}).compute(packing));
+        std::printf("\ntolerance %.0e D: %zu backbone particles, %zu contacts\n\n", tolerance,
+                    network.backbone.size(), network.contacts.size());
+        std::printf("| category | verdict | deficit | largest opening (D) | opening moves | "
+                    "flex moves | flex PR | freed | s |\n|---|---|---|---|---|---|---|---|---|\n");
+        const std::pair<char, JammingCategory> all[] = {{'l', JammingCategory::Local},
+                                                        {'c', JammingCategory::Collective},
+                                                        {'s', JammingCategory::Strict}};
+        const char* names[] = {"local", "collective", "strict"};
+        for (const auto& [letter, category] : all)
+            if (categories.find(letter) != std::string::npos) {
+                row(names[static_cast<int>(category)], test.compute(network, category), network);
+                std::fflush(stdout);
+            }
+    }
+    return 0;
+}
