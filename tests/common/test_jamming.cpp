@@ -11,6 +11,8 @@
 #include "pair/pair_geometry.hpp"
 #include "random/random.hpp"
 
+#include "order_lattices.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -29,16 +31,7 @@ const std::string kData = SBPACK_DATA_DIR;
 
 /// Spheres of diameter 1 at the basis points (units of the lattice constant) of cells^3 cells.
 Packing sphereLattice(double latticeConstant, int cells, const std::vector<Vector3d>& basis) {
-    Packing packing;
-    packing.boxLength = cells * latticeConstant;
-    for (int x = 0; x < cells; ++x)
-        for (int y = 0; y < cells; ++y)
-            for (int z = 0; z < cells; ++z)
-                for (const Vector3d& b : basis) {
-                    packing.positions.push_back(latticeConstant * (Vector3d(x, y, z) + b));
-                    packing.orientations.push_back(Quaterniond::Identity());
-                }
-    return packing;
+    return lattices::cubicCrystal(cells, latticeConstant, basis, Vector3d::Zero());
 }
 
 Packing simpleCubic(int cells) {
