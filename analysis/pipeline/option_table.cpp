@@ -81,12 +81,11 @@ void parseThreads(Settings& s, Text option, Text v) {
 
 void parsePlanningBudget(Settings& s, Text option, Text v) {
     if (v == "none") {
-        s.spectralDensity.fft.planningBudget = std::numeric_limits<double>::infinity();
+        s.fft.planningBudget = std::numeric_limits<double>::infinity();
         return;
     }
-    s.spectralDensity.fft.planningBudget = parseNumber(option, v);
-    if (!(s.spectralDensity.fft.planningBudget >= 0.0) ||
-        !std::isfinite(s.spectralDensity.fft.planningBudget))
+    s.fft.planningBudget = parseNumber(option, v);
+    if (!(s.fft.planningBudget >= 0.0) || !std::isfinite(s.fft.planningBudget))
         throw std::invalid_argument(
             fmt::format("option {}: must be >= 0 and finite, or none", option));
 }
@@ -187,9 +186,7 @@ constexpr std::array kGridRows{
     OptionRow{"qmax", "X",
               "S(Q) and chi(Q) up to Q w <= X, w the mean width (default {}); chi also below\n"
               "the grid's Nyquist limit |n| < M/2",
-              [](Settings& s, Text o, Text v) {
-                  s.structureFactor.maxQw = s.spectralDensity.maxQw = parsePositive(o, v);
-              },
+              [](Settings& s, Text o, Text v) { s.structureFactor.maxQw = parsePositive(o, v); },
               [](const Settings& d) { return number(d.structureFactor.maxQw); }},
 };
 
@@ -234,20 +231,16 @@ constexpr std::array kHyperuniformityRows{
 
 // FFTW (docs/design.md, "FFT planning").
 constexpr std::array kFftRows{
-    OptionRow{
-        "fft-plan", "P",
-        "FFTW planning: estimate, measure or patient (default {}); measured plans are\n"
-        "kept in the wisdom file, so only the first run per size pays",
-        [](Settings& s, Text, Text v) { s.spectralDensity.fft.planning = fftPlanningFromName(v); },
-        [](const Settings& d) {
-            return std::string(fftPlanningName(d.spectralDensity.fft.planning));
-        }},
+    OptionRow{"fft-plan", "P",
+              "FFTW planning: estimate, measure or patient (default {}); measured plans are\n"
+              "kept in the wisdom file, so only the first run per size pays",
+              [](Settings& s, Text, Text v) { s.fft.planning = fftPlanningFromName(v); },
+              [](const Settings& d) { return std::string(fftPlanningName(d.fft.planning)); }},
     OptionRow{"fft-planning-budget", "SECONDS|none",
               "seconds measure/patient planning may take when the wisdom has no plan\n"
               "(default {}): planning predicted to take longer uses estimate; none:\n"
               "no limit (a measured 300^3 plan takes ~20 s once, then is wisdom)",
-              parsePlanningBudget,
-              [](const Settings& d) { return number(d.spectralDensity.fft.planningBudget); }},
+              parsePlanningBudget, [](const Settings& d) { return number(d.fft.planningBudget); }},
     OptionRow{
         "fft-precision", "double|single",
         "chi's transform on the GPU: double or single (default {}; single: cuFFT,\n"
@@ -258,7 +251,7 @@ constexpr std::array kFftRows{
               "wisdom file; none: no file; failures only warn (default\n"
               "$XDG_CACHE_HOME/sbpack/fftw-wisdom, else ~/.cache/sbpack/fftw-wisdom)",
               [](Settings& s, Text, Text v) {
-                  s.spectralDensity.fft.wisdomFile =
+                  s.fft.wisdomFile =
                       v == "none" ? std::filesystem::path() : std::filesystem::path(v);
               }},
 };
@@ -307,7 +300,7 @@ RunSettings defaultRunSettings() {
     RunSettings s;
     s.threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     s.analyses = resolveAnalyses("all");
-    s.spectralDensity.fft.wisdomFile = defaultWisdomFile();
+    s.fft.wisdomFile = defaultWisdomFile();
     return s;
 }
 
@@ -328,11 +321,9 @@ std::string runOptions(const RunSettings& settings) {
 
 std::string optionHelp(const OptionRow& row, const RunSettings& defaults) {
     std::string text(row.help);
-    if (row.dependentDefault != nullptr)
-        text =
-            fmt::format(fmt::runtime(row.help), row.shownValue(defaults), row.dependentDefault());
-    else if (row.shownValue != nullptr)
-        text = fmt::format(fmt::runtime(row.help), row.shownValue(defaults));
+    if (row.shownValue != nullptr) // a help without a second "{}" ignores the second argument
+        text = fmt::format(fmt::runtime(row.help), row.shownValue(defaults),
+                           row.dependentDefault != nullptr ? row.dependentDefault() : "");
     if (row.moreHelp != nullptr) text += row.moreHelp();
     return text;
 }

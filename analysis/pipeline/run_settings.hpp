@@ -45,11 +45,13 @@ struct RunSettings {
     ContactParameters contacts;                ///< contacts, and info
     StructureFactorParameters structureFactor; ///< sq (--qmax)
     VoxelizationParameters voxelization;       ///< voxels: the spectral grid (--voxels)
-    SpectralDensityParameters spectralDensity; ///< chi (--qmax as sq's, FFTW's planning)
+    FftSettings fft;                           ///< chi: FFTW's planning (its Q range is sq's)
     PoreSizeSettings pores;                    ///< pores (and transport, which reads them)
     HyperuniformityParameters hyperuniformity; ///< hyper
 
     bool runs(Analysis analysis) const { return analyses.count(analysis) != 0; }
+    /// chi's parameters: S(Q)'s Q range (--qmax serves both) and FFTW's planning.
+    SpectralDensityParameters spectralDensity() const { return {structureFactor.maxQw, fft}; }
     /// The pores' method: --pores; else voxel under --distribute grids, the only one the
     /// distributed grid has (docs/scale-out.md); else the pores analysis's default.
     PoreMethod poreMethod() const {

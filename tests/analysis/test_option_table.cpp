@@ -134,7 +134,7 @@ TEST(OptionTable, ParsesAndRefusesNamingTheOption) {
     EXPECT_TRUE(s.quiet);
     EXPECT_TRUE(s.plan);
     EXPECT_EQ(s.planRanks, 3);
-    EXPECT_TRUE(std::isinf(s.spectralDensity.fft.planningBudget));
+    EXPECT_TRUE(std::isinf(s.fft.planningBudget));
     EXPECT_EQ(s.requestedDevice, ComputeDevice::Cpu);
     for (const auto& [option, value, message] :
          {std::tuple{"--spread-times", "3,1", "option --spread-times: needs 0 < T1 < T2"},

@@ -56,9 +56,9 @@ RunSettings settingsFor(std::vector<fs::path> inputs, const fs::path& output) {
     s.threads = 2;
     s.voxelization.voxels = 40;
     s.pores.voxels = 40;
-    s.structureFactor.maxQw = s.spectralDensity.maxQw = 8.0;
+    s.structureFactor.maxQw = 8.0;
     s.analyses = resolveAnalyses("all");
-    s.spectralDensity.fft = {FftPlanning::Estimate, {}};
+    s.fft = {FftPlanning::Estimate, {}};
     s.quiet = true;
     return s;
 }
@@ -90,22 +90,22 @@ TEST(CommandLine, ParsesTheAnalysisOptions) {
     EXPECT_EQ(s.voxelization.voxels, 64);
     EXPECT_EQ(s.poreVoxels(), 200);
     EXPECT_DOUBLE_EQ(s.structureFactor.maxQw, 12.5);
-    EXPECT_DOUBLE_EQ(s.spectralDensity.maxQw, 12.5);
-    EXPECT_EQ(s.spectralDensity.fft.planning, FftPlanning::Estimate);
-    EXPECT_TRUE(s.spectralDensity.fft.wisdomFile.empty());
+    EXPECT_DOUBLE_EQ(s.spectralDensity().maxQw, 12.5);
+    EXPECT_EQ(s.fft.planning, FftPlanning::Estimate);
+    EXPECT_TRUE(s.fft.wisdomFile.empty());
     EXPECT_TRUE(s.quiet);
     const RunSettings pores =
         parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--pores", "exact", "--pore-points", "1000",
                                "--fft-planning-budget", "0.5"});
     EXPECT_EQ(pores.poreMethod(), PoreMethod::Exact);
     EXPECT_EQ(pores.pores.points, 1000);
-    EXPECT_DOUBLE_EQ(pores.spectralDensity.fft.planningBudget, 0.5);
+    EXPECT_DOUBLE_EQ(pores.fft.planningBudget, 0.5);
     EXPECT_EQ(pores.grids(), std::set<VoxelGrid>{VoxelGrid::Spectral}); // exact needs no grid
     EXPECT_EQ(parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--pores", "refined"}).poreMethod(),
               PoreMethod::Refined);
     EXPECT_TRUE(
         std::isinf(parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--fft-planning-budget", "none"})
-                       .spectralDensity.fft.planningBudget));
+                       .fft.planningBudget));
     const RunSettings defaults = parseAnalyzeArguments({"a.h5", "--out", "r.h5"});
     EXPECT_EQ(defaults.poreMethod(), PoreMethod::Refined);
     EXPECT_EQ(defaults.poreVoxels(), 200);
@@ -121,7 +121,7 @@ TEST(CommandLine, ParsesTheAnalysisOptions) {
         parseAnalyzeArguments({"a.h5", "--out", "r.h5", "--distribute", "grids"});
     EXPECT_EQ(distributed.poreMethod(), PoreMethod::Voxel);
     EXPECT_EQ(distributed.poreVoxels(), 500);
-    EXPECT_DOUBLE_EQ(defaults.spectralDensity.fft.planningBudget, kDefaultFftPlanningBudget);
+    EXPECT_DOUBLE_EQ(defaults.fft.planningBudget, kDefaultFftPlanningBudget);
     EXPECT_EQ(defaults.voxelization.voxels, 300);
     EXPECT_DOUBLE_EQ(defaults.structureFactor.maxQw, 30.0);
     EXPECT_EQ(defaults.analyses, resolveAnalyses("all"));

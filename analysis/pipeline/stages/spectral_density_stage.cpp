@@ -19,7 +19,7 @@ StageMemory spectralDensityMemory(const Packing& packing, const RunSettings& set
     double bytes = SpectralDensity::memoryEstimateBytes(m);
     if (packing.shape().isSphere()) {
         const int shell = SpectralDensity::maxShellFor(
-            settings.spectralDensity.maxQw, packing.boxLength, packing.shape().meanWidth(), m);
+            settings.structureFactor.maxQw, packing.boxLength, packing.shape().meanWidth(), m);
         bytes += collectiveDensityBytes(packing, std::max(shell, 1));
     }
     return {bytes, fmt::format("FFT grid {}^3", m), "--voxels"};
@@ -70,7 +70,7 @@ SpectralDensityResult wholeGrid(FileContext& context, const SpectralDensityParam
 } // namespace
 
 bool runSpectralDensity(FileContext& context, schema::Record& record) {
-    const SpectralDensityParameters& parameters = context.settings().spectralDensity;
+    const SpectralDensityParameters parameters = context.settings().spectralDensity();
     DistributionFigures figures;
     SpectralDensityResult s;
     if (context.grids() != nullptr)
