@@ -106,14 +106,15 @@ def _analysis_class(row, options):
     result = row["python_class"] + "Result"
     return (f"class {row['python_class']}(Analysis):\n"
             f"    \"\"\"{doc}\n    \"\"\"\n\n"
-            f"    _compute = {row['name']!r}\n"
-            f"    _result = {result}\n\n"
+            f"    _compute = {row['name']!r}\n\n"
             f"    def __init__(self, *, {parameters}):\n"
             f"        super().__init__({arguments})\n\n"
             f"    def compute(self, packing, input=\"<python>\") -> {result}:\n"
             f"        \"\"\"Runs the analysis on ``packing`` (an sbpack.Packing) as sbanalyze "
             f"would; ``input`` names it\n"
-            f"        in the results (``file['input']``).\"\"\"\n"
+            f"        in the results (``file['input']``). The GIL is released; Ctrl-C stops it "
+            f"at its next chunk\n"
+            f"        (KeyboardInterrupt).\"\"\"\n"
             f"        return {result}(self._analyzer.compute(packing, input))\n")
 
 

@@ -39,8 +39,7 @@ class Result:
 class Analysis:
     """One analysis of sbanalyze, set up once and computed on any number of packings."""
 
-    _compute = ""  # the --compute name
-    _result = Result
+    _compute = ""  # the --compute name; each class's compute() returns its result class
 
     def __init__(self, **options):
         args = ["--compute", self._compute]
@@ -53,12 +52,6 @@ class Analysis:
     def threads(self):
         """The threads the analysis runs on (``threads``, else the hardware's)."""
         return self._analyzer.threads
-
-    def compute(self, packing, input="<python>"):
-        """Runs the analysis on ``packing`` (an sbpack.Packing); returns its result object.
-        ``input`` is the name the results give the packing (``file['input']``). The GIL is
-        released; Ctrl-C stops it at its next chunk (KeyboardInterrupt)."""
-        return self._result(self._analyzer.compute(packing, input))
 
     def __repr__(self):
         return f"<sbpack.{type(self).__name__} (--compute {self._compute})>"
