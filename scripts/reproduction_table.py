@@ -6,7 +6,10 @@ paper's phi, Z and phi_R (data/mst-reference-values.csv), with issue 18's accept
 paper's +- 2 sd band) and the cost of the packings (sbgen's CPU seconds, from each input's
 provenance when the input is still there).
 
-Table 2, when the results have them: the mean width w / D (D = 2R, paper Eq. w), the pore-size
+Table 2, when the results have them: the order metrics and the verdict (docs/order-metrics.md).
+Table 3, when the results have them: where the contacts sit on the particles (the regions of
+their ends and the pair types, docs/contact-types.md).
+Table 4, when the results have them: the mean width w / D (D = 2R, paper Eq. w), the pore-size
 moments and transport bounds in units of w (paper Eqs. 17-20), and the hyperuniformity fit
 (alpha from the spreadability, a0, a1 and H from chi_V = a0 + a1 Q^alpha; the paper's a0 in
 1e-4 w^3, a1 in 1e-3, H in 1e-3, as printed in its Table tab:fit).
@@ -139,6 +142,19 @@ def order_row(results, group):
             f"{ordered_count(results, group)} of {n} |")
 
 
+REGIONS = ("axis", "edge", "diagonal")
+PAIRS = [(a, b) for i, a in enumerate(REGIONS) for b in REGIONS[i:]]  # the schema's order
+
+
+def contact_types_row(group):
+    n = int(group.attrs["n_files"])
+    ends = " | ".join(pm(attr(group, "contacts", f"{r}_fraction"), 1, 3, n) for r in REGIONS)
+    pairs = " | ".join(pm(attr(group, "contacts", f"{a}_{b}_fraction"), 1, 3, n)
+                       for a, b in PAIRS)
+    return (f"| {float(group.attrs['p']):g} | {int(group.attrs['n_particles'])} | {n} | "
+            f"{pm(attr(group, 'contacts', 'axis_angle_mean'), 1, 2, n)} | {ends} | {pairs} |")
+
+
 STRUCTURE_HEADER = ("p", "N", "n", "phi (ours)", "phi (paper)", "phi ok", "Z (ours)", "Z (paper)",
                     "Z ok", "phi_R % (ours)", "phi_R % (paper)", "phi_R ok",
                     "phi_R ok (both errors)", "sbgen CPU s (mean / max)")
@@ -174,6 +190,22 @@ ORDER_NOTE = (
     "reports none of them.")
 
 
+CONTACT_TYPES_HEADER = (("p", "N", "n", "mean theta (deg)")
+                        + tuple(f"{r} ends" for r in REGIONS)
+                        + tuple(f"{a}-{b}" for a, b in PAIRS))
+CONTACT_TYPES_NOTE = (
+    "Where the contacts between non-rattlers sit on the particles (sbanalyze --compute contacts, "
+    "docs/contact-types.md): theta is the angle between an end's body-frame normal and the "
+    "nearest body axis; an end's region is the nearest symmetry direction, <100> axis (the "
+    "cube's face for p > 1, the octahedron's vertex for p < 1), <110> edge, <111> diagonal (the "
+    "cube's vertex, the octahedron's face); the pair columns are the fractions of the contacts "
+    "by the regions of their two ends. Normals uniform on the sphere (the sphere limit, Eq. 2.4 "
+    "there): ends 0.275 / 0.444 / 0.282, mean theta 31.90 deg; two independent uniform ends: "
+    "pairs 0.075 / 0.244 / 0.155 / 0.197 / 0.250 / 0.079. Spheres' orientations carry no "
+    "physics: with equal orientations a contact's ends share a region (like pairs only). The "
+    "paper asks for these (its closing section) and reports none.")
+
+
 def pore_method(results):
     """The pore-size methods of the files, as their pore_size groups record them."""
     methods = set()
@@ -203,6 +235,10 @@ def main(results_path, reference):
         if any("order" in g for g in groups):
             print()
             print_table(ORDER_HEADER, [order_row(results, g) for g in groups], ORDER_NOTE)
+        if any("contacts" in g and "axis_angle_mean" in g["contacts"].attrs for g in groups):
+            print()
+            print_table(CONTACT_TYPES_HEADER, [contact_types_row(g) for g in groups],
+                        CONTACT_TYPES_NOTE)
         if any(name in g for g in groups for name in ("pore_size", "hyperuniformity")):
             print()
             print_table(TRANSPORT_HEADER, [transport_row(results, g, paper) for g in groups],

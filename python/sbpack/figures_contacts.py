@@ -10,7 +10,7 @@ _sbpack.uniform_region_fractions); the independent ends' pair fractions are thei
 import numpy as np
 
 from . import _sbpack
-from .figures_results import bands, note, side_rows, with_group
+from .figures_results import bands, new_figure, note, side_rows, with_group
 from .figures_series import curve, group_label, line_style, scalar
 
 REGIONS = ["axis", "edge", "diagonal"]
@@ -148,3 +148,87 @@ def contact_types_note(series):
                  "(the packings in data/), a contact's two ends are n and -n in one frame and "
                  "share a region, so only like pairs occur")
     return text + "."
+
+
+REGION_MARKERS = {"axis": "s", "edge": "D", "diagonal": "^"}
+REGION_COLOURS = ["tab:blue", "tab:green", "tab:orange"]
+REGION_NAMES = {"axis": "⟨100⟩ axis: face (p > 1), vertex (p < 1)", "edge": "⟨110⟩ edge",
+                "diagonal": "⟨111⟩ diagonal: vertex (p > 1), face (p < 1)"}
+PAIR_COLOURS = dict(zip(PAIRS, ["tab:blue", "tab:cyan", "tab:purple", "tab:green", "tab:olive",
+                                "tab:orange"]))
+
+
+def by_n(series):
+    """N -> the series of that N sorted by p."""
+    out = {}
+    for s in series:
+        out.setdefault(s.n, []).append(s)
+    return {n: sorted(part, key=lambda s: s.p) for n, part in sorted(out.items())}
+
+
+def draw_against_p(ax, part, name, style, label):
+    """One quantity of the contacts group against p (ensembles: +- std), the points of each
+    side of p = 1 joined (the cusp at p = 1 not bridged)."""
+    ps = np.array([s.p for s in part])
+    values = np.array([scalar(s, "contacts", name) for s in part])
+    for side in (ps <= 1, ps >= 1):
+        if side.sum() >= 2:
+            ax.plot(ps[side], values[side, 0], lw=0.9, **style)
+    ax.errorbar(ps, values[:, 0], yerr=values[:, 1] if part[0].averaged else None, ls="none",
+                capsize=2, ms=5, label=label, **style)
+
+
+def contact_types_versus_p(series):
+    """With two or more p: the regions of the contacts' ends, the pair types and the mean theta
+    against p, the uniform normals' values (the sphere limit) as dashed lines."""
+    series = with_types(series)
+    if len({s.p for s in series}) < 2:
+        return None
+    fig, axes = new_figure(3, width=4.2, height=3.6)
+    ends_ax, pairs_ax, theta_ax = axes[0]
+    marker_of_n = {n: m for n, m in zip(by_n(series), ["o", "s", "D", "^", "v"])}
+    for n, part in by_n(series).items():
+        suffix = f", N = {n}" if len(marker_of_n) > 1 else ""
+        for region, colour in zip(REGIONS, REGION_COLOURS):
+            draw_against_p(ends_ax, part, f"{region}_fraction",
+                           dict(color=colour, marker=REGION_MARKERS[region]),
+                           REGION_NAMES[region] + suffix)
+        superballs = [s for s in part if s.p != 1.0]  # spheres' pairs: their orientations'
+        for (a, b), colour in PAIR_COLOURS.items():
+            if superballs:
+                draw_against_p(pairs_ax, superballs, f"{a}_{b}_fraction",
+                               dict(color=colour, marker=marker_of_n[n]), f"{a}–{b}{suffix}")
+        draw_against_p(theta_ax, part, "axis_angle_mean",
+                       dict(color="0.2", marker=marker_of_n[n]), f"N = {n}")
+    for region, colour in zip(REGIONS, REGION_COLOURS):
+        ends_ax.axhline(UNIFORM[region], color=colour, ls="--", lw=0.9)
+    ends_ax.plot([], [], color="0.4", ls="--", lw=0.9, label="normals uniform on the sphere")
+    theta_ax.axhline(uniform_mean_theta(series), color=REFERENCE_COLOUR, ls="--", lw=1.0,
+                     label="normals uniform on the sphere")
+    ends_ax.set(ylabel="fraction of the contacts' ends", title="Regions of the ends")
+    pairs_ax.set(ylabel="fraction of the contacts", title="Pair types (superballs)")
+    theta_ax.set(ylabel=r"$\langle\theta\rangle$ (degrees)", title="Mean angle to the nearest axis")
+    for ax in axes[0]:
+        ax.axvline(1.0, color="0.8", lw=0.8, zorder=0)
+        ax.set(xlabel=r"$p$")
+    note(fig, "Where the contacts sit on the particles against p (sbanalyze --compute contacts; "
+              "docs/contact-types.md): the regions of the contacts' ends by their body-frame "
+              "normals (⟨100⟩ axis: the cube's face for p > 1, the octahedron's vertex for "
+              "p < 1; ⟨110⟩ edge; ⟨111⟩ diagonal: the cube's vertex, the octahedron's face), the "
+              "fractions of the six pair types, and the mean angle θ to the nearest body axis; "
+              "dashed: normals uniform on the sphere (Eq. 2.4 there), what spheres give"
+              + bands(series, "error bars: std over the ensemble's packings")
+              + ". Spheres' pair types are not drawn: their orientations carry no physics (equal "
+                "ones make like pairs only). Not in the paper, which asks for it (its closing "
+                "section).")
+    return fig
+
+
+def uniform_mean_theta(series):
+    """<theta> of normals uniform on the sphere, from the results' uniform density (its bins
+    exact, Eqs. 2.1-2.3; the centres' midpoint rule adds an error of order the bin width
+    squared)."""
+    first = series[0].first("contacts")
+    edges, density = first["axis_angle_edges"], first["axis_angle_uniform"]
+    centres, widths = 0.5 * (edges[1:] + edges[:-1]), np.diff(edges)
+    return float(np.sum(centres * density * widths) / np.sum(density * widths))

@@ -22,6 +22,8 @@ splits them, p <= 1 | p >= 1.
                      uniform normals' (spheres'), and the pair types of the contacts' ends (axis,
                      edge, diagonal) beside two independent uniform ends' (sbanalyze --compute
                      contacts; docs/contact-types.md; the paper's closing question)
+  contact_types_versus_p  with two or more p: the ends' region fractions, the superballs'
+                     pair types and the mean theta against p, the uniform normals' dashed
   versus_p           with two or more p: phi, Z, phi_R, alpha, H, k, tau, T1 against p, the
                      paper's values as markers, and with order results Q6, the mean local q6,
                      T and P4 (not in the paper)                          (Figs. 4, 5, 7, 13-15, 17)
@@ -67,6 +69,7 @@ FIGURES = {
     "pore_size": results_figures.pore_size,
     "order": order_figures.order,
     "contact_types": contact_figures.contact_types,
+    "contact_types_versus_p": contact_figures.contact_types_versus_p,
     "versus_p": versus.versus_p,
     "phi_vs_width": versus.phi_vs_width,
     "mean_width": shape_figures.mean_width,

@@ -26,7 +26,7 @@ matplotlib.rcParams["figure.max_open_warning"] = 0  # the module's fixtures hold
 CHEAP = dict(slice_voxels=64, form_factor_voxels=64, threads=2)  # the engine's figures, small
 
 NAMES = ["structure_factor", "spectral_density", "small_q", "major_axis", "spreadability",
-                "pore_size", "order", "contact_types", "versus_p", "phi_vs_width", "mean_width",
+                "pore_size", "order", "contact_types", "contact_types_versus_p", "versus_p", "phi_vs_width", "mean_width",
                 "form_factor", "packing_slice"]
 
 
@@ -539,6 +539,36 @@ def test_contact_types_are_the_results(results, figures):
     assert cube["contacts"]["axis_fraction"] > 2 * uniform_regions["axis"]
     assert cube["contacts"]["axis_angle_mean"] < 20.0 < 31.0 < sphere["contacts"][
         "axis_angle_mean"] < 33.0
+
+
+def test_contact_types_versus_p_are_the_results(results, figures):
+    """Against p: each region's fraction of the ends and the mean theta at the results' values,
+    the pair types of the superballs only (spheres' are their orientations'), the uniform
+    normals' fractions (sbanalyze's solid angles) and mean theta (31.90 degrees, Eqs. 2.1-2.3 of
+    docs/contact-types.md) as the dashed lines."""
+    files = sorted(sbpack.read_results(results)["files"], key=lambda f: f["p"])
+    ends_axis, pairs_axis, theta_axis = figures["contact_types_versus_p"].axes[:3]
+
+    def points(ax, label):
+        """(p, value) of the error bars labelled `label...` (one container per N), by p."""
+        xy = sorted((x, y) for c in ax.containers if c.get_label().startswith(label)
+                    for x, y in zip(c.lines[0].get_xdata(), c.lines[0].get_ydata()))
+        return [x for x, _ in xy], [y for _, y in xy]
+
+    ps = [f["p"] for f in files]
+    for region, name in figures_contacts.REGION_NAMES.items():
+        assert points(ends_axis, name) == (ps, [f["contacts"][f"{region}_fraction"]
+                                                for f in files])
+    assert points(theta_axis, "N = ") == (ps, [f["contacts"]["axis_angle_mean"] for f in files])
+    cube = files[-1]
+    for a, b in figures_contacts.PAIRS:
+        assert points(pairs_axis, f"{a}–{b}") == ([cube["p"]], [cube["contacts"][f"{a}_{b}_fraction"]])
+    dashed = sorted(line.get_ydata()[0] for line in ends_axis.lines if line.get_linestyle() == "--"
+                    and len(line.get_ydata()))
+    assert dashed == pytest.approx(sorted(_sbpack.uniform_region_fractions.values()), abs=1e-15)
+    uniform_theta = [line.get_ydata()[0] for line in theta_axis.lines
+                     if line.get_linestyle() == "--"]
+    assert uniform_theta == [pytest.approx(31.90, abs=0.01)]
 
 
 def labelled_patches(ax):
