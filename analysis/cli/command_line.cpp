@@ -1,6 +1,7 @@
 #include "cli/command_line.hpp"
 
 #include "cli/commands.hpp"
+#include "cli/option_suggestion.hpp"
 #include "info/library_versions.hpp"
 #include "pipeline/option_table.hpp"
 #include "pores/distance_transform.hpp"
@@ -183,6 +184,25 @@ std::string usage() {
 
 namespace {
 
+/// CLI11's "arguments were not expected", with "did you mean" for a mistyped option of the
+/// command (or of its subcommand) and the --help to read.
+std::string extrasMessage(const CLI::App& app, const CLI::ExtrasError& error) {
+    const CLI::App* command = &app;
+    for (const CLI::App* sub : app.get_subcommands())
+        command = sub;
+    for (const std::string& given : app.remaining(true))
+        if (given.rfind("--", 0) == 0) {
+            std::vector<std::string> known = longOptionNames(*command);
+            if (command != &app)
+                for (const std::string& name : longOptionNames(app))
+                    known.push_back(name);
+            const std::string help = command == &app ? "sbanalyze --help"
+                                                     : "sbanalyze " + command->get_name() + " --help";
+            return unknownOptionMessage(given, known) + " (see " + help + ")";
+        }
+    return std::string(error.what()) + " (see sbanalyze --help)";
+}
+
 int runParsed(int argc, const char* const* argv, std::ostream& out, std::ostream& err,
               const Communicator& communicator) {
     CommandLine commandLine(communicator);
@@ -195,6 +215,8 @@ int runParsed(int argc, const char* const* argv, std::ostream& out, std::ostream
         return commandLine.run(out, err);
     } catch (const CLI::Success& e) { // --help, --version
         return commandLine.app().exit(e, out, err);
+    } catch (const CLI::ExtrasError& e) {
+        err << "sbanalyze: error: " << extrasMessage(commandLine.app(), e) << '\n';
     } catch (const CLI::ParseError& e) {
         err << "sbanalyze: error: " << e.what() << " (see sbanalyze --help)\n";
     } catch (const Interrupted& e) { // 128 + the signal, as sbgen and the shells report it

@@ -1,5 +1,6 @@
 #include "cli/options.hpp"
 
+#include "cli/option_suggestion.hpp"
 #include "cli/option_values.hpp"
 #include "io/atomic_file.hpp"
 
@@ -236,7 +237,9 @@ GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args) {
         const std::vector<std::string> extras = commandLine.app().remaining();
         for (const std::string& a : extras)
             if (a.rfind("--", 0) == 0)
-                throw std::invalid_argument("unknown option " + a + " (see sbgen --help)");
+                throw std::invalid_argument(
+                    unknownOptionMessage(a, longOptionNames(commandLine.app())) +
+                    " (see sbgen --help)");
         throw std::invalid_argument("unexpected argument '" + extras.front() + "'");
     } catch (const CLI::ParseError& e) {
         throw std::invalid_argument(std::string(e.what()) + " (see sbgen --help)");
