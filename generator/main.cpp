@@ -68,6 +68,17 @@ sbpack::JammingProtocol startProtocol(const sbpack::GeneratorOptions& o) {
     return protocol;
 }
 
+/// From this N on, sbgen says it is setting up (about 6 s at N = 1e6, 2 minutes at 1e7).
+constexpr int kLargeSetup = 100000;
+
+/// A signal before the first window ended: nothing to keep (issue 65 item 3).
+int stoppedBeforeAState(const sbpack::StopRequest& stop) {
+    std::cerr << "sbgen: stopped by signal " << stop.signal()
+              << " before the first window ended: no state to keep, nothing written (a new run "
+                 "starts from the beginning)\n";
+    return 128 + stop.signal();
+}
+
 int generate(const sbpack::GeneratorOptions& o) {
     using Clock = std::chrono::steady_clock;
     // Installed first: a signal during the set-up stops the run after its first window. The
@@ -77,7 +88,11 @@ int generate(const sbpack::GeneratorOptions& o) {
     const sbpack::StopRequest& stop = sbpack::processStopRequest();
     // No other run may write this run's output or checkpoint while it lasts (io/atomic_file.hpp).
     const sbpack::OutputLock outputLock(o.out), checkpointLock(interruptCheckpointPath(o));
+    if (!o.quiet && !o.resume && o.protocol.particles >= kLargeSetup)
+        std::cerr << "sbgen: setting up " << o.protocol.particles
+                  << " particles (the random start and its event lists: about 6 s per million)\n";
     sbpack::JammingProtocol protocol = startProtocol(o);
+    if (stop.requested() && protocol.status().windows == 0) return stoppedBeforeAState(stop);
 
     const auto start = Clock::now();
     auto lastProgress = start, lastCheckpoint = start;
@@ -98,6 +113,7 @@ int generate(const sbpack::GeneratorOptions& o) {
             }
         },
         stop);
+    if (!done && protocol.status().windows == 0) return stoppedBeforeAState(stop);
     if (!done) {
         const std::filesystem::path path = interruptCheckpointPath(o);
         sbpack::writePacking(protocol.checkpoint(), path);

@@ -125,10 +125,11 @@ template <EngineShape Shape> class EventDrivenMd {
 
     /// Processes events until `maxCollisions` collisions, engine time `maxDuration`, or a
     /// repeated `stop` request (checked every event: a second request stops at once, the first
-    /// waits for the window's end, JammingProtocol::run); then synchronises. Growth past the
-    /// lists' design diameter synchronises and rebuilds them on the way.
+    /// waits for the window's end, JammingProtocol::run), or with `firstRequestStops` any
+    /// request; then synchronises. Growth past the lists' design diameter synchronises and
+    /// rebuilds them on the way.
     RunReport run(std::uint64_t maxCollisions, double maxDuration = kNever,
-                  const StopRequest* stop = nullptr) {
+                  const StopRequest* stop = nullptr, bool firstRequestStops = false) {
         RunReport report;
         ++run_;
         while (report.collisions < maxCollisions && !report.interrupted) {
@@ -137,7 +138,8 @@ template <EngineShape Shape> class EventDrivenMd {
             double now = 0.0;
             bool limitReached = false;
             while (report.collisions < maxCollisions) {
-                if (stop != nullptr && stop->repeated()) {
+                if (stop != nullptr &&
+                    (stop->repeated() || (firstRequestStops && stop->requested()))) {
                     report.interrupted = true;
                     break;
                 }

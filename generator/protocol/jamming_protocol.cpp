@@ -197,8 +197,12 @@ bool JammingProtocol::run(const std::function<void(const ProtocolStatus&)>& onWi
         if (stopAtCostLimit()) return true;
         const auto start = Clock::now();
         const std::clock_t cpuStart = std::clock();
+        // Before the first window ends there is no state to keep: any request stops at once
+        // (issue 65 item 3: a first window at N = 1e6 can last minutes).
+        const bool firstWindow = status_.windows == 0;
         const RunReport report = std::visit(
-            [&](auto& engine) { return engine.run(perWindow, INFINITY, &stop); }, engine_);
+            [&](auto& engine) { return engine.run(perWindow, INFINITY, &stop, firstWindow); },
+            engine_);
         status_.collisions += report.collisions;
         status_.relists += report.relists;
         status_.staleEvents += report.staleEvents;
@@ -304,7 +308,9 @@ Packing JammingProtocol::checkpoint() const {
             }
         },
         engine_);
-    packing.reducedPressure = status_.reducedPressure;
+    // None measured before the first window ends (a second signal can stop the run there):
+    // the packing then has none, as any packing without a pressure (docs/design.md §4).
+    if (status_.reducedPressure > 0.0) packing.reducedPressure = status_.reducedPressure;
     packing.seed = parameters_.seed;
     packing.generatorVersion = kVersion;
     writeCheckpoint(fields, packing);

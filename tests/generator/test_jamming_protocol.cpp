@@ -158,6 +158,31 @@ TEST(JammingProtocol, ARepeatedStopRequestEndsTheRunAtItsNextEvent) {
     EXPECT_EQ(stopped.status().collisions, collisionsThen);
 }
 
+// Issue 65 item 3: both signals before the first window ends (sbgen's double SIGTERM during
+// its start): no pressure is measured yet, and the checkpoint must still be a valid packing
+// (none recorded, not 0) that resumes and jams.
+TEST(JammingProtocol, ARepeatedStopBeforeTheFirstWindowLeavesAResumableCheckpoint) {
+    for (const double p : {1.0, 1.5}) {
+        ProtocolParameters parameters = smallRun(11);
+        parameters.particles = 27;
+        parameters.p = p;
+        StopRequest stop;
+        stop.request(SIGTERM);
+        stop.request(SIGTERM);
+        JammingProtocol stopped(parameters);
+        ASSERT_FALSE(stopped.run([](const ProtocolStatus&) {}, stop));
+        EXPECT_EQ(stopped.status().windows, 0u);
+        const Packing checkpoint = stopped.checkpoint();
+        EXPECT_FALSE(checkpoint.reducedPressure.has_value());
+        const auto file = std::filesystem::temp_directory_path() / "sbgen-test-first-window.h5";
+        writePacking(checkpoint, file); // validated on the way: throws on a pressure of 0
+        JammingProtocol resumed(readPacking(file), file.string());
+        std::filesystem::remove(file);
+        ASSERT_TRUE(resumed.run([](const ProtocolStatus&) {})) << "p = " << p;
+        EXPECT_GE(resumed.status().reducedPressure, parameters.pressureFinal);
+    }
+}
+
 TEST(JammingProtocol, SuperballRunsAreDeterministicAndResumeExactly) {
     JammingProtocol uninterrupted(smallSuperballRun(4));
     std::optional<Packing> saved;
