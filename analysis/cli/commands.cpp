@@ -44,8 +44,10 @@ int infoCommand(const std::vector<std::string>& files, const ContactParameters& 
     for (const std::string& file : files) {
         try {
             printPackingInfo(file, packingInfo(file, parameters), out);
-        } catch (const std::exception& e) {
-            err << "sbanalyze: error: " << e.what() << '\n';
+        } catch (const std::exception& e) { // readers name the file, analyses do not
+            const std::string what = e.what(), name = "'" + file + "'";
+            err << "sbanalyze: error: " << (what.find(name) == std::string::npos ? name + ": " : "")
+                << what << '\n';
             ++failures;
         }
     }

@@ -32,6 +32,17 @@ std::string quotedName(const fs::path& file) {
     return fmt::format("'{}'", file.string());
 }
 
+/// Rethrows `e` with its message prefixed by the file's quoted name, unless it names the file
+/// already (readers do); invalid input stays std::invalid_argument (issue 65 item 5: an
+/// analysis's own message, e.g. the order metrics', named no file).
+[[noreturn]] void rethrowNamingFile(const fs::path& file, const std::exception& e) {
+    const std::string what = e.what();
+    if (what.find(quotedName(file)) != std::string::npos) throw;
+    if (dynamic_cast<const std::invalid_argument*>(&e) != nullptr)
+        throw std::invalid_argument(quotedName(file) + ": " + what);
+    throw std::runtime_error(quotedName(file) + ": " + what);
+}
+
 /// "[2/5] packing.h5": the prefix of a file's progress lines.
 std::string fileContext(std::size_t index, std::size_t count, const fs::path& file) {
     return fmt::format("[{}/{}] {}", index + 1, count, file.string());
@@ -204,8 +215,7 @@ IndexedFiles analyzeAll(const RunSettings& settings, const std::vector<std::size
         } catch (const Interrupted&) {
             throw; // not the file's fault: the run's exit status says which signal
         } catch (const std::exception& e) {
-            if (comm.size() == 1 && settings.inputs.size() == 1) throw;
-            throw std::runtime_error(quotedName(settings.inputs[i]) + ": " + e.what());
+            rethrowNamingFile(settings.inputs[i], e);
         }
     }
     progress.setContext(rankContext(comm, ""));

@@ -67,9 +67,16 @@ constexpr double kSannFirstRange = 1.8;
 
 } // namespace
 
+void NeighbourBonds::add(int i, int j, const Vector3d& vector) {
+    if (vector.squaredNorm() > 0.0)
+        bonds.push_back({i, j, vector});
+    else
+        ++coincident;
+}
+
 NeighbourBonds contactBonds(const Packing& packing, const std::vector<std::pair<int, int>>& pairs) {
     const auto count = static_cast<int>(packing.size());
-    NeighbourBonds result{packing.size(), {}};
+    NeighbourBonds result{packing.size(), {}, 0};
     result.bonds.reserve(pairs.size());
     for (auto [a, b] : pairs) {
         if (a < 0 || b < 0 || a >= count || b >= count || a == b)
@@ -79,8 +86,7 @@ NeighbourBonds contactBonds(const Packing& packing, const std::vector<std::pair<
                             a, b, count));
         const int i = std::min(a, b);
         const int j = std::max(a, b);
-        result.bonds.push_back(
-            {i, j, minimumImage(packing.positions[j] - packing.positions[i], packing.boxLength)});
+        result.add(i, j, minimumImage(packing.positions[j] - packing.positions[i], packing.boxLength));
     }
     return result;
 }
@@ -91,11 +97,9 @@ NeighbourBonds distanceBonds(const Packing& packing, double cutoff) {
         throw std::invalid_argument(fmt::format(
             "neighbour bonds: the cutoff must be in (0, L / 2 = {:g}] mean widths, not {:g}",
             0.5 * packing.boxLength / meanWidth, cutoff));
-    NeighbourBonds result{packing.size(), {}};
+    NeighbourBonds result{packing.size(), {}, 0};
     forEachNeighbourPair(packing.positions, packing.boxLength, cutoff * meanWidth,
-                         [&](int i, int j, const Vector3d& d) {
-                             result.bonds.push_back({i, j, d});
-                         });
+                         [&](int i, int j, const Vector3d& d) { result.add(i, j, d); });
     return result;
 }
 

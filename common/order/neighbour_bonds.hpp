@@ -18,10 +18,16 @@ struct Bond {
     Vector3d vector = Vector3d::Zero();
 };
 
-/// The bonds of a packing of particleCount particles; a pair listed twice counts twice.
+/// The bonds of a packing of particleCount particles; a pair listed twice counts twice. A pair
+/// whose centres coincide (a valid, overlapping input: two identical particles) has no bond
+/// direction: it is left out and counted in `coincident` (issue 65 item 5).
 struct NeighbourBonds {
     std::size_t particleCount = 0;
     std::vector<Bond> bonds;
+    std::size_t coincident = 0;
+
+    /// Adds the bond i < j of minimum-image vector r_j - r_i, or counts it as coincident.
+    void add(int i, int j, const Vector3d& vector);
 };
 
 /// The bonds of the given pairs, e.g. ContactResult::contacts (common/contacts/

@@ -4,6 +4,7 @@
 #include "order/bond_orientational_order.hpp"
 #include "order/cubatic_order.hpp"
 #include "order/neighbour_bonds.hpp"
+#include "order/order_metrics.hpp"
 #include "order/pair_correlation.hpp"
 #include "order/solid_like.hpp"
 #include "order/translational_order.hpp"
@@ -184,6 +185,32 @@ TEST(OrderSteinhardt, RefusesWhatHasNoOrder) {
     EXPECT_THROW(contactBonds(crystal, {{3, 3}}), std::invalid_argument);
     EXPECT_THROW(distanceBonds(crystal, 1.1), std::invalid_argument);
     EXPECT_THROW(distanceBonds(crystal, 0.0), std::invalid_argument);
+}
+
+// Issue 65 item 5: two identical particles (a valid, overlapping input) share a centre; their
+// pair has no bond direction and is left out of every bond set, counted, and the order metrics
+// of the rest are those of the crystal without the copy.
+TEST(OrderSteinhardt, CoincidentCentresAreLeftOutAndCounted) {
+    const Packing crystal = cubicCrystal(3, 1.0, kSimpleCubic);
+    Packing doubled = crystal;
+    doubled.positions.push_back(crystal.positions[4]);
+    doubled.orientations.push_back(crystal.orientations[4]);
+    const int copy = static_cast<int>(crystal.size());
+    const NeighbourBonds byDistance = distanceBonds(doubled, 1.2);
+    EXPECT_EQ(byDistance.coincident, 1u);
+    const NeighbourBonds lattice = distanceBonds(crystal, 1.2);
+    EXPECT_EQ(byDistance.bonds.size(), lattice.bonds.size() + 6); // the copy's six neighbours
+    const NeighbourBonds byContact = contactBonds(doubled, {{4, copy}, {0, 1}});
+    EXPECT_EQ(byContact.coincident, 1u);
+    ASSERT_EQ(byContact.bonds.size(), 1u);
+    EXPECT_EQ(byContact.bonds[0].j, 1);
+    // the original and its copy each have the six lattice directions: the lattice's local q6
+    const SteinhardtOrder q6 = steinhardtOrder(byDistance, 6);
+    const double simpleCubic = steinhardtOrder(lattice, 6).localOrder[4];
+    EXPECT_NEAR(simpleCubic, 0.35355339059327379, 1e-12); // sqrt(1/8), the sc value
+    EXPECT_NEAR(q6.localOrder[4], simpleCubic, 1e-12);
+    EXPECT_NEAR(q6.localOrder[copy], simpleCubic, 1e-12);
+    EXPECT_NO_THROW(measureOrder(doubled));
 }
 
 // --- SANN neighbours and solid-like particles (docs/order-metrics.md §2 and §5) ---
