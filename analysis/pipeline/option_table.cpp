@@ -117,7 +117,14 @@ constexpr std::array kRunRows{
               [](Settings& s, Text, Text v) { s.requestedDevice = computeDeviceFromName(v); },
               [](const Settings& d) { return std::string(computeDeviceName(d.requestedDevice)); }},
     OptionRow{"tolerance", "T", "contact: gap < T D (default {}, as the paper)",
-              [](Settings& s, Text o, Text v) { s.contacts.tolerance = parseNumber(o, v); },
+              [](Settings& s, Text o, Text v) {
+                  s.contacts.tolerance = parseNumber(o, v);
+                  if (!(s.contacts.tolerance >= 0.0 &&
+                        s.contacts.tolerance <= ContactParameters::kMaxTolerance))
+                      throw std::invalid_argument(fmt::format(
+                          "option {}: must be in [0, {:g}] (a gap in units of D)", o,
+                          ContactParameters::kMaxTolerance));
+              },
               [](const Settings& d) { return number(d.contacts.tolerance); }},
     OptionRow{"rattler-threshold", "K",
               "rattler: fewer than K contacts, removed iteratively (default {} = d + 1)",

@@ -3,6 +3,8 @@
 #include "contacts/cell_list.hpp"
 #include "pair/pair_geometry.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -106,10 +108,10 @@ std::string describeOverlaps(const ContactResult& contacts, double diameter) {
 }
 
 ContactNetwork::ContactNetwork(ContactParameters parameters) : parameters_(parameters) {
-    if (!std::isfinite(parameters_.tolerance) || parameters_.tolerance < 0.0)
-        throw std::invalid_argument("contact network: tolerance " +
-                                    std::to_string(parameters_.tolerance) +
-                                    " must be finite and non-negative");
+    if (!(parameters_.tolerance >= 0.0 && parameters_.tolerance <= ContactParameters::kMaxTolerance))
+        throw std::invalid_argument(fmt::format(
+            "contact network: tolerance {:g} must be in [0, {:g}] (a gap in units of D)",
+            parameters_.tolerance, ContactParameters::kMaxTolerance));
     if (parameters_.rattlerThreshold < 1)
         throw std::invalid_argument("contact network: rattler threshold " +
                                     std::to_string(parameters_.rattlerThreshold) +
@@ -144,6 +146,12 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
         Vector3d point;
     };
     std::vector<Found> found;
+    if (range > 0.5 * packing.boxLength)
+        throw std::invalid_argument(fmt::format(
+            "contact network: the box edge L = {:g} D is too small: a particle reaches {:g} D "
+            "(its circumscribed diameter and the tolerance), and pairs by the minimum image need "
+            "L > {:g} D, one image of each neighbour",
+            packing.boxLength / diameter, range / diameter, 2.0 * range / diameter));
     const CellList cells(packing.positions, packing.boxLength, range);
     cells.forEachNeighbourPair([&](int i, int j, const Vector3d& d) {
         const SignedDistanceResult pair =

@@ -13,6 +13,8 @@ namespace sbpack {
 struct ContactParameters {
     /// Two particles are in contact if their gap is below tolerance * D (paper Sec. III A).
     double tolerance = 1e-10;
+    /// The largest tolerance accepted: a gap of a tenth of D is no contact (issue 65 item 7).
+    static constexpr double kMaxTolerance = 0.1;
     /// Particles with fewer contacts than this among the non-rattlers are rattlers: d + 1 = 4.
     int rattlerThreshold = 4;
 };
@@ -45,12 +47,14 @@ std::string describeOverlaps(const ContactResult& contacts, double diameter);
 /// Compute object: validates its parameters at construction, compute() returns a result.
 class ContactNetwork {
   public:
-    /// Throws std::invalid_argument unless tolerance is finite and >= 0 and rattlerThreshold >= 1.
+    /// Throws std::invalid_argument unless tolerance is in [0, kMaxTolerance] and
+    /// rattlerThreshold >= 1.
     explicit ContactNetwork(ContactParameters parameters);
 
     /// Signed distances of all pairs whose centres are closer than 2 circumradius + tolerance D,
     /// then iterative rattler removal (docs/design.md §3). Throws std::invalid_argument for a
-    /// packing with mismatched positions and orientations or a contact range above L / 2, and
+    /// packing with mismatched positions and orientations or a box too small for one image of
+    /// each neighbour (L below twice the contact range), and
     /// std::runtime_error if a pair solve returns a non-finite distance.
     ContactResult compute(const Packing& packing) const;
 

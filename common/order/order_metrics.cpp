@@ -46,6 +46,11 @@ std::optional<SolidLikeResult> solidLikeParticles(const Packing& packing) {
 
 OrderMetrics measureOrder(const Packing& packing,
                           const std::vector<std::pair<int, int>>* contacts) {
+    if (packing.size() < 2)
+        throw std::invalid_argument(fmt::format(
+            "order metrics: a packing of {} particle has no pairs; they need 2 or more (leave "
+            "order out of --compute)",
+            packing.size()));
     OrderMetrics m;
     m.pairCorrelation = pairCorrelation(packing);
     m.cutoff = firstMinimumOf(m.pairCorrelation);
