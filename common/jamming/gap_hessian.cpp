@@ -30,7 +30,8 @@ Matrix3d rotationTerm(const Vector3d& sigma, const Vector3d& n) {
 
 } // namespace
 
-Matrix3d surfaceCurvature(const Superball& shape, const Matrix3d& rotation, const Vector3d& normal) {
+Matrix3d surfaceCurvature(const Superball& shape, const Matrix3d& rotation,
+                          const Vector3d& normal) {
     // II = P^T Hess(xi) P / |grad xi|, xi = sum |x_k / R|^{2p} - 1: with y = |x| / R,
     // Hess(xi) / |grad xi| = (2p - 1) / R diag(y^{2p-2}) / |y^{2p-1}| (the 2p / R cancel).
     const double p = shape.p(), r = shape.semiAxis();
@@ -40,7 +41,8 @@ Matrix3d surfaceCurvature(const Superball& shape, const Matrix3d& rotation, cons
         gradient[k] = std::pow(y[k], 2.0 * p - 1.0);
         diagonal[k] = std::pow(y[k], 2.0 * p - 2.0);
     }
-    const Matrix3d bodyCurvature = ((2.0 * p - 1.0) / (r * gradient.norm())) * diagonal.asDiagonal();
+    const Matrix3d bodyCurvature =
+        ((2.0 * p - 1.0) / (r * gradient.norm())) * diagonal.asDiagonal();
     const Matrix3d tangent = Matrix3d::Identity() - normal * normal.transpose();
     return tangent * rotation * bodyCurvature * rotation.transpose() * tangent;
 }
@@ -54,7 +56,8 @@ ContactCurvature contactCurvature(const Superball& shape, const Matrix3d& rotati
     c.curvatureA = surfaceCurvature(shape, rotationA, normal);
     c.curvatureB = surfaceCurvature(shape, rotationB, -normal);
     const Vector3d a = rotationA * shape.supportPoint(rotationA.transpose() * normal);
-    const Vector3d b = displacement - rotationB * shape.supportPoint(rotationB.transpose() * normal);
+    const Vector3d b =
+        displacement - rotationB * shape.supportPoint(rotationB.transpose() * normal);
     const Eigen::Matrix<double, 3, 2> basis = tangentBasis(normal);
     const Matrix2d wA = basis.transpose() * c.curvatureA * basis;
     const Matrix2d wB = basis.transpose() * c.curvatureB * basis;

@@ -20,9 +20,9 @@ Matrix3d surfaceCurvature(const Superball& shape, const Matrix3d& rotation, cons
 /// What the Hessian of a contact's gap needs: lever arms from each centre to its own closest
 /// point (apart by `gap` along `normal` from A's to B's) and the two curvature tensors there.
 struct ContactCurvature {
-    Vector3d normal = Vector3d::Zero(); ///< n, unit, from A to B
-    Vector3d leverA = Vector3d::Zero(); ///< A's closest point - r_A
-    Vector3d leverB = Vector3d::Zero(); ///< B's closest point - r_B
+    Vector3d normal = Vector3d::Zero();     ///< n, unit, from A to B
+    Vector3d leverA = Vector3d::Zero();     ///< A's closest point - r_A
+    Vector3d leverB = Vector3d::Zero();     ///< B's closest point - r_B
     Matrix3d curvatureA = Matrix3d::Zero(); ///< surfaceCurvature of A along n
     Matrix3d curvatureB = Matrix3d::Zero(); ///< surfaceCurvature of B along -n
     double gap = 0.0;                       ///< s (0 for an ideal contact)

@@ -38,9 +38,9 @@ struct RigidityNetwork {
 
 /// The contacts of `network` (ContactNetwork or checkJam on `packing`) among its non-rattlers, in
 /// units of D, with the lever arms to the closest points of contactCurvature (jamming/gap_hessian:
-/// each support point trusted where its surface is the more curved) and the curvatures. Negative gaps (overlaps within the contact tolerance) become 0: a first-order
-/// motion cannot undo an overlap. Throws std::invalid_argument if the network's sizes do not
-/// match the packing's.
+/// each support point trusted where its surface is the more curved) and the curvatures. Negative
+/// gaps (overlaps within the contact tolerance) become 0: a first-order motion cannot undo an
+/// overlap. Throws std::invalid_argument if the network's sizes do not match the packing's.
 RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& network);
 
 } // namespace sbpack

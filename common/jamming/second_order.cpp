@@ -51,8 +51,8 @@ Sparse stiffnessMatrix(const RigidityNetwork& network, const Eigen::VectorXd& fo
     for (std::size_t k = 0; k < network.contacts.size(); ++k) {
         const RigidContact& c = network.contacts[k];
         if (forces[k] == 0.0) continue;
-        const Matrix12d hessian = gapHessian(
-            {c.normal, c.leverI, c.leverJ, c.curvatureI, c.curvatureJ, 0.0});
+        const Matrix12d hessian =
+            gapHessian({c.normal, c.leverI, c.leverJ, c.curvatureI, c.curvatureJ, 0.0});
         if (!hessian.allFinite()) {
             singular = true;
             continue;
@@ -188,9 +188,8 @@ Eigen::VectorXd fullMode(const Eigen::VectorXd& v) {
 } // namespace
 
 SecondOrderTest::SecondOrderTest(SecondOrderParameters parameters) : parameters_(parameters) {
-    for (const double tolerance :
-         {parameters_.loadTolerance, parameters_.stiffnessTolerance,
-          parameters_.penaltyConvergence, parameters_.rankTolerance})
+    for (const double tolerance : {parameters_.loadTolerance, parameters_.stiffnessTolerance,
+                                   parameters_.penaltyConvergence, parameters_.rankTolerance})
         if (!(tolerance > 0.0 && tolerance < 1.0))
             throw std::invalid_argument("second-order test: tolerance " +
                                         std::to_string(tolerance) + " must lie in (0, 1)");

@@ -44,14 +44,14 @@ struct SecondOrderResult {
     SecondOrderVerdict verdict = SecondOrderVerdict::NoSelfStress;
     SelfStress stress;        ///< the self-stress tested (mean 1)
     bool forcesGiven = false; ///< stored forces, not the program's
-    int floppyModes = 0;  ///< dim ker A^T - 3 over all contacts (rank-revealing QR of A)
-    int testedModes = 0;  ///< the same over the loaded contacts: the flexes S_f is tested on
-    int selfStresses = 0; ///< dim ker A (all contacts): 1 means the self-stress is unique
+    int floppyModes = 0;      ///< dim ker A^T - 3 over all contacts (rank-revealing QR of A)
+    int testedModes = 0;      ///< the same over the loaded contacts: the flexes S_f is tested on
+    int selfStresses = 0;     ///< dim ker A (all contacts): 1 means the self-stress is unique
     /// lambda_min of S_f + mu A A^T (fixed particle's translation removed), units of the mean
     /// force per D (lengths in D, rotations in radians): a lower bound on S_f's on the flexes.
     double smallestStiffness = 0.0;
-    double penalty = 0.0;      ///< the mu of smallestStiffness
-    double flexResidual = 0.0; ///< |A_loaded^T v|_2 of its unit eigenvector v (0: an exact flex)
+    double penalty = 0.0;        ///< the mu of smallestStiffness
+    double flexResidual = 0.0;   ///< |A_loaded^T v|_2 of its unit eigenvector v (0: an exact flex)
     Eigen::VectorXd softestMode; ///< v in the dof layout (rigidity_matrix.hpp), fixed dr = 0
     double seconds = 0.0;
 };

@@ -58,14 +58,13 @@ SelfStress givenSelfStress(const RigidityNetwork& network, const Eigen::VectorXd
                            double loadTolerance) {
     if (forces.size() != static_cast<Eigen::Index>(network.contacts.size()))
         throw std::invalid_argument("self-stress: " + std::to_string(forces.size()) +
-                                    " forces given for " +
-                                    std::to_string(network.contacts.size()) + " contacts");
+                                    " forces given for " + std::to_string(network.contacts.size()) +
+                                    " contacts");
     if (forces.size() == 0 || !forces.allFinite() || forces.minCoeff() < 0.0 ||
         forces.maxCoeff() <= 0.0)
         throw std::invalid_argument("self-stress: the given forces must be finite, >= 0 and not "
                                     "all 0");
-    return normalised(rigidityMatrix(network, JammingCategory::Collective), forces,
-                      loadTolerance);
+    return normalised(rigidityMatrix(network, JammingCategory::Collective), forces, loadTolerance);
 }
 
 } // namespace sbpack

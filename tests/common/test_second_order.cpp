@@ -36,8 +36,7 @@ struct MovedPair {
     double signedDistanceAt(const Vector12d& q) const {
         const auto turned = [](const Matrix3d& r, const Vector3d& theta) {
             const double angle = theta.norm();
-            return angle == 0.0 ? r
-                                : Matrix3d(Eigen::AngleAxisd(angle, theta / angle) * r);
+            return angle == 0.0 ? r : Matrix3d(Eigen::AngleAxisd(angle, theta / angle) * r);
         };
         return signedDistance({shape, turned(rotationA, q.segment<3>(3)),
                                turned(rotationB, q.segment<3>(9)),
@@ -87,8 +86,8 @@ TEST(GapHessian, EqualsFiniteDifferencesOfTheExactSignedDistance) {
             const SignedDistanceResult s =
                 signedDistance({shape, pair.rotationA, pair.rotationB, pair.displacement});
             const ContactCurvature contact =
-                contactCurvature(shape, pair.rotationA, pair.rotationB, pair.displacement,
-                                 s.normal, s.signedDistance);
+                contactCurvature(shape, pair.rotationA, pair.rotationB, pair.displacement, s.normal,
+                                 s.signedDistance);
             const Eigen::Matrix<double, 3, 2> basis = tangentBasis(s.normal);
             const Eigen::Matrix2d relative =
                 basis.transpose() * (contact.curvatureA + contact.curvatureB) * basis;
@@ -113,9 +112,8 @@ TEST(GapHessian, SpheresTranslateByTheTangentialProjectionOverTheDistance) {
     // Hess s = (I - n n^T) / |d| on dr_B, and rotations change nothing.
     const Superball sphere(1.0, 0.5);
     const Vector3d d(0.3, -1.0, 0.4);
-    const ContactCurvature contact =
-        contactCurvature(sphere, Matrix3d::Identity(), Matrix3d::Identity(), d,
-                         d.normalized(), d.norm() - 1.0);
+    const ContactCurvature contact = contactCurvature(
+        sphere, Matrix3d::Identity(), Matrix3d::Identity(), d, d.normalized(), d.norm() - 1.0);
     const Matrix12d hessian = gapHessian(contact);
     const Matrix3d expected =
         (Matrix3d::Identity() - d.normalized() * d.normalized().transpose()) / d.norm();
@@ -153,7 +151,8 @@ RigidityNetwork diagonalPair(double p) {
 TEST(SecondOrder, SuperballsHeldAtTheirDiagonalsAreJammedOnlyWhereFlatterThanTheirCircle) {
     // docs/jamming.md §6.4: at a diagonal point both curvatures are kappa = (2p - 1) / rho, and
     // with f = 1 on the 8 contacts the stiffness on the rotations is
-    //   (1 - kappa rho) (16/3) [(rho / 2)|dtheta_0 + dtheta_1|^2 + |dtheta_0 - dtheta_1|^2 / 2 kappa]
+    //   (1 - kappa rho) (16/3) [(rho / 2)|dtheta_0 + dtheta_1|^2 + |dtheta_0 - dtheta_1|^2 / 2
+    //   kappa]
     // (eigenvalues (16/3)(1 - kappa rho) rho on dtheta_0 = dtheta_1, (16/3)(1 - kappa rho) / kappa
     // on dtheta_0 = -dtheta_1, rho < 1 / kappa iff p < 1), so its smallest is (32/3)(1 - p) rho,
     // the two rotating alike: p < 1 (a face centre, flatter than the circle of radius rho)
@@ -206,7 +205,8 @@ TEST(SecondOrder, SimpleCubicRowSlideIsNotRescued) {
     // 4^3 spheres: 48 rows slide (45 floppy modes beyond the translations), each row a closed
     // loop of contacts with its own self-stress (48). Sliding a row opens its side contacts at
     // second order by |u|^2 / 2D each: the stiffness of every loaded self-stress is negative.
-    const RigidityNetwork network = networkOf(lattices::cubicCrystal(4, 1.0, lattices::kSimpleCubic));
+    const RigidityNetwork network =
+        networkOf(lattices::cubicCrystal(4, 1.0, lattices::kSimpleCubic));
     const SecondOrderResult result = SecondOrderTest({}).compute(network);
     EXPECT_EQ(result.floppyModes, 45);
     EXPECT_EQ(result.selfStresses, 48);
