@@ -2,7 +2,8 @@
 // bench/RESULTS.md, "First-order jamming categories"). For each contact tolerance (default: the
 // jam check's at the recorded pressure) and each category: the verdict, the Maxwell count, the
 // largest first-order opening, how many particles the opening and the flex move and how spread
-// the flex is (participation ratio), the particles freed, and the wall time of both programs.
+// the flex is (participation ratio), the particles freed, and the wall time of both programs;
+// where the collective first order is undecided, the second-order stress test.
 //
 //   bench_jamming FILE [TOLERANCES] [CATEGORIES]   (e.g. 1e-10,1e-8 and lcs; default: jam check's,
 //   lcs)
@@ -52,6 +53,18 @@ void row(const char* name, const JammingResult& r, const RigidityNetwork& networ
                 firstFew(r.freed).c_str(), r.seconds);
 }
 
+/// The second-order test (docs/jamming.md §6) below the collective row.
+void secondOrderRow(const SecondOrderResult& r) {
+    const char* verdicts[] = {"jammed", "not jammed", "no self-stress", "singular curvature"};
+    std::printf("\nsecond order: %s; self-stress %s, %d of %lld contacts loaded, balance %.1e; "
+                "%d floppy modes (%d on the loaded contacts), %d self-stresses; smallest "
+                "stiffness %.3e at mu %.1e (flex residual %.1e); %.2f s\n\n",
+                verdicts[static_cast<int>(r.verdict)], r.forcesGiven ? "given" : "by LP",
+                r.stress.loadedContacts, static_cast<long long>(r.stress.forces.size()),
+                r.stress.balanceResidual, r.floppyModes, r.testedModes, r.selfStresses,
+                r.smallestStiffness, r.penalty, r.flexResidual, r.seconds);
+}
+
 std::vector<double> parseList(const std::string& text) {
     std::vector<double> values;
     std::stringstream stream(text);
@@ -88,7 +101,9 @@ int main(int argc, char** argv) {
         const char* names[] = {"local", "collective", "strict"};
         for (const auto& [letter, category] : all)
             if (categories.find(letter) != std::string::npos) {
-                row(names[static_cast<int>(category)], test.compute(network, category), network);
+                const JammingResult result = test.compute(network, category);
+                row(names[static_cast<int>(category)], result, network);
+                if (result.secondOrder) secondOrderRow(*result.secondOrder);
                 std::fflush(stdout);
             }
     }

@@ -7,7 +7,7 @@ packages=(build-essential cmake pkg-config python3 libeigen3-dev libhdf5-dev lib
           libtbb-dev libopenvdb-dev libboost-iostreams-dev libimath-dev libgtest-dev
           libbenchmark-dev libcli11-dev nlohmann-json3-dev libfmt-dev clang-format clang-tidy git
           python3-numpy python3-h5py python3-matplotlib python3-dev pybind11-dev python3-pytest
-          coinor-libclp-dev)
+          coinor-libclp-dev libspectra-dev)
 if [[ "${1:-}" == "--mpi" ]]; then
   packages+=(openmpi-bin libopenmpi-dev libfftw3-mpi-dev shellcheck slurm-wlm munge)
 fi

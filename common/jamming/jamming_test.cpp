@@ -213,9 +213,11 @@ JammingTest::JammingTest(JammingParameters parameters) : parameters_(parameters)
           solver.optimality > 0.0 && solver.optimality <= 1e-2 * tolerance))
         throw std::invalid_argument("jamming test: the solver's tolerances must be positive and "
                                     "at most 1e-2 of the motion tolerance");
+    SecondOrderTest{parameters_.secondOrder}; // validates its parameters
 }
 
-JammingResult JammingTest::compute(const RigidityNetwork& network, JammingCategory category) const {
+JammingResult JammingTest::compute(const RigidityNetwork& network, JammingCategory category,
+                                   const std::optional<Eigen::VectorXd>& forces) const {
     if (network.backbone.empty())
         throw std::invalid_argument("jamming test: the packing has no backbone (all rattlers)");
     const auto start = std::chrono::steady_clock::now();
@@ -250,6 +252,9 @@ JammingResult JammingTest::compute(const RigidityNetwork& network, JammingCatego
     result.verdict = verdictOf(result, network.rotations);
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (category == JammingCategory::Collective && result.verdict == FirstOrderVerdict::Undecided &&
+        parameters_.secondOrder.enabled)
+        result.secondOrder = SecondOrderTest(parameters_.secondOrder).compute(network, forces);
     return result;
 }
 

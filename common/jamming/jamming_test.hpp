@@ -6,10 +6,12 @@
 //   opening:  maximise sum_c ds_c  subject to ds = A^T dq >= -g   (a contact opens, none closes)
 //   flex:     maximise c . dq      subject to A^T dq = 0,  c random (a motion that keeps every
 //             contact at its gap to first order, found with probability 1 if one exists)
-// Strict adds the strain eps with tr eps <= 0 to both.
+// Strict adds the strain eps with tr eps <= 0 to both. Where the collective first order is
+// Undecided (p != 1), the second-order stress test follows (jamming/second_order.hpp).
 
 #include "jamming/linear_program.hpp"
 #include "jamming/rigidity_matrix.hpp"
+#include "jamming/second_order.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -28,6 +30,8 @@ struct JammingParameters {
     double motionTolerance = 1e-6;
     std::uint64_t seed = 1; ///< of the flex program's random objective
     LinearProgramTolerances solver;
+    /// The second-order test where the collective first order is Undecided (enabled: true).
+    SecondOrderParameters secondOrder;
 };
 
 /// The answer at first order.
@@ -65,20 +69,31 @@ struct JammingResult {
     /// flexes must exist (the Maxwell count; isostatic: 0).
     int isostaticDeficit = 0;
     int contacts = 0;
-    double seconds = 0.0; ///< wall time of the matrix and both programs
+    double seconds = 0.0; ///< wall time of the matrix and both programs (the second order apart)
     JammingParameters parameters;
+    /// Collective, first order Undecided, parameters.secondOrder.enabled: the stress test.
+    std::optional<SecondOrderResult> secondOrder;
+    /// Jammed, at first order, or at second order where the first order is Undecided.
+    bool jammed() const {
+        return verdict == FirstOrderVerdict::Jammed ||
+               (secondOrder && secondOrder->verdict == SecondOrderVerdict::Jammed);
+    }
 };
 
 /// Compute object: parameters validated at construction, compute() returns the result.
 class JammingTest {
   public:
     /// Throws std::invalid_argument unless maxStep > 0 is finite, motionTolerance lies in
-    /// (0, 1) and the solver's tolerances are positive and at most 1e-2 motionTolerance.
+    /// (0, 1), the solver's tolerances are positive and at most 1e-2 motionTolerance and the
+    /// second order's are valid (SecondOrderTest).
     explicit JammingTest(JammingParameters parameters);
 
-    /// The category's first-order verdict on `network` (backboneNetwork). Throws
-    /// std::invalid_argument for an empty backbone, std::runtime_error if CLP fails.
-    JammingResult compute(const RigidityNetwork& network, JammingCategory category) const;
+    /// The category's first-order verdict on `network` (backboneNetwork), and for Collective
+    /// where it is Undecided the second order's, with `forces` (one per network contact, e.g.
+    /// stored by sbgen) or the program's self-stress. Throws std::invalid_argument for an empty
+    /// backbone or bad forces, std::runtime_error if CLP fails.
+    JammingResult compute(const RigidityNetwork& network, JammingCategory category,
+                          const std::optional<Eigen::VectorXd>& forces = std::nullopt) const;
 
     const JammingParameters& parameters() const { return parameters_; }
 

@@ -1,5 +1,7 @@
 #include "jamming/rigidity_network.hpp"
 
+#include "jamming/gap_hessian.hpp"
+
 #include <algorithm>
 #include <stdexcept>
 #include <string>
@@ -23,6 +25,7 @@ void checkSizes(const Packing& packing, const ContactResult& network) {
 RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& network) {
     checkSizes(packing, network);
     const double diameter = packing.shape().diameter();
+    const Superball shape(packing.p, 0.5); // units of D
     RigidityNetwork result;
     result.packingSize = static_cast<int>(packing.size());
     result.rotations = !packing.shape().isSphere();
@@ -38,10 +41,15 @@ RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& net
         if (network.rattler[i] || network.rattler[j]) continue;
         const Vector3d inBox = (packing.positions[j] - packing.positions[i]) / diameter;
         const Vector3d separation = minimumImage(inBox, result.boxLength);
-        const Vector3d point = network.points[c] / diameter;
+        const double gap = network.gaps[c]; // already / D
+        const ContactCurvature curvature = contactCurvature(
+            shape, packing.orientations[i].toRotationMatrix(),
+            packing.orientations[j].toRotationMatrix(), separation, network.normals[c], gap);
+        // The lever arms to the midpoint of the closest points (docs/jamming.md §2).
+        const Vector3d point = curvature.leverA + 0.5 * gap * network.normals[c];
         result.contacts.push_back({backboneIndex[i], backboneIndex[j], network.normals[c], point,
-                                   point - separation, separation - inBox,
-                                   std::max(network.gaps[c], 0.0)});
+                                   point - separation, separation - inBox, std::max(gap, 0.0),
+                                   curvature.curvatureA, curvature.curvatureB});
     }
     return result;
 }

@@ -22,6 +22,10 @@ struct RigidContact {
     /// a contact inside the box.
     Vector3d boxShift = Vector3d::Zero();
     double gap = 0.0; ///< g_c >= 0: overlaps count as touching
+    /// The surfaces' curvature tensors at the contact point (jamming/gap_hessian.hpp), i's along
+    /// n and j's along -n, 1 / D: what the second-order test needs (docs/jamming.md §6).
+    Matrix3d curvatureI = Matrix3d::Zero();
+    Matrix3d curvatureJ = Matrix3d::Zero();
 };
 
 struct RigidityNetwork {
@@ -33,9 +37,10 @@ struct RigidityNetwork {
 };
 
 /// The contacts of `network` (ContactNetwork or checkJam on `packing`) among its non-rattlers, in
-/// units of D. Negative gaps (overlaps within the contact tolerance) become 0: a first-order
-/// motion cannot undo an overlap. Throws std::invalid_argument if the network's sizes do not
-/// match the packing's.
+/// units of D, with the lever arms to the closest points of contactCurvature (jamming/gap_hessian:
+/// each support point trusted where its surface is the more curved) and the curvatures. Negative
+/// gaps (overlaps within the contact tolerance) become 0: a first-order motion cannot undo an
+/// overlap. Throws std::invalid_argument if the network's sizes do not match the packing's.
 RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& network);
 
 } // namespace sbpack

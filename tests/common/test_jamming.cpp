@@ -342,6 +342,11 @@ TEST(JammingCategories, AlignedSuperballLatticeRotatesAtFirstOrderOnly) {
         EXPECT_EQ(result.flex->rotation.size(), 125u);
         EXPECT_TRUE(result.freed.empty());
     }
+    // Face centres of p > 1 are flat on both sides: the gaps close faster than second order
+    // (docs/jamming.md §6.3).
+    const JammingResult collective = test(network, JammingCategory::Collective);
+    ASSERT_TRUE(collective.secondOrder);
+    EXPECT_EQ(collective.secondOrder->verdict, SecondOrderVerdict::SingularCurvature);
 }
 
 TEST(JammingCategories, AnOpeningFreesASphereButLeavesASlidingSuperballUndecided) {
