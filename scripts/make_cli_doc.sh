@@ -152,12 +152,15 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   Readable with h5py: `h5py.File(name)["positions"][:]`, `dict(f.attrs)`.
 - **Plain text** (`.txt`, read by `info`, the analysis, `convert` and `sbpack.Packing.read`): a
   header `# sbpack text packing v1`, `# p P`, `# semi_axis R`,
-  `# box_length L`, `# n_particles N`, then one particle per line `x y z qw qx qy qz`.
+  `# box_length L`, `# n_particles N`, optionally `# reduced_pressure P` and `# seed S` (the
+  pressure sets the jam check's tolerance, so Z and phi_R), then one particle per line
+  `x y z qw qx qy qz`. `convert` to it (or to XYZ) names what the target leaves out
+  (velocities, provenance, a checkpoint's resume state).
 - **Extended XYZ** (`convert`, output only): OVITO reads positions, `orientation` (its
   quaternion order `x y z w`) and `aspherical_shape` directly; map the two
   `superquadric_roundness` columns (both `1/p`) to OVITO's "Superquadric Roundness" in the
   import dialog to see superball shapes.
-- **Results file** (HDF5, `format = "sbpack.results"`, `format_version = 2`): the root holds the
+- **Results file** (HDF5, `format = "sbpack.results"`, `format_version = 4`): the root holds the
   run, `files/<i>` one input with one subgroup per analysis, `ensembles/<k>` the inputs of equal
   `p` and `N`; every name and unit is in docs/results-schema.md. Reading it with h5py
   (`tests/read_results.py` does this):

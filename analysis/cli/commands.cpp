@@ -10,6 +10,9 @@
 #include "schema/packing_schema_docs.hpp"
 #include "schema/results_schema.hpp"
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <cstdlib>
 #include <iostream>
 #include <stdexcept>
@@ -60,6 +63,10 @@ int convertCommand(const std::string& input, const std::string& output, std::ost
     checkWritable(output);
     checkNotInput(output, input, "convert");
     const Packing packing = in == Format::Hdf5 ? readPacking(input) : readTextPacking(input);
+    if (out != Format::Hdf5)
+        if (const auto left = notCarriedBy(packing, out == Format::Xyz); !left.empty())
+            err << "sbanalyze: warning: '" << output << "' cannot carry the "
+                << fmt::format("{}", fmt::join(left, ", ")) << " of '" << input << "': left out\n";
     if (out == Format::Hdf5) writePacking(packing, output);
     if (out == Format::Text) writeTextPacking(packing, output);
     if (out == Format::Xyz) writeExtendedXyz(packing, output);

@@ -121,9 +121,9 @@ constexpr std::array kRunRows{
                   s.contacts.tolerance = parseNumber(o, v);
                   if (!(s.contacts.tolerance >= 0.0 &&
                         s.contacts.tolerance <= ContactParameters::kMaxTolerance))
-                      throw std::invalid_argument(fmt::format(
-                          "option {}: must be in [0, {:g}] (a gap in units of D)", o,
-                          ContactParameters::kMaxTolerance));
+                      throw std::invalid_argument(
+                          fmt::format("option {}: must be in [0, {:g}] (a gap in units of D)", o,
+                                      ContactParameters::kMaxTolerance));
               },
               [](const Settings& d) { return number(d.contacts.tolerance); }},
     OptionRow{"rattler-threshold", "K",

@@ -44,14 +44,11 @@ std::vector<std::string> closestOptions(const std::string& given,
     };
     for (const std::string& option : known) {
         const std::size_t distance = editDistance(typed, option);
-        if (distance < best)
-            nearest.clear(), best = distance;
-        if (distance == best)
-            add(option);
+        if (distance < best) nearest.clear(), best = distance;
+        if (distance == best) add(option);
     }
     for (const std::string& option : known)
-        if (typed.size() > 2 && option.rfind(typed, 0) == 0)
-            add(option);
+        if (typed.size() > 2 && option.rfind(typed, 0) == 0) add(option);
     return nearest;
 }
 
@@ -59,7 +56,9 @@ std::string unknownOptionMessage(const std::string& given, const std::vector<std
     std::string message = "unknown option " + given;
     const std::vector<std::string> nearest = closestOptions(given, known);
     for (std::size_t k = 0; k < nearest.size(); ++k)
-        message += (k == 0 ? "; did you mean " : k + 1 == nearest.size() ? " or " : ", ") +
+        message += (k == 0                    ? "; did you mean "
+                    : k + 1 == nearest.size() ? " or "
+                                              : ", ") +
                    nearest[k];
     return nearest.empty() ? message : message + "?";
 }

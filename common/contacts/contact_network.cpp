@@ -108,7 +108,8 @@ std::string describeOverlaps(const ContactResult& contacts, double diameter) {
 }
 
 ContactNetwork::ContactNetwork(ContactParameters parameters) : parameters_(parameters) {
-    if (!(parameters_.tolerance >= 0.0 && parameters_.tolerance <= ContactParameters::kMaxTolerance))
+    if (!(parameters_.tolerance >= 0.0 &&
+          parameters_.tolerance <= ContactParameters::kMaxTolerance))
         throw std::invalid_argument(fmt::format(
             "contact network: tolerance {:g} must be in [0, {:g}] (a gap in units of D)",
             parameters_.tolerance, ContactParameters::kMaxTolerance));

@@ -4,6 +4,7 @@
 #include "packing/validation.hpp"
 
 #include <charconv>
+#include <cstdint>
 #include <fstream>
 #include <map>
 #include <optional>
@@ -81,6 +82,14 @@ class LineReader {
         return value;
     }
 
+    std::uint64_t parseSeed(const std::string& token) const {
+        std::uint64_t value = 0;
+        const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+        if (ec != std::errc() || end != token.data() + token.size())
+            fail("'" + token + "' is not a seed (an integer in [0, 2^64))");
+        return value;
+    }
+
     const std::string& name() const { return name_; }
 
   private:
@@ -96,7 +105,11 @@ void writeTextPacking(const Packing& packing, const fs::path& file) {
     writeTextFile(file, [&](std::ostream& out) {
         out << kTextMagic << "\n# p " << full(packing.p) << "\n# semi_axis "
             << full(packing.semiAxis) << "\n# box_length " << full(packing.boxLength)
-            << "\n# n_particles " << packing.size() << "\n# columns x y z qw qx qy qz\n";
+            << "\n# n_particles " << packing.size() << '\n';
+        if (packing.reducedPressure)
+            out << "# reduced_pressure " << full(*packing.reducedPressure) << '\n';
+        if (packing.seed) out << "# seed " << *packing.seed << '\n';
+        out << "# columns x y z qw qx qy qz\n";
         for (std::size_t i = 0; i < packing.size(); ++i) {
             const Vector3d r = wrapIntoBox(packing.positions[i], packing.boxLength);
             const Quaterniond& q = packing.orientations[i];
@@ -122,6 +135,12 @@ class TextHeader {
         if (key == "n_particles") {
             if (count_) reader.fail("header key 'n_particles' is repeated");
             count_ = reader.parseCount(tokens[2]);
+        } else if (key == "seed") {
+            if (seed_) reader.fail("header key 'seed' is repeated");
+            seed_ = reader.parseSeed(tokens[2]);
+        } else if (key == "reduced_pressure") {
+            if (reducedPressure_) reader.fail("header key 'reduced_pressure' is repeated");
+            reducedPressure_ = reader.parseDouble(tokens[2]);
         } else if (const auto it = values_.find(key); it != values_.end()) {
             if (it->second) reader.fail("header key '" + key + "' is repeated");
             it->second = reader.parseDouble(tokens[2]);
@@ -135,8 +154,15 @@ class TextHeader {
     }
     long long count() const { return *count_; }
     double value(const std::string& key) const { return *values_.at(key); }
+    /// The optional keys, where given.
+    void setOptional(Packing& packing) const {
+        packing.reducedPressure = reducedPressure_;
+        packing.seed = seed_;
+    }
 
   private:
+    std::optional<double> reducedPressure_;
+    std::optional<std::uint64_t> seed_;
     std::map<std::string, std::optional<double>> values_ = {
         {"p", std::nullopt}, {"semi_axis", std::nullopt}, {"box_length", std::nullopt}};
     std::optional<long long> count_;
@@ -183,6 +209,7 @@ Packing readTextPacking(const fs::path& file) {
     packing.p = header.value("p");
     packing.semiAxis = header.value("semi_axis");
     packing.boxLength = header.value("box_length");
+    header.setOptional(packing);
     validatePacking(packing, reader.name());
     canonicalizePacking(packing);
     return packing;
@@ -213,6 +240,19 @@ void writeExtendedXyz(const Packing& packing, const fs::path& file) {
                 << roundness << '\n';
         }
     });
+}
+
+std::vector<std::string> notCarriedBy(const Packing& packing, bool extendedXyz) {
+    std::vector<std::string> left;
+    if (extendedXyz && packing.reducedPressure) left.emplace_back("reduced_pressure");
+    if (extendedXyz && packing.seed) left.emplace_back("seed");
+    if (!packing.velocities.empty()) left.emplace_back("velocities");
+    if (!packing.angularVelocities.empty()) left.emplace_back("angular velocities");
+    if (!packing.provenance.empty() || !packing.generatorVersion.empty())
+        left.emplace_back("provenance");
+    if (!packing.resumeState.empty() || !packing.pairRecords.empty())
+        left.emplace_back("resume state (a checkpoint's)");
+    return left;
 }
 
 } // namespace sbpack

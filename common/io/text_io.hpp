@@ -6,6 +6,8 @@
 #include "packing/packing.hpp"
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace sbpack {
 
@@ -15,9 +17,12 @@ namespace sbpack {
 ///   # semi_axis 0.5
 ///   # box_length 10
 ///   # n_particles N
+///   # reduced_pressure 1e+12     (where the packing has one)
+///   # seed 1                     (likewise)
 ///   # columns x y z qw qx qy qz
-/// then one particle per line at full precision (17 significant digits). Velocities, seed and
-/// provenance are not part of the text format.
+/// then one particle per line at full precision (17 significant digits). Velocities and
+/// provenance are not part of the text format (notCarriedBy). The reduced pressure sets the jam
+/// check's contact tolerance, so a packing keeps its contact numbers through the text format.
 void writeTextPacking(const Packing& packing, const std::filesystem::path& file);
 
 /// Reads the text format. Other comment lines and blank lines are ignored. Throws
@@ -30,6 +35,10 @@ Packing readTextPacking(const std::filesystem::path& file);
 /// (readTextPacking), anything else the HDF5 file (readPacking, whose errors name a `.xyz` as
 /// output only). Every reader of the tools takes its inputs through here (issue 43).
 Packing readPackingFile(const std::filesystem::path& file);
+
+/// What of `packing` the text format (or, with `extendedXyz`, the XYZ export) leaves out, in
+/// words ("velocities", "provenance", ...): what `convert` warns of (issue 65 item 4).
+std::vector<std::string> notCarriedBy(const Packing& packing, bool extendedXyz);
 
 /// Writes an extended-XYZ file that OVITO opens with the periodic cell, orientations and
 /// superquadric shapes (Properties species, pos, orientation, aspherical_shape,

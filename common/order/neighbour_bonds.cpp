@@ -86,7 +86,8 @@ NeighbourBonds contactBonds(const Packing& packing, const std::vector<std::pair<
                             a, b, count));
         const int i = std::min(a, b);
         const int j = std::max(a, b);
-        result.add(i, j, minimumImage(packing.positions[j] - packing.positions[i], packing.boxLength));
+        result.add(i, j,
+                   minimumImage(packing.positions[j] - packing.positions[i], packing.boxLength));
     }
     return result;
 }

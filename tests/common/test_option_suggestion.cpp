@@ -6,8 +6,9 @@
 namespace sbpack {
 namespace {
 
-const std::vector<std::string> kKnown{"--gamma-slow", "--gamma-fast", "--pores", "--pore-voxels",
-                                      "--voxels", "--seed", "--n", "--p", "--threads"};
+const std::vector<std::string> kKnown{"--gamma-slow",  "--gamma-fast", "--pores",
+                                      "--pore-voxels", "--voxels",     "--seed",
+                                      "--n",           "--p",          "--threads"};
 
 TEST(OptionSuggestion, UnderscoresAreReadAsHyphens) {
     EXPECT_EQ(closestOptions("--gamma_slow", kKnown), std::vector<std::string>{"--gamma-slow"});
@@ -28,7 +29,8 @@ TEST(OptionSuggestion, APrefixSuggestsEveryOptionItBegins) {
 
 TEST(OptionSuggestion, ShortNamesAllowOneEditAndNothingFarIsSuggested) {
     EXPECT_EQ(closestOptions("--m", kKnown), (std::vector<std::string>{"--n", "--p"}));
-    EXPECT_TRUE(closestOptions("--xy", kKnown).empty()); // two edits from --n: too far for 2 letters
+    EXPECT_TRUE(
+        closestOptions("--xy", kKnown).empty()); // two edits from --n: too far for 2 letters
     EXPECT_TRUE(closestOptions("--bogus", kKnown).empty());
     EXPECT_TRUE(closestOptions("--temperature", kKnown).empty());
 }

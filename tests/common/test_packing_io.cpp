@@ -522,6 +522,36 @@ TEST_F(TextIo, RoundTripIsBitExact) {
     }
 }
 
+// Issue 65 item 4: the reduced pressure (it sets the jam check's tolerance, so Z and phi_R) and
+// the seed survive the text format; what it cannot carry is named for convert's warning.
+TEST_F(TextIo, CarriesThePressureAndSeedAndNamesWhatItLeavesOut) {
+    Packing original = makePacking();
+    original.reducedPressure = 1.0761381753160638e8;
+    original.seed = 9007199254740992;
+    const fs::path path = file("pressure.txt");
+    writeTextPacking(original, path);
+    const Packing read = readTextPacking(path);
+    EXPECT_EQ(read.reducedPressure, original.reducedPressure);
+    EXPECT_EQ(read.seed, original.seed);
+    const std::vector<std::string> left{"velocities", "angular velocities", "provenance",
+                                        "resume state (a checkpoint's)"};
+    EXPECT_EQ(notCarriedBy(original, false), left); // makePacking has them all
+    std::vector<std::string> leftByXyz{"reduced_pressure", "seed"};
+    leftByXyz.insert(leftByXyz.end(), left.begin(), left.end());
+    EXPECT_EQ(notCarriedBy(original, true), leftByXyz);
+    EXPECT_TRUE(notCarriedBy(read, false).empty());
+    const fs::path bare = textFile(std::string(kHeader) + "# n_particles 1\n1 2 3 1 0 0 0\n");
+    EXPECT_FALSE(readTextPacking(bare).reducedPressure.has_value());
+    expectError<PackingFileError>(
+        [&] {
+            readTextPacking(textFile(std::string(kHeader) +
+                                         "# reduced_pressure 1e6\n# reduced_pressure 1e7\n# "
+                                         "n_particles 1\n1 2 3 1 0 0 0\n",
+                                     "twice.txt"));
+        },
+        {"twice.txt", "'reduced_pressure' is repeated"});
+}
+
 TEST_F(TextIo, ReadsCommentsBlankLinesAndCarriageReturns) {
     const fs::path path =
         textFile(std::string(kHeader) + "# n_particles 2\n# a free comment\n\r\n"
