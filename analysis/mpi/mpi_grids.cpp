@@ -29,12 +29,6 @@ void initFftwMpi() {
     static_cast<void>(ready);
 }
 
-unsigned plannerFlags(FftPlanning planning) {
-    return planning == FftPlanning::Estimate  ? FFTW_ESTIMATE
-           : planning == FftPlanning::Measure ? FFTW_MEASURE
-                                              : FFTW_PATIENT;
-}
-
 /// This rank's part of FFTW's transposed r2c transform of an M^3 grid.
 struct FftSlab {
     ptrdiff_t complexCount = 0;   ///< fftw_complex numbers to allocate
@@ -96,8 +90,10 @@ class MpiGrids final : public DistributedGrids {
     /// Collective: this rank's voxelization of x-planes [begin, end) and the grid's solid count.
     SlabVoxels voxelizeSlab(const Packing& packing, int voxels, int begin, int end,
                             const Progress& progress) const;
-    /// FFTW's plan of the transform of `data`, with the wisdom file read on rank 0 and shared.
-    fftw_plan_s* plan(int m, double* data, const FftSettings& fft, const Progress& progress) const;
+    /// FFTW's plan of the transform of `data` by the planning policy (planWithinBudget,
+    /// collective), with the wisdom file read on rank 0 and shared; `source` says which plan.
+    fftw_plan_s* plan(int m, double* data, const FftSettings& fft, const Progress& progress,
+                      FftPlanSource& source) const;
 
     const MpiCommunicator& comm_;
 };
@@ -126,16 +122,16 @@ SlabVoxels MpiGrids::voxelize(const Packing& packing, int voxels, const Progress
                         static_cast<int>(s.start0 + s.n0), progress);
 }
 
-fftw_plan_s* MpiGrids::plan(int m, double* data, const FftSettings& fft,
-                            const Progress& progress) const {
+fftw_plan_s* MpiGrids::plan(int m, double* data, const FftSettings& fft, const Progress& progress,
+                            FftPlanSource& source) const {
     if (comm_.rank() == 0) importWisdom(fft.wisdomFile, progress);
     fftw_mpi_broadcast_wisdom(comm_.comm());
-    fftw_plan_s* p =
-        fftw_mpi_plan_dft_r2c_3d(m, m, m, data, reinterpret_cast<fftw_complex*>(data), comm_.comm(),
-                                 plannerFlags(fft.planning) | FFTW_MPI_TRANSPOSED_OUT);
-    if (p == nullptr)
-        throw std::runtime_error("FFTW: cannot plan a distributed " + std::to_string(m) +
-                                 "^3 transform");
+    fftw_plan_s* p = nullptr;
+    source = planWithinBudget(m, fft, true, [&](unsigned flags) {
+        p = fftw_mpi_plan_dft_r2c_3d(m, m, m, data, reinterpret_cast<fftw_complex*>(data),
+                                     comm_.comm(), flags | FFTW_MPI_TRANSPOSED_OUT);
+        return p != nullptr;
+    });
     fftw_mpi_gather_wisdom(comm_.comm());
     if (comm_.rank() == 0 && fft.planning != FftPlanning::Estimate)
         exportWisdom(fft.wisdomFile, progress);
@@ -157,10 +153,8 @@ SpectralDensityResult MpiGrids::spectralDensity(const Packing& packing, const Sl
     });
     Stopwatch clock;
     const std::unique_ptr<fftw_plan_s, DestroyPlan> transform(
-        plan(m, data.get(), parameters.fft, progress));
+        plan(m, data.get(), parameters.fft, progress, result.planSource));
     result.planSeconds = clock.seconds();
-    result.planSource = parameters.fft.planning == FftPlanning::Estimate ? FftPlanSource::Estimate
-                                                                         : FftPlanSource::Measured;
     clock = Stopwatch();
     const std::int64_t rowStride = 2 * (m / 2 + 1);
     collectively(comm_, [&] {

@@ -53,6 +53,48 @@ std::string_view fftPlanSourceName(FftPlanSource source) {
     return "?";
 }
 
+namespace {
+
+unsigned plannerFlags(FftPlanning planning) {
+    switch (planning) {
+    case FftPlanning::Estimate:
+        return FFTW_ESTIMATE;
+    case FftPlanning::Measure:
+        return FFTW_MEASURE;
+    case FftPlanning::Patient:
+        return FFTW_PATIENT;
+    }
+    return FFTW_ESTIMATE;
+}
+
+} // namespace
+
+FftPlanSource planWithinBudget(int voxels, const FftSettings& fft, bool collective,
+                               const std::function<bool(unsigned flags)>& plan) {
+    const auto planned = [&](unsigned flags, FftPlanSource source) {
+        if (!plan(flags))
+            throw std::runtime_error("FFTW: cannot plan the " + std::to_string(voxels) +
+                                     "^3 transform");
+        return source;
+    };
+    const unsigned flags = plannerFlags(fft.planning);
+    if (fft.planning == FftPlanning::Estimate) return planned(flags, FftPlanSource::Estimate);
+    if (plan(flags | FFTW_WISDOM_ONLY)) return FftPlanSource::Wisdom;
+    if (!std::isfinite(fft.planningBudget)) return planned(flags, FftPlanSource::Measured);
+    if (predictedPlanningSeconds(voxels, fft.planning) > fft.planningBudget)
+        return planned(FFTW_ESTIMATE, FftPlanSource::OverBudget);
+    if (collective) return planned(flags, FftPlanSource::Measured);
+    fftw_set_timelimit(std::max(fft.planningBudget, 0.0));
+    try {
+        planned(flags, FftPlanSource::MeasuredBudget);
+    } catch (...) {
+        fftw_set_timelimit(FFTW_NO_TIMELIMIT);
+        throw;
+    }
+    fftw_set_timelimit(FFTW_NO_TIMELIMIT);
+    return FftPlanSource::MeasuredBudget;
+}
+
 double predictedPlanningSeconds(int voxels, FftPlanning planning) {
     if (planning == FftPlanning::Estimate) return 0.0;
     // 20 s at n = 300^3 (bench/RESULTS.md, "FFT planning"): c = 20 / (n log2 n).

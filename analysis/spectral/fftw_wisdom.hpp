@@ -6,6 +6,7 @@
 #include "progress/progress.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <string_view>
 
@@ -46,6 +47,18 @@ std::string_view fftPlanSourceName(FftPlanSource source);
 /// (bench/RESULTS.md, "FFT planning": 20 s for a measured 300^3 plan on 2 threads), patient 10
 /// times measure; 0 for estimate.
 double predictedPlanningSeconds(int voxels, FftPlanning planning);
+
+/// The one planning policy of sbanalyze's transforms, serial and distributed (issue 65 item 6:
+/// --distribute grids measured past the budget). `plan(flags)` calls FFTW's planner of the
+/// transform with those flags, keeps the plan and returns whether there is one. In order:
+/// --fft-plan estimate; the wisdom's plan (FFTW_WISDOM_ONLY); measured without a budget; an
+/// estimate plan where measuring is predicted over the budget (predictedPlanningSeconds);
+/// else measured, with FFTW's time limit at the budget as a backstop where `collective` is
+/// false (a collective MPI planner gets none: ranks cut off at different moments could choose
+/// different plans). Returns where the plan came from; throws std::runtime_error where FFTW
+/// returns no plan.
+FftPlanSource planWithinBudget(int voxels, const FftSettings& fft, bool collective,
+                               const std::function<bool(unsigned flags)>& plan);
 
 /// $XDG_CACHE_HOME/sbpack/fftw-wisdom, else $HOME/.cache/sbpack/fftw-wisdom; empty if neither
 /// variable is set.

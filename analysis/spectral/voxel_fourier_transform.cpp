@@ -15,53 +15,19 @@ namespace sbpack {
 
 namespace {
 
-unsigned plannerFlags(FftPlanning planning) {
-    switch (planning) {
-    case FftPlanning::Estimate:
-        return FFTW_ESTIMATE;
-    case FftPlanning::Measure:
-        return FFTW_MEASURE;
-    case FftPlanning::Patient:
-        return FFTW_PATIENT;
-    }
-    return FFTW_ESTIMATE;
-}
-
 struct PlanDeleter {
     void operator()(fftw_plan_s* plan) const { fftw_destroy_plan(plan); }
 };
 using Plan = std::unique_ptr<fftw_plan_s, PlanDeleter>;
 
-/// The plan of an in-place M^3 r2c transform of `data`: from the wisdom if it holds one; else,
-/// when measuring is predicted to exceed the budget (predictedPlanningSeconds), an estimate
-/// plan; else measured, with FFTW's time limit at the budget as a backstop (FFTW then keeps the
-/// best plan found so far). FFTW_MEASURE overwrites the array.
+/// The plan of an in-place M^3 r2c transform of `data`, by the planning policy
+/// (planWithinBudget). FFTW_MEASURE overwrites the array.
 Plan planTransform(int m, double* data, const FftSettings& fft, FftPlanSource& source) {
-    auto plan = [&](unsigned flags) {
-        return Plan(
-            fftw_plan_dft_r2c_3d(m, m, m, data, reinterpret_cast<fftw_complex*>(data), flags));
-    };
-    const unsigned flags = plannerFlags(fft.planning);
-    if (fft.planning == FftPlanning::Estimate) {
-        source = FftPlanSource::Estimate;
-        return plan(flags);
-    }
-    if (Plan p = plan(flags | FFTW_WISDOM_ONLY)) {
-        source = FftPlanSource::Wisdom;
-        return p;
-    }
-    if (!std::isfinite(fft.planningBudget)) {
-        source = FftPlanSource::Measured;
-        return plan(flags);
-    }
-    if (predictedPlanningSeconds(m, fft.planning) > fft.planningBudget) {
-        source = FftPlanSource::OverBudget;
-        return plan(FFTW_ESTIMATE);
-    }
-    source = FftPlanSource::MeasuredBudget;
-    fftw_set_timelimit(std::max(fft.planningBudget, 0.0));
-    Plan p = plan(flags);
-    fftw_set_timelimit(FFTW_NO_TIMELIMIT);
+    Plan p;
+    source = planWithinBudget(m, fft, false, [&](unsigned flags) {
+        p.reset(fftw_plan_dft_r2c_3d(m, m, m, data, reinterpret_cast<fftw_complex*>(data), flags));
+        return p != nullptr;
+    });
     return p;
 }
 

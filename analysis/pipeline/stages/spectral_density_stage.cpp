@@ -45,15 +45,20 @@ std::string budgetNote(const FftSettings& fft, int voxels, FftPlanSource source)
                        describe(fft.planningBudget, 3));
 }
 
+/// The plan's line: "FFT plan  0.2 s  300^3, measure: wisdom" (whole grids and slabs alike).
+void reportPlan(const Progress& progress, const FftSettings& fft, int voxels, double seconds,
+                FftPlanSource source) {
+    progress.stageDone("FFT plan", seconds,
+                       fmt::format("{}^3, {}: {}{}", voxels, fftPlanningName(fft.planning),
+                                   fftPlanSourceName(source), budgetNote(fft, voxels, source)));
+}
+
 /// chi of the kept whole voxelization; the voxel spectrum kept for hyper.
 SpectralDensityResult wholeGrid(FileContext& context, const SpectralDensityParameters& parameters) {
     const Voxelization& voxels = context.kept<Voxelization>(Analysis::Voxels);
     const VoxelFourierTransform transform(voxels, parameters.fft, context.progress());
-    context.progress().stageDone(
-        "FFT plan", transform.planSeconds(),
-        fmt::format("{}^3, {}: {}{}", transform.voxels(), fftPlanningName(parameters.fft.planning),
-                    fftPlanSourceName(transform.planSource()),
-                    budgetNote(parameters.fft, transform.voxels(), transform.planSource())));
+    reportPlan(context.progress(), parameters.fft, transform.voxels(), transform.planSeconds(),
+               transform.planSource());
     SpectralDensityResult s =
         SpectralDensity(parameters)
             .compute(context.packing(), voxels, transform, context.progress());
@@ -73,10 +78,12 @@ bool runSpectralDensity(FileContext& context, schema::Record& record) {
     const SpectralDensityParameters parameters = context.settings().spectralDensity();
     DistributionFigures figures;
     SpectralDensityResult s;
-    if (context.grids() != nullptr)
+    if (context.grids() != nullptr) {
         s = context.grids()->spectralDensity(context.packing(),
                                              context.kept<SlabVoxels>(Analysis::Voxels), parameters,
                                              context.progress(), figures);
+        reportPlan(context.progress(), parameters.fft, s.voxels, s.planSeconds, s.planSource);
+    }
 #ifdef SBPACK_WITH_CUDA
     else if (context.settings().device.device == ComputeDevice::Cuda)
         s = cudaSpectralDensity(context, parameters);
