@@ -38,12 +38,12 @@ int analyzeCommand(const RunSettings& settings, const Communicator& communicator
 }
 
 int infoCommand(const std::vector<std::string>& files, const ContactParameters& parameters,
-                std::ostream& out, std::ostream& err) {
+                const JammingSettings* jamming, std::ostream& out, std::ostream& err) {
     if (files.empty()) throw std::invalid_argument("info: no packing file given");
     int failures = 0;
     for (const std::string& file : files) {
         try {
-            printPackingInfo(file, packingInfo(file, parameters), out);
+            printPackingInfo(file, packingInfo(file, parameters, jamming), out);
         } catch (const std::exception& e) {
             err << "sbanalyze: error: " << e.what() << '\n';
             ++failures;
