@@ -236,8 +236,9 @@ constexpr std::array kJammingRows{
     OptionRow{
         "jamming-categories", "LIST",
         "jamming: the categories tested, of local, collective and strict\n"
-        "(default {}); collective and strict solve linear programs over the\n"
-        "whole packing: about 15 s each at N = 1000, minutes at N = 5000 (docs/jamming.md §3)",
+        "(default {}); collective and strict solve linear\n"
+        "programs over the whole packing: about 15 s each at N = 1000, minutes at\n"
+        "N = 5000 (docs/jamming.md §3)",
         [](Settings& s, Text o, Text v) { s.jamming.categories = parseJammingCategories(o, v); },
         [](const Settings& d) { return jammingCategoryNames(d.jamming.categories); }},
     OptionRow{"jamming-tolerance", "T",
