@@ -69,12 +69,34 @@ def _field_property(group, field):
             f"        return self._field({group!r}, {field['name']!r})\n")
 
 
-def _result_class(row, schema):
+def _group_property(group, title):
+    doc = f"The group {group}, {title}, as a dict of its fields (docs/results-schema.md)"
+    doc = "\n".join(textwrap.wrap(doc.replace('"', "'"), 88, break_on_hyphens=False))
+    return (f"    @property\n"
+            f"    def {group}(self) -> \"dict | None\":\n"
+            f"        \"\"\"{textwrap.indent(doc, '        ').lstrip()}\n"
+            f"        (None where the run did not write it.)\"\"\"\n"
+            f"        return self.groups.get({group!r})\n")
+
+
+def _shared_tables(row, schema):
+    """The row's own groups that share their fields with another of them (jamming_local,
+    jamming_collective, jamming_strict): each is one property, a dict, since their names
+    coincide."""
+    names = {g: [f["name"] for f in schema.get(g, [])] for g in row["groups"]}
+    return {g for g in names if [h for h in names if names[h] == names[g]] != [g]}
+
+
+def _result_class(row, schema, titles):
     """The result class: a property per field of its groups, its own groups first, each name
-    once (the first group that has it gives it)."""
+    once (the first group that has it gives it); groups that share one table a property each."""
     name = row["python_class"] + "Result"
     seen, properties = set(), []
+    shared = _shared_tables(row, schema)
     for group in [*row["groups"], *row["need_groups"], "file"]:
+        if group in shared:
+            properties.append(_group_property(group, titles[group]))
+            continue
         for field in schema.get(group, []):
             if field["name"].isidentifier() and field["name"] not in seen:
                 seen.add(field["name"])
@@ -133,13 +155,14 @@ def generate(_sbpack):
     schema = {g["path"].removeprefix("files/<i>/"): g["fields"] for g in groups
               if g["path"].startswith("files/<i>/")}
     schema["file"] = next(g["fields"] for g in groups if g["path"] == "files/<i>")
+    titles = {g["path"].removeprefix("files/<i>/"): g["title"] for g in groups}
     parts = ['"""The analyses of sbanalyze as classes, generated at build time by\n'
              'python/generate_analysis_classes.py from sbanalyze\'s registry, option table and '
              'results\nschema (docs/python.md, "Analyses"). Do not edit."""\n',
              "import numpy  # noqa: F401 (the fields' annotations)\n",
              "from .analysis_base import Analysis, Result\n"]
     for row in rows:
-        parts.append(_result_class(row, schema))
+        parts.append(_result_class(row, schema, titles))
         parts.append(_analysis_class(row, options))
     classes = ", ".join(row["python_class"] for row in rows)
     parts.append(f"ANALYSES = ({classes},)\n")

@@ -65,8 +65,9 @@ class CommandLine {
     RunSettings settings_ = defaultRunSettings();
     std::vector<std::string> inputs_;
     CLI::App* info_ = nullptr;
-    RunSettings infoSettings_; ///< info reads only the contact options
+    RunSettings infoSettings_; ///< info reads only the contact and jamming options
     std::vector<std::string> infoFiles_;
+    bool infoJamming_ = false;
     CLI::App* convert_ = nullptr;
     std::string convertIn_, convertOut_;
     CLI::App* schema_ = nullptr;
@@ -98,6 +99,12 @@ void CommandLine::addSubcommands() {
                 "gap or worst overlap, Z over non-rattlers and the rattler fraction phi_R");
     const RunSettings defaults = defaultRunSettings();
     for (std::string_view name : {"tolerance", "rattler-threshold"})
+        addOption(*info_, infoSettings_, findOption(name), defaults);
+    info_->add_flag("--jamming", infoJamming_,
+                    "also test the jamming categories at first order, as --compute jamming\n"
+                    "(docs/jamming.md), with the options below");
+    for (std::string_view name :
+         {"jamming-categories", "jamming-tolerance", "jamming-max-step", "jamming-contacts"})
         addOption(*info_, infoSettings_, findOption(name), defaults);
     info_->add_option("FILE", infoFiles_,
                       "packing files (.h5 or .txt); a bad one is reported, the others still are");
@@ -165,11 +172,18 @@ void CommandLine::parse(int argc, const char* const* argv) {
         refuseAnalysisOptionsWith(*sub);
     if (schemaMarkdown_ && schemaJson_)
         throw std::invalid_argument("schema: --markdown and --json exclude each other");
+    for (const CLI::Option* option : info_->get_options())
+        if (!infoJamming_ && option->count() > 0 && option->get_name().starts_with("--jamming-"))
+            throw std::invalid_argument(
+                fmt::format("option {}: info tests the jamming categories only with --jamming",
+                            option->get_name()));
     finishAnalysis();
 }
 
 int CommandLine::run(std::ostream& out, std::ostream& err) {
-    if (info_->parsed()) return infoCommand(infoFiles_, infoSettings_.contacts, out, err);
+    if (info_->parsed())
+        return infoCommand(infoFiles_, infoSettings_.contacts,
+                           infoJamming_ ? &infoSettings_.jamming : nullptr, out, err);
     if (convert_->parsed()) return convertCommand(convertIn_, convertOut_, err);
     if (schema_->parsed()) return schemaCommand(schemaJson_, schemaPacking_, out);
     return analyzeCommand(settings_, communicator_);

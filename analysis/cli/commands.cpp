@@ -41,12 +41,12 @@ int analyzeCommand(const RunSettings& settings, const Communicator& communicator
 }
 
 int infoCommand(const std::vector<std::string>& files, const ContactParameters& parameters,
-                std::ostream& out, std::ostream& err) {
+                const JammingSettings* jamming, std::ostream& out, std::ostream& err) {
     if (files.empty()) throw std::invalid_argument("info: no packing file given");
     int failures = 0;
     for (const std::string& file : files) {
         try {
-            printPackingInfo(file, packingInfo(file, parameters), out);
+            printPackingInfo(file, packingInfo(file, parameters, jamming), out);
         } catch (const std::exception& e) { // readers name the file, analyses do not
             const std::string what = e.what(), name = "'" + file + "'";
             err << "sbanalyze: error: " << (what.find(name) == std::string::npos ? name + ": " : "")

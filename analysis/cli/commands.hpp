@@ -14,9 +14,10 @@ namespace sbpack {
 /// Each returns the exit status; bad input throws std::invalid_argument (or the reader's error)
 /// naming the file and the problem.
 int analyzeCommand(const RunSettings& settings, const Communicator& communicator);
-/// Reports every file; a bad one is an error line on `err`, and the status is then 1.
+/// Reports every file; a bad one is an error line on `err`, and the status is then 1. Given
+/// `jamming`, the report adds the jamming categories (info --jamming).
 int infoCommand(const std::vector<std::string>& files, const ContactParameters& parameters,
-                std::ostream& out, std::ostream& err);
+                const JammingSettings* jamming, std::ostream& out, std::ostream& err);
 int convertCommand(const std::string& input, const std::string& output, std::ostream& err);
 /// The results schema as Markdown (docs/results-schema.md) or, with `json`, as JSON; with
 /// `packing`, the packing file's (docs/packing-schema.md).

@@ -8,7 +8,8 @@
 
 namespace sbpack {
 
-PackingInfo packingInfo(const std::filesystem::path& file, const ContactParameters& parameters) {
+PackingInfo packingInfo(const std::filesystem::path& file, const ContactParameters& parameters,
+                        const JammingSettings* jamming) {
     Packing packing = readPackingFile(file);
     const double meanWidth = packing.shape().meanWidth();
     ContactResult contacts = ContactNetwork(parameters).compute(packing);
@@ -18,8 +19,10 @@ PackingInfo packingInfo(const std::filesystem::path& file, const ContactParamete
         jam = checkJam(packing, *packing.reducedPressure);
     OrderMetrics order = measureOrder(packing, &contacts.contacts);
     OrderVerdict verdict = orderVerdict(order);
+    std::optional<PackingJamming> categories;
+    if (jamming) categories = testJammingCategories(packing, *jamming, parameters);
     return {std::move(packing), meanWidth,        std::move(contacts), std::move(resolution),
-            std::move(jam),     std::move(order), std::move(verdict)};
+            std::move(jam),     std::move(order), std::move(verdict),  std::move(categories)};
 }
 
 namespace {
@@ -40,6 +43,25 @@ void printOrder(const PackingInfo& info, std::ostream& out) {
     if (info.verdict.ordered)
         out << "  warning: this packing has ordered (" << info.verdict.reason
             << "): it is not MRJ, whatever the jam check says\n";
+}
+
+/// The jamming categories: the network, a line per category tested, the category reached.
+void printJamming(const PackingJamming& j, std::ostream& out) {
+    out << std::setprecision(3) << "  jamming              first order, contacts at gap < "
+        << j.tolerance << " D (" << j.toleranceFrom << "): backbone " << j.backbone << " of "
+        << j.particles << " particles, " << j.contacts << " contacts\n";
+    for (const JammingResult& t : j.tests) {
+        out << "    " << std::left << std::setw(17) << jammingCategoryName(t.category) << std::right
+            << firstOrderVerdictName(t.verdict);
+        if (!t.freed.empty()) out << ", " << t.freed.size() << " particles freed";
+        if (t.opening) out << ", an opening moves " << t.opening->moving.size();
+        if (t.flex) out << ", a flex moves " << t.flex->moving.size();
+        if (t.category != JammingCategory::Local)
+            out << " (Maxwell deficit " << t.isostaticDeficit << ")";
+        out << "  [" << t.seconds << " s]\n";
+    }
+    out << "  jamming category     " << j.reachedName() << ": " << j.verdict() << '\n'
+        << std::setprecision(6);
 }
 
 } // namespace
@@ -79,6 +101,7 @@ void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info
     else
         out << "  jam check            none: the file has no reduced pressure\n";
     printOrder(info, out);
+    if (info.jamming) printJamming(*info.jamming, out);
     if (c.overlappingPairs > 0) out << "  warning: " << describeOverlaps(c, diameter) << '\n';
 }
 

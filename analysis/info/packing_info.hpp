@@ -4,6 +4,7 @@
 #include "contacts/contact_network.hpp"
 #include "contacts/contact_resolution.hpp"
 #include "contacts/jam_check.hpp"
+#include "jamming/jamming_categories.hpp"
 #include "order/order_metrics.hpp"
 #include "packing/packing.hpp"
 
@@ -26,10 +27,14 @@ struct PackingInfo {
     /// (docs/order-metrics.md §5).
     OrderMetrics order;
     OrderVerdict verdict;
+    /// The jamming categories at first order (info --jamming; docs/jamming.md); absent without.
+    std::optional<PackingJamming> jamming;
 };
 
-/// Reads and validates FILE (throws with its name on bad input), then analyses contacts.
-PackingInfo packingInfo(const std::filesystem::path& file, const ContactParameters& parameters);
+/// Reads and validates FILE (throws with its name on bad input), then analyses contacts and,
+/// given `jamming`, tests the jamming categories.
+PackingInfo packingInfo(const std::filesystem::path& file, const ContactParameters& parameters,
+                        const JammingSettings* jamming = nullptr);
 
 /// Human-readable report; overlaps are a warning naming the worst pair and its depth.
 void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info,

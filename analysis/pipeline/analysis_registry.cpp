@@ -2,6 +2,7 @@
 
 #include "contacts/contacts_fields.hpp"
 #include "hyperuniformity/hyperuniformity_fields.hpp"
+#include "jamming/jamming_fields.hpp"
 #include "order/order_fields.hpp"
 #include "pipeline/stages/stages.hpp"
 #include "pores/pore_size_fields.hpp"
@@ -33,6 +34,8 @@ constexpr std::array<const schema::Group*, 1> kTransportGroups{&kTransportGroup}
 constexpr std::array<const schema::Group*, 1> kOrderGroups{&kOrderGroup};
 constexpr std::array<const schema::Group*, 3> kHyperuniformityGroups{
     &kSpreadabilityGroup, &kHyperuniformityGroup, &kSpreadabilityDebyeGroup};
+constexpr std::array<const schema::Group*, 4> kJammingGroups{
+    &kJammingGroup, &kJammingLocalGroup, &kJammingCollectiveGroup, &kJammingStrictGroup};
 
 using Options = std::string_view;
 constexpr std::array<Options, 2> kContactOptions{"tolerance", "rattler-threshold"};
@@ -43,10 +46,15 @@ constexpr std::array<Options, 1> kVoxelOptions{"voxels"};
 constexpr std::array<Options, 4> kPoreOptions{"pore-voxels", "pores", "pore-points", "pore-seed"};
 constexpr std::array<Options, 5> kHyperuniformityOptions{
     "chi-exact-qmax", "fit-qmax", "alpha-window", "bootstrap", "spread-times"};
+// The network's rattlers by --rattler-threshold, and its tolerance --tolerance where the file
+// has no reduced pressure (docs/jamming.md §2).
+constexpr std::array<Options, 6> kJammingOptions{"jamming-categories", "jamming-tolerance",
+                                                 "jamming-max-step",   "jamming-contacts",
+                                                 "tolerance",          "rattler-threshold"};
 
 // One row per analysis (docs/architecture.md, "Add an analysis"): its results groups are
 // declared beside its result, its stage in pipeline/stages/.
-constexpr std::array<AnalysisInfo, 8> kRegistry{{
+constexpr std::array<AnalysisInfo, 9> kRegistry{{
     {.analysis = Analysis::Contacts,
      .name = "contacts",
      .groups = kContactsGroups,
@@ -124,6 +132,16 @@ constexpr std::array<AnalysisInfo, 8> kRegistry{{
      .needs = kOrderNeeds,
      .run = stages::runOrder,
      .pythonClass = "Order"},
+    {.analysis = Analysis::Jamming,
+     .name = "jamming",
+     .groups = kJammingGroups,
+     .description = "jamming categories at first order (local, collective, strict; "
+                    "docs/jamming.md): the category reached, the unjamming motions; not in all",
+     .run = stages::runJamming,
+     .finishEnsemble = stages::countJammingCategories,
+     .options = kJammingOptions,
+     .pythonClass = "Jamming",
+     .inAll = false},
 }};
 
 /// The results groups of the registry's rows, in order.
@@ -210,7 +228,7 @@ AnalysisSet resolveAnalyses(std::string_view list) {
         begin = comma + 1;
         if (name == "all") {
             for (const AnalysisInfo& info : kRegistry)
-                addWithNeeds(info.analysis, set);
+                if (info.inAll) addWithNeeds(info.analysis, set);
         } else {
             addWithNeeds(byName(name).analysis, set);
         }

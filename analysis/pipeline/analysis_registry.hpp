@@ -30,6 +30,7 @@ enum class Analysis {
     Transport,       ///< k, tau, T1 from the pore-size moments (diffusion-controlled limit)
     Hyperuniformity, ///< excess spreadability, alpha, the small-Q fit and H (hyperuniformity/)
     Order,           ///< g2, Q4 and Q6, T, the cubatic P4 (common/order)
+    Jamming,         ///< the jamming categories at first order (common/jamming)
 };
 
 /// Which voxel grid an analysis works on: none, the spectral grid (--voxels, default 300 as the
@@ -71,6 +72,9 @@ struct AnalysisInfo {
     std::span<const std::string_view> options = {};
     /// Its class in Python's sbpack (python/sbpack/analyses.py makes it from this row).
     std::string_view pythonClass = "";
+    /// Whether --compute all runs it; false: only when named (jamming, whose linear programs
+    /// take minutes at N = 5000, more than every other analysis together; docs/jamming.md §3).
+    bool inAll = true;
 
     const schema::Group& group() const { return *groups.front(); }
 };
@@ -90,7 +94,7 @@ const AnalysisInfo& analysisInfo(Analysis analysis);
 /// The analyses to run: those named and, recursively, what they need.
 using AnalysisSet = std::set<Analysis>;
 
-/// Resolves a comma-separated list of names ("all" for every analysis). Throws
+/// Resolves a comma-separated list of names ("all" for every analysis with inAll). Throws
 /// std::invalid_argument naming an unknown or empty entry and listing the known names.
 AnalysisSet resolveAnalyses(std::string_view list);
 

@@ -65,10 +65,12 @@ std::string number(double x) {
 
 /// --compute's help after its own: the registry's analyses, one a line.
 std::string analysisList() {
-    std::string text;
-    for (const AnalysisInfo& info : analysisRegistry())
+    std::string text, left;
+    for (const AnalysisInfo& info : analysisRegistry()) {
         text += fmt::format("\n  {:<10}{}", info.name, info.description);
-    return text + "\n  all       every analysis above";
+        if (!info.inAll) left += (left.empty() ? "" : ", ") + std::string(info.name);
+    }
+    return text + "\n  all       every analysis above" + (left.empty() ? "" : " but " + left);
 }
 
 void parseThreads(Settings& s, Text option, Text v) {
@@ -102,7 +104,7 @@ constexpr std::array kRunRows{
               "needs voxels) and nothing else runs (sq alone voxelises nothing):",
               [](Settings& s, Text, Text v) { s.analyses = resolveAnalyses(v); },
               [](const Settings& d) {
-                  const bool all = d.analyses.size() == analysisRegistry().size();
+                  const bool all = d.analyses == resolveAnalyses("all");
                   return all ? std::string("all") : analysisNames(d.analyses);
               },
               analysisList},
@@ -236,6 +238,39 @@ constexpr std::array kHyperuniformityRows{
               }},
 };
 
+// The jamming categories (docs/jamming.md).
+constexpr std::array kJammingRows{
+    OptionRow{
+        "jamming-categories", "LIST",
+        "jamming: the categories tested, of local, collective and strict\n"
+        "(default {}); collective and strict solve linear\n"
+        "programs over the whole packing: about 15 s each at N = 1000, minutes at\n"
+        "N = 5000 (docs/jamming.md §3)",
+        [](Settings& s, Text o, Text v) { s.jamming.categories = parseJammingCategories(o, v); },
+        [](const Settings& d) { return jammingCategoryNames(d.jamming.categories); }},
+    OptionRow{"jamming-tolerance", "T",
+              "jamming: the contact network at gap < T D (default: the jam check's,\n"
+              "max(1e-10, 100 / P) D at the file's reduced pressure P; --tolerance where the\n"
+              "file has none)",
+              [](Settings& s, Text o, Text v) { s.jamming.tolerance = parsePositive(o, v, true); },
+              [](const Settings& d) {
+                  return d.jamming.tolerance ? number(*d.jamming.tolerance) : std::string();
+              }},
+    OptionRow{"jamming-max-step", "DELTA",
+              "jamming: the largest step of a motion, in units of D (default {}; with ideal\n"
+              "contacts it only scales the motions)",
+              [](Settings& s, Text o, Text v) { s.jamming.test.maxStep = parsePositive(o, v); },
+              [](const Settings& d) { return number(d.jamming.test.maxStep); }},
+    OptionRow{
+        "jamming-contacts", "ideal|gaps",
+        "jamming: ideal contacts (gap 0, as Donev et al. 2004) or their gaps, which a\n"
+        "motion may close (default {}; docs/jamming.md §4)",
+        [](Settings& s, Text o, Text v) {
+            s.jamming.test.useGaps = isSecondOf(o, v, "ideal", "gaps");
+        },
+        [](const Settings& d) { return std::string(d.jamming.test.useGaps ? "gaps" : "ideal"); }},
+};
+
 // FFTW (docs/design.md, "FFT planning").
 constexpr std::array kFftRows{
     OptionRow{"fft-plan", "P",
@@ -289,7 +324,7 @@ constexpr auto joinRows(const std::array<OptionRow, Sizes>&... parts) {
 }
 
 constexpr auto kOptionTable =
-    joinRows(kRunRows, kGridRows, kHyperuniformityRows, kFftRows, kOutputRows);
+    joinRows(kRunRows, kGridRows, kHyperuniformityRows, kJammingRows, kFftRows, kOutputRows);
 
 } // namespace
 

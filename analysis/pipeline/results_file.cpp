@@ -11,15 +11,18 @@ namespace sbpack {
 
 namespace {
 
-/// A one-dimensional dataset of `values` (float64 or int64 in the file) with its units.
+/// A dataset of `values`, one-dimensional or in rows, (float64 or int64 in the file) with its
+/// units.
 template <class T>
 void writeVector(hid_t parent, const schema::Field& field, const std::vector<T>& values) {
     static_assert(std::is_same_v<T, double> || std::is_same_v<T, std::int64_t>);
     const hid_t fileType = std::is_same_v<T, double> ? H5T_IEEE_F64LE : H5T_STD_I64LE;
     const hid_t memoryType = std::is_same_v<T, double> ? H5T_NATIVE_DOUBLE : H5T_NATIVE_INT64;
     const std::string name(field.name);
-    const hsize_t dims[1] = {values.size()};
-    const Hdf5Handle space(H5Screate_simple(1, dims, nullptr), H5Sclose);
+    // Rows of field.width values (n x 3) or one dimension (schema::Field::width).
+    const auto width = static_cast<hsize_t>(field.width);
+    const hsize_t dims[2] = {width > 0 ? values.size() / width : values.size(), width};
+    const Hdf5Handle space(H5Screate_simple(width > 0 ? 2 : 1, dims, nullptr), H5Sclose);
     const hid_t id = H5Dcreate2(parent, name.c_str(), fileType, space.get(), H5P_DEFAULT,
                                 H5P_DEFAULT, H5P_DEFAULT);
     if (id < 0) throw Hdf5Error("results file: cannot create dataset '" + name + "'");

@@ -6,6 +6,7 @@
 #include "contacts/contact_network.hpp"
 #include "gpu/compute_device.hpp"
 #include "hyperuniformity/hyperuniformity.hpp"
+#include "jamming/jamming_categories.hpp"
 #include "pipeline/analysis_registry.hpp"
 #include "pores/pore_size_settings.hpp"
 #include "spectral/spectral_density.hpp"
@@ -48,6 +49,7 @@ struct RunSettings {
     FftSettings fft;                           ///< chi: FFTW's planning (its Q range is sq's)
     PoreSizeSettings pores;                    ///< pores (and transport, which reads them)
     HyperuniformityParameters hyperuniformity; ///< hyper
+    JammingSettings jamming;                   ///< jamming, and info --jamming
 
     bool runs(Analysis analysis) const { return analyses.count(analysis) != 0; }
     /// chi's parameters: S(Q)'s Q range (--qmax serves both) and FFTW's planning.

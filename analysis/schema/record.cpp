@@ -2,6 +2,8 @@
 
 #include <functional>
 #include <stdexcept>
+#include <string>
+#include <variant>
 
 namespace sbpack::schema {
 
@@ -16,6 +18,13 @@ std::size_t valueIndex(const Field& f) {
     if (f.type == Type::String) return 2;
     if (f.kind == Kind::Attribute) return f.type == Type::Float ? 0 : 1;
     return f.type == Type::Float ? 3 : 4;
+}
+
+/// The values of a dataset (an attribute: 1).
+std::size_t flatSize(const Value& value) {
+    if (const auto* v = std::get_if<std::vector<double>>(&value)) return v->size();
+    if (const auto* v = std::get_if<std::vector<std::int64_t>>(&value)) return v->size();
+    return 1;
 }
 
 /// The required fields of `group` that `entries` (in the schema's order) lack.
@@ -51,6 +60,9 @@ const Field& Record::field(std::string_view name) const {
 Record& Record::store(const Field& field, Value value) {
     if (value.index() != valueIndex(field))
         throw std::logic_error(where(*group_, field.name) + ": value of the wrong kind or type");
+    if (field.width > 0 && flatSize(value) % static_cast<std::size_t>(field.width) != 0)
+        throw std::logic_error(where(*group_, field.name) + ": not rows of " +
+                               std::to_string(field.width) + " values");
     // Keep the schema's order: insert before the first entry declared after this field.
     auto at = entries_.begin();
     while (at != entries_.end() && at->field < &field)

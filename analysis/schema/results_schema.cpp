@@ -173,6 +173,11 @@ const Field* findField(const Group& group, std::string_view name) {
     return nullptr;
 }
 
+std::string shapeName(const Field& field) {
+    if (field.kind == Kind::Attribute) return "";
+    return field.width > 0 ? fmt::format("n x {}", field.width) : "n";
+}
+
 std::string unitsAttributeName(std::string_view attribute) {
     return std::string(attribute) + "_units";
 }

@@ -55,7 +55,13 @@ struct Field {
     Reduce reduce = Reduce::None;
     bool optional = false;      ///< written only in some cases (said in the description)
     std::string_view over = {}; ///< Reduce::Steps: the dataset it is a function of
+    /// A dataset of rows of `width` values (3: n x 3, one row per particle, as OVITO and h5py
+    /// read vectors), held flat in a Record; 0: one-dimensional.
+    int width = 0;
 };
+
+/// "n" for a one-dimensional dataset, "n x 3" for rows of width 3; "" for an attribute.
+std::string shapeName(const Field& field);
 
 /// Short names for the rows of a field table (here, and schema/field_table.hpp's).
 namespace columns {

@@ -41,9 +41,13 @@ Every dataset has a string attribute `units`; every numeric attribute `NAME` has
 attribute `NAME_units`. Units: `1` dimensionless; `length` the packing's length unit (that of
 `box_length`); `1/length`, `length^2`, `length^3`; `D` the major-axis length `2 semi_axis`;
 `time` the unit of the transport times (`length^2 / diffusion_coefficient`); `length^2/time`;
-`s` wall-clock seconds; `bytes`; `deg` angles in degrees and `1/deg` densities per degree; in
+`s` wall-clock seconds; `bytes`; `deg` angles in degrees and `1/deg` densities per degree; `rad`
+(small) rotations in radians; in
 units of the mean width `w` (`mean_width`) and the diffusion coefficient `D`: `w^3`,
 `w^(3+alpha)`, `w^2/D`.
+
+A dataset is one-dimensional (`n` values) unless its type says `n x 3`: then it has one row of
+three values per particle (a displacement or rotation vector), as OVITO and h5py read vectors.
 
 ## Names
 
@@ -67,6 +71,12 @@ std::string_view typeName(const Field& f) {
     return f.type == Type::Float ? "float64" : "int64";
 }
 
+/// "float64", or for a dataset of rows "float64, n x 3".
+std::string typeAndShape(const Field& f) {
+    return f.width > 0 ? fmt::format("{}, {}", typeName(f), shapeName(f))
+                       : std::string(typeName(f));
+}
+
 /// The renamed fields, for readers of older files.
 std::string renamedTable() {
     std::string out =
@@ -83,7 +93,7 @@ std::string table(const Group& group) {
     out += "| name | kind | type | units | description |\n|---|---|---|---|---|\n";
     for (const Field& f : group.fields)
         out += fmt::format("| `{}` | {} | {} | {} | {}{} |\n", f.name, kindName(f.kind),
-                           typeName(f), f.units.empty() ? "" : fmt::format("`{}`", f.units),
+                           typeAndShape(f), f.units.empty() ? "" : fmt::format("`{}`", f.units),
                            f.description, f.optional ? " (optional)" : "");
     return out;
 }
@@ -94,6 +104,7 @@ nlohmann::ordered_json groupJson(const Group& group) {
         fields.push_back({{"name", f.name},
                           {"kind", kindName(f.kind)},
                           {"type", typeName(f)},
+                          {"shape", shapeName(f)},
                           {"units", f.units},
                           {"description", f.description},
                           {"optional", f.optional}});

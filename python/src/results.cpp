@@ -13,19 +13,22 @@ namespace sbpack::python {
 
 namespace {
 
-template <class T> py::array_t<T> toArray(const std::vector<T>& values) {
-    py::array_t<T> a(static_cast<py::ssize_t>(values.size()));
+/// One dimension, or rows of `width` values (schema::Field::width: n x 3), as in the file.
+template <class T> py::array_t<T> toArray(const std::vector<T>& values, int width) {
+    const auto n = static_cast<py::ssize_t>(values.size());
+    py::array_t<T> a =
+        width > 0 ? py::array_t<T>({n / width, py::ssize_t{width}}) : py::array_t<T>(n);
     std::copy(values.begin(), values.end(), a.mutable_data());
     return a;
 }
 
-py::object toPython(const schema::Value& value) {
+py::object toPython(const schema::Value& value, int width) {
     return std::visit(
-        [](const auto& v) -> py::object {
+        [width](const auto& v) -> py::object {
             using T = std::decay_t<decltype(v)>;
             if constexpr (std::is_same_v<T, std::vector<double>> ||
                           std::is_same_v<T, std::vector<std::int64_t>>)
-                return toArray(v);
+                return toArray(v, width);
             else
                 return py::cast(v);
         },
@@ -37,7 +40,7 @@ py::object toPython(const schema::Value& value) {
 py::dict recordToDict(const schema::Record& record) {
     py::dict d;
     for (const schema::Entry& e : record.entries())
-        d[py::str(std::string(e.field->name))] = toPython(e.value);
+        d[py::str(std::string(e.field->name))] = toPython(e.value, e.field->width);
     return d;
 }
 

@@ -21,6 +21,8 @@ ANALYSES = [
     (sbpack.PoreSizes, "pores", {"pores": "refined"}),
     (sbpack.Transport, "transport", {}),
     (sbpack.Hyperuniformity, "hyper", {}),
+    # local only: the coupled programs take minutes at N = 5000 (docs/jamming.md §7)
+    (sbpack.Jamming, "jamming", {"jamming_categories": "local"}),
 ]
 def is_timing(name):
     """Wall-clock times (units "s" in docs/results-schema.md: runtime_s, fft_s, ...)."""

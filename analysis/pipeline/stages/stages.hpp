@@ -24,6 +24,11 @@ bool runContacts(FileContext& context, schema::Record& record);
 
 bool runOrder(FileContext& context, schema::Record& record);
 
+/// jamming: the category reached (its group) and a group per category tested.
+bool runJamming(FileContext& context, schema::Record& record);
+/// An ensemble's count of members per category reached and, per category, per verdict.
+void countJammingCategories(EnsembleResults& ensemble, std::span<const FileResults> files);
+
 bool runStructureFactor(FileContext& context, schema::Record& record);
 StageMemory structureFactorMemory(const Packing& packing, const RunSettings& settings);
 

@@ -1,0 +1,149 @@
+#include "jamming/jamming_categories.hpp"
+
+#include "contacts/jam_check.hpp"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <stdexcept>
+#include <tuple>
+
+namespace sbpack {
+
+namespace {
+
+constexpr std::array kCategories{JammingCategory::Local, JammingCategory::Collective,
+                                 JammingCategory::Strict};
+
+/// "locally", "collectively", "strictly".
+std::string_view adverb(JammingCategory category) {
+    return category == JammingCategory::Local        ? "locally"
+           : category == JammingCategory::Collective ? "collectively"
+                                                     : "strictly";
+}
+
+/// The network's tolerance and where it comes from (docs/jamming.md §2).
+std::pair<double, std::string> networkTolerance(const Packing& packing,
+                                                const JammingSettings& settings,
+                                                const ContactParameters& contacts) {
+    if (settings.tolerance) return {*settings.tolerance, "--jamming-tolerance"};
+    if (packing.reducedPressure && *packing.reducedPressure > 0.0) {
+        const JamCheckParameters jam;
+        const double p = *packing.reducedPressure;
+        return {std::clamp(jam.gapsPerPressure / p, jam.minTolerance, jam.maxTolerance),
+                fmt::format("jam check at P = {:.3g}", p)};
+    }
+    return {contacts.tolerance, "--tolerance (no reduced pressure)"};
+}
+
+} // namespace
+
+std::string_view jammingCategoryName(JammingCategory category) {
+    return category == JammingCategory::Local        ? "local"
+           : category == JammingCategory::Collective ? "collective"
+                                                     : "strict";
+}
+
+std::vector<JammingCategory> parseJammingCategories(std::string_view option,
+                                                    std::string_view list) {
+    std::vector<JammingCategory> categories;
+    for (std::size_t begin = 0; begin <= list.size();) {
+        const std::size_t comma = std::min(list.find(',', begin), list.size());
+        const std::string_view name = list.substr(begin, comma - begin);
+        begin = comma + 1;
+        const auto* found = std::find_if(kCategories.begin(), kCategories.end(),
+                                         [&](auto c) { return jammingCategoryName(c) == name; });
+        if (found == kCategories.end())
+            throw std::invalid_argument(
+                fmt::format("option {}: '{}' is not a jamming category (local, collective, strict)",
+                            option, name));
+        categories.push_back(*found);
+    }
+    std::sort(categories.begin(), categories.end());
+    categories.erase(std::unique(categories.begin(), categories.end()), categories.end());
+    return categories;
+}
+
+std::string jammingCategoryNames(const std::vector<JammingCategory>& categories) {
+    std::string names;
+    for (JammingCategory c : categories) {
+        if (!names.empty()) names += ',';
+        names += jammingCategoryName(c);
+    }
+    return names;
+}
+
+std::string_view firstOrderVerdictName(FirstOrderVerdict verdict) {
+    return verdict == FirstOrderVerdict::Jammed     ? "jammed"
+           : verdict == FirstOrderVerdict::Unjammed ? "unjammed"
+                                                    : "undecided";
+}
+
+std::optional<JammingCategory> PackingJamming::reached() const {
+    std::optional<JammingCategory> highest;
+    for (const JammingResult& t : tests)
+        if (t.verdict == FirstOrderVerdict::Jammed) highest = t.category;
+    return highest;
+}
+
+std::string_view PackingJamming::reachedName() const {
+    const auto r = reached();
+    return r ? jammingCategoryName(*r) : "none";
+}
+
+std::vector<std::string_view> PackingJamming::tested(FirstOrderVerdict verdict) const {
+    std::vector<std::string_view> names;
+    for (const JammingResult& t : tests)
+        if (t.verdict == verdict) names.push_back(jammingCategoryName(t.category));
+    return names;
+}
+
+std::string PackingJamming::undecided() const {
+    return fmt::format("{}", fmt::join(tested(FirstOrderVerdict::Undecided), ","));
+}
+
+std::string PackingJamming::verdict() const {
+    if (tests.empty()) return "no backbone: every particle is a rattler";
+    const auto r = reached();
+    // The first category tested above the one reached that is not jammed.
+    const auto next = std::find_if(tests.begin(), tests.end(), [&](const JammingResult& t) {
+        return (!r || t.category > *r) && t.verdict != FirstOrderVerdict::Jammed;
+    });
+    if (next == tests.end()) return fmt::format("{} jammed at first order", adverb(*r));
+    if (next->verdict == FirstOrderVerdict::Unjammed)
+        return r ? fmt::format("{} jammed, not {} (first order)", adverb(*r),
+                               adverb(next->category))
+                 : fmt::format("not {} jammed (first order)", adverb(next->category));
+    const std::string open = fmt::format(
+        "undecided at first order: {} (the second-order test is pending; docs/jamming.md §3)",
+        fmt::join(tested(FirstOrderVerdict::Undecided), ", "));
+    return r ? fmt::format("{} jammed; {}", adverb(*r), open) : open;
+}
+
+PackingJamming testJammingCategories(const Packing& packing, const JammingSettings& settings,
+                                     const ContactParameters& contacts,
+                                     const JammingObserver& observer) {
+    const auto start = std::chrono::steady_clock::now();
+    const JammingTest test(settings.test); // refuses bad parameters before any work
+    PackingJamming out;
+    std::tie(out.tolerance, out.toleranceFrom) = networkTolerance(packing, settings, contacts);
+    const ContactResult network =
+        ContactNetwork({out.tolerance, contacts.rattlerThreshold}).compute(packing);
+    const RigidityNetwork backbone = backboneNetwork(packing, network);
+    out.particles = static_cast<int>(packing.size());
+    out.backbone = static_cast<int>(backbone.backbone.size());
+    out.contacts = static_cast<int>(backbone.contacts.size());
+    for (JammingCategory category : settings.categories) {
+        if (backbone.backbone.empty()) break;
+        if (observer.before) observer.before(category);
+        out.tests.push_back(test.compute(backbone, category));
+        if (observer.after) observer.after(out.tests.back());
+    }
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+} // namespace sbpack

@@ -1,0 +1,86 @@
+#pragma once
+// The jamming analysis of one packing (docs/jamming.md): the backbone's contact network at the
+// jam check's tolerance, then the first-order tests of the categories asked for (common/jamming),
+// and the category reached. Shared by the stage `jamming` (pipeline/stages/jamming_stage.cpp) and
+// `sbanalyze info --jamming` (info/packing_info.cpp).
+
+#include "contacts/contact_network.hpp"
+#include "jamming/jamming_test.hpp"
+#include "packing/packing.hpp"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace sbpack {
+
+/// The jamming analysis's parameters (--jamming-categories, --jamming-tolerance,
+/// --jamming-max-step, --jamming-contacts), its defaults written here once.
+struct JammingSettings {
+    /// The categories tested, in ascending order. All three by default: the analysis answers
+    /// "which category?", and an opt-in analysis (not in --compute all) may take the minutes that
+    /// the coupled programs need at N = 5000 (docs/jamming.md §3); local alone costs seconds.
+    std::vector<JammingCategory> categories{JammingCategory::Local, JammingCategory::Collective,
+                                            JammingCategory::Strict};
+    /// The network's contact tolerance in units of D; unset: the jam check's,
+    /// max(1e-10, 100 / P) D at the file's reduced pressure P (docs/jamming.md §2), or the contact
+    /// analysis's --tolerance where the file has none.
+    std::optional<double> tolerance;
+    /// maxStep (Delta, units of D) and useGaps (ideal contacts, as Donev et al. 2004, or gaps);
+    /// their defaults are the jamming test's own (docs/jamming.md §3-4).
+    JammingParameters test;
+};
+
+/// "local", "collective", "strict": the names of the options and of the results groups.
+std::string_view jammingCategoryName(JammingCategory category);
+/// "local,strict" -> {Local, Strict}, sorted and each once; throws std::invalid_argument naming
+/// `option` for an unknown or empty name.
+std::vector<JammingCategory> parseJammingCategories(std::string_view option, std::string_view list);
+/// The names of `categories`, comma-separated.
+std::string jammingCategoryNames(const std::vector<JammingCategory>& categories);
+/// "jammed", "unjammed", "undecided".
+std::string_view firstOrderVerdictName(FirstOrderVerdict verdict);
+
+/// What the jamming analysis found on one packing.
+struct PackingJamming {
+    double tolerance = 0.0;    ///< the network's contact tolerance, units of D
+    std::string toleranceFrom; ///< "jam check at P = 1e+12", "--jamming-tolerance", "--tolerance"
+    int particles = 0;         ///< N
+    int backbone = 0;          ///< particles that are not rattlers
+    int contacts = 0;          ///< contacts among the backbone
+    /// One first-order test per category asked, ascending; empty where there is no backbone.
+    std::vector<JammingResult> tests;
+    double seconds = 0.0; ///< the network and every test
+
+    /// The highest category tested whose verdict is jammed (a jammed category implies those
+    /// below it); nullopt where none is.
+    std::optional<JammingCategory> reached() const;
+    /// "strict", "collective", "local" or "none" (reached()).
+    std::string_view reachedName() const;
+    /// The names of the tested categories whose first-order verdict is `verdict`.
+    std::vector<std::string_view> tested(FirstOrderVerdict verdict) const;
+    /// The tested categories whose first-order verdict is undecided (they await the
+    /// second-order test, docs/jamming.md §3), comma-separated; "" for none.
+    std::string undecided() const;
+    /// One line: "strictly jammed at first order", "locally jammed, not collectively (first
+    /// order)", "undecided at first order: local, collective (second order pending)", ...
+    std::string verdict() const;
+};
+
+/// Called before each category's test (it may throw to stop the analysis: an interrupt) and
+/// after it, with its result (a progress line).
+struct JammingObserver {
+    std::function<void(JammingCategory)> before;
+    std::function<void(const JammingResult&)> after;
+};
+
+/// Tests `settings.categories` on `packing`'s backbone; the network's rattlers by `contacts`
+/// (its rattler threshold; its tolerance where the file has no reduced pressure and
+/// settings.tolerance is unset).
+PackingJamming testJammingCategories(const Packing& packing, const JammingSettings& settings,
+                                     const ContactParameters& contacts,
+                                     const JammingObserver& observer = {});
+
+} // namespace sbpack

@@ -1,0 +1,232 @@
+#pragma once
+// The results groups of jamming, declared once (schema/field_table.hpp, docs/results-schema.md):
+// the category reached (jamming) and one group per category tested (jamming_local,
+// jamming_collective, jamming_strict) with its first-order verdict and the unjamming motions
+// per particle (docs/jamming.md §3).
+
+#include "jamming/jamming_categories.hpp"
+#include "schema/field_table.hpp"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace sbpack {
+
+namespace jamming_fields {
+using namespace schema::columns;
+using P = PackingJamming;
+using R = JammingResult;
+using M = UnjammingMotion;
+
+/// Per-particle vectors as rows of three (schema::Field::width).
+inline std::vector<double> rowsOf(const std::vector<Vector3d>& vectors) {
+    std::vector<double> flat;
+    flat.reserve(3 * vectors.size());
+    for (const Vector3d& v : vectors)
+        flat.insert(flat.end(), {v.x(), v.y(), v.z()});
+    return flat;
+}
+
+inline constexpr schema::FieldTable kTable{std::array<schema::Column<P>, 14>{{
+    {{"category", A, S, "",
+      "the highest category tested whose first-order verdict is jammed: strict, collective, "
+      "local, or none (a jammed category implies those below it; docs/jamming.md §1)"},
+     +[](const P& p, const Scales&) -> Optional { return Value(std::string(p.reachedName())); }},
+    {{"verdict", A, S, "",
+      "one line: the category reached and the next one's verdict (not jammed, or undecided "
+      "pending the second-order test)"},
+     +[](const P& p, const Scales&) -> Optional { return Value(p.verdict()); }},
+    {{"undecided", A, S, "",
+      "the categories whose first-order verdict is undecided, comma-separated (\"\" for none): "
+      "they await the second-order test (docs/jamming.md §3)"},
+     +[](const P& p, const Scales&) -> Optional { return Value(p.undecided()); }},
+    {{"categories", A, S, "", "the categories tested (--jamming-categories)"},
+     +[](const P& p, const Scales&) -> Optional {
+         std::vector<JammingCategory> tested;
+         for (const JammingResult& t : p.tests)
+             tested.push_back(t.category);
+         return Value(jammingCategoryNames(tested));
+     }},
+    {{"tolerance", A, F, "D",
+      "the contact network's gap tolerance: the jam check's, max(1e-10, 100 / P) D, unless "
+      "--jamming-tolerance; --tolerance where the file has no reduced pressure"},
+     member<&P::tolerance>},
+    {{"tolerance_from", A, S, "", "where the tolerance comes from"}, member<&P::toleranceFrom>},
+    {{"backbone", A, I, "1", "particles that are not rattlers (--rattler-threshold)", Mean},
+     member<&P::backbone>},
+    {{"contacts", A, I, "1", "contacts among the backbone", Mean}, member<&P::contacts>},
+    {{"runtime_s", A, F, "s", kRuntime, Mean}, member<&P::seconds>},
+    {{"n_strict", A, I, "1", "ensembles only: members strictly jammed at first order", Pooled,
+      true},
+     schema::ensembleOnly<P>},
+    {{"n_collective", A, I, "1",
+      "ensembles only: members collectively but not strictly jammed (or strict not tested)", Pooled,
+      true},
+     schema::ensembleOnly<P>},
+    {{"n_local", A, I, "1",
+      "ensembles only: members locally but not collectively jammed (or collective not tested)",
+      Pooled, true},
+     schema::ensembleOnly<P>},
+    {{"n_none", A, I, "1", "ensembles only: members jammed in no category tested", Pooled, true},
+     schema::ensembleOnly<P>},
+    {{"n_undecided", A, I, "1", "ensembles only: members with a category undecided at first order",
+      Pooled, true},
+     schema::ensembleOnly<P>},
+}}};
+
+/// The motion's `Part` (displacement or rotation) as n x 3 rows; absent without the motion (or,
+/// for the rotation, for spheres).
+template <auto Motion, auto Part> Optional motionRows(const R& r, const Scales&) {
+    const auto& motion = r.*Motion;
+    if (!motion || ((*motion).*Part).empty()) return std::nullopt;
+    return Value(rowsOf((*motion).*Part));
+}
+
+/// The motion's strain as 3 x 3 rows; Strict only.
+template <auto Motion> Optional strainRows(const R& r, const Scales&) {
+    const auto& motion = r.*Motion;
+    if (!motion || r.category != JammingCategory::Strict) return std::nullopt;
+    std::vector<double> rows;
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+            rows.push_back(motion->strain(a, b));
+    return Value(std::move(rows));
+}
+
+/// Particles the motion moves by more than the motion tolerance; 0 without it.
+template <auto Motion> Optional movingCount(const R& r, const Scales&) {
+    const auto& motion = r.*Motion;
+    return Value(static_cast<std::int64_t>(motion ? motion->moving.size() : 0));
+}
+
+inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>, 19>{{
+    {{"verdict", A, S, "",
+      "first-order verdict: jammed (no motion), unjammed (a particle certainly freed; for "
+      "spheres any motion) or undecided (p != 1: only motions that curvature may block, for the "
+      "second-order test; docs/jamming.md §3)"},
+     +[](const R& r, const Scales&) -> Optional {
+         return Value(std::string(firstOrderVerdictName(r.verdict)));
+     }},
+    {{"order", A, I, "1",
+      "the order of the test that gave the verdict: 1 (first order; second order is pending)"},
+     +[](const R&, const Scales&) -> Optional { return Value(std::int64_t{1}); }},
+    {{"isostatic_deficit", A, I, "1",
+      "degrees of freedom - 3 - contacts (the Maxwell count; above 0 flexes must exist); not "
+      "for local",
+      Mean, true},
+     +[](const R& r, const Scales&) -> Optional {
+         if (r.category == JammingCategory::Local) return std::nullopt;
+         return Value(std::int64_t{r.isostaticDeficit});
+     }},
+    {{"largest_opening", A, F, "D",
+      "largest first-order opening of a contact by the opening program, max_c ds_c, at steps "
+      "up to --jamming-max-step",
+      Mean},
+     member<&R::largestOpening>},
+    {{"n_freed", A, I, "1", "particles certainly freed (the dataset freed)", Mean},
+     +[](const R& r, const Scales&) -> Optional {
+         return Value(static_cast<std::int64_t>(r.freed.size()));
+     }},
+    {{"n_opening_moving", A, I, "1", "particles the opening motion moves (0: none found)", Mean},
+     movingCount<&R::opening>},
+    {{"n_flex_moving", A, I, "1", "particles the flex moves (0: none found)", Mean},
+     movingCount<&R::flex>},
+    {{"fixed_particle", A, I, "1",
+      "the particle held fixed against the trivial translations; not for local", No, true},
+     +[](const R& r, const Scales&) -> Optional {
+         if (r.fixedParticle < 0) return std::nullopt;
+         return Value(std::int64_t{r.fixedParticle});
+     }},
+    {{"runtime_s", A, F, "s", "wall-clock time of this category's matrix and programs", Mean},
+     member<&R::seconds>},
+    {{"freed", D, I, "1", "indices of the particles certainly freed (may be empty)"},
+     member<&R::freed>},
+    {{"opening_displacement",
+      D,
+      F,
+      "D",
+      "the opening motion: each particle's displacement dr (0 for rattlers; strict: eps r "
+      "included); only where a contact opens",
+      No,
+      true,
+      {},
+      3},
+     motionRows<&R::opening, &M::displacement>},
+    {{"opening_rotation",
+      D,
+      F,
+      "rad",
+      "the opening motion: each particle's small rotation dtheta; only for p != 1 with an opening",
+      No,
+      true,
+      {},
+      3},
+     motionRows<&R::opening, &M::rotation>},
+    {{"opening_strain",
+      D,
+      F,
+      "1",
+      "the opening motion's box strain eps (3 x 3); strict only",
+      No,
+      true,
+      {},
+      3},
+     strainRows<&R::opening>},
+    {{"flex_displacement",
+      D,
+      F,
+      "D",
+      "the flex (a motion that keeps every contact at first order): each particle's dr; only "
+      "where one exists",
+      No,
+      true,
+      {},
+      3},
+     motionRows<&R::flex, &M::displacement>},
+    {{"flex_rotation",
+      D,
+      F,
+      "rad",
+      "the flex: each particle's dtheta; only for p != 1 with a flex",
+      No,
+      true,
+      {},
+      3},
+     motionRows<&R::flex, &M::rotation>},
+    {{"flex_strain", D, F, "1", "the flex's box strain eps (3 x 3); strict only", No, true, {}, 3},
+     strainRows<&R::flex>},
+    {{"n_jammed", A, I, "1", "ensembles only: members jammed in this category", Pooled, true},
+     schema::ensembleOnly<R>},
+    {{"n_unjammed", A, I, "1", "ensembles only: members unjammed in this category", Pooled, true},
+     schema::ensembleOnly<R>},
+    {{"n_undecided", A, I, "1", "ensembles only: members undecided in this category", Pooled, true},
+     schema::ensembleOnly<R>},
+}}};
+} // namespace jamming_fields
+
+inline constexpr schema::Group kJammingGroup{
+    "jamming", "files/<i>/jamming",
+    "the jamming categories at first order: the category reached (jamming; docs/jamming.md)",
+    jamming_fields::kTable.fields()};
+inline constexpr schema::Group kJammingLocalGroup{
+    "jamming_local", "files/<i>/jamming_local",
+    "local jamming at first order: each particle alone, its neighbours fixed (jamming)",
+    jamming_fields::kCategoryTable.fields()};
+inline constexpr schema::Group kJammingCollectiveGroup{
+    "jamming_collective", "files/<i>/jamming_collective",
+    "collective jamming at first order: all particles together, the box fixed (jamming)",
+    jamming_fields::kCategoryTable.fields()};
+inline constexpr schema::Group kJammingStrictGroup{
+    "jamming_strict", "files/<i>/jamming_strict",
+    "strict jamming at first order: with a volume-nonincreasing strain of the box (jamming)",
+    jamming_fields::kCategoryTable.fields()};
+
+/// The group of `category`'s test.
+inline const schema::Group& jammingCategoryGroup(JammingCategory category) {
+    return category == JammingCategory::Local        ? kJammingLocalGroup
+           : category == JammingCategory::Collective ? kJammingCollectiveGroup
+                                                     : kJammingStrictGroup;
+}
+
+} // namespace sbpack
