@@ -100,11 +100,12 @@ void CommandLine::addSubcommands() {
     const RunSettings defaults = defaultRunSettings();
     for (std::string_view name : {"tolerance", "rattler-threshold"})
         addOption(*info_, infoSettings_, findOption(name), defaults);
-    info_->add_flag("--jamming", infoJamming_,
-                    "also test the jamming categories at first order, as --compute jamming\n"
-                    "(docs/jamming.md), with the options below");
-    for (std::string_view name :
-         {"jamming-categories", "jamming-tolerance", "jamming-max-step", "jamming-contacts"})
+    info_->add_flag(
+        "--jamming", infoJamming_,
+        "also test the jamming categories (first order, and second where collective\n"
+        "is undecided), as --compute jamming (docs/jamming.md), with the options below");
+    for (std::string_view name : {"jamming-categories", "jamming-tolerance", "jamming-max-step",
+                                  "jamming-contacts", "jamming-second-order"})
         addOption(*info_, infoSettings_, findOption(name), defaults);
     info_->add_option("FILE", infoFiles_,
                       "packing files (.h5 or .txt); a bad one is reported, the others still are");
@@ -210,8 +211,9 @@ std::string extrasMessage(const CLI::App& app, const CLI::ExtrasError& error) {
             if (command != &app)
                 for (const std::string& name : longOptionNames(app))
                     known.push_back(name);
-            const std::string help = command == &app ? "sbanalyze --help"
-                                                     : "sbanalyze " + command->get_name() + " --help";
+            const std::string help = command == &app
+                                         ? "sbanalyze --help"
+                                         : "sbanalyze " + command->get_name() + " --help";
             return unknownOptionMessage(given, known) + " (see " + help + ")";
         }
     return std::string(error.what()) + " (see sbanalyze --help)";

@@ -47,15 +47,12 @@ void printOrder(const PackingInfo& info, std::ostream& out) {
 
 /// The jamming categories: the network, a line per category tested, the category reached.
 void printJamming(const PackingJamming& j, std::ostream& out) {
-    out << std::setprecision(3) << "  jamming              first order, contacts at gap < "
-        << j.tolerance << " D (" << j.toleranceFrom << "): backbone " << j.backbone << " of "
-        << j.particles << " particles, " << j.contacts << " contacts\n";
+    out << std::setprecision(3) << "  jamming              contacts at gap < " << j.tolerance
+        << " D (" << j.toleranceFrom << "): backbone " << j.backbone << " of " << j.particles
+        << " particles, " << j.contacts << " contacts\n";
     for (const JammingResult& t : j.tests) {
         out << "    " << std::left << std::setw(17) << jammingCategoryName(t.category) << std::right
-            << firstOrderVerdictName(t.verdict);
-        if (!t.freed.empty()) out << ", " << t.freed.size() << " particles freed";
-        if (t.opening) out << ", an opening moves " << t.opening->moving.size();
-        if (t.flex) out << ", a flex moves " << t.flex->moving.size();
+            << categoryDetail(t);
         if (t.category != JammingCategory::Local)
             out << " (Maxwell deficit " << t.isostaticDeficit << ")";
         out << "  [" << t.seconds << " s]\n";

@@ -82,10 +82,30 @@ std::string_view firstOrderVerdictName(FirstOrderVerdict verdict) {
                                                     : "undecided";
 }
 
+std::string_view secondOrderVerdictName(SecondOrderVerdict verdict) {
+    return verdict == SecondOrderVerdict::Jammed         ? "jammed"
+           : verdict == SecondOrderVerdict::NotJammed    ? "not jammed"
+           : verdict == SecondOrderVerdict::NoSelfStress ? "no self-stress"
+                                                         : "singular curvature";
+}
+
+std::string categoryDetail(const JammingResult& r) {
+    std::string detail(firstOrderVerdictName(r.verdict));
+    if (!r.freed.empty()) detail += fmt::format(", {} freed", r.freed.size());
+    if (r.opening) detail += fmt::format(", an opening moves {}", r.opening->moving.size());
+    if (r.flex) detail += fmt::format(", a flex moves {}", r.flex->moving.size());
+    if (const auto& s = r.secondOrder)
+        detail += fmt::format("; second order: {} ({} floppy modes, {} self-stresses, smallest "
+                              "stiffness {:.3g}, {:.3g} s)",
+                              secondOrderVerdictName(s->verdict), s->floppyModes, s->selfStresses,
+                              s->smallestStiffness, s->seconds);
+    return detail;
+}
+
 std::optional<JammingCategory> PackingJamming::reached() const {
     std::optional<JammingCategory> highest;
     for (const JammingResult& t : tests)
-        if (t.verdict == FirstOrderVerdict::Jammed) highest = t.category;
+        if (t.jammed()) highest = t.category;
     return highest;
 }
 
@@ -101,8 +121,16 @@ std::vector<std::string_view> PackingJamming::tested(FirstOrderVerdict verdict) 
     return names;
 }
 
+std::vector<std::string_view> PackingJamming::open() const {
+    std::vector<std::string_view> names;
+    for (const JammingResult& t : tests)
+        if (t.verdict == FirstOrderVerdict::Undecided && !t.jammed())
+            names.push_back(jammingCategoryName(t.category));
+    return names;
+}
+
 std::string PackingJamming::undecided() const {
-    return fmt::format("{}", fmt::join(tested(FirstOrderVerdict::Undecided), ","));
+    return fmt::format("{}", fmt::join(open(), ","));
 }
 
 std::string PackingJamming::verdict() const {
@@ -110,17 +138,31 @@ std::string PackingJamming::verdict() const {
     const auto r = reached();
     // The first category tested above the one reached that is not jammed.
     const auto next = std::find_if(tests.begin(), tests.end(), [&](const JammingResult& t) {
-        return (!r || t.category > *r) && t.verdict != FirstOrderVerdict::Jammed;
+        return (!r || t.category > *r) && !t.jammed();
     });
-    if (next == tests.end()) return fmt::format("{} jammed at first order", adverb(*r));
+    const auto top = std::find_if(tests.begin(), tests.end(),
+                                  [&](const JammingResult& t) { return r && t.category == *r; });
+    if (next == tests.end())
+        return fmt::format("{} jammed at {} order", adverb(*r),
+                           top->verdict == FirstOrderVerdict::Jammed ? "first" : "second");
+    if (next->secondOrder && next->secondOrder->verdict == SecondOrderVerdict::NotJammed)
+        return fmt::format("{}not {} jammed at second order with the self-stress tested",
+                           r ? fmt::format("{} jammed, ", adverb(*r)) : "", adverb(next->category));
     if (next->verdict == FirstOrderVerdict::Unjammed)
         return r ? fmt::format("{} jammed, not {} (first order)", adverb(*r),
                                adverb(next->category))
                  : fmt::format("not {} jammed (first order)", adverb(next->category));
-    const std::string open = fmt::format(
-        "undecided at first order: {} (the second-order test is pending; docs/jamming.md §3)",
-        fmt::join(tested(FirstOrderVerdict::Undecided), ", "));
-    return r ? fmt::format("{} jammed; {}", adverb(*r), open) : open;
+    // The second order runs on the collective test only (docs/jamming.md §6).
+    const auto second = std::find_if(tests.begin(), tests.end(), [](const JammingResult& t) {
+        return t.secondOrder.has_value();
+    });
+    const std::string pending = fmt::format(
+        "undecided at first order: {} (second order: {}; docs/jamming.md §6)",
+        fmt::join(open(), ", "),
+        second != tests.end()
+            ? fmt::format("collective {}", secondOrderVerdictName(second->secondOrder->verdict))
+            : std::string("not run"));
+    return r ? fmt::format("{} jammed; {}", adverb(*r), pending) : pending;
 }
 
 PackingJamming testJammingCategories(const Packing& packing, const JammingSettings& settings,

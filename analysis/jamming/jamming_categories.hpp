@@ -42,6 +42,10 @@ std::vector<JammingCategory> parseJammingCategories(std::string_view option, std
 std::string jammingCategoryNames(const std::vector<JammingCategory>& categories);
 /// "jammed", "unjammed", "undecided".
 std::string_view firstOrderVerdictName(FirstOrderVerdict verdict);
+/// "jammed", "not jammed", "no self-stress", "singular curvature" (docs/jamming.md §6).
+std::string_view secondOrderVerdictName(SecondOrderVerdict verdict);
+/// One line of a category's test: "undecided; second order: no self-stress (2041 floppy modes)".
+std::string categoryDetail(const JammingResult& result);
 
 /// What the jamming analysis found on one packing.
 struct PackingJamming {
@@ -54,16 +58,19 @@ struct PackingJamming {
     std::vector<JammingResult> tests;
     double seconds = 0.0; ///< the network and every test
 
-    /// The highest category tested whose verdict is jammed (a jammed category implies those
-    /// below it); nullopt where none is.
+    /// The highest category tested that is jammed, at first order or, where first order is
+    /// undecided, at second (JammingResult::jammed; a jammed category implies those below it);
+    /// nullopt where none is.
     std::optional<JammingCategory> reached() const;
     /// "strict", "collective", "local" or "none" (reached()).
     std::string_view reachedName() const;
     /// The names of the tested categories whose first-order verdict is `verdict`.
     std::vector<std::string_view> tested(FirstOrderVerdict verdict) const;
-    /// The tested categories whose first-order verdict is undecided (they await the
-    /// second-order test, docs/jamming.md §3), comma-separated; "" for none.
+    /// The tested categories undecided at first order and not jammed at second (not run, or
+    /// without a verdict: no self-stress), comma-separated; "" for none.
     std::string undecided() const;
+    /// The same categories, by name.
+    std::vector<std::string_view> open() const;
     /// One line: "strictly jammed at first order", "locally jammed, not collectively (first
     /// order)", "undecided at first order: local, collective (second order pending)", ...
     std::string verdict() const;

@@ -100,7 +100,13 @@ template <auto Motion> Optional movingCount(const R& r, const Scales&) {
     return Value(static_cast<std::int64_t>(motion ? motion->moving.size() : 0));
 }
 
-inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>, 19>{{
+/// The second-order test's result where it ran (collective, first order undecided).
+template <class T> Optional secondOrderValue(const R& r, T (*value)(const SecondOrderResult&)) {
+    if (!r.secondOrder) return std::nullopt;
+    return Value(value(*r.secondOrder));
+}
+
+inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>, 24>{{
     {{"verdict", A, S, "",
       "first-order verdict: jammed (no motion), unjammed (a particle certainly freed; for "
       "spheres any motion) or undecided (p != 1: only motions that curvature may block, for the "
@@ -109,8 +115,51 @@ inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>,
          return Value(std::string(firstOrderVerdictName(r.verdict)));
      }},
     {{"order", A, I, "1",
-      "the order of the test that gave the verdict: 1 (first order; second order is pending)"},
-     +[](const R&, const Scales&) -> Optional { return Value(std::int64_t{1}); }},
+      "the order of the test that decided: 1, or 2 where first order was undecided and the "
+      "second-order test gave jammed or not jammed (docs/jamming.md §6)"},
+     +[](const R& r, const Scales&) -> Optional {
+         const bool second =
+             r.secondOrder && (r.secondOrder->verdict == SecondOrderVerdict::Jammed ||
+                               r.secondOrder->verdict == SecondOrderVerdict::NotJammed);
+         return Value(std::int64_t{second ? 2 : 1});
+     }},
+    {{"second_order", A, S, "",
+      "the second-order stress test's verdict where it ran (collective, first order undecided; "
+      "--jamming-second-order): jammed, not jammed (with the self-stress tested), no self-stress "
+      "(a first-order motion opens every contact), singular curvature; docs/jamming.md §6",
+      No, true},
+     +[](const R& r, const Scales&) -> Optional {
+         return secondOrderValue<std::string>(r, [](const SecondOrderResult& s) {
+             return std::string(secondOrderVerdictName(s.verdict));
+         });
+     }},
+    {{"floppy_modes", A, I, "1",
+      "second order: first-order flexes beyond the trivial translations, dim ker A^T - 3 "
+      "(rank-revealing QR)",
+      Mean, true},
+     +[](const R& r, const Scales&) -> Optional {
+         return secondOrderValue<std::int64_t>(
+             r, [](const SecondOrderResult& s) { return std::int64_t{s.floppyModes}; });
+     }},
+    {{"self_stresses", A, I, "1", "second order: dim ker A, the independent self-stresses", Mean,
+      true},
+     +[](const R& r, const Scales&) -> Optional {
+         return secondOrderValue<std::int64_t>(
+             r, [](const SecondOrderResult& s) { return std::int64_t{s.selfStresses}; });
+     }},
+    {{"smallest_stiffness", A, F, "1",
+      "second order: the smallest eigenvalue of the stress matrix on the flexes, in units of the "
+      "mean contact force per D (positive: jammed at second order); only with a self-stress",
+      Mean, true},
+     +[](const R& r, const Scales&) -> Optional {
+         if (!r.secondOrder || r.secondOrder->verdict == SecondOrderVerdict::NoSelfStress)
+             return std::nullopt;
+         return Value(r.secondOrder->smallestStiffness);
+     }},
+    {{"second_order_runtime_s", A, F, "s", "second order: wall-clock time", Mean, true},
+     +[](const R& r, const Scales&) -> Optional {
+         return secondOrderValue<double>(r, [](const SecondOrderResult& s) { return s.seconds; });
+     }},
     {{"isostatic_deficit", A, I, "1",
       "degrees of freedom - 3 - contacts (the Maxwell count; above 0 flexes must exist); not "
       "for local",

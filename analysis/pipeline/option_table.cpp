@@ -269,6 +269,15 @@ constexpr std::array kJammingRows{
             s.jamming.test.useGaps = isSecondOf(o, v, "ideal", "gaps");
         },
         [](const Settings& d) { return std::string(d.jamming.test.useGaps ? "gaps" : "ideal"); }},
+    OptionRow{"jamming-second-order", "on|off",
+              "jamming: the second-order stress test where collective jamming is undecided at\n"
+              "first order (default {}; about 80 s at N = 1000, p = 1.5; docs/jamming.md §6)",
+              [](Settings& s, Text o, Text v) {
+                  s.jamming.test.secondOrder.enabled = isSecondOf(o, v, "off", "on");
+              },
+              [](const Settings& d) {
+                  return std::string(d.jamming.test.secondOrder.enabled ? "on" : "off");
+              }},
 };
 
 // FFTW (docs/design.md, "FFT planning").

@@ -132,7 +132,13 @@ TEST(JammingAnalysis, SuperballLatticeIsUndecidedAndItsFlexRotates) {
     EXPECT_EQ(jamming.text("categories"), "local,collective");
     EXPECT_NE(jamming.text("verdict").find("undecided at first order: local, collective"),
               std::string::npos);
-    EXPECT_EQ(file.group("jamming_strict"), nullptr); // not asked for
+    // The second order ran on the collective test: face centres against face centres, both
+    // flat (aligned p = 1.5 cubes), where the gap's Hessian diverges (docs/jamming.md §6).
+    const schema::Record& collective = *file.group("jamming_collective");
+    EXPECT_EQ(collective.text("second_order"), "singular curvature");
+    EXPECT_EQ(collective.integer("order"), 1);
+    EXPECT_FALSE(file.group("jamming_local")->has("second_order")); // local has none
+    EXPECT_EQ(file.group("jamming_strict"), nullptr);               // not asked for
     EXPECT_EQ(datasetShape(dir / "r.h5", "files/0/jamming_collective", "flex_rotation"),
               (std::vector<hsize_t>{125, 3}));
     EXPECT_EQ(file.group("jamming_collective")->floats("flex_rotation").size(), 3u * 125u);

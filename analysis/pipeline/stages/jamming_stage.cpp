@@ -14,15 +14,6 @@ namespace sbpack::stages {
 
 namespace {
 
-/// "collective: unjammed (flex moves 1000 particles)": one category's progress detail.
-std::string categoryDetail(const JammingResult& r) {
-    std::string detail(firstOrderVerdictName(r.verdict));
-    if (!r.freed.empty()) detail += fmt::format(", {} freed", r.freed.size());
-    if (r.opening) detail += fmt::format(", an opening moves {}", r.opening->moving.size());
-    if (r.flex) detail += fmt::format(", a flex moves {}", r.flex->moving.size());
-    return detail;
-}
-
 /// Members of `name`'s group whose `field` is each of `values`, in the ensemble's group as the
 /// fields `counts` (Reduce::Pooled).
 template <std::size_t K>
