@@ -16,13 +16,14 @@ void addInto(PairImpulse& sum, const PairImpulse& p, double factor = 1.0) {
 } // namespace
 
 void ForceWindows::push(const ContactImpulses& impulses, double duration, double kT,
-                        double reducedPressure) {
+                        double reducedPressure, std::uint64_t window) {
     if (blockWindows_ == 0) return;
     ++current_.windows;
     current_.duration += duration;
     current_.pressureDuration += reducedPressure * duration;
     impulses.forEach([&](const PairImpulse& p) { addInto(current_.pairs[{p.i, p.j}], p, 1.0 / kT); });
-    if (current_.windows == blockWindows_) previous_ = std::exchange(current_, {});
+    if (window % static_cast<std::uint64_t>(blockWindows_) == 0)
+        previous_ = std::exchange(current_, {});
 }
 
 ContactForces ForceWindows::forces(const Packing& packing) const {

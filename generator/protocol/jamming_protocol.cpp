@@ -251,7 +251,9 @@ double JammingProtocol::finishWindow(double virial, double duration, bool record
             const double kTEnd = engine.kineticTemperature();
             const double kT = 0.5 * (1.0 + kTEnd);
             status_.reducedPressure = 1.0 + virial / (3.0 * parameters_.particles * kT * duration);
-            if (recorded) forceWindows_.push(impulses_, duration, kT, status_.reducedPressure);
+            if (recorded)
+                forceWindows_.push(impulses_, duration, kT, status_.reducedPressure,
+                                   status_.windows + 1); // this window's number
             engine.scaleVelocities(1.0 / std::sqrt(kTEnd));
             const double kTRotation = engine.rotationalTemperature();
             if (kTRotation > 0.0) engine.scaleAngularVelocities(1.0 / std::sqrt(kTRotation));

@@ -60,9 +60,10 @@ struct ProtocolParameters {
     double costLimit = 40.0;
     /// The contact-network criterion of the jam, checked before a jam is declared.
     JamCheckParameters jamCheck{};
-    /// The contact forces average over the run's last forceWindows to 2 forceWindows - 1
-    /// windows, recorded once the reduced pressure has reached half the final one
-    /// (docs/jamming.md, "Contact forces"); 0: none.
+    /// The contact forces average over the run's last windows since the last multiple of
+    /// forceWindows but one (forceWindows to 2 forceWindows - 1 of them), recorded once the
+    /// reduced pressure has reached half the final one (docs/jamming.md, "Contact forces");
+    /// 0: none.
     std::int64_t forceWindows = 50;
 
     /// The fast rate used: gammaFast if set, else the paper's protocol at p (paperFastRate:
