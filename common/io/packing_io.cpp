@@ -289,8 +289,7 @@ Packing readContents(hid_t root, const std::string& file) {
         packing.resumeState = readAttributeGroup(root, kResumeState, file);
         packing.pairRecords = readPairRecords(root, packing.resumeState, rows, file);
     }
-    if (hasLink(root, kContactForces))
-        packing.contactForces = readContactForces(root, rows, file);
+    if (hasLink(root, kContactForces)) packing.contactForces = readContactForces(root, rows, file);
     migrate(root, version, packing);
 
     validatePacking(packing, file);

@@ -21,7 +21,9 @@ void ForceWindows::push(const ContactImpulses& impulses, double duration, double
     ++current_.windows;
     current_.duration += duration;
     current_.pressureDuration += reducedPressure * duration;
-    impulses.forEach([&](const PairImpulse& p) { addInto(current_.pairs[{p.i, p.j}], p, 1.0 / kT); });
+    impulses.forEach([&](const PairImpulse& p) {
+        addInto(current_.pairs[{p.i, p.j}], p, 1.0 / kT);
+    });
     if (window % static_cast<std::uint64_t>(blockWindows_) == 0)
         previous_ = std::exchange(current_, {});
 }

@@ -18,8 +18,8 @@
 
 #include "contacts/jam_check.hpp"
 #include "engine/event_driven_md.hpp"
-#include "protocol/force_windows.hpp"
 #include "packing/packing.hpp"
+#include "protocol/force_windows.hpp"
 #include "shapes/sphere.hpp"
 #include "shapes/superball_shape.hpp"
 #include "stop/stop_request.hpp"

@@ -23,8 +23,8 @@ Packing twoAcrossTheBox() {
 TEST(ContactForces, ABalancedPairHasOppositeNetForcesAndTheVirialOfItsSeparation) {
     const Packing packing = twoAcrossTheBox();
     // 0 pushes 1 along n = -x with f = 6 (kT / D), at the midpoint across the face.
-    const ContactForces forces{{{0, 1, Vector3d(3.75, 2, 2), Vector3d(-1, 0, 0), 6.0}}, 1, 1.0,
-                               0.0};
+    const ContactForces forces{
+        {{0, 1, Vector3d(3.75, 2, 2), Vector3d(-1, 0, 0), 6.0}}, 1, 1.0, 0.0};
     const ForceBalance balance = forceBalance(packing, forces);
     EXPECT_EQ(balance.netForces[0], Vector3d(6, 0, 0)); // 1 pushes back on 0 along +x
     EXPECT_EQ(balance.netForces[1], Vector3d(-6, 0, 0));
@@ -38,8 +38,8 @@ TEST(ContactForces, AnOffCentreContactTurnsBothParticles) {
     const Packing packing = twoAcrossTheBox();
     // The same force at a point 0.25 above the centre line: lever of 0 (-0.5, 0.25, 0) by the
     // minimum image, of 1 (+0.5, 0.25, 0); torques (lever / D) x force.
-    const ContactForces forces{{{0, 1, Vector3d(3.75, 2.25, 2), Vector3d(-1, 0, 0), 6.0}}, 1,
-                               1.0, 0.0};
+    const ContactForces forces{
+        {{0, 1, Vector3d(3.75, 2.25, 2), Vector3d(-1, 0, 0), 6.0}}, 1, 1.0, 0.0};
     const ForceBalance balance = forceBalance(packing, forces);
     EXPECT_TRUE(balance.netTorques[0].isApprox(Vector3d(-0.5, 0.25, 0).cross(Vector3d(6, 0, 0))));
     EXPECT_TRUE(balance.netTorques[1].isApprox(Vector3d(0.5, 0.25, 0).cross(Vector3d(-6, 0, 0))));

@@ -283,7 +283,8 @@ TEST_F(PackingIo, TamperedContactForcesAreRefusedNamingTheRow) { // issue 62
         return path;
     };
     const auto refused = [&](const fs::path& path, const char* problem) {
-        expectError<PackingFileError>([&] { readPacking(path); }, {"contact_forces row 1", problem});
+        expectError<PackingFileError>([&] { readPacking(path); },
+                                      {"contact_forces row 1", problem});
     };
     refused(tampered("pairs", 2, 2, 4.0), "i < j < n_particles"); // (4, 4)
     refused(tampered("pairs", 2, 3, 6.0), "i < j < n_particles"); // j = N
