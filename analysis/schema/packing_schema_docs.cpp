@@ -25,15 +25,19 @@ own table, `generator/protocol/checkpoint_entries` (docs/design.md §4).
 
 ## Units
 
-The file has no units attributes. `1` dimensionless; `length` the packing's length unit (that of
-`box_length`); `time` sbgen's unit of time, `length sqrt(m / kT)` with `m = kT = 1`
-(docs/design.md §3).
+Only the datasets of `contact_forces` carry their units, as a string attribute `units` (the
+column below). `1` dimensionless; `length` the packing's length unit (that of `box_length`);
+`time` sbgen's unit of time, `length sqrt(m / kT)` with `m = kT = 1` (docs/design.md §3); `kT/D`
+a force in units of kT over the major-axis length `D = 2 semi_axis`, `kT` an energy (a torque),
+with kT the kinetic temperature of the windows the forces average over (docs/jamming.md,
+"Contact forces from the run").
 
 ## Versions
 
 `since` is the `format_version` that introduced an entry. The version has been 1 throughout: the
-entries added later (`resume_state` and its pair records) are optional, and where an earlier file
-kept an entry under another name the reader moves it (the rows of "Earlier names").
+entries added later (`resume_state` and its pair records, `contact_forces`) are optional, and
+where an earlier file kept an entry under another name the reader moves it (the rows of "Earlier
+names").
 )";
 
 std::string_view kindName(PackingKind kind) {

@@ -196,6 +196,13 @@ Hdf5Handle openGroup(hid_t parent, const std::string& name) {
         H5Gclose);
 }
 
+Hdf5Handle openDataset(hid_t parent, const std::string& name) {
+    if (!hasLink(parent, name)) fail(parent, name, "dataset", "missing");
+    return Hdf5Handle(
+        checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), parent, name, "dataset", "open"),
+        H5Dclose);
+}
+
 bool hasLink(hid_t parent, const std::string& name) {
     if (checked(H5Lexists(parent, name.c_str(), H5P_DEFAULT), parent, name, "link", "look up") <= 0)
         return false;

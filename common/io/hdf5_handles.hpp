@@ -59,6 +59,7 @@ Hdf5Handle openFileReadOnly(const std::filesystem::path& file);
 
 Hdf5Handle createGroup(hid_t parent, const std::string& name);
 Hdf5Handle openGroup(hid_t parent, const std::string& name);
+Hdf5Handle openDataset(hid_t parent, const std::string& name);
 /// True if `parent` has a link (dataset or group) called `name`.
 bool hasLink(hid_t parent, const std::string& name);
 

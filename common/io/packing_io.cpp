@@ -3,6 +3,7 @@
 #include "io/atomic_file.hpp"
 #include "io/hdf5_handles.hpp"
 #include "io/read_guard.hpp"
+#include "packing/contact_forces.hpp"
 #include "packing/validation.hpp"
 
 #include <charconv>
@@ -103,6 +104,86 @@ std::vector<double> readPairRecords(hid_t root, const std::map<std::string, Prov
                              static_cast<std::size_t>(*rows), kPairRecordColumns);
 }
 
+/// The group contact_forces (docs/jamming.md, "Contact forces"): the contacts, the per-particle
+/// residuals (forceBalance) and on each dataset its units from the table.
+void writeContactForces(hid_t root, const Packing& packing) {
+    const ContactForces& forces = *packing.contactForces;
+    const Hdf5Handle group = createGroup(root, kContactForces);
+    const hid_t g = group.get();
+    writeInt64Attribute(g, kWindows, forces.windows);
+    writeDoubleAttribute(g, kDuration, forces.duration);
+    writeDoubleAttribute(g, kReducedPressure, forces.reducedPressure);
+    writeInt64Attribute(g, kContacts, static_cast<std::int64_t>(forces.contacts.size()));
+    std::vector<double> pairs, magnitudes;
+    std::vector<Vector3d> points, normals;
+    for (const ContactForce& c : forces.contacts) {
+        pairs.insert(pairs.end(), {static_cast<double>(c.i), static_cast<double>(c.j)});
+        points.push_back(wrapIntoBox(c.point, packing.boxLength));
+        normals.push_back(c.normal);
+        magnitudes.push_back(c.force);
+    }
+    writeMatrixDataset(g, kPairs, pairs, 2);
+    writeMatrixDataset(g, kPoints, flatten(points), 3);
+    writeMatrixDataset(g, kNormals, flatten(normals), 3);
+    writeMatrixDataset(g, kForces, magnitudes, 1);
+    const ForceBalance balance = forceBalance(packing, forces);
+    writeMatrixDataset(g, kNetForces, flatten(balance.netForces), 3);
+    writeMatrixDataset(g, kNetTorques, flatten(balance.netTorques), 3);
+    for (const PackingEntry& e : packingEntries())
+        if (e.group == kContactForces && e.kind == PackingKind::Dataset)
+            writeStringAttribute(openDataset(g, std::string(e.name)).get(), kUnits,
+                                 std::string(e.units));
+}
+
+/// Row k of the contact forces' datasets, refused (naming the row) unless i < j are particles,
+/// the point finite, the normal unit and the force finite and non-negative.
+ContactForce contactForceRow(const std::vector<double>& pairs, const std::vector<double>& points,
+                             const std::vector<double>& normals, const std::vector<double>& forces,
+                             std::size_t k, std::size_t particles, const std::string& file) {
+    const auto refuse = [&](const std::string& problem) {
+        throw PackingFileError("'" + file + "': " + kContactForces + " row " + std::to_string(k) +
+                               ": " + problem);
+    };
+    const double i = pairs[2 * k], j = pairs[2 * k + 1];
+    if (!(i >= 0.0 && i < j && j < static_cast<double>(particles) && std::floor(i) == i &&
+          std::floor(j) == j))
+        refuse("the particles must be indices i < j < n_particles");
+    const ContactForce c{static_cast<int>(i), static_cast<int>(j),
+                         Vector3d(points[3 * k], points[3 * k + 1], points[3 * k + 2]),
+                         Vector3d(normals[3 * k], normals[3 * k + 1], normals[3 * k + 2]),
+                         forces[k]};
+    if (!c.point.allFinite()) refuse("the contact point must be finite");
+    if (!(std::abs(c.normal.norm() - 1.0) <= 1e-9)) refuse("the normal must be a unit vector");
+    if (!(std::isfinite(c.force) && c.force >= 0.0))
+        refuse("the force must be finite and non-negative");
+    return c;
+}
+
+/// The group contact_forces, as many contacts as its attribute says, at most 1000 a particle
+/// (its residuals are not read: forceBalance recomputes them).
+ContactForces readContactForces(hid_t root, std::size_t particles, const std::string& file) {
+    const Hdf5Handle group = openGroup(root, kContactForces);
+    const hid_t g = group.get();
+    ContactForces forces;
+    forces.windows = readInt64Attribute(g, kWindows);
+    forces.duration = readDoubleAttribute(g, kDuration);
+    forces.reducedPressure = readDoubleAttribute(g, kReducedPressure);
+    const std::int64_t rows = readInt64Attribute(g, kContacts);
+    if (rows < 0 || rows > 1000 * static_cast<std::int64_t>(particles))
+        throw PackingFileError("'" + file + "': " + kContactForces + " attribute '" + kContacts +
+                               "' must be an integer in [0, 1000 n_particles]");
+    const auto n = static_cast<std::size_t>(rows);
+    if (n == 0) return forces;
+    const std::vector<double> pairs = readMatrixDataset(g, kPairs, n, 2),
+                              points = readMatrixDataset(g, kPoints, n, 3),
+                              normals = readMatrixDataset(g, kNormals, n, 3),
+                              magnitudes = readMatrixDataset(g, kForces, n, 1);
+    for (std::size_t k = 0; k < n; ++k)
+        forces.contacts.push_back(
+            contactForceRow(pairs, points, normals, magnitudes, k, particles, file));
+    return forces;
+}
+
 /// The attribute group `group` of `packing` (provenance or resume_state).
 std::map<std::string, ProvenanceValue>& attributeGroup(Packing& packing, std::string_view group) {
     if (group == kProvenance) return packing.provenance;
@@ -162,6 +243,7 @@ std::string fileContents(const Packing& packing, const std::string& name) {
     if (!packing.pairRecords.empty())
         writeMatrixDataset(openGroup(root, kResumeState).get(), kPairRecords, packing.pairRecords,
                            kPairRecordColumns);
+    if (packing.contactForces) writeContactForces(root, packing);
     return fileImage(file, name);
 }
 
@@ -207,6 +289,7 @@ Packing readContents(hid_t root, const std::string& file) {
         packing.resumeState = readAttributeGroup(root, kResumeState, file);
         packing.pairRecords = readPairRecords(root, packing.resumeState, rows, file);
     }
+    if (hasLink(root, kContactForces)) packing.contactForces = readContactForces(root, rows, file);
     migrate(root, version, packing);
 
     validatePacking(packing, file);

@@ -38,6 +38,19 @@ inline constexpr const char* kProvenance = "provenance";
 inline constexpr const char* kResumeState = "resume_state";
 /// In resume_state: the attribute that counts the rows, and the dataset of the pair records.
 inline constexpr const char* kPairRecords = "pair_records";
+/// sbgen's contact forces: the group, its attributes (with kReducedPressure), the attribute
+/// that counts the contacts, the datasets, and each dataset's units attribute.
+inline constexpr const char* kContactForces = "contact_forces";
+inline constexpr const char* kWindows = "windows";
+inline constexpr const char* kDuration = "duration";
+inline constexpr const char* kContacts = "contacts";
+inline constexpr const char* kPairs = "pairs";
+inline constexpr const char* kPoints = "points";
+inline constexpr const char* kNormals = "normals";
+inline constexpr const char* kForces = "forces";
+inline constexpr const char* kNetForces = "net_forces";
+inline constexpr const char* kNetTorques = "net_torques";
+inline constexpr const char* kUnits = "units";
 } // namespace packing_file
 
 enum class PackingKind { Attribute, Dataset, Group };
@@ -48,8 +61,9 @@ struct PackingEntry {
     std::string_view name = {};
     PackingKind kind = PackingKind::Attribute;
     PackingType type = PackingType::None; ///< a dataset's element type; None for a group
-    /// "1" dimensionless, "length" (the packing's), "length/time" and "1/time" (sbgen's time,
-    /// docs/design.md §3); "" for strings and groups.
+    /// "1" dimensionless, "length" (the packing's), "time", "length/time" and "1/time" (sbgen's
+    /// time, docs/design.md §3), "kT/D" and "kT" (the contact forces, docs/jamming.md); "" for
+    /// strings and groups.
     std::string_view units = {};
     std::string_view description = {};
     bool optional = false;      ///< a file may lack it (said in the description when)

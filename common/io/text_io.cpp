@@ -250,6 +250,7 @@ std::vector<std::string> notCarriedBy(const Packing& packing, bool extendedXyz) 
     if (!packing.angularVelocities.empty()) left.emplace_back("angular velocities");
     if (!packing.provenance.empty() || !packing.generatorVersion.empty())
         left.emplace_back("provenance");
+    if (packing.contactForces) left.emplace_back("contact forces");
     if (!packing.resumeState.empty() || !packing.pairRecords.empty())
         left.emplace_back("resume state (a checkpoint's)");
     return left;

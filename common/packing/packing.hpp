@@ -24,6 +24,27 @@ using ProvenanceValue = std::variant<std::int64_t, double, std::string>;
 /// Values per row of Packing::pairRecords.
 inline constexpr std::size_t kPairRecordColumns = 13;
 
+/// One contact's time-averaged force as sbgen measured it (group `contact_forces`;
+/// docs/jamming.md, "Contact forces").
+struct ContactForce {
+    int i = 0; ///< particles, i < j
+    int j = 0;
+    Vector3d point = Vector3d::Zero();  ///< contact point x, lab frame, in [0, L)
+    Vector3d normal = Vector3d::Zero(); ///< unit, from i to j
+    double force = 0.0;                 ///< f >= 0 in kT / D: i pushes j with f n
+};
+
+/// sbgen's contact forces: the momentum each pair exchanged, averaged over the run's last
+/// windows (docs/jamming.md, "Contact forces"; the per-particle residuals: forceBalance).
+struct ContactForces {
+    std::vector<ContactForce> contacts; ///< ascending (i, j)
+    std::int64_t windows = 0;           ///< the windows averaged over
+    double duration = 0.0;              ///< their summed duration (sbgen's time)
+    /// sbgen's reduced pressure over those windows (their duration-weighted mean), which the
+    /// forces' virial reproduces (virialPressure).
+    double reducedPressure = 0.0;
+};
+
 /// Identical superballs in a cubic periodic box of edge L.
 struct Packing {
     double p = 1.0;
@@ -44,6 +65,8 @@ struct Packing {
     /// its row count resumeState["pair_records"]; the columns: generator/protocol/
     /// checkpoint_entries.cpp and docs/design.md §4).
     std::vector<double> pairRecords;
+    /// sbgen's contact forces (group `contact_forces`), absent for packings from elsewhere.
+    std::optional<ContactForces> contactForces;
 
     std::size_t size() const { return positions.size(); }
     Superball shape() const { return Superball(p, semiAxis); }

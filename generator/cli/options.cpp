@@ -129,6 +129,11 @@ void GeneratorCommandLine::addProtocolOptions() {
         "--window", "W", [&p](auto n, auto v) { p.collisionsPerWindow = parseNumber(n, v); },
         "collisions per particle between thermostat rescalings and pressure\n"
         "estimates (default 10)");
+    protocol(
+        "--force-windows", "K",
+        [&p](auto n, auto v) { p.forceWindows = parseInteger(n, v, 0, 10'000); },
+        "the contact forces written with the packing average over its last K to\n"
+        "2K - 1 windows (default 50; 0: none; docs/jamming.md, \"Contact forces\")");
 }
 
 void GeneratorCommandLine::addFileOptions() {
@@ -186,7 +191,8 @@ void validateAsOptions(const ProtocolParameters& protocol) {
         {"pressure_switch", "--pressure-switch"},
         {"pressure_final", "--pressure-final"},
         {"collisions_per_window", "--window"},
-        {"cost_limit", "--cost-limit"}};
+        {"cost_limit", "--cost-limit"},
+        {"force_windows", "--force-windows"}};
     try {
         protocol.validate();
     } catch (const ProtocolParameterError& e) {

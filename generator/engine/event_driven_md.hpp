@@ -23,6 +23,7 @@
 // rebuilding the events from them is deterministic, which makes checkpoints exact
 // (pairRecords, restorePairRecords).
 
+#include "engine/contact_impulses.hpp"
 #include "engine/growth_clock.hpp"
 #include "engine/pair_memories.hpp"
 #include "events/event_queue.hpp"
@@ -127,11 +128,14 @@ template <EngineShape Shape> class EventDrivenMd {
     /// repeated `stop` request (checked every event: a second request stops at once, the first
     /// waits for the window's end, JammingProtocol::run), or with `firstRequestStops` any
     /// request; then synchronises. Growth past the lists' design diameter synchronises and
-    /// rebuilds them on the way.
+    /// rebuilds them on the way. With `impulses`, each collision's impulse is also added to its
+    /// pair there (the contact forces' windows).
     RunReport run(std::uint64_t maxCollisions, double maxDuration = kNever,
-                  const StopRequest* stop = nullptr, bool firstRequestStops = false) {
+                  const StopRequest* stop = nullptr, ContactImpulses* impulses = nullptr,
+                  bool firstRequestStops = false) {
         RunReport report;
         ++run_;
+        impulses_ = impulses;
         while (report.collisions < maxCollisions && !report.interrupted) {
             if (dirty_) rebuild();
             const double limit = std::min(horizon_, maxDuration - report.duration);
@@ -166,6 +170,7 @@ template <EngineShape Shape> class EventDrivenMd {
             if (limitReached && (limit < horizon_ || limit == kNever))
                 break; // maxDuration, or no event ever
         }
+        impulses_ = nullptr;
         return report;
     }
 
@@ -274,6 +279,7 @@ template <EngineShape Shape> class EventDrivenMd {
             });
         const double impulse = shape_.resolve(m, contact, state_[i], state_[j]);
         report.virial += impulse * contact.normal.dot(m.displacement);
+        if (impulses_ != nullptr) impulses_->add(i, j, impulse, contact);
         ++report.collisions;
         for (const int k : {i, j})
             if (collidedInRun_[k] != run_) {
@@ -343,6 +349,7 @@ template <EngineShape Shape> class EventDrivenMd {
     std::vector<double> exit_;      ///< time each particle leaves its neighbour-list sphere
     std::vector<double> changedAt_; ///< time of each particle's last collision
     PairMemories<typename Shape::Memory> memories_;
+    ContactImpulses* impulses_ = nullptr;      ///< the current run()'s, if it keeps them
     std::uint64_t run_ = 0;                    ///< serial number of the current run()
     std::vector<std::uint64_t> collidedInRun_; ///< the last run() each particle collided in
     double horizon_ = kNever;

@@ -126,6 +126,8 @@ std::vector<Entry> parameterEntries() {
             [](auto& f) -> auto& { return f.parameters.collisionsPerWindow; }),
         field<double>(
             P, "cost_limit", [](auto& f) -> auto& { return f.parameters.costLimit; }, true),
+        field<std::int64_t>(
+            P, "force_windows", [](auto& f) -> auto& { return f.parameters.forceWindows; }, true),
         derived(P, "expected_collisions",
                 [](const CheckpointFields& f) {
                     return ProvenanceValue(expectedCost(f.parameters).collisions);

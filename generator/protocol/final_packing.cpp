@@ -17,6 +17,8 @@ Packing finalPacking(const JammingProtocol& protocol) {
     log["overlapping_pairs"] = static_cast<std::int64_t>(contacts.overlappingPairs);
     log["jammed"] = static_cast<std::int64_t>(jam.jammed);
     log["jam_check"] = jam.verdict;
+    if (!protocol.forceWindows().empty())
+        packing.contactForces = protocol.forceWindows().forces(packing);
     return packing;
 }
 

@@ -8,7 +8,8 @@
 namespace sbpack {
 
 /// The finished protocol's checkpoint with the contact analysis of common/ (at the jam check's
-/// tolerance max(1e-10, 100 / P) D) and the jam check in its provenance. Needs a run that
+/// tolerance max(1e-10, 100 / P) D) and the jam check in its provenance, and the contact forces
+/// of its recorded windows where it has any (JammingProtocol::forceWindows). Needs a run that
 /// finished (run() returned true: Phase::Done or the cost limit).
 Packing finalPacking(const JammingProtocol& protocol);
 

@@ -129,10 +129,13 @@ void ProtocolParameters::validate() const {
             "collisions_per_window", "must be in (0, 1e6] with at least one collision a window");
     require(std::isfinite(costLimit) && costLimit >= 0.0 && costLimit <= 1e6, "cost_limit",
             "must be in [0, 1e6] (times the expected collisions; 0: no limit)");
+    require(forceWindows >= 0 && forceWindows <= 10'000, "force_windows",
+            "must be in [0, 10000] (0: no contact forces)");
 }
 
 JammingProtocol::JammingProtocol(const ProtocolParameters& parameters)
-    : parameters_((parameters.validate(), parameters)), engine_(freshEngine<Engine>(parameters)) {
+    : parameters_((parameters.validate(), parameters)), engine_(freshEngine<Engine>(parameters)),
+      forceWindows_(parameters.forceWindows) {
     status_.packingFraction = packingFraction();
     adaptSkin();
 }
@@ -143,7 +146,8 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
 JammingProtocol::JammingProtocol(const Packing& packing, const std::string& source,
                                  const CheckpointFields& fields)
     : parameters_(fields.parameters), status_(fields.status),
-      engine_(resumedEngine<Engine>(packing, source, fields)) {
+      engine_(resumedEngine<Engine>(packing, source, fields)),
+      forceWindows_(fields.parameters.forceWindows) {
     status_.packingFraction = packing.packingFraction();
     adaptSkin(); // as the run that wrote the checkpoint did at the end of its window
 }
@@ -197,11 +201,17 @@ bool JammingProtocol::run(const std::function<void(const ProtocolStatus&)>& onWi
         if (stopAtCostLimit()) return true;
         const auto start = Clock::now();
         const std::clock_t cpuStart = std::clock();
+        const bool recorded = recordsForces();
+        if (!recorded) forceWindows_.clear(); // the windows kept are the last ones in a row
+        impulses_.clear();
         // Before the first window ends there is no state to keep: any request stops at once
         // (issue 65 item 3: a first window at N = 1e6 can last minutes).
         const bool firstWindow = status_.windows == 0;
         const RunReport report = std::visit(
-            [&](auto& engine) { return engine.run(perWindow, INFINITY, &stop, firstWindow); },
+            [&](auto& engine) {
+                return engine.run(perWindow, INFINITY, &stop, recorded ? &impulses_ : nullptr,
+                                  firstWindow);
+            },
             engine_);
         status_.collisions += report.collisions;
         status_.relists += report.relists;
@@ -217,7 +227,7 @@ bool JammingProtocol::run(const std::function<void(const ProtocolStatus&)>& onWi
                                      std::to_string(report.collisions) +
                                      " collisions (collisions repeating at one instant): the "
                                      "reduced pressure (virial / duration) is undefined");
-        watchJam(report.participants, finishWindow(report.virial, report.duration));
+        watchJam(report.participants, finishWindow(report.virial, report.duration, recorded));
         onWindow(status_);
         if (stop.requested() && status_.phase != Phase::Done) return false;
     }
@@ -226,7 +236,14 @@ bool JammingProtocol::run(const std::function<void(const ProtocolStatus&)>& onWi
     return true;
 }
 
-double JammingProtocol::finishWindow(double virial, double duration) {
+bool JammingProtocol::recordsForces() const {
+    // From half the final pressure on: in the slow phase hundreds of windows before the end,
+    // whose last forceWindows are kept (docs/jamming.md, "Contact forces").
+    return parameters_.forceWindows > 0 &&
+           status_.reducedPressure >= 0.5 * parameters_.pressureFinal;
+}
+
+double JammingProtocol::finishWindow(double virial, double duration, bool recorded) {
     // The window started at kT = 1 (rescaled); average with its end for the virial (docs/design.md
     // §3). The virial theorem's kT is the translational one. A phase ends when two windows in a row
     // reach its pressure: one window's estimate spikes when a cluster of rotating near-cubes
@@ -238,6 +255,9 @@ double JammingProtocol::finishWindow(double virial, double duration) {
             const double kTEnd = engine.kineticTemperature();
             const double kT = 0.5 * (1.0 + kTEnd);
             status_.reducedPressure = 1.0 + virial / (3.0 * parameters_.particles * kT * duration);
+            if (recorded)
+                forceWindows_.push(impulses_, duration, kT, status_.reducedPressure,
+                                   status_.windows + 1); // this window's number
             engine.scaleVelocities(1.0 / std::sqrt(kTEnd));
             const double kTRotation = engine.rotationalTemperature();
             if (kTRotation > 0.0) engine.scaleAngularVelocities(1.0 / std::sqrt(kTRotation));

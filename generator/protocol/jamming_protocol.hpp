@@ -19,6 +19,7 @@
 #include "contacts/jam_check.hpp"
 #include "engine/event_driven_md.hpp"
 #include "packing/packing.hpp"
+#include "protocol/force_windows.hpp"
 #include "shapes/sphere.hpp"
 #include "shapes/superball_shape.hpp"
 #include "stop/stop_request.hpp"
@@ -59,6 +60,11 @@ struct ProtocolParameters {
     double costLimit = 40.0;
     /// The contact-network criterion of the jam, checked before a jam is declared.
     JamCheckParameters jamCheck{};
+    /// The contact forces average over the run's last windows since the last multiple of
+    /// forceWindows but one (forceWindows to 2 forceWindows - 1 of them), recorded once the
+    /// reduced pressure has reached half the final one (docs/jamming.md, "Contact forces");
+    /// 0: none.
+    std::int64_t forceWindows = 50;
 
     /// The fast rate used: gammaFast if set, else the paper's protocol at p (paperFastRate:
     /// the rate in the paper's range (0.005, 0.05) that reproduces its phi, bench/RESULTS.md,
@@ -149,13 +155,21 @@ class JammingProtocol {
     /// engine state (readable by the resume constructor).
     Packing checkpoint() const;
 
+    /// The windows recorded for the contact forces: the run's last ones in a row (at most
+    /// 2 forceWindows - 1), since its pressure reached half the final one or since its resume
+    /// (docs/jamming.md, "Contact forces"); none before.
+    const ForceWindows& forceWindows() const { return forceWindows_; }
+
   private:
     /// The resume constructor's work, from the checkpoint's entries (checkpoint_entries.hpp).
     JammingProtocol(const Packing& checkpoint, const std::string& source,
                     const CheckpointFields& fields);
-    /// The reduced pressure from the window's virial, the thermostat and the phase; returns the
-    /// sustained pressure (the lower of this window's and the last one's).
-    double finishWindow(double virial, double duration);
+    /// The reduced pressure from the window's virial, the thermostat and the phase, and the
+    /// window's impulses into forceWindows_ when `recorded`; returns the sustained pressure (the
+    /// lower of this window's and the last one's).
+    double finishWindow(double virial, double duration, bool recorded);
+    /// Whether the next window's impulses are recorded for the contact forces.
+    bool recordsForces() const;
     /// The neighbour-list skin for the current packing fraction (neighbourSkin), for the next
     /// window's rebuild.
     void adaptSkin();
@@ -173,6 +187,8 @@ class JammingProtocol {
     ProtocolParameters parameters_;
     ProtocolStatus status_;
     Engine engine_;
+    ContactImpulses impulses_; ///< the window's, while recorded
+    ForceWindows forceWindows_;
 };
 
 } // namespace sbpack

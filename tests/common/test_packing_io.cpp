@@ -6,6 +6,7 @@
 #include "io/packing_io.hpp"
 #include "io/packing_schema.hpp"
 #include "io/text_io.hpp"
+#include "packing/contact_forces.hpp"
 #include "packing/validation.hpp"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <limits>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -54,6 +56,18 @@ Packing makePacking(std::size_t n = 6) {
     packing.resumeState["format"] = std::string("sbgen.state/1");
     packing.resumeState["growth_rate"] = 1e-2;
     return packing;
+}
+
+/// Contact forces between makePacking()'s particles (the points inside the box).
+ContactForces makeForces() {
+    ContactForces forces;
+    forces.windows = 50;
+    forces.duration = 1.25e-7;
+    forces.reducedPressure = 1e8 / 3.0;
+    forces.contacts = {{0, 1, Vector3d(1.5, 2.25, 9.75), Vector3d(1, 2, 2) / 3.0, 3.5e7},
+                       {1, 4, Vector3d(0.125, 5.0, 5.5), Vector3d(0, 0.6, -0.8), 0.0},
+                       {2, 5, Vector3d(7.0, 3.0, 1.0), Vector3d(-1, 0, 0), 1.0 / 3.0}};
+    return forces;
 }
 
 /// Runs `action`, expects an E whose message contains every word.
@@ -174,6 +188,8 @@ TEST_F(PackingIo, OptionalFieldsStayAbsent) {
     EXPECT_FALSE(read.seed);
     EXPECT_TRUE(read.provenance.empty());
     EXPECT_TRUE(read.resumeState.empty());
+    EXPECT_FALSE(read.contactForces);
+    EXPECT_FALSE(hasLink(openFileReadOnly(path).get(), "contact_forces"));
     EXPECT_FALSE(hasLink(openFileReadOnly(path).get(), "velocities"));
     EXPECT_FALSE(hasLink(openFileReadOnly(path).get(), "resume_state"));
 }
@@ -208,11 +224,73 @@ TEST_F(PackingIo, TheWriterWritesTheDeclaredEntriesAndNoOthers) { // issue 45
     Packing full = makePacking();
     full.resumeState[packing_file::kPairRecords] = std::int64_t{1};
     full.pairRecords.assign(kPairRecordColumns, 0.5);
+    full.contactForces = makeForces();
     writePacking(full, file("full.h5"));
     expectTheTableEntries(file("full.h5"), true);
     EXPECT_EQ(readPacking(file("full.h5")).pairRecords, full.pairRecords);
     writePacking(minimalPacking(), file("minimal.h5"));
     expectTheTableEntries(file("minimal.h5"), false);
+}
+
+TEST_F(PackingIo, ContactForcesRoundTripWithTheirUnitsAndResiduals) { // issue 62
+    Packing original = makePacking();
+    original.contactForces = makeForces();
+    const fs::path path = file("forces.h5");
+    writePacking(original, path);
+    const std::optional<ContactForces> read = readPacking(path).contactForces;
+    ASSERT_TRUE(read);
+    const ContactForces& expected = *original.contactForces;
+    EXPECT_EQ(read->windows, expected.windows);
+    EXPECT_EQ(read->duration, expected.duration);
+    EXPECT_EQ(read->reducedPressure, expected.reducedPressure);
+    ASSERT_EQ(read->contacts.size(), expected.contacts.size());
+    for (std::size_t c = 0; c < expected.contacts.size(); ++c) {
+        const ContactForce &a = read->contacts[c], &b = expected.contacts[c];
+        EXPECT_EQ(std::pair(a.i, a.j), std::pair(b.i, b.j)) << c;
+        EXPECT_EQ(a.point, b.point) << c;
+        EXPECT_EQ(a.normal, b.normal) << c;
+        EXPECT_EQ(a.force, b.force) << c;
+    }
+    // The residuals are written for h5py readers, as forceBalance computes them, with units.
+    const Hdf5Handle h5 = openFileReadOnly(path);
+    const Hdf5Handle group = openGroup(h5.get(), "contact_forces");
+    const ForceBalance balance = forceBalance(original, expected);
+    const std::vector<double> net = readMatrixDataset(group.get(), "net_torques", 6, 3);
+    for (std::size_t i = 0; i < 6; ++i)
+        EXPECT_EQ(Vector3d(net[3 * i], net[3 * i + 1], net[3 * i + 2]), balance.netTorques[i]);
+    const auto units = [&](const char* name) {
+        return readStringAttribute(openDataset(group.get(), name).get(), "units");
+    };
+    EXPECT_EQ(units("forces"), "kT/D");
+    EXPECT_EQ(units("net_forces"), "kT/D");
+    EXPECT_EQ(units("net_torques"), "kT");
+    EXPECT_EQ(units("points"), "length");
+    EXPECT_EQ(units("pairs"), "1");
+}
+
+TEST_F(PackingIo, TamperedContactForcesAreRefusedNamingTheRow) { // issue 62
+    const auto tampered = [&](const char* dataset, std::size_t columns, std::size_t index,
+                              double value) {
+        Packing packing = makePacking();
+        packing.contactForces = makeForces();
+        const fs::path path = file("tampered.h5");
+        writePacking(packing, path);
+        const Hdf5Handle h5 = openForEditing(path);
+        const Hdf5Handle group = openGroup(h5.get(), "contact_forces");
+        std::vector<double> values = readMatrixDataset(group.get(), dataset, 3, columns);
+        values[index] = value;
+        writeMatrixDataset(group.get(), dataset, values, columns);
+        return path;
+    };
+    const auto refused = [&](const fs::path& path, const char* problem) {
+        expectError<PackingFileError>([&] { readPacking(path); },
+                                      {"contact_forces row 1", problem});
+    };
+    refused(tampered("pairs", 2, 2, 4.0), "i < j < n_particles"); // (4, 4)
+    refused(tampered("pairs", 2, 3, 6.0), "i < j < n_particles"); // j = N
+    refused(tampered("normals", 3, 3, 0.5), "unit vector");
+    refused(tampered("forces", 1, 1, -1.0), "non-negative");
+    refused(tampered("points", 3, 4, NAN), "finite");
 }
 
 TEST_F(PackingIo, WritesTheSchemaAttributes) {
