@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <map>
 #include <stdexcept>
 #include <tuple>
 
@@ -165,6 +166,24 @@ std::string PackingJamming::verdict() const {
     return r ? fmt::format("{} jammed; {}", adverb(*r), pending) : pending;
 }
 
+/// sbgen's stored contact forces on the network's contacts (0 where a contact has none), the
+/// second order's self-stress where the packing has them (docs/jamming.md §6, §8); else none.
+std::optional<Eigen::VectorXd> storedForces(const Packing& packing,
+                                            const RigidityNetwork& network) {
+    if (!packing.contactForces) return std::nullopt;
+    std::map<std::pair<int, int>, double> force;
+    for (const ContactForce& c : packing.contactForces->contacts)
+        force[{c.i, c.j}] = c.force;
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(network.contacts.size()));
+    for (std::size_t c = 0; c < network.contacts.size(); ++c) {
+        const int a = network.backbone[network.contacts[c].i];
+        const int b = network.backbone[network.contacts[c].j];
+        if (const auto it = force.find({std::min(a, b), std::max(a, b)}); it != force.end())
+            f[static_cast<Eigen::Index>(c)] = it->second;
+    }
+    return f;
+}
+
 PackingJamming testJammingCategories(const Packing& packing, const JammingSettings& settings,
                                      const ContactParameters& contacts,
                                      const JammingObserver& observer) {
@@ -181,7 +200,7 @@ PackingJamming testJammingCategories(const Packing& packing, const JammingSettin
     for (JammingCategory category : settings.categories) {
         if (backbone.backbone.empty()) break;
         if (observer.before) observer.before(category);
-        out.tests.push_back(test.compute(backbone, category));
+        out.tests.push_back(test.compute(backbone, category, storedForces(packing, backbone)));
         if (observer.after) observer.after(out.tests.back());
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

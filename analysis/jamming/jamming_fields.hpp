@@ -106,7 +106,7 @@ template <class T> Optional secondOrderValue(const R& r, T (*value)(const Second
     return Value(value(*r.secondOrder));
 }
 
-inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>, 24>{{
+inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>, 26>{{
     {{"verdict", A, S, "",
       "first-order verdict: jammed (no motion), unjammed (a particle certainly freed; for "
       "spheres any motion) or undecided (p != 1: only motions that curvature may block, for the "
@@ -155,6 +155,23 @@ inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>,
          if (!r.secondOrder || r.secondOrder->verdict == SecondOrderVerdict::NoSelfStress)
              return std::nullopt;
          return Value(r.secondOrder->smallestStiffness);
+     }},
+    {{"forces_given", A, I, "1",
+      "second order: 1 where the self-stress tested is sbgen's stored contact forces (the "
+      "packing's "
+      "contact_forces), 0 where the linear program found it",
+      No, true},
+     +[](const R& r, const Scales&) -> Optional {
+         return secondOrderValue<std::int64_t>(
+             r, [](const SecondOrderResult& s) { return std::int64_t{s.forcesGiven ? 1 : 0}; });
+     }},
+    {{"balance_residual", A, F, "1",
+      "second order: |A f|_inf of the self-stress tested, in units of its mean force (torques per "
+      "D): rounding for the program's, the imbalance of stored forces",
+      Mean, true},
+     +[](const R& r, const Scales&) -> Optional {
+         return secondOrderValue<double>(
+             r, [](const SecondOrderResult& s) { return s.stress.balanceResidual; });
      }},
     {{"second_order_runtime_s", A, F, "s", "second order: wall-clock time", Mean, true},
      +[](const R& r, const Scales&) -> Optional {
