@@ -16,6 +16,8 @@ namespace sbpack {
 struct PackingInfo {
     Packing packing;
     double meanWidth;
+    /// Packing::analysisLengthUnit: the contacts, jam check and order are of the packing in it.
+    double lengthUnit;
     ContactResult contacts; ///< Z, phi_R and the worst overlap
     /// Whether the tolerance separates the contacts at the file's pressure (else no Z).
     ContactResolution resolution;

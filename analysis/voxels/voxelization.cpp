@@ -293,7 +293,7 @@ void Voxelization::writeVdb(const std::filesystem::path& file) const {
     out.commit();
 }
 
-std::string Voxelization::vdbImage() const {
+std::string Voxelization::vdbImage(double lengthUnit) const {
     openvdb::initialize();
     openvdb::FloatGrid::Ptr density = openvdb::FloatGrid::create(0.0f);
     density->setName("density");
@@ -306,7 +306,8 @@ std::string Voxelization::vdbImage() const {
     density->insertMeta("phi_voxel", openvdb::DoubleMetadata(phiVoxel()));
     density->insertMeta("phi_exact", openvdb::DoubleMetadata(phiExact_));
     return sbpack::vdbImage(density, boxLength_, voxels_,
-                            "fog volume density: 1 in voxels whose centre is inside a particle");
+                            "fog volume density: 1 in voxels whose centre is inside a particle",
+                            lengthUnit);
 }
 
 Voxelizer::Voxelizer(VoxelizationParameters parameters) : parameters_(parameters) {

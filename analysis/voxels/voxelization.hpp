@@ -73,8 +73,9 @@ class Voxelization {
     /// Houdini or ParaView: a float fog volume "density" (1 in the particles, 0 elsewhere) in
     /// the packing's length units, with metadata p, box_length, voxels, phi_voxel, phi_exact.
     void writeVdb(const std::filesystem::path& file) const;
-    /// The bytes of that .vdb file (writeVdb writes them through AtomicOutput).
-    std::string vdbImage() const;
+    /// The bytes of that .vdb file (writeVdb writes them through AtomicOutput); metadata
+    /// length_unit: what one length unit of the grid is in the packing's (voxels/vdb_image.hpp).
+    std::string vdbImage(double lengthUnit = 1.0) const;
 
   private:
     friend class Voxelizer;
