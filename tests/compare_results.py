@@ -7,7 +7,9 @@ Every group, attribute and dataset must be present in both and equal: bit for bi
 or within the relative tolerance R (numbers only). --scale S: B is of the packings of A with
 every length times S (tests/scale_packing.py, docs/reliability.md "Units"): B's values are
 compared in A's units, divided by S^k for units length^k (1/length: k = -1, time: k = 2),
-integers (voxel counts, contacts, shells) bit for bit, and `input` (the file name) is left out. Left out: what differs between any two runs
+integers (voxel counts, contacts, shells) bit for bit, and `input` (the file name) is left out;
+two values both below R w^k (w: the file's or ensemble's mean_width) are zero to that precision
+and equal (pore_size/error_bound, a certificate of rounding, is about 1e-14 w either way). Left out: what differs between any two runs
 or between process layouts by design: wall-clock times (units "s"), the run's `threads`, `ranks`
 and `distribute`, and the figures of a distributed grid (`ranks`, `slab`,
 `memory_per_rank_bytes`, `communication_bytes`) and `memory_bytes` of a voxel slab.
@@ -36,22 +38,30 @@ def units_of(attrs, name):
     return units.decode() if isinstance(units, bytes) else str(units)
 
 
-def same(a, b, rtol, factor=None):
+def same(a, b, rtol, scaled=None):
+    """scaled: (S^k, w^k) of the value's units under --scale."""
     a, b = np.asarray(a), np.asarray(b)
     if a.shape != b.shape or a.dtype.kind != b.dtype.kind:
         return False
-    if factor is not None and a.dtype.kind == "f":
-        b = b / factor
-    elif a.dtype.kind not in "fiu" or rtol == 0.0 or factor is not None:
+    zero = 0.0
+    if scaled is not None and a.dtype.kind == "f":
+        b, zero = b / scaled[0], rtol * scaled[1]
+    elif a.dtype.kind not in "fiu" or rtol == 0.0 or scaled is not None:
         return a.tobytes() == b.tobytes()
-    close = np.abs(a - b) <= rtol * np.maximum(np.abs(a), np.abs(b))
+    largest = np.maximum(np.abs(a), np.abs(b))
+    close = (np.abs(a - b) <= rtol * largest) | (largest <= zero)
     return bool(np.all((a == b) | close | (np.isnan(a) & np.isnan(b))))
 
 
-def walk(a, b, path, rtol, problems, scale=None):
+def walk(a, b, path, rtol, problems, scale=None, width=1.0):
     count = 0
     skip = LAYOUT | (RUN_ONLY if path == "/" else set()) | ({"input"} if scale else set())
-    factor = (lambda units: scale ** LENGTH_POWER.get(units, 0)) if scale else (lambda units: None)
+    width = float(a.attrs.get("mean_width", width))
+
+    def factor(units):
+        k = LENGTH_POWER.get(units, 0)
+        return (scale**k, width**k) if scale else None
+
     for name in sorted(set(a.attrs) | set(b.attrs)):
         if name.endswith("_units") or name in skip or seconds(a.attrs, name):
             continue
@@ -64,7 +74,7 @@ def walk(a, b, path, rtol, problems, scale=None):
         if name not in a or name not in b:
             problems.append(f"{path}{name}: only in one file")
         elif isinstance(a[name], h5py.Group):
-            count += walk(a[name], b[name], f"{path}{name}/", rtol, problems, scale)
+            count += walk(a[name], b[name], f"{path}{name}/", rtol, problems, scale, width)
         elif not seconds(a[name].attrs, "units"):
             count += 1
             units = units_of(a[name].attrs, None)

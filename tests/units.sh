@@ -5,12 +5,12 @@
 #    the results of PACKING: dimensionless and reduced values within 1e-12 relative, integers
 #    (solid voxels, so phi_voxel; contacts; shells) bit for bit, lengths^k divided by factor^k;
 # 2. at 1e-6 the --vdb grids are written (in the analyses' unit, recorded as length_unit);
-# 3. `sbanalyze info` of the 1e-6 packing gives the unscaled contacts and smallest gap.
+# 3. `sbanalyze info` of the 1e-6 packing gives the unscaled contacts, Z and rattlers.
 set -euo pipefail
 sbanalyze=$1 packing=$2 work=$3 python=$4
 tests=$(cd "$(dirname "$0")" && pwd)
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-options=(--compute all --voxels 48 --pore-voxels 48 --bootstrap 20 --fft-plan estimate
+options=(--compute all --voxels 64 --pore-voxels 64 --bootstrap 20 --fft-plan estimate
          --fft-wisdom none --quiet)
 "$sbanalyze" "$packing" "${options[@]}" --out reference.h5
 for factor in 1e-6 1e-3 1e3 1e40 1e52; do
@@ -20,9 +20,12 @@ for factor in 1e-6 1e-3 1e3 1e40 1e52; do
     "$python" "$tests/compare_results.py" reference.h5 "results-$factor.h5" --rtol 1e-12 \
         --scale "$factor"
 done
-"$sbanalyze" scaled-1e-6.h5 --compute voxels,pores --voxels 48 --pore-voxels 48 --quiet \
+mkdir vdb
+"$sbanalyze" scaled-1e-6.h5 --compute voxels,pores --voxels 64 --pore-voxels 64 --quiet \
     --vdb vdb --out vdb.h5
 ls vdb
-info() { "$sbanalyze" info "$1" | grep -E "smallest gap|contacts \(gap"; }
-diff <(info "$packing") <(info scaled-1e-6.h5) && echo "info: the same contacts"
+# (The smallest gap, -4e-16 D, is rounding: scaling the positions moves them by as much.)
+info() { "$sbanalyze" info "$1" | grep -E "contacts \(gap|mean contacts|rattler fraction"; }
+diff <(info "$packing") <(info scaled-1e-6.h5)
+echo "info: the same contacts"
 echo "units: ok"

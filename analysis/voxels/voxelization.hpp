@@ -136,7 +136,8 @@ class Voxelizer {
     /// The circumscribed radius with the margin that keeps the sphere shortcuts exact: voxel
     /// centres farther from a particle's centre are never tested (the CPU and GPU voxelisers).
     static double reach(const Superball& shape);
-    /// Smallest M that puts kMinVoxelsAcross voxels across the particles of `packing`.
+    /// Smallest M that puts kMinVoxelsAcross voxels across the particles of `packing`;
+    /// kMaxVoxels + 1 where no grid can.
     static int minimumVoxels(const Packing& packing);
     /// Throws VoxelResolutionError if M < minimumVoxels(packing) (the message gives both), or if
     /// a particle's circumdiameter exceeds L (it would overlap its own periodic image).
