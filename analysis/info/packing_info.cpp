@@ -21,9 +21,8 @@ PackingInfo packingInfo(const std::filesystem::path& file, const ContactParamete
         jam = checkJam(reduced, *reduced.reducedPressure);
     OrderMetrics order = measureOrder(reduced, &contacts.contacts);
     OrderVerdict verdict = orderVerdict(order);
-    return {std::move(packing),    meanWidth,      analysed.lengthUnit(),
-            std::move(contacts),   std::move(resolution), std::move(jam),
-            std::move(order),      std::move(verdict)};
+    return {std::move(packing),    meanWidth,      analysed.lengthUnit(), std::move(contacts),
+            std::move(resolution), std::move(jam), std::move(order),      std::move(verdict)};
 }
 
 namespace {
@@ -59,8 +58,8 @@ void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info
         << "  box edge           L = " << packing.boxLength << '\n'
         << "  semi-axis          R = " << packing.semiAxis << '\n'
         << "  packing fraction phi = " << packing.packingFraction() << '\n'
-        << "  mean width         w = " << info.meanWidth << "  (w/D = " << info.meanWidth / (2.0 * packing.semiAxis)
-        << ")\n";
+        << "  mean width         w = " << info.meanWidth
+        << "  (w/D = " << info.meanWidth / (2.0 * packing.semiAxis) << ")\n";
     if (packing.reducedPressure)
         out << "  reduced pressure     = " << std::setprecision(4) << *packing.reducedPressure
             << std::setprecision(10) << '\n';

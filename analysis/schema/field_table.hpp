@@ -23,8 +23,8 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
-#include <stdexcept>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -160,10 +160,10 @@ template <class R, std::size_t N> class FieldTable {
     /// the packing's units: a column's value times unitFactor(its units, scales.lengthUnit).
     void fill(Record& record, const R& result, const Scales& scales) const {
         for (std::size_t i = 0; i < N; ++i)
-            if (std::optional<Value> v = columns_[i].read(result, scales))
-                record.set(fields_[i], detail::times(std::move(*v),
-                                                     unitFactor(fields_[i].units,
-                                                                scales.lengthUnit)));
+            if (std::optional<Value> v = columns_[i].read(result, scales)) {
+                const double factor = unitFactor(fields_[i].units, scales.lengthUnit);
+                record.set(fields_[i], detail::times(std::move(*v), factor));
+            }
     }
 
   private:

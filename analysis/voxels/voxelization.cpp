@@ -330,8 +330,8 @@ double Voxelizer::reach(const Superball& shape) {
 int Voxelizer::minimumVoxels(const Packing& packing) {
     const double width = 2.0 * packing.shape().inradius();
     // A box of 1e100 widths (sbgen --phi-init 1e-300 wrote one) once gave "use M >= -2147483648".
-    return static_cast<int>(std::min(std::ceil(kMinVoxelsAcross * packing.boxLength / width),
-                                     kMaxVoxels + 1.0));
+    return static_cast<int>(
+        std::min(std::ceil(kMinVoxelsAcross * packing.boxLength / width), kMaxVoxels + 1.0));
 }
 
 void Voxelizer::checkResolution(const Packing& packing, int voxels) {
@@ -339,8 +339,8 @@ void Voxelizer::checkResolution(const Packing& packing, int voxels) {
     if (2.0 * shape.circumradius() > packing.boxLength) {
         std::ostringstream message; // %g: lengths in metres are not 0.000000
         message << std::setprecision(6) << "voxel grid: the particles (circumdiameter "
-                << 2.0 * shape.circumradius() << ") are larger than the box (L = "
-                << packing.boxLength << ")";
+                << 2.0 * shape.circumradius()
+                << ") are larger than the box (L = " << packing.boxLength << ")";
         throw VoxelResolutionError(message.str());
     }
     const double across = voxels * 2.0 * shape.inradius() / packing.boxLength;
