@@ -5,7 +5,8 @@
 #    the results of PACKING: dimensionless and reduced values within 1e-12 relative, integers
 #    (solid voxels, so phi_voxel; contacts; shells) bit for bit, lengths^k divided by factor^k;
 # 2. at 1e-6 the --vdb grids are written (in the analyses' unit, recorded as length_unit);
-# 3. `sbanalyze info` of the 1e-6 packing gives the unscaled contacts, Z and rattlers.
+# 3. `sbanalyze info` of the 1e-6 packing gives the unscaled contacts, Z and rattlers;
+# 4. lengths times 1e-300 are refused up front, the file and the range named, nothing written.
 set -euo pipefail
 sbanalyze=$1 packing=$2 work=$3 python=$4
 tests=$(cd "$(dirname "$0")" && pwd)
@@ -28,4 +29,9 @@ ls vdb
 info() { "$sbanalyze" info "$1" | grep -E "contacts \(gap|mean contacts|rattler fraction"; }
 diff <(info "$packing") <(info scaled-1e-6.h5)
 echo "info: the same contacts"
+"$python" "$tests/scale_packing.py" "$packing" scaled-1e-300.h5 1e-300
+status=0
+"$sbanalyze" scaled-1e-300.h5 "${options[@]}" --out tiny.h5 2>tiny.log || status=$?
+cat tiny.log
+test "$status" = 1 && test ! -e tiny.h5 && echo "refused: exit 1, nothing written"
 echo "units: ok"
