@@ -83,7 +83,7 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   or one stopped at its cost limit with a larger `--cost-limit`. A file without sbgen state is
   refused, and so is an `--out` that is the `--resume` file; `--checkpoint` may name it (each
   checkpoint replaces it atomically with a later state of the same run).
-- **Bad input** (`p` outside `(0.5, 1000]` or NaN, `N < 2`, `phi-init` outside (0, 0.5),
+- **Bad input** (`p` outside `(0.5, 1000]` or NaN, `N < 2`, `phi-init` outside [0.001, 0.5),
   non-positive or NaN rates or pressures, `pressure-final <= pressure-switch`, a negative
   `cost-limit`, an unwritable output, a resume file that is not a checkpoint, protocol options
   other than `--pressure-final` and `--cost-limit` given with `--resume`) is one line naming the
@@ -120,7 +120,10 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
 - **`--vdb DIR`**: the density volume is in the packing's length units, with metadata `p`,
   `phi_voxel`, `phi_exact`; Blender (Volume object), Houdini and ParaView open it. The pore-size
   grid is active on the void voxels only. Every `.vdb` also carries `box_length`, `voxels`
-  (int64) and `units` (one writer, `analysis/voxels/vdb_image`).
+  (int64), `units` and `length_unit` (one writer, `analysis/voxels/vdb_image`): the grids are in
+  the unit the analyses compute in, the power of two `u` with `1 <= D / u < 2` (`length_unit`,
+  1 for `1 <= D < 2`), so that a packing in metres stays within OpenVDB's scales; a length of the
+  grid times `length_unit` is the packing's.
 - **FFT planning**: planning predicted to take longer than `--fft-planning-budget` (a `n log n`
   model calibrated on the reference machine, `bench/RESULTS.md`, "FFT planning") falls back on
   FFTW's `estimate` plan, and measuring is cut off near the budget (FFTW's time limit); run once

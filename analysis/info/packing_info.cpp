@@ -12,17 +12,21 @@ PackingInfo packingInfo(const std::filesystem::path& file, const ContactParamete
                         const JammingSettings* jamming) {
     Packing packing = readPackingFile(file);
     const double meanWidth = packing.shape().meanWidth();
-    ContactResult contacts = ContactNetwork(parameters).compute(packing);
-    ContactResolution resolution = resolveContacts(packing, parameters.tolerance);
+    // In the analyses' length unit, as sbanalyze's stages (docs/reliability.md, "Units").
+    const AnalysedPacking analysed(packing);
+    const Packing& reduced = analysed.packing();
+    ContactResult contacts = ContactNetwork(parameters).compute(reduced);
+    ContactResolution resolution = resolveContacts(reduced, parameters.tolerance);
     std::optional<JamCheck> jam;
-    if (packing.reducedPressure && *packing.reducedPressure > 0.0)
-        jam = checkJam(packing, *packing.reducedPressure);
-    OrderMetrics order = measureOrder(packing, &contacts.contacts);
+    if (reduced.reducedPressure && *reduced.reducedPressure > 0.0)
+        jam = checkJam(reduced, *reduced.reducedPressure);
+    OrderMetrics order = measureOrder(reduced, &contacts.contacts);
     OrderVerdict verdict = orderVerdict(order);
     std::optional<PackingJamming> categories;
-    if (jamming) categories = testJammingCategories(packing, *jamming, parameters);
-    return {std::move(packing), meanWidth,        std::move(contacts), std::move(resolution),
-            std::move(jam),     std::move(order), std::move(verdict),  std::move(categories)};
+    if (jamming) categories = testJammingCategories(reduced, *jamming, parameters);
+    return {std::move(packing),    meanWidth,          analysed.lengthUnit(), std::move(contacts),
+            std::move(resolution), std::move(jam),     std::move(order),      std::move(verdict),
+            std::move(categories)};
 }
 
 namespace {
@@ -67,15 +71,15 @@ void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info
                       std::ostream& out) {
     const Packing& packing = info.packing;
     const ContactResult& c = info.contacts;
-    const double diameter = 2.0 * packing.semiAxis;
+    const double diameter = 2.0 * packing.semiAxis / info.lengthUnit; // of the contacts' packing
     out << std::setprecision(10) << file.string() << '\n'
         << "  particles          N = " << packing.size() << '\n'
         << "  exponent           p = " << packing.p << '\n'
         << "  box edge           L = " << packing.boxLength << '\n'
         << "  semi-axis          R = " << packing.semiAxis << '\n'
         << "  packing fraction phi = " << packing.packingFraction() << '\n'
-        << "  mean width         w = " << info.meanWidth << "  (w/D = " << info.meanWidth / diameter
-        << ")\n";
+        << "  mean width         w = " << info.meanWidth
+        << "  (w/D = " << info.meanWidth / (2.0 * packing.semiAxis) << ")\n";
     if (packing.reducedPressure)
         out << "  reduced pressure     = " << std::setprecision(4) << *packing.reducedPressure
             << std::setprecision(10) << '\n';

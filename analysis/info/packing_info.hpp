@@ -17,6 +17,8 @@ namespace sbpack {
 struct PackingInfo {
     Packing packing;
     double meanWidth;
+    /// Packing::analysisLengthUnit: the contacts, jam check and order are of the packing in it.
+    double lengthUnit;
     ContactResult contacts; ///< Z, phi_R and the worst overlap
     /// Whether the tolerance separates the contacts at the file's pressure (else no Z).
     ContactResolution resolution;
@@ -27,7 +29,7 @@ struct PackingInfo {
     /// (docs/order-metrics.md §5).
     OrderMetrics order;
     OrderVerdict verdict;
-    /// The jamming categories at first order (info --jamming; docs/jamming.md); absent without.
+    /// The jamming categories (info --jamming; docs/jamming.md); absent without.
     std::optional<PackingJamming> jamming;
 };
 

@@ -10,16 +10,18 @@ namespace sbpack {
 
 namespace {
 
+/// The file's attributes: its lengths as read, phi of the packing the stages see (in its
+/// analysis length unit, where N v1 / L^3 neither overflows nor underflows).
 schema::Record fileRecord(const Packing& packing, const std::filesystem::path& input,
-                          double meanWidth) {
+                          const FileContext& context) {
     schema::Record r(schema::fileGroup());
     r.set("input", input.string())
         .set("p", packing.p)
         .set("n_particles", packing.size())
         .set("box_length", packing.boxLength)
         .set("semi_axis", packing.semiAxis)
-        .set("phi", packing.packingFraction())
-        .set("mean_width", meanWidth);
+        .set("phi", context.packing().packingFraction())
+        .set("mean_width", packing.shape().meanWidth());
     return r;
 }
 
@@ -52,10 +54,10 @@ FileResults analyzeFile(const Packing& packing, const std::filesystem::path& inp
                         const RunSettings& settings, const Progress& progress,
                         const std::map<Analysis, VdbExport>& exports,
                         const DistributedGrids* grids) {
-    warnAboutOverlaps(packing, progress);
     FileContext context(packing, settings, progress, exports);
+    warnAboutOverlaps(context.packing(), progress);
     if (settings.distribute == Distribution::Grids) context.distributeGrids(grids);
-    FileResults results{input, fileRecord(packing, input, context.meanWidth()), {}};
+    FileResults results{input, fileRecord(packing, input, context), {}};
     const std::vector<Analysis> order = runOrder(settings.analyses);
     for (std::size_t i = 0; i < order.size(); ++i) {
         const AnalysisInfo& info = analysisInfo(order[i]);

@@ -31,17 +31,23 @@ struct VdbExport {
 
 class FileContext {
   public:
+    /// `packing` as read; the stages see it in its analysis length unit (packing()).
     FileContext(const Packing& packing, const RunSettings& settings, const Progress& progress,
                 std::map<Analysis, VdbExport> exports)
-        : packing_(packing), settings_(settings), progress_(progress),
-          meanWidth_(packing.shape().meanWidth()), exports_(std::move(exports)) {}
+        : analysed_(packing), settings_(settings), progress_(progress),
+          meanWidth_(analysed_.packing().shape().meanWidth()), exports_(std::move(exports)) {}
 
-    const Packing& packing() const { return packing_; }
+    /// The packing in units of lengthUnit() (D ~ 1: docs/reliability.md, "Units"), what every
+    /// stage computes on; the results tables scale back to the packing's units (scales()).
+    const Packing& packing() const { return analysed_.packing(); }
+    /// Packing::analysisLengthUnit of the packing as read: 1 where 1 <= D < 2.
+    double lengthUnit() const { return analysed_.lengthUnit(); }
     const RunSettings& settings() const { return settings_; }
     const Progress& progress() const { return progress_; }
+    /// The mean width w in units of lengthUnit().
     double meanWidth() const { return meanWidth_; }
     /// What the results tables scale by (schema/field_table.hpp).
-    schema::Scales scales() const { return {meanWidth_}; }
+    schema::Scales scales() const { return {meanWidth_, lengthUnit()}; }
     /// Where `analysis` exports its grid (--vdb); nullptr when it does not.
     const VdbExport* vdbExport(Analysis analysis) const {
         const auto it = exports_.find(analysis);
@@ -80,7 +86,7 @@ class FileContext {
         std::type_index type;
         std::shared_ptr<const void> value;
     };
-    const Packing& packing_;
+    AnalysedPacking analysed_;
     const RunSettings& settings_;
     const Progress& progress_;
     double meanWidth_;

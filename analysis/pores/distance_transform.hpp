@@ -85,8 +85,9 @@ class PoreSizeMap {
     /// value the pore size in length units, index (i, j, k) centred at ((i, j, k) + 0.5) a, with
     /// metadata box_length, voxels and units. Atomic (AtomicOutput); throws OutputPathError.
     void writeVdb(const std::filesystem::path& file) const;
-    /// The bytes of that .vdb file.
-    std::string vdbImage() const;
+    /// The bytes of that .vdb file; metadata length_unit: what one length unit of the map is in
+    /// the packing's (voxels/vdb_image.hpp).
+    std::string vdbImage(double lengthUnit = 1.0) const;
 
   private:
     friend PoreSizeMap transformMask(std::span<const std::uint8_t>, int, double, const Progress&,

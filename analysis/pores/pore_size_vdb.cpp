@@ -18,7 +18,7 @@ void PoreSizeMap::writeVdb(const std::filesystem::path& file) const {
     output.commit();
 }
 
-std::string PoreSizeMap::vdbImage() const {
+std::string PoreSizeMap::vdbImage(double lengthUnit) const {
     openvdb::initialize();
     const int m = voxels_;
     const std::int64_t plane = static_cast<std::int64_t>(m) * m;
@@ -60,8 +60,9 @@ std::string PoreSizeMap::vdbImage() const {
     transform->postTranslate(openvdb::Vec3d(0.5 * voxelSize_)); // index (i, j, k): voxel centre
     grid->setTransform(transform);
     return sbpack::vdbImage(grid, boxLength(), m,
-                            "length units of the packing; value = distance from the void voxel "
-                            "centre to the nearest solid voxel centre (periodic)");
+                            "length_unit; value = distance from the void voxel centre to the "
+                            "nearest solid voxel centre (periodic)",
+                            lengthUnit);
 }
 
 } // namespace sbpack

@@ -24,6 +24,7 @@
 #include <functional>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -31,9 +32,12 @@
 
 namespace sbpack::schema {
 
-/// What a column may scale by: the file's lengths.
+/// What a column may scale by: the file's lengths, in the units the analyses computed in.
 struct Scales {
     double meanWidth = 1.0; ///< the mean width w of one particle
+    /// The length unit of that computation in the packing's units (D: pipeline/stage.hpp):
+    /// FieldTable::fill turns each column to the packing's units by unitFactor of its units.
+    double lengthUnit = 1.0;
 };
 
 template <class R> using Read = std::optional<Value> (*)(const R&, const Scales&);
@@ -78,6 +82,21 @@ template <int K> std::optional<Value> divideByWidth(std::optional<Value> v, doub
     if (auto* xs = std::get_if<std::vector<double>>(&*v))
         for (double& x : *xs)
             apply(x);
+    return v;
+}
+
+/// `v` times `factor`, a number or an array; std::logic_error for an integer with a factor
+/// other than 1 (an integer column has no units to convert).
+inline Value times(Value v, double factor) {
+    if (factor == 1.0) return v;
+    if (double* x = std::get_if<double>(&v)) {
+        *x *= factor;
+    } else if (auto* xs = std::get_if<std::vector<double>>(&v)) {
+        for (double& x : *xs)
+            x *= factor;
+    } else {
+        throw std::logic_error("results table: a non-float value has units to convert");
+    }
     return v;
 }
 
@@ -137,11 +156,14 @@ template <class R, std::size_t N> class FieldTable {
     /// What the group's schema::Group spans.
     constexpr std::span<const Field> fields() const { return fields_; }
 
-    /// Fills `record` (whose group spans fields()) with every column present in `result`.
+    /// Fills `record` (whose group spans fields()) with every column present in `result`, in
+    /// the packing's units: a column's value times unitFactor(its units, scales.lengthUnit).
     void fill(Record& record, const R& result, const Scales& scales) const {
         for (std::size_t i = 0; i < N; ++i)
-            if (std::optional<Value> v = columns_[i].read(result, scales))
-                record.set(fields_[i], std::move(*v));
+            if (std::optional<Value> v = columns_[i].read(result, scales)) {
+                const double factor = unitFactor(fields_[i].units, scales.lengthUnit);
+                record.set(fields_[i], detail::times(std::move(*v), factor));
+            }
     }
 
   private:

@@ -178,6 +178,18 @@ std::string shapeName(const Field& field) {
     return field.width > 0 ? fmt::format("n x {}", field.width) : "n";
 }
 
+double unitFactor(std::string_view units, double lengthUnit) {
+    if (units == "length") return lengthUnit;
+    if (units == "length^2" || units == "time") return lengthUnit * lengthUnit;
+    if (units == "length^3") return lengthUnit * lengthUnit * lengthUnit;
+    if (units == "1/length") return 1.0 / lengthUnit;
+    if (units == "length^2/time") return 1.0; // (length^2) / (length^2 / diffusion coefficient)
+    if (units.find("length") != std::string_view::npos ||
+        units.find("time") != std::string_view::npos)
+        throw std::logic_error(fmt::format("results schema: units '{}' have no factor", units));
+    return 1.0;
+}
+
 std::string unitsAttributeName(std::string_view attribute) {
     return std::string(attribute) + "_units";
 }

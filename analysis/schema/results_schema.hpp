@@ -112,6 +112,14 @@ const Group& ensembleGroup(const Group& source);
 /// The field called `name` in `group`; nullptr if there is none.
 const Field* findField(const Group& group, std::string_view name);
 
+/// The factor that turns a value in `units` computed on the packing in units of `lengthUnit`
+/// (the analyses compute in units of D, pipeline/file_analysis.hpp) into the packing's own
+/// units: lengthUnit^k for "length^k", 1 / lengthUnit for "1/length", lengthUnit^2 for "time"
+/// (length^2 / diffusion_coefficient, which is given in the packing's units), 1 for every
+/// dimensionless or reduced unit ("1", "D", "w^3", "w^2/D", "s", ...). std::logic_error for a
+/// unit that names "length" or "time" in another way (a new unit must be declared here).
+double unitFactor(std::string_view units, double lengthUnit);
+
 /// Units attributes: a dataset has attribute "units"; a numeric attribute NAME has NAME_units.
 inline constexpr std::string_view kDatasetUnits = "units";
 std::string unitsAttributeName(std::string_view attribute);

@@ -293,7 +293,7 @@ void Voxelization::writeVdb(const std::filesystem::path& file) const {
     out.commit();
 }
 
-std::string Voxelization::vdbImage() const {
+std::string Voxelization::vdbImage(double lengthUnit) const {
     openvdb::initialize();
     openvdb::FloatGrid::Ptr density = openvdb::FloatGrid::create(0.0f);
     density->setName("density");
@@ -306,7 +306,8 @@ std::string Voxelization::vdbImage() const {
     density->insertMeta("phi_voxel", openvdb::DoubleMetadata(phiVoxel()));
     density->insertMeta("phi_exact", openvdb::DoubleMetadata(phiExact_));
     return sbpack::vdbImage(density, boxLength_, voxels_,
-                            "fog volume density: 1 in voxels whose centre is inside a particle");
+                            "fog volume density: 1 in voxels whose centre is inside a particle",
+                            lengthUnit);
 }
 
 Voxelizer::Voxelizer(VoxelizationParameters parameters) : parameters_(parameters) {
@@ -328,23 +329,31 @@ double Voxelizer::reach(const Superball& shape) {
 
 int Voxelizer::minimumVoxels(const Packing& packing) {
     const double width = 2.0 * packing.shape().inradius();
-    return static_cast<int>(std::ceil(kMinVoxelsAcross * packing.boxLength / width));
+    // A box of 1e100 widths (sbgen --phi-init 1e-300 wrote one) once gave "use M >= -2147483648".
+    return static_cast<int>(
+        std::min(std::ceil(kMinVoxelsAcross * packing.boxLength / width), kMaxVoxels + 1.0));
 }
 
 void Voxelizer::checkResolution(const Packing& packing, int voxels) {
     const Superball shape = packing.shape();
-    if (2.0 * shape.circumradius() > packing.boxLength)
-        throw VoxelResolutionError(
-            "voxel grid: the particles (circumdiameter " +
-            std::to_string(2.0 * shape.circumradius()) +
-            ") are larger than the box (L = " + std::to_string(packing.boxLength) + ")");
+    if (2.0 * shape.circumradius() > packing.boxLength) {
+        std::ostringstream message; // %g: lengths in metres are not 0.000000
+        message << std::setprecision(6) << "voxel grid: the particles (circumdiameter "
+                << 2.0 * shape.circumradius()
+                << ") are larger than the box (L = " << packing.boxLength << ")";
+        throw VoxelResolutionError(message.str());
+    }
     const double across = voxels * 2.0 * shape.inradius() / packing.boxLength;
     if (across < kMinVoxelsAcross) {
         std::ostringstream message;
         message << std::setprecision(3) << "voxel grid: M = " << voxels << " puts " << across
                 << " voxels across the narrowest width of a particle (2 r_in = "
                 << 2.0 * shape.inradius() << " in L = " << packing.boxLength << "), fewer than "
-                << kMinVoxelsAcross << "; use M >= " << minimumVoxels(packing);
+                << kMinVoxelsAcross;
+        if (minimumVoxels(packing) > kMaxVoxels)
+            message << "; no grid can (M <= " << kMaxVoxels << "): the box is too large";
+        else
+            message << "; use M >= " << minimumVoxels(packing);
         throw VoxelResolutionError(message.str());
     }
 }

@@ -73,8 +73,9 @@ class Voxelization {
     /// Houdini or ParaView: a float fog volume "density" (1 in the particles, 0 elsewhere) in
     /// the packing's length units, with metadata p, box_length, voxels, phi_voxel, phi_exact.
     void writeVdb(const std::filesystem::path& file) const;
-    /// The bytes of that .vdb file (writeVdb writes them through AtomicOutput).
-    std::string vdbImage() const;
+    /// The bytes of that .vdb file (writeVdb writes them through AtomicOutput); metadata
+    /// length_unit: what one length unit of the grid is in the packing's (voxels/vdb_image.hpp).
+    std::string vdbImage(double lengthUnit = 1.0) const;
 
   private:
     friend class Voxelizer;
@@ -135,7 +136,8 @@ class Voxelizer {
     /// The circumscribed radius with the margin that keeps the sphere shortcuts exact: voxel
     /// centres farther from a particle's centre are never tested (the CPU and GPU voxelisers).
     static double reach(const Superball& shape);
-    /// Smallest M that puts kMinVoxelsAcross voxels across the particles of `packing`.
+    /// Smallest M that puts kMinVoxelsAcross voxels across the particles of `packing`;
+    /// kMaxVoxels + 1 where no grid can.
     static int minimumVoxels(const Packing& packing);
     /// Throws VoxelResolutionError if M < minimumVoxels(packing) (the message gives both), or if
     /// a particle's circumdiameter exceeds L (it would overlap its own periodic image).

@@ -6,4 +6,18 @@ double Packing::packingFraction() const {
     return static_cast<double>(size()) * shape().volume() / (boxLength * boxLength * boxLength);
 }
 
+Packing inLengthUnit(const Packing& packing, double unit) {
+    Packing reduced;
+    reduced.p = packing.p;
+    reduced.semiAxis = packing.semiAxis / unit;
+    reduced.boxLength = packing.boxLength / unit;
+    reduced.positions.reserve(packing.size());
+    for (const Vector3d& r : packing.positions) // exact but where r / unit is subnormal
+        reduced.positions.push_back(wrapIntoBox(r / unit, reduced.boxLength));
+    reduced.orientations = packing.orientations;
+    reduced.reducedPressure = packing.reducedPressure;
+    reduced.seed = packing.seed;
+    return reduced;
+}
+
 } // namespace sbpack

@@ -72,6 +72,33 @@ struct Packing {
     Superball shape() const { return Superball(p, semiAxis); }
     /// phi = N v1 / L^3.
     double packingFraction() const;
+    /// The length unit the analyses compute in (docs/reliability.md, "Units"): the power of two
+    /// u with 1 <= D / u < 2 (D = 2 R), so that lengths divided by it are exact and a packing
+    /// with 1 <= D < 2 is analysed as given.
+    double analysisLengthUnit() const { return std::ldexp(1.0, std::ilogb(2.0 * semiAxis)); }
+};
+
+/// The particles of `packing` with every length divided by `unit` (a power of two: exact), so
+/// that a packing in any units is analysed at D ~ 1 and gives the same reduced results. The
+/// exponent, pressure and seed are kept; velocities, provenance and resume state are not.
+Packing inLengthUnit(const Packing& packing, double unit);
+
+/// A packing as the analyses see it: in its analysisLengthUnit, the packing itself where that is
+/// 1 (no copy), else its copy by inLengthUnit. Holds a reference to `packing`.
+class AnalysedPacking {
+  public:
+    explicit AnalysedPacking(const Packing& packing)
+        : unit_(packing.analysisLengthUnit()), original_(&packing),
+          scaled_(unit_ == 1.0 ? std::nullopt : std::optional(inLengthUnit(packing, unit_))) {}
+    /// The packing in units of lengthUnit().
+    const Packing& packing() const { return scaled_ ? *scaled_ : *original_; }
+    /// Packing::analysisLengthUnit of the packing given, in its units.
+    double lengthUnit() const { return unit_; }
+
+  private:
+    double unit_;
+    const Packing* original_;
+    std::optional<Packing> scaled_;
 };
 
 /// Minimum-image displacement in a cubic periodic box of edge L.

@@ -85,8 +85,23 @@ void checkOrientations(const Packing& packing, const std::string& source) {
 
 } // namespace
 
+/// The lengths in [kShortestLength, kLongestLength] (sbgen --phi-init 1e-300 wrote L = 2.2e100).
+void checkLengthRange(const Packing& packing, const std::string& source) {
+    const auto range = formatDouble(kShortestLength) + ", " + formatDouble(kLongestLength);
+    if (2.0 * packing.semiAxis < kShortestLength)
+        reject(source, "semi_axis = " + formatDouble(packing.semiAxis) +
+                           ": D = 2 semi_axis below " + formatDouble(kShortestLength) +
+                           " (lengths must lie in [" + range +
+                           "], where results up to length^3 are normal doubles; rescale)");
+    if (packing.boxLength > kLongestLength)
+        reject(source, "box_length = " + formatDouble(packing.boxLength) + " above " +
+                           formatDouble(kLongestLength) + " (lengths must lie in [" + range +
+                           "], where results up to length^3 are normal doubles; rescale)");
+}
+
 void validatePacking(const Packing& packing, const std::string& source) {
     checkScalars(packing, source);
+    checkLengthRange(packing, source);
     const std::size_t n = packing.positions.size();
     if (n == 0) reject(source, "no particles");
     // Finite sizes can still overflow or underflow the volume (semi_axis 1e300 or 1e-300).

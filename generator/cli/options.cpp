@@ -111,7 +111,7 @@ void GeneratorCommandLine::addProtocolOptions() {
         "random seed (default 1); same seed and options: identical packing");
     protocol(
         "--phi-init", "PHI", [&p](auto n, auto v) { p.phiInit = parseNumber(n, v); },
-        "initial packing fraction in (0, 0.5) (default 0.2, as the paper)");
+        "initial packing fraction in [0.001, 0.5) (default 0.2, as the paper)");
     protocol(
         "--gamma-fast", "GAMMA", [&p](auto n, auto v) { p.gammaFast = parseNumber(n, v); },
         "growth rate until --pressure-switch (default: the paper's protocol at --p,\n"

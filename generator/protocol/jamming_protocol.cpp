@@ -115,8 +115,9 @@ void ProtocolParameters::validate() const {
     // p = 0.501 makes 3.8e3 per CPU s): bench/RESULTS.md, "Extreme p".
     require(std::isfinite(p) && p > 0.5 && p <= 1e3, "p",
             "must be in (0.5, 1000] (the octahedron p = 0.5 stalls the event-driven predictor)");
-    require(std::isfinite(phiInit) && phiInit > 0.0 && phiInit < 0.5, "phi_init",
-            "must be in (0, 0.5)");
+    static_assert(kLeastPhiInit == 1e-3, "the message below names it");
+    require(std::isfinite(phiInit) && phiInit >= kLeastPhiInit && phiInit < 0.5, "phi_init",
+            "must be in [0.001, 0.5) (a more dilute start only adds growth time)");
     require(!gammaFast || positiveFinite(*gammaFast), "gamma_fast", "must be positive and finite");
     require(!gammaSlow || positiveFinite(*gammaSlow), "gamma_slow", "must be positive and finite");
     require(positiveFinite(pressureSwitch), "pressure_switch", "must be positive and finite");

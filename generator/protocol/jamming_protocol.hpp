@@ -46,6 +46,11 @@ struct ProtocolParameters {
     double p = 1.0;
     std::uint64_t seed = 1;
     double phiInit = 0.2;
+    /// The least phi_init: the particles start at D = 1 in a box of (N v1 / phi_init)^(1/3) and
+    /// grow at dD/dt = gamma to D_J = (phi_J / phi_init)^(1/3), so a dilute start only adds
+    /// growth time (8 / gamma at 1e-3, 1e100 / gamma at 1e-300, which wrote L = 2.2e100 with
+    /// the particles never grown: issue 65).
+    static constexpr double kLeastPhiInit = 1e-3;
     /// Unset: fastGrowthRate()'s default for p.
     std::optional<double> gammaFast;
     /// Unset: slowGrowthRate()'s default for p.

@@ -100,6 +100,7 @@ void analyzeFiles(const std::vector<std::string>& args) {
 /// 0 in the solid), for the figure of a packing slice (sbpack.plot).
 py::tuple voxelSlice(const Packing& packing, int voxels, int plane, int threads) {
     Voxelizer::checkResolution(packing, voxels);
+    const AnalysedPacking analysed(packing); // in its length unit, as the stages see it
     if (plane < 0 || plane >= voxels)
         throw std::invalid_argument("plane " + std::to_string(plane) + " is not in [0, " +
                                     std::to_string(voxels) + ")");
@@ -109,12 +110,13 @@ py::tuple voxelSlice(const Packing& packing, int voxels, int plane, int threads)
     runInterruptibly([&](const StopRequest& stop) {
         const ThreadBudget budget(threads);
         const Progress progress(nullptr, nullptr, stop);
-        Voxelizer({voxels}).compute(packing, progress).copySolidMask(mask, progress);
-        const PoreSizeMap map =
-            periodicDistanceTransform(mask, voxels, packing.boxLength / voxels, progress);
+        Voxelizer({voxels}).compute(analysed.packing(), progress).copySolidMask(mask, progress);
+        const PoreSizeMap map = periodicDistanceTransform(
+            mask, voxels, analysed.packing().boxLength / voxels, progress);
         const auto d2 = map.squaredDistances().subspan(plane * m * m, m * m);
-        for (std::size_t i = 0; i < m * m; ++i)
-            distance[i] = std::sqrt(static_cast<double>(d2[i])) * map.voxelSize();
+        for (std::size_t i = 0; i < m * m; ++i) // in the packing's units
+            distance[i] =
+                std::sqrt(static_cast<double>(d2[i])) * map.voxelSize() * analysed.lengthUnit();
     });
     const auto n = static_cast<py::ssize_t>(m);
     py::array_t<std::uint8_t> solid({n, n});

@@ -81,6 +81,33 @@ TEST(FieldTable, ReadsMembersChainsAccessorsAndScalesByTheMeanWidth) {
     EXPECT_EQ(full.entries().size(), kGroup.fields.size());
 }
 
+TEST(FieldTable, ColumnsReturnToThePackingUnits) {
+    // Computed on the packing in units of u = 1/4 (FileContext, docs/reliability.md "Units"):
+    // lengths times u, reduced and dimensionless values as they are.
+    const double u = 0.25;
+    schema::Record r(kGroup);
+    kTable.fill(r, R{}, {kWidth, u});
+    EXPECT_EQ(r.number("answer"), 42.5 * u);
+    EXPECT_EQ(r.number("twice"), 85.0 * u);
+    EXPECT_EQ(r.integer("count"), 7);
+    EXPECT_EQ(r.number("inner_w"), 3.0 / kWidth);
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(r.floats("curve")[i], R{}.curve[i] * u);
+        EXPECT_EQ(r.floats("curve_w")[i], R{}.curve[i] * kWidth);
+    }
+    EXPECT_EQ(schema::unitFactor("length^3", u), u * u * u);
+    EXPECT_EQ(schema::unitFactor("1/length", u), 4.0);
+    EXPECT_EQ(schema::unitFactor("time", u), u * u); // length^2 / diffusion_coefficient
+    EXPECT_EQ(schema::unitFactor("length^2/time", u), 1.0);
+    for (std::string_view reduced : {"1", "D", "w^3", "w^2/D", "s", "bytes", "deg", ""})
+        EXPECT_EQ(schema::unitFactor(reduced, u), 1.0) << reduced;
+    EXPECT_THROW((void)schema::unitFactor("length^4", u), std::logic_error);
+    // Every unit the results declare has its factor.
+    for (const schema::Group* g : resultGroups())
+        for (const schema::Field& f : g->fields)
+            EXPECT_NO_THROW((void)schema::unitFactor(f.units, u)) << g->name << "/" << f.name;
+}
+
 TEST(FieldTable, TheRecordRefusesAFieldOfAnotherGroupAndAnIncompleteRecord) {
     schema::Record record(kGroup);
     const schema::Field copy = kGroup.fields[0]; // equal, but not the group's own

@@ -119,6 +119,20 @@ TEST(Voxelization, RejectsCoarseGridsAndOversizedParticles) {
     EXPECT_THROW(Voxelizer({40}).compute(tooLarge, quiet), VoxelResolutionError);
 }
 
+TEST(Voxelization, ABoxNoGridResolvesIsNamedSo) {
+    // sbgen --phi-init 1e-300 once wrote L = 2.2e100: "use M >= -2147483648" (issue 65).
+    const Packing huge = testing::singleParticle(1.5, 0.5, 2.2e100, Vector3d::Constant(1.0));
+    EXPECT_EQ(Voxelizer::minimumVoxels(huge), Voxelizer::kMaxVoxels + 1);
+    try {
+        Voxelizer::checkResolution(huge, 300);
+        ADD_FAILURE() << "a box of 1e100 diameters was resolved";
+    } catch (const VoxelResolutionError& e) {
+        EXPECT_NE(std::string(e.what()).find("no grid can (M <= 65536): the box is too large"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 TEST(Voxelization, IndicatorLeavesRowPaddingAlone) {
     const int m = 24;
     const Packing packing = testing::singleParticle(1.0, 0.5, 2.0, Vector3d(1.0, 0.3, 1.7));

@@ -371,6 +371,28 @@ TEST_F(PackingIo, AParticleWiderThanTheBoxIsRefused) {
     EXPECT_FALSE(fs::exists(file("wide.h5")));
 }
 
+TEST_F(PackingIo, LengthsOutsideTheRangeOfResultsAreRefusedWithTheLimit) {
+    // Scaled by 1e-300 or 1e100 (sbgen --phi-init 1e-300 wrote L = 2.2e100): results up to
+    // length^3 would not be normal doubles (docs/design.md §5, "Units"; issue 65).
+    Packing tiny = makePacking();
+    tiny.semiAxis *= 1e-300;
+    tiny.boxLength *= 1e-300;
+    for (Vector3d& r : tiny.positions)
+        r *= 1e-300;
+    expectError<std::exception>([&] { writePacking(tiny, file("tiny.h5")); },
+                                {"semi_axis = ", "below 1e-100", "[1e-100, 1e+100]"});
+    Packing huge = makePacking();
+    huge.boxLength = 2.2e100;
+    expectError<std::exception>([&] { writePacking(huge, file("huge.h5")); },
+                                {"box_length = 2.2e+100 above 1e+100", "rescale"});
+    Packing small = makePacking(); // 1e-90 is in range
+    small.semiAxis *= 1e-90;
+    small.boxLength *= 1e-90;
+    for (Vector3d& r : small.positions)
+        r *= 1e-90;
+    EXPECT_NO_THROW(writePacking(small, file("small.h5")));
+}
+
 TEST_F(PackingIo, MissingFile) {
     const fs::path path = file("absent.h5");
     expectError<PackingFileError>([&] { readPacking(path); }, {"absent.h5", "no such file"});

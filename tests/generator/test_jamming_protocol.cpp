@@ -74,6 +74,8 @@ TEST(JammingProtocol, RejectsBadParametersNamingTheParameter) {
     expectBad([](auto& p) { p.p = NAN; }, "p");
     expectBad([](auto& p) { p.phiInit = 0.5; }, "phi_init");
     expectBad([](auto& p) { p.phiInit = 0.0; }, "phi_init");
+    expectBad([](auto& p) { p.phiInit = 1e-300; }, "phi_init"); // once wrote L = 2.2e100
+    expectBad([](auto& p) { p.phiInit = std::nextafter(1e-3, 0.0); }, "phi_init");
     expectBad([](auto& p) { p.gammaFast = -0.01; }, "gamma_fast");
     expectBad([](auto& p) { p.gammaSlow = NAN; }, "gamma_slow");
     expectBad([](auto& p) { p.pressureSwitch = INFINITY; }, "pressure_switch");

@@ -133,7 +133,7 @@ bool runPoreSizes(FileContext& context, schema::Record& record) {
         pores.runtimeSeconds, poreDetail(pores));
     if (const VdbExport* vdb = context.vdbExport(Analysis::PoreSizes); vdb != nullptr && map) {
         const Stopwatch clock;
-        vdb->output->write(map->vdbImage());
+        vdb->output->write(map->vdbImage(context.lengthUnit()));
         context.progress().stageDone("pore vdb export", clock.seconds(), vdb->destination.string());
     }
     const bool gridded = context.settings().poreMethod() != PoreMethod::Exact;

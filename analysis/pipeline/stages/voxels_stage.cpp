@@ -49,7 +49,7 @@ std::optional<std::string> exportVoxels(const FileContext& context, const Voxeli
     const VdbExport* vdb = context.vdbExport(Analysis::Voxels);
     if (vdb == nullptr) return std::nullopt;
     const Stopwatch clock;
-    vdb->output->write(voxels.vdbImage());
+    vdb->output->write(voxels.vdbImage(context.lengthUnit()));
     context.progress().stageDone("vdb export", clock.seconds(), vdb->destination.string());
     return vdb->destination.string();
 }
