@@ -83,8 +83,8 @@ LinearProgram leastResidualProgram(const Eigen::SparseMatrix<double>& a) {
 }
 
 /// Eq. (L) (docs/jamming.md §6.6). Where its residual is at the solver's feasibility an exact
-/// self-stress exists, and the least-residual vertex would load as few contacts as it can (fcc:
-/// one row of 6): then §6.2's program, which loads the most.
+/// self-stress exists, and the least-residual vertex loads few contacts (perturbed fcc: 6 to 302
+/// of 648): then §6.2's program, which loads the most.
 Eigen::VectorXd leastResidualForces(const Eigen::SparseMatrix<double>& a,
                                     const LinearProgramTolerances& tolerances) {
     const Eigen::VectorXd least =
