@@ -3,15 +3,20 @@
 // jam check's at the recorded pressure) and each category: the verdict, the Maxwell count, the
 // largest first-order opening, how many particles the opening and the flex move and how spread
 // the flex is (participation ratio), the particles freed, and the wall time of both programs;
-// where the collective first order is undecided, the second-order stress test.
+// where the collective first order is undecided, the second-order stress test. Letter r: the
+// least-residual self-stress of a finite-pressure snapshot (docs/jamming.md §6.6) and its rho;
+// letter a: that and the second-order test with it (bench/RESULTS.md, "Approximate self-stress").
 //
-//   bench_jamming FILE [TOLERANCES] [CATEGORIES]   (e.g. 1e-10,1e-8 and lcs; default: jam check's,
-//   lcs)
+//   bench_jamming FILE [TOLERANCES] [CATEGORIES]   (e.g. 1e-10,1e-8 and lcsra; default: jam
+//   check's, lcs)
 
 #include "contacts/jam_check.hpp"
 #include "io/text_io.hpp"
 #include "jamming/jamming_test.hpp"
+#include "jamming/rigidity_matrix.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -65,6 +70,49 @@ void secondOrderRow(const SecondOrderResult& r) {
                 r.smallestStiffness, r.penalty, r.flexResidual, r.seconds);
 }
 
+/// Where the least-residual forces miss balance (docs/jamming.md §6.6): the particles whose net
+/// force or torque exceeds rho / 100, and gap x force of the three widest contacts (hard
+/// particles' time-averaged forces obey f ~ kT / <gap>, so a balanced network's widest, weakest
+/// contacts share one product).
+void residualWhere(const RigidityNetwork& network, const SelfStress& stress) {
+    const Eigen::VectorXd residual =
+        rigidityMatrix(network, JammingCategory::Collective) * stress.forces;
+    const int particles = static_cast<int>(network.backbone.size());
+    std::vector<char> above(particles, 0);
+    for (Eigen::Index k = 0; k < residual.size(); ++k)
+        if (std::abs(residual[k]) > 1e-2 * stress.balanceResidual) above[(k / 3) % particles] = 1;
+    std::vector<std::pair<double, int>> widest;
+    for (std::size_t c = 0; c < network.contacts.size(); ++c)
+        widest.emplace_back(network.contacts[c].gap, static_cast<int>(c));
+    std::sort(widest.rbegin(), widest.rend());
+    std::printf("residual above rho / 100 at %lld particles; widest contacts gap x f:",
+                static_cast<long long>(std::count(above.begin(), above.end(), 1)));
+    for (std::size_t k = 0; k < 3 && k < widest.size(); ++k)
+        std::printf(" %.1e D x %.1e", widest[k].first, stress.forces[widest[k].second]);
+    std::printf("\n");
+}
+
+/// The least-residual self-stress (docs/jamming.md §6.6) and, with `secondOrder`, the stress test
+/// with it given (the acceptance threshold left aside, to see what it would say).
+void approximateRow(const RigidityNetwork& network, bool secondOrder) {
+    const auto start = std::chrono::steady_clock::now();
+    const SecondOrderParameters parameters;
+    const SelfStress stress = findSelfStress(network, parameters.loadTolerance, parameters.solver,
+                                             SelfStressProgram::LeastResidual);
+    std::printf("\nleast-residual self-stress: rho = |A f|_inf %.3e, |A f|_2 %.3e, %d of %lld "
+                "contacts loaded, f max %.2f; %.2f s\n",
+                stress.balanceResidual, stress.residualNorm, stress.loadedContacts,
+                static_cast<long long>(stress.forces.size()), stress.forces.maxCoeff(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    residualWhere(network, stress);
+    if (secondOrder) {
+        const SecondOrderResult r = SecondOrderTest(parameters).compute(network, stress.forces);
+        secondOrderRow(r);
+        std::printf("curvature radius |A f|_2 / lambda: %.3e D\n", r.curvatureRadius);
+    }
+    std::fflush(stdout);
+}
+
 std::vector<double> parseList(const std::string& text) {
     std::vector<double> values;
     std::stringstream stream(text);
@@ -91,10 +139,19 @@ int main(int argc, char** argv) {
     for (const double tolerance : tolerances) {
         const RigidityNetwork network =
             backboneNetwork(packing, ContactNetwork({tolerance, 4}).compute(packing));
-        std::printf("\ntolerance %.0e D: %zu backbone particles, %zu contacts\n\n", tolerance,
-                    network.backbone.size(), network.contacts.size());
-        std::printf("| category | verdict | deficit | largest opening (D) | opening moves | "
-                    "flex moves | flex PR | freed | s |\n|---|---|---|---|---|---|---|---|---|\n");
+        const int deficit = degreesOfFreedom(network, JammingCategory::Collective).count() - 3 -
+                            static_cast<int>(network.contacts.size());
+        double largestGap = 0.0;
+        for (const RigidContact& c : network.contacts)
+            largestGap = std::max(largestGap, c.gap);
+        std::printf("\ntolerance %.0e D: %zu backbone particles, %zu contacts, deficit %d, "
+                    "largest gap %.1e D\n\n",
+                    tolerance, network.backbone.size(), network.contacts.size(), deficit,
+                    largestGap);
+        if (categories.find_first_of("lcs") != std::string::npos)
+            std::printf(
+                "| category | verdict | deficit | largest opening (D) | opening moves | "
+                "flex moves | flex PR | freed | s |\n|---|---|---|---|---|---|---|---|---|\n");
         const std::pair<char, JammingCategory> all[] = {{'l', JammingCategory::Local},
                                                         {'c', JammingCategory::Collective},
                                                         {'s', JammingCategory::Strict}};
@@ -106,6 +163,8 @@ int main(int argc, char** argv) {
                 if (result.secondOrder) secondOrderRow(*result.secondOrder);
                 std::fflush(stdout);
             }
+        if (categories.find('r') != std::string::npos || categories.find('a') != std::string::npos)
+            approximateRow(network, categories.find('a') != std::string::npos);
     }
     return 0;
 }

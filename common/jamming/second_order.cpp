@@ -178,6 +178,14 @@ double stiffnessOnFlexes(const Sparse& s, const Sparse& loaded,
     return scale;
 }
 
+/// A self-stress to test: not empty, and the program's least-residual forces within
+/// residualAcceptance of balance (docs/jamming.md §6.6).
+bool accepted(const SecondOrderResult& result, const SecondOrderParameters& parameters) {
+    if (result.stress.forces.size() == 0) return false;
+    return result.forcesGiven || parameters.selfStress == SelfStressProgram::Exact ||
+           result.stress.balanceResidual <= parameters.residualAcceptance;
+}
+
 /// The reduced vector v as a full dof vector, the fixed particle's translation 0.
 Eigen::VectorXd fullMode(const Eigen::VectorXd& v) {
     Eigen::VectorXd mode = Eigen::VectorXd::Zero(v.size() + 3);
@@ -188,8 +196,9 @@ Eigen::VectorXd fullMode(const Eigen::VectorXd& v) {
 } // namespace
 
 SecondOrderTest::SecondOrderTest(SecondOrderParameters parameters) : parameters_(parameters) {
-    for (const double tolerance : {parameters_.loadTolerance, parameters_.stiffnessTolerance,
-                                   parameters_.penaltyConvergence, parameters_.rankTolerance})
+    for (const double tolerance :
+         {parameters_.loadTolerance, parameters_.stiffnessTolerance, parameters_.penaltyConvergence,
+          parameters_.rankTolerance, parameters_.residualAcceptance})
         if (!(tolerance > 0.0 && tolerance < 1.0))
             throw std::invalid_argument("second-order test: tolerance " +
                                         std::to_string(tolerance) + " must lie in (0, 1)");
@@ -204,7 +213,7 @@ SecondOrderResult SecondOrderTest::compute(const RigidityNetwork& network,
     SecondOrderResult result;
     result.forcesGiven = forces.has_value();
     result.stress = forces ? givenSelfStress(network, *forces, p.loadTolerance)
-                           : findSelfStress(network, p.loadTolerance, p.solver);
+                           : findSelfStress(network, p.loadTolerance, p.solver, p.selfStress);
     const DegreesOfFreedom dof = degreesOfFreedom(network, JammingCategory::Collective);
     const Sparse a = rigidityMatrix(network, JammingCategory::Collective);
     const int contacts = static_cast<int>(a.cols()), motions = dof.count() - 3;
@@ -217,7 +226,7 @@ SecondOrderResult SecondOrderTest::compute(const RigidityNetwork& network,
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return result;
     };
-    if (result.stress.forces.size() == 0) return finish(SecondOrderVerdict::NoSelfStress);
+    if (!accepted(result, p)) return finish(SecondOrderVerdict::NoSelfStress);
     std::vector<char> loaded(contacts);
     Eigen::VectorXd f = result.stress.forces;
     for (int c = 0; c < contacts; ++c) {
@@ -233,6 +242,8 @@ SecondOrderResult SecondOrderTest::compute(const RigidityNetwork& network,
     const double scale = stiffnessOnFlexes(s, loadedRigidity, p, result);
     result.flexResidual = (loadedRigidity.transpose() * result.softestMode).norm();
     result.softestMode = fullMode(result.softestMode);
+    if (result.smallestStiffness > 0.0) // Eq. (R) of docs/jamming.md §6.6
+        result.curvatureRadius = result.stress.residualNorm / result.smallestStiffness;
     return finish(result.smallestStiffness > p.stiffnessTolerance * scale
                       ? SecondOrderVerdict::Jammed
                       : SecondOrderVerdict::NotJammed);

@@ -28,6 +28,13 @@ struct SecondOrderParameters {
     double penaltyConvergence = 1e-6;
     /// A pivot of the rank-revealing QR of A counts as zero below this times its largest.
     double rankTolerance = 1e-9;
+    /// The program's self-stress: Exact, or LeastResidual for a finite-pressure snapshot
+    /// (docs/jamming.md §6.6); forces given to compute are used as they are.
+    SelfStressProgram selfStress = SelfStressProgram::Exact;
+    /// LeastResidual: forces whose balanceResidual rho exceeds this are no self-stress
+    /// (NoSelfStress). The default, from the MRJ packings' rho against pressure, is justified in
+    /// docs/jamming.md §6.6.
+    double residualAcceptance = 1e-6;
     LinearProgramTolerances solver; ///< of the self-stress program
 };
 
@@ -35,7 +42,8 @@ enum class SecondOrderVerdict {
     Jammed,    ///< S_f positive definite on the flexes: jammed at second order (a proof)
     NotJammed, ///< S_f has a direction <= 0 on the flexes: this self-stress does not jam it (with
                ///< a unique self-stress, selfStresses == 1, a second-order flex exists)
-    NoSelfStress,     ///< f = 0 only: a first-order motion opens every contact (Gordan)
+    NoSelfStress,     ///< f = 0 only: a first-order motion opens every contact (Gordan); or
+                      ///< the least-residual forces' rho is above residualAcceptance
     SingularCurvature ///< a loaded contact where Hess s diverges: on an edge of a p < 1
                       ///< superball, or two flat faces (face centres of aligned p > 1)
 };
@@ -50,8 +58,12 @@ struct SecondOrderResult {
     /// lambda_min of S_f + mu A A^T (fixed particle's translation removed), units of the mean
     /// force per D (lengths in D, rotations in radians): a lower bound on S_f's on the flexes.
     double smallestStiffness = 0.0;
-    double penalty = 0.0;        ///< the mu of smallestStiffness
-    double flexResidual = 0.0;   ///< |A_loaded^T v|_2 of its unit eigenvector v (0: an exact flex)
+    double penalty = 0.0;      ///< the mu of smallestStiffness
+    double flexResidual = 0.0; ///< |A_loaded^T v|_2 of its unit eigenvector v (0: an exact flex)
+    /// |A f|_2 / smallestStiffness (units of D, rotations in radians), where positive: a motion
+    /// that keeps the loaded contacts closed to second order turns with a radius of curvature
+    /// below it (docs/jamming.md §6.6, Eq. (R)); 0 for an exact self-stress.
+    double curvatureRadius = 0.0;
     Eigen::VectorXd softestMode; ///< v in the dof layout (rigidity_matrix.hpp), fixed dr = 0
     double seconds = 0.0;
 };

@@ -1,7 +1,10 @@
 // The second-order jamming test (docs/jamming.md §6): the Hessian of the contact gap against
 // finite differences of the exact signed distance, and known answers: a CsCl pair of aligned
 // superballs held at their body diagonals (jammed at second order for p < 1, not for p > 1, the
-// smallest stiffness in closed form), fcc spheres jammed, the simple-cubic row slide not rescued.
+// smallest stiffness in closed form), fcc spheres jammed, the simple-cubic row slide not rescued;
+// the least-residual self-stress of a perturbed network (docs/jamming.md §6.6): exact where the
+// network is hyperstatic (fcc), linear in the perturbation where its self-stress is not generic
+// (diamond).
 
 #include "contacts/contact_network.hpp"
 #include "io/text_io.hpp"
@@ -216,6 +219,88 @@ TEST(SecondOrder, SimpleCubicRowSlideIsNotRescued) {
     EXPECT_FALSE(JammingTest({}).compute(network, JammingCategory::Collective).jammed());
 }
 
+/// Spheres of diameter 1 on the diamond lattice (fcc and fcc + a (1, 1, 1) / 4, a = 4 / sqrt 3:
+/// nearest neighbours touch), 3^3 cells, 216 spheres, each with 4 contacts along tetrahedral
+/// directions, displaced uniformly in [-h, h]^3; the network at 1e-3 D, far above the
+/// displacements' 2 sqrt 3 h and far below the second neighbours' gap (0.63 D).
+RigidityNetwork perturbedDiamond(double h) {
+    std::vector<Vector3d> basis = lattices::kFaceCentred;
+    for (const Vector3d& b : lattices::kFaceCentred)
+        basis.push_back(b + Vector3d::Constant(0.25));
+    const Packing diamond = lattices::cubicCrystal(3, 4.0 / std::sqrt(3.0), basis);
+    return backboneNetwork(lattices::displaced(diamond, h, 7),
+                           ContactNetwork({1e-3}).compute(lattices::displaced(diamond, h, 7)));
+}
+
+TEST(LeastResidualSelfStress, IsLinearInThePerturbationWhereTheSelfStressIsNotGeneric) {
+    // docs/jamming.md §6.6: diamond is hypostatic (2N contacts, 3N - 3 motions) yet stressed,
+    // f = 1 (four tetrahedral unit vectors sum to 0); displaced by h its A has full column rank,
+    // so no exact self-stress remains and the least residual is rho ~ h |dA / dh| (Eq. (L)).
+    const SecondOrderParameters parameters;
+    const auto rhoAt = [&](double h) {
+        const RigidityNetwork network = perturbedDiamond(h);
+        EXPECT_EQ(network.contacts.size(), 432u) << "h " << h;
+        const SelfStress stress = findSelfStress(
+            network, parameters.loadTolerance, parameters.solver, SelfStressProgram::LeastResidual);
+        EXPECT_NEAR(stress.forces.mean(), 1.0, 1e-12);
+        EXPECT_GE(stress.forces.minCoeff(), 0.0);
+        return stress.balanceResidual;
+    };
+    EXPECT_LT(rhoAt(0.0), 1e-13);
+    EXPECT_TRUE(findSelfStress(perturbedDiamond(1e-6), parameters.loadTolerance,
+                               parameters.solver)
+                    .forces.size() == 0); // the exact program: f = 0 only
+    const double unit = rhoAt(1e-6) / 1e-6;
+    EXPECT_GT(unit, 0.1);
+    EXPECT_LT(unit, 10.0);
+    for (const double h : {1e-8, 1e-4}) {
+        EXPECT_GT(rhoAt(h) / h, unit / 3.0) << "h " << h;
+        EXPECT_LT(rhoAt(h) / h, unit * 3.0) << "h " << h;
+    }
+}
+
+TEST(LeastResidualSelfStress, StaysExactWhereTheNetworkIsHyperstatic) {
+    // fcc: 648 contacts on 321 motions leave 327 self-stresses, and a perturbation of size h
+    // moves the uniform one by O(h), still positive: rho stays at rounding (docs/jamming.md §6.6).
+    const Packing fcc = readTextPacking(std::string(SBPACK_DATA_DIR) + "/fcc-spheres.txt");
+    const SecondOrderParameters parameters;
+    for (const double h : {0.0, 1e-6, 1e-4}) {
+        const Packing moved = lattices::displaced(fcc, h, 3);
+        const RigidityNetwork network =
+            backboneNetwork(moved, ContactNetwork({1e-3}).compute(moved));
+        ASSERT_EQ(network.contacts.size(), 648u);
+        const SelfStress stress = findSelfStress(
+            network, parameters.loadTolerance, parameters.solver, SelfStressProgram::LeastResidual);
+        EXPECT_LT(stress.balanceResidual, 1e-12) << "h " << h;
+        EXPECT_EQ(stress.loadedContacts, 648) << "h " << h;
+    }
+}
+
+TEST(SecondOrder, TestsALeastResidualSelfStressOnlyWithinItsAcceptance) {
+    // docs/jamming.md §6.6: the program's least-residual forces are tested where rho is at most
+    // residualAcceptance (1e-6), else NoSelfStress. Diamond displaced by 1e-4 D (rho ~ 8e-4):
+    // refused; by 1e-9 D (rho ~ 8e-9): tested, and spheres' flexes open at second order.
+    SecondOrderParameters parameters;
+    parameters.selfStress = SelfStressProgram::LeastResidual;
+    const SecondOrderTest test(parameters);
+    const SecondOrderResult far = test.compute(perturbedDiamond(1e-4));
+    EXPECT_EQ(far.verdict, SecondOrderVerdict::NoSelfStress);
+    EXPECT_GT(far.stress.balanceResidual, parameters.residualAcceptance);
+    EXPECT_EQ(far.stress.forces.size(), 432); // reported all the same
+    const SecondOrderResult near = test.compute(perturbedDiamond(1e-9));
+    EXPECT_LT(near.stress.balanceResidual, parameters.residualAcceptance);
+    EXPECT_EQ(near.verdict, SecondOrderVerdict::NotJammed);
+    EXPECT_EQ(near.curvatureRadius, 0.0); // no positive stiffness to bound Eq. (R) with
+    // fcc displaced by 1e-6 D keeps an exact self-stress: first-order rigid, jammed.
+    const Packing fcc = lattices::displaced(
+        readTextPacking(std::string(SBPACK_DATA_DIR) + "/fcc-spheres.txt"), 1e-6, 3);
+    const SecondOrderResult rigid =
+        test.compute(backboneNetwork(fcc, ContactNetwork({1e-3}).compute(fcc)));
+    EXPECT_EQ(rigid.verdict, SecondOrderVerdict::Jammed);
+    EXPECT_LT(rigid.stress.balanceResidual, 1e-12);
+    EXPECT_LT(rigid.curvatureRadius, 1e-12);
+}
+
 TEST(SecondOrder, RejectsBadForcesAndTolerances) {
     const RigidityNetwork network = diagonalPair(1.5);
     EXPECT_THROW(SecondOrderTest({}).compute(network, Eigen::VectorXd::Ones(7)),
@@ -226,6 +311,9 @@ TEST(SecondOrder, RejectsBadForcesAndTolerances) {
                  std::invalid_argument);
     SecondOrderParameters bad;
     bad.loadTolerance = 0.0;
+    EXPECT_THROW(SecondOrderTest{bad}, std::invalid_argument);
+    bad = {};
+    bad.residualAcceptance = 1.0;
     EXPECT_THROW(SecondOrderTest{bad}, std::invalid_argument);
     JammingParameters parameters;
     parameters.secondOrder.stiffnessTolerance = 2.0;
