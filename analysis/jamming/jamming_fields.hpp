@@ -166,8 +166,9 @@ inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>,
              r, [](const SecondOrderResult& s) { return std::int64_t{s.forcesGiven ? 1 : 0}; });
      }},
     {{"balance_residual", A, F, "1",
-      "second order: |A f|_inf of the self-stress tested, in units of its mean force (torques per "
-      "D): rounding for the program's, the imbalance of stored forces",
+      "second order: the largest net force or torque (per D) on a particle under the self-stress "
+      "tested (the max norm of A f), in units of its mean force: rounding for the program's, "
+      "the imbalance of stored forces",
       Mean, true},
      +[](const R& r, const Scales&) -> Optional {
          return secondOrderValue<double>(

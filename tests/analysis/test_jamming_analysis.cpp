@@ -9,6 +9,7 @@
 #include "jamming/jamming_fields.hpp"
 #include "pipeline/analysis_registry.hpp"
 #include "pipeline/run.hpp"
+#include "temp_dir.hpp"
 
 #include "../common/order_lattices.hpp"
 #include "test_packings.hpp"
@@ -26,20 +27,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const std::string kData = SBPACK_DATA_DIR;
-
-/// A scratch directory, removed at the end of the test.
-class TempDir {
-  public:
-    explicit TempDir(const std::string& name) : path_(fs::temp_directory_path() / name) {
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() { fs::remove_all(path_); }
-    fs::path operator/(const std::string& file) const { return path_ / file; }
-
-  private:
-    fs::path path_;
-};
 
 /// Unit spheres on a simple-cubic lattice of 4^3 touching cells: locally jammed, but its rows
 /// slide (docs/jamming.md, "Known answers").

@@ -11,6 +11,7 @@
 #include "pores/exact_pore_size.hpp"
 #include "spectral/spectral_density.hpp"
 #include "structure/structure_factor.hpp"
+#include "temp_dir.hpp"
 #include "voxels/voxelization.hpp"
 
 #include "test_packings.hpp"
@@ -30,24 +31,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const Progress quiet;
-
-/// A scratch directory, removed at the end of the test.
-class TempDir {
-  public:
-    explicit TempDir(const std::string& name) : path_(fs::temp_directory_path() / name) {
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~TempDir() { fs::remove_all(path_); }
-    fs::path operator/(const std::string& file) const { return path_ / file; }
-    std::size_t entries() const {
-        return static_cast<std::size_t>(
-            std::distance(fs::directory_iterator(path_), fs::directory_iterator()));
-    }
-
-  private:
-    fs::path path_;
-};
 
 RunSettings settingsFor(std::vector<fs::path> inputs, const fs::path& output) {
     RunSettings s;
