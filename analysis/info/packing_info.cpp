@@ -24,8 +24,8 @@ PackingInfo packingInfo(const std::filesystem::path& file, const ContactParamete
     OrderVerdict verdict = orderVerdict(order);
     std::optional<PackingJamming> categories;
     if (jamming) categories = testJammingCategories(reduced, *jamming, parameters);
-    return {std::move(packing),    meanWidth,          analysed.lengthUnit(), std::move(contacts),
-            std::move(resolution), std::move(jam),     std::move(order),      std::move(verdict),
+    return {std::move(packing),    meanWidth,      analysed.lengthUnit(), std::move(contacts),
+            std::move(resolution), std::move(jam), std::move(order),      std::move(verdict),
             std::move(categories)};
 }
 

@@ -37,7 +37,8 @@ Packing readTextPacking(const std::filesystem::path& file);
 Packing readPackingFile(const std::filesystem::path& file);
 
 /// What of `packing` the text format (or, with `extendedXyz`, the XYZ export) leaves out, in
-/// words ("velocities", "provenance", "contact forces", ...): what `convert` warns of (issue 65 item 4).
+/// words ("velocities", "provenance", "contact forces", ...): what `convert` warns of (issue 65
+/// item 4).
 std::vector<std::string> notCarriedBy(const Packing& packing, bool extendedXyz);
 
 /// Writes an extended-XYZ file that OVITO opens with the periodic cell, orientations and
