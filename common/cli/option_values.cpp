@@ -1,5 +1,7 @@
 #include "cli/option_values.hpp"
 
+#include <fmt/format.h>
+
 #include <cctype>
 #include <cerrno>
 #include <charconv>
@@ -9,13 +11,33 @@
 
 namespace sbpack {
 
+namespace {
+
+/// `text` as a message shows it: control characters (a NUL would end the message) as \xNN.
+std::string shown(const std::string& text) {
+    std::string out;
+    for (const unsigned char c : text)
+        out += std::iscntrl(c) ? fmt::format("\\x{:02x}", c) : std::string(1, static_cast<char>(c));
+    return out;
+}
+
+/// strtod reads hexadecimal (0x10 is 16): a number of the command line is decimal.
+bool isHexadecimal(const std::string& text) {
+    const std::size_t digits = !text.empty() && (text[0] == '+' || text[0] == '-') ? 1 : 0;
+    return text.size() > digits + 1 && text[digits] == '0' &&
+           (text[digits + 1] == 'x' || text[digits + 1] == 'X');
+}
+
+} // namespace
+
 double parseNumber(const std::string& option, const std::string& text) {
     char* end = nullptr;
     errno = 0;
     const double value = std::strtod(text.c_str(), &end);
     if (text.empty() || std::isspace(static_cast<unsigned char>(text.front())) ||
-        end != text.c_str() + text.size())
-        throw std::invalid_argument("option " + option + ": '" + text + "' is not a number");
+        end != text.c_str() + text.size() || isHexadecimal(text))
+        throw std::invalid_argument("option " + option + ": '" + shown(text) + "' is not a number" +
+                                    (isHexadecimal(text) ? " (write it in decimal)" : ""));
     // Out of range: overflow to infinity, or underflow (a subnormal or 0), is named as such.
     if (errno == ERANGE)
         throw std::invalid_argument("option " + option + ": " + text + " is " +
@@ -41,9 +63,10 @@ std::int64_t parseInteger(const std::string& option, const std::string& text, st
         if (exact < minimum || exact > maximum) throw outside();
         return exact;
     }
-    // Otherwise a number such as 1e4: whole, and inside int64_t before it is cast to it.
+    // Otherwise a number such as 1e4: whole, and inside int64_t before it is cast to it; a
+    // decimal point (10.0) is a real number's, not a count's (issue 65 item 8).
     const double value = parseNumber(option, text);
-    if (value != std::floor(value))
+    if (value != std::floor(value) || text.find('.') != std::string::npos)
         throw std::invalid_argument("option " + option + ": '" + text + "' is not an integer");
     if (!(value >= -0x1p63 && value < 0x1p63)) throw outside();
     const auto integer = static_cast<std::int64_t>(value);

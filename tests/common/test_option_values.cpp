@@ -28,6 +28,14 @@ TEST(OptionValues, NumbersAreParsedWhole) {
     EXPECT_EQ(refusal("1.5x"), "option --x: '1.5x' is not a number");
     EXPECT_EQ(refusal(""), "option --x: '' is not a number");
     EXPECT_EQ(refusal(" 1"), "option --x: ' 1' is not a number");
+    // Issue 65 item 8: strtod's hexadecimal is not the command line's, and a NUL or another
+    // control character is shown, not an end of the message.
+    EXPECT_EQ(refusal("0x10"), "option --x: '0x10' is not a number (write it in decimal)");
+    EXPECT_EQ(refusal("-0X1p3"), "option --x: '-0X1p3' is not a number (write it in decimal)");
+    EXPECT_EQ(refusal(std::string("1\0"
+                                  "2",
+                                  3)),
+              "option --x: '1\\x002' is not a number");
 }
 
 TEST(OptionValues, OutOfRangeIsNamedNotCalledNotANumber) {
@@ -43,6 +51,11 @@ TEST(OptionValues, OutOfRangeIsNamedNotCalledNotANumber) {
 TEST(OptionValues, IntegersInTheirRange) {
     EXPECT_EQ(parseInteger("--n", "1000", 1, 1 << 20), 1000);
     EXPECT_THROW(parseInteger("--n", "1.5", 1, 10), std::invalid_argument);
+    // Issue 65 item 8: a count is not written 10.0 nor 0x10 (strtod read both as whole numbers)
+    EXPECT_THROW(parseInteger("--n", "10.0", 1, 100), std::invalid_argument);
+    EXPECT_THROW(parseInteger("--n", "1.0e1", 1, 100), std::invalid_argument);
+    EXPECT_THROW(parseInteger("--n", "0x10", 1, 100), std::invalid_argument);
+    EXPECT_EQ(parseInteger("--n", "1e1", 1, 100), 10);
     EXPECT_THROW(parseInteger("--n", "11", 1, 10), std::invalid_argument);
 }
 
