@@ -33,6 +33,22 @@ void checkFiniteRows(const std::vector<Vector3d>& rows, const std::string& what,
                                what + " " + formatVector(rows[i]));
 }
 
+/// Positions wrapped into the box keep their absolute rounding, about eps |x|: beyond this many
+/// box lengths from it that exceeds 1e-12 L, within a factor of the contact tolerance (1e-10 D;
+/// issue 65 item 8: a shift of 1e6 L moved positions by 5e-10, x = 1e300 became 0).
+constexpr double kFarthestBoxes = 1e3;
+
+void checkNearTheBox(const Packing& packing, const std::string& source) {
+    const double limit = kFarthestBoxes * packing.boxLength;
+    for (std::size_t i = 0; i < packing.positions.size(); ++i)
+        if (packing.positions[i].cwiseAbs().maxCoeff() > limit)
+            reject(source, "particle " + std::to_string(i) + " lies at " +
+                               formatVector(packing.positions[i]) + ", more than " +
+                               formatDouble(kFarthestBoxes) +
+                               " box lengths from the box: wrapping it would round its position "
+                               "by more than 1e-12 L (wrap the positions where they were made)");
+}
+
 void checkOptionalRows(const std::vector<Vector3d>& rows, const std::string& what,
                        const std::string& source, std::size_t n) {
     if (!rows.empty() && rows.size() != n)
@@ -114,6 +130,7 @@ void validatePacking(const Packing& packing, const std::string& source) {
                            std::to_string(packing.orientations.size()) +
                            " orientations (count mismatch)");
     checkFiniteRows(packing.positions, "position", source);
+    checkNearTheBox(packing, source);
     checkOrientations(packing, source);
     checkOptionalRows(packing.velocities, "velocity", source, n);
     checkOptionalRows(packing.angularVelocities, "angular velocity", source, n);

@@ -562,6 +562,20 @@ TEST_F(PackingValidation, AcceptsAGoodPackingWithPositionsOutsideTheBox) {
     EXPECT_NO_THROW(validatePacking(packing, "src"));
 }
 
+// Issue 65 item 8: far outside the box, wrapping rounds a position by more than 1e-12 L (1e6 L
+// out: 5e-10 D; 1e300: to 0), so such a position is refused with the particle named; 1e3 L
+// (eps 1e3 L = 2e-12 L) still passes.
+TEST_F(PackingValidation, RefusesPositionsSoFarOutThatWrappingWouldRoundThem) {
+    Packing packing = makePacking();
+    packing.positions[2] = Vector3d(0.5, 1e3 * packing.boxLength, -1e3 * packing.boxLength);
+    EXPECT_NO_THROW(validatePacking(packing, "src"));
+    for (const double far : {1e6 * packing.boxLength, -1e300}) {
+        packing.positions[2] = Vector3d(0.5, far, 0.5);
+        expectError<InvalidPacking>([&] { validatePacking(packing, "src.h5"); },
+                                    {"src.h5", "particle 2", "box lengths from the box"});
+    }
+}
+
 TEST_F(PackingValidation, RejectsNoParticles) {
     Packing packing = makePacking();
     packing.positions.clear();
