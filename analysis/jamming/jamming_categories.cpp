@@ -197,10 +197,11 @@ PackingJamming testJammingCategories(const Packing& packing, const JammingSettin
     out.particles = static_cast<int>(packing.size());
     out.backbone = static_cast<int>(backbone.backbone.size());
     out.contacts = static_cast<int>(backbone.contacts.size());
+    const std::optional<Eigen::VectorXd> forces = storedForces(packing, backbone);
     for (JammingCategory category : settings.categories) {
         if (backbone.backbone.empty()) break;
         if (observer.before) observer.before(category);
-        out.tests.push_back(test.compute(backbone, category, storedForces(packing, backbone)));
+        out.tests.push_back(test.compute(backbone, category, forces));
         if (observer.after) observer.after(out.tests.back());
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

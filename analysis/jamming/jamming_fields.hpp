@@ -30,7 +30,8 @@ inline std::vector<double> rowsOf(const std::vector<Vector3d>& vectors) {
 
 inline constexpr schema::FieldTable kTable{std::array<schema::Column<P>, 14>{{
     {{"category", A, S, "",
-      "the highest category tested whose first-order verdict is jammed: strict, collective, "
+      "the highest category tested that is jammed, at first order or (collective) at second: "
+      "strict, collective, "
       "local, or none (a jammed category implies those below it; docs/jamming.md §1)"},
      +[](const P& p, const Scales&) -> Optional { return Value(std::string(p.reachedName())); }},
     {{"verdict", A, S, "",
@@ -70,7 +71,9 @@ inline constexpr schema::FieldTable kTable{std::array<schema::Column<P>, 14>{{
      schema::ensembleOnly<P>},
     {{"n_none", A, I, "1", "ensembles only: members jammed in no category tested", Pooled, true},
      schema::ensembleOnly<P>},
-    {{"n_undecided", A, I, "1", "ensembles only: members with a category undecided at first order",
+    {{"n_undecided", A, I, "1",
+      "ensembles only: members with a category left undecided (undecided at first order, not "
+      "jammed at second)",
       Pooled, true},
      schema::ensembleOnly<P>},
 }}};
@@ -274,7 +277,8 @@ inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>,
 
 inline constexpr schema::Group kJammingGroup{
     "jamming", "files/<i>/jamming",
-    "the jamming categories at first order: the category reached (jamming; docs/jamming.md)",
+    "the jamming categories (first order; collective at second order where first order is "
+    "undecided): the category reached (jamming; docs/jamming.md)",
     jamming_fields::kTable.fields()};
 inline constexpr schema::Group kJammingLocalGroup{
     "jamming_local", "files/<i>/jamming_local",
@@ -282,7 +286,8 @@ inline constexpr schema::Group kJammingLocalGroup{
     jamming_fields::kCategoryTable.fields()};
 inline constexpr schema::Group kJammingCollectiveGroup{
     "jamming_collective", "files/<i>/jamming_collective",
-    "collective jamming at first order: all particles together, the box fixed (jamming)",
+    "collective jamming: all particles together, the box fixed; at first order, and at second "
+    "where first order is undecided (jamming)",
     jamming_fields::kCategoryTable.fields()};
 inline constexpr schema::Group kJammingStrictGroup{
     "jamming_strict", "files/<i>/jamming_strict",
