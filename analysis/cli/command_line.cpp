@@ -2,6 +2,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/option_suggestion.hpp"
+#include "cli/repeated_options.hpp"
 #include "info/library_versions.hpp"
 #include "pipeline/option_table.hpp"
 #include "pores/distance_transform.hpp"
@@ -77,6 +78,7 @@ class CommandLine {
 };
 
 CommandLine::CommandLine(const Communicator& communicator) : communicator_(communicator) {
+    // A repeat parses, to be refused by name after (cli/repeated_options.hpp).
     app_.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
     app_.set_version_flag("--version", [] {
         std::string text = std::string("sbanalyze ") + kVersion + '\n' + libraryVersions();
@@ -169,6 +171,7 @@ void CommandLine::refuseAnalysisOptionsWith(const CLI::App& subcommand) const {
 
 void CommandLine::parse(int argc, const char* const* argv) {
     app_.parse(argc, argv);
+    refuseRepeatedOptions(app_);
     for (const CLI::App* sub : app_.get_subcommands())
         refuseAnalysisOptionsWith(*sub);
     if (schemaMarkdown_ && schemaJson_)

@@ -54,9 +54,13 @@ class LineReader {
         if (!in_) throw PackingFileError("'" + name_ + "': cannot open for reading");
     }
 
+    /// The next line without its line end (LF or CRLF) and trailing blanks, and on the first line
+    /// without a UTF-8 byte-order mark (issue 65 item 8: editors on Windows add both).
     bool next(std::string& line) {
         if (!std::getline(in_, line)) return false;
-        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (number_ == 0 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);
+        while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t'))
+            line.pop_back();
         ++number_;
         return true;
     }

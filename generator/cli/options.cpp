@@ -2,6 +2,7 @@
 
 #include "cli/option_suggestion.hpp"
 #include "cli/option_values.hpp"
+#include "cli/repeated_options.hpp"
 #include "io/atomic_file.hpp"
 
 #include <CLI/CLI.hpp>
@@ -57,6 +58,7 @@ class GeneratorCommandLine {
         auto help = std::make_shared<HelpFormatter>();
         help->column_width(26);
         app_.formatter(help);
+        // A repeat parses, to be refused by name after (cli/repeated_options.hpp).
         app_.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
         app_.add_flag("--version", options_.version, "print the version and exit");
         app_.add_flag("--quiet", options_.quiet, "no progress lines on stderr");
@@ -251,6 +253,7 @@ GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args) {
     } catch (const CLI::ParseError& e) {
         throw std::invalid_argument(std::string(e.what()) + " (see sbgen --help)");
     }
+    refuseRepeatedOptions(commandLine.app());
     GeneratorOptions& o = commandLine.options();
     if (!o.version) finish(o, commandLine.protocolOptions());
     return o;

@@ -14,8 +14,12 @@ from . import _sbpack
 
 
 def command_line_option(name, value):
-    """``--name value`` of one keyword (underscores to dashes; a pair joined by a comma)."""
+    """``--name value`` of one keyword (underscores to dashes; a pair joined by a comma). A
+    sequence is a pair: one of another length is refused, where ``tolerance=[1]`` was read as 1."""
     if isinstance(value, (tuple, list)):
+        if len(value) != 2:
+            raise ValueError(f"{name}: a sequence of {len(value)} values; give one value, or a "
+                             "pair for the options that take one (alpha_window=(1, 5.8))")
         value = ",".join(str(v) for v in value)
     return ["--" + name.replace("_", "-"), str(value)]
 

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <map>
 #include <string>
@@ -105,11 +106,17 @@ int particleCount(const py::int_& n) {
     return static_cast<int>(value);
 }
 
-/// A progress callback must be callable (or None), checked before the run, not after it.
-void checkProgress(const py::object& progress) {
+/// A progress callback must be callable (or None) and its interval a time, checked before the run,
+/// not after it.
+void checkProgress(const py::object& progress, double interval) {
     if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
         throw py::type_error("progress must be a callable taking the status dict, or None, not " +
                              py::repr(progress).cast<std::string>());
+    // issue 65 item 8: -1 and NaN called it after every window (22,700 calls).
+    if (!(std::isfinite(interval) && interval >= 0.0))
+        throw py::value_error(
+            "progress_interval = " + py::repr(py::float_(interval)).cast<std::string>() +
+            ": must be a finite number of seconds >= 0 (0: after every window)");
 }
 
 /// The parameters that set the expected cost (expected_collisions's keywords). Options left None
@@ -133,7 +140,7 @@ void registerGenerator(py::module_& m) {
         [](const py::int_& n, double p, std::uint64_t seed, Option phiInit, Option gammaFast,
            Option gammaSlow, Option pressureSwitch, Option pressureFinal, Option window,
            Option costLimit, const py::object& progress, double progressInterval) {
-            checkProgress(progress);
+            checkProgress(progress, progressInterval);
             // Options left None keep ProtocolParameters' defaults, which are sbgen's.
             ProtocolParameters parameters =
                 costParameters(n, p, gammaSlow, pressureSwitch, pressureFinal);

@@ -43,10 +43,24 @@ void checkNoNul(const std::string& text, const char* what) {
         throw std::invalid_argument(std::string(what) + " contains a NUL character");
 }
 
+/// `object` as an array of doubles if it holds real numbers (a float or integer dtype): a cast
+/// would read booleans as 0 and 1 and drop the imaginary part of complex numbers (issue 65 item 8).
+Array realArray(const py::object& object, const char* name, const std::string& source) {
+    const py::array array = py::array::ensure(object);
+    const char kind = array ? array.dtype().kind() : 'O';
+    if (kind != 'f' && kind != 'i' && kind != 'u')
+        throw py::type_error("'" + source + "': " + name + " must hold real numbers, not " +
+                             (array ? "dtype " + py::str(array.dtype()).cast<std::string>()
+                                    : py::repr(object.get_type()).cast<std::string>()));
+    return Array::ensure(array);
+}
+
 /// A packing from arrays, validated and canonicalised as the readers do (common/io).
-Packing fromArrays(const Array& positions, const Array& orientations, double boxLength, double p,
-                   double semiAxis, const std::string& source) {
+Packing fromArrays(const py::object& positionsObject, const py::object& orientationsObject,
+                   double boxLength, double p, double semiAxis, const std::string& source) {
     checkNoNul(source, "source");
+    const Array positions = realArray(positionsObject, "positions", source);
+    const Array orientations = realArray(orientationsObject, "orientations", source);
     checkShape(positions, "positions", -1, 3, source);
     const py::ssize_t n = positions.shape(0);
     checkShape(orientations, "orientations", n, 4, source);

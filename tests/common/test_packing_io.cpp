@@ -677,6 +677,22 @@ TEST_F(TextIo, ReadsCommentsBlankLinesAndCarriageReturns) {
     EXPECT_EQ(read.orientations[1].x(), 1.0);
 }
 
+// issue 65 item 8: a byte-order mark or trailing blanks on the header refused the file, while CRLF
+// was read.
+TEST_F(TextIo, ReadsAByteOrderMarkAndTrailingBlanks) {
+    const fs::path path = textFile("\xEF\xBB\xBF# sbpack text packing v1 \t\r\n# p 1.5  \n"
+                                   "# semi_axis 0.5\t\n# box_length 10 \r\n# n_particles 1 \n"
+                                   "1 2 3 1 0 0 0  \n");
+    const Packing read = readTextPacking(path);
+    ASSERT_EQ(read.size(), 1u);
+    EXPECT_EQ(read.boxLength, 10.0);
+    EXPECT_EQ(read.positions[0], Vector3d(1.0, 2.0, 3.0));
+    // A mark anywhere but the file's start is no blank.
+    const fs::path inner = textFile(
+        std::string(kHeader) + "\xEF\xBB\xBF# n_particles 1\n1 2 3 1 0 0 0\n", "inner.txt");
+    expectError<PackingFileError>([&] { readTextPacking(inner); }, {"inner.txt", "line 5"});
+}
+
 TEST_F(TextIo, MalformedLineNamesTheLine) {
     const fs::path path =
         textFile(std::string(kHeader) + "# n_particles 2\n1 2 3 1 0 0 0\n1 2 3 1 0 0\n");

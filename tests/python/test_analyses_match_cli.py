@@ -153,6 +153,15 @@ def test_hyperuniformity_skipped_on_a_small_box_warns():
     assert "spreadability" not in h.groups and "spectral_density" in h.groups
 
 
+def test_a_sequence_is_a_pair_only():
+    """Issue 65 item 8: tolerance=[1] was read as --tolerance 1."""
+    with pytest.raises(ValueError, match="tolerance: a sequence of 1 values; give one value"):
+        sbpack.Contacts(tolerance=[1])
+    with pytest.raises(ValueError, match="'1e-3,1e-4' is not a number"):
+        sbpack.Contacts(tolerance=("1e-3", "1e-4"))
+    assert sbpack.Hyperuniformity(alpha_window=(1, 5.8)) is not None
+
+
 def test_unknown_option_is_a_type_error():
     with pytest.raises(TypeError, match="unexpected keyword argument 'voxels'"):
         sbpack.StructureFactor(voxels=10)

@@ -89,3 +89,8 @@ def test_misuses_are_refused_before_the_run():
         sbpack.generate(n=10**12)
     with pytest.raises(TypeError, match="progress must be a callable"):
         sbpack.generate(n=10**6, progress=5)
+    # issue 65 item 8: -1 or NaN called progress after every window (22,700 calls)
+    for interval in (-1, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="progress_interval = .*: must be a finite number of "
+                                             r"seconds >= 0 \(0: after every window\)"):
+            sbpack.generate(n=10**6, progress=print, progress_interval=interval)

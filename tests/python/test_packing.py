@@ -116,6 +116,20 @@ def test_misuses_are_named(tmp_path):
         packing.write(tmp_path / "missing" / "x.h5")
 
 
+def test_arrays_of_other_than_real_numbers_are_refused():
+    """Issue 65 item 8: boolean and complex arrays were cast (True as 1, the imaginary part
+    dropped); integers are numbers."""
+    q = [[1.0, 0, 0, 0]]
+    with pytest.raises(TypeError, match="'arrays': positions must hold real numbers, not dtype bool"):
+        sbpack.Packing(np.ones((1, 3), dtype=bool), q, 5.0, p=1.5, semi_axis=0.5)
+    with pytest.raises(TypeError, match="orientations must hold real numbers, not dtype complex128"):
+        sbpack.Packing(np.ones((1, 3)), np.array(q) + 1j, 5.0, p=1.5, semi_axis=0.5)
+    with pytest.raises(TypeError, match="positions must hold real numbers, not dtype <U1"):
+        sbpack.Packing([["a", "b", "c"]], q, 5.0, p=1.5, semi_axis=0.5)
+    packing = sbpack.Packing(np.array([[1, 2, 3]]), [[1, 0, 0, 0]], 5.0, p=1.5, semi_axis=0.5)
+    assert packing.positions.tolist() == [[1.0, 2.0, 3.0]]
+
+
 def test_the_shape_is_never_a_silent_default():
     """Issue 43: rebuilding an MRJ packing from its arrays without semi_axis once gave phi = 0.2
     (a default of 0.5); p and semi_axis are now required keywords."""
