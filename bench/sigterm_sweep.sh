@@ -19,6 +19,8 @@ export XDG_CACHE_HOME="$work/cache" # no shared wisdom: plans are made in the ru
 commands=(
     "voxels M=1000|$sbanalyze $big --compute voxels --voxels 1000 --out OUT"
     "chi M=640|$sbanalyze $big --compute chi --voxels 640 --fft-plan estimate --out OUT"
+    # measured within the budget: FFTW's planner cannot be interrupted (docs/reliability.md)
+    "chi M=128 measured plan|$sbanalyze $big --compute chi --voxels 128 --out OUT"
     "sq qmax=200|$sbanalyze $big --compute sq --qmax 200 --out OUT"
     "pores voxel M=600|$sbanalyze $big --compute pores --pores voxel --pore-voxels 600 --out OUT"
     "pores refined M=600|$sbanalyze $big --compute pores --pores refined --pore-voxels 600 --out OUT"

@@ -4,6 +4,7 @@
 #include "io/packing_io.hpp"
 #include "io/read_guard.hpp"
 #include "order/order_metrics.hpp"
+#include "protocol/checkpoint_entries.hpp"
 #include "protocol/final_packing.hpp"
 #include "protocol/jamming_protocol.hpp"
 #include "protocol/protocol_advice.hpp"
@@ -15,6 +16,7 @@
 #include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <optional>
 
 namespace {
 
@@ -49,10 +51,11 @@ std::filesystem::path interruptCheckpointPath(const sbpack::GeneratorOptions& o)
 
 /// The protocol of the options, or of the file resumed (with a new --pressure-final or
 /// --cost-limit); its warnings printed.
-sbpack::JammingProtocol startProtocol(const sbpack::GeneratorOptions& o) {
+sbpack::JammingProtocol startProtocol(const sbpack::GeneratorOptions& o,
+                                      const sbpack::PlacementWatch& placed) {
     sbpack::JammingProtocol protocol =
         o.resume ? sbpack::JammingProtocol(sbpack::readPacking(*o.resume), o.resume->string())
-                 : sbpack::JammingProtocol(o.protocol);
+                 : sbpack::JammingProtocol(o.protocol, placed);
     try {
         if (o.resume && o.pressureFinal) protocol.setPressureFinal(*o.pressureFinal);
     } catch (const sbpack::ProtocolParameterError& e) {
@@ -68,14 +71,53 @@ sbpack::JammingProtocol startProtocol(const sbpack::GeneratorOptions& o) {
     return protocol;
 }
 
-/// From this N on, sbgen says it is setting up (about 6 s at N = 1e6, 2 minutes at 1e7).
+/// From this N on, sbgen says it is setting up and how far it is (the random start takes about
+/// 30 s at N = 1e6 and p = 1.5, 2 s for spheres).
 constexpr int kLargeSetup = 100000;
+
+/// The random start's watch: stops it on a signal (nothing to keep yet) and, at large N, prints
+/// the count placed every 2 s (issue 65 item 3).
+sbpack::PlacementWatch setupWatch(const sbpack::GeneratorOptions& o,
+                                  const sbpack::StopRequest& stop) {
+    const bool report = !o.quiet && o.protocol.particles >= kLargeSetup;
+    auto last = std::chrono::steady_clock::now();
+    return [&stop, report, last, n = o.protocol.particles](int placed) mutable {
+        if (stop.requested()) return false;
+        const auto now = std::chrono::steady_clock::now();
+        if (report && now - last > std::chrono::seconds(2)) {
+            std::fprintf(stderr, "sbgen: setting up: %d of %d particles placed\n", placed, n);
+            last = now;
+        }
+        return true;
+    };
+}
 
 /// A signal before the first window ended: nothing to keep (issue 65 item 3).
 int stoppedBeforeAState(const sbpack::StopRequest& stop) {
     std::cerr << "sbgen: stopped by signal " << stop.signal()
               << " before the first window ended: no state to keep, nothing written (a new run "
                  "starts from the beginning)\n";
+    return 128 + stop.signal();
+}
+
+/// A run stopped by a signal: its checkpoint at the end of the last window completed, which
+/// resumes bit for bit (after a second signal, the end of the window before: issue 65 item 3).
+int writeStopCheckpoint(const sbpack::GeneratorOptions& o, const sbpack::JammingProtocol& protocol,
+                        const sbpack::StopRequest& stop) {
+    const std::optional<sbpack::Packing> checkpoint = protocol.resumeCheckpoint();
+    if (!checkpoint) return stoppedBeforeAState(stop);
+    const std::filesystem::path path = interruptCheckpointPath(o);
+    sbpack::writePacking(*checkpoint, path);
+    const std::uint64_t lost = protocol.status().collisions -
+                               sbpack::readCheckpoint(*checkpoint, path.string()).status.collisions;
+    std::cerr << "sbgen: stopped by signal " << stop.signal();
+    if (lost > 0)
+        std::cerr << " twice, midway through a window: the checkpoint is the window's start ("
+                  << lost << " collisions back)";
+    else
+        std::cerr << " at the end of a window";
+    std::cerr << "; it resumes bit for bit; written to " << path.string()
+              << " (continue with --resume " << path.string() << ")\n";
     return 128 + stop.signal();
 }
 
@@ -90,8 +132,14 @@ int generate(const sbpack::GeneratorOptions& o) {
     const sbpack::OutputLock outputLock(o.out), checkpointLock(interruptCheckpointPath(o));
     if (!o.quiet && !o.resume && o.protocol.particles >= kLargeSetup)
         std::cerr << "sbgen: setting up " << o.protocol.particles
-                  << " particles (the random start and its event lists: about 6 s per million)\n";
-    sbpack::JammingProtocol protocol = startProtocol(o);
+                  << " particles (the random start and its event lists)\n";
+    std::optional<sbpack::JammingProtocol> started;
+    try {
+        started.emplace(startProtocol(o, setupWatch(o, stop)));
+    } catch (const sbpack::PlacementStopped&) {
+        return stoppedBeforeAState(stop);
+    }
+    sbpack::JammingProtocol& protocol = *started;
     if (stop.requested() && protocol.status().windows == 0) return stoppedBeforeAState(stop);
 
     const auto start = Clock::now();
@@ -113,17 +161,7 @@ int generate(const sbpack::GeneratorOptions& o) {
             }
         },
         stop);
-    if (!done && protocol.status().windows == 0) return stoppedBeforeAState(stop);
-    if (!done) {
-        const std::filesystem::path path = interruptCheckpointPath(o);
-        sbpack::writePacking(protocol.checkpoint(), path);
-        std::cerr << "sbgen: stopped by signal " << stop.signal()
-                  << (stop.repeated() ? " (twice: mid-window, resumes the run but not bit for bit)"
-                                      : " at the end of a window (resumes bit for bit)")
-                  << "; checkpoint written to " << path.string() << " (continue with --resume "
-                  << path.string() << ")\n";
-        return 128 + stop.signal();
-    }
+    if (!done) return writeStopCheckpoint(o, protocol, stop);
     const sbpack::Packing packing = sbpack::finalPacking(protocol);
     sbpack::writePacking(packing, o.out);
     if (!o.quiet)

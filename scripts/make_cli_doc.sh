@@ -36,7 +36,9 @@ them (but for the machine's thread count in the default of `--threads`).
   reason is in the file's provenance and on stderr); 128 + signal when SIGINT or SIGTERM wrote a
   checkpoint.
 - `sbanalyze` exits with 1 on any error and with 128 + signal (130, 143) when SIGINT or SIGTERM
-  stopped it, within a second (`bash bench/sigterm_sweep.sh`); either way it writes no output
+  stopped it, within a second, or within the FFT planning budget (`--fft-planning-budget`,
+  default 2 s) when the signal lands while FFTW measures a plan, which it cannot interrupt
+  (`bash bench/sigterm_sweep.sh`); either way it writes no output
   and earlier files at its output paths stay. `info` reports every file it can read and exits
   with 1 when one of them is bad.
 - The results file's groups, names and units: `docs/results-schema.md` (`sbanalyze schema`).

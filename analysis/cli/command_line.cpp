@@ -26,7 +26,8 @@ constexpr const char* kFooter =
     R"(Every input is read, validated and checked (at least 4 voxels across a particle, the memory
 the grids need against MemAvailable) before any analysis starts. On any error or interrupt
 no output file is written and earlier ones stay: exit 1 after an error, 128 + the signal after
-SIGINT (Ctrl-C, 130) or SIGTERM (143), within a second of it. Each subcommand has its own
+SIGINT (Ctrl-C, 130) or SIGTERM (143), within a second of it (or of the FFT planning budget,
+while FFTW measures a plan). Each subcommand has its own
 --help (sbanalyze info --help).)";
 
 /// The table's row on `app`, filling `settings` (the default printed from `defaults`).

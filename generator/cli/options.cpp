@@ -37,8 +37,9 @@ provenance jammed = 0 and the reason; one stopped at the cost limit resumes.
 Exit status: 0 jammed; 1 bad input or error; 3 written but not jammed; 128 + signal when
 SIGINT or SIGTERM wrote a checkpoint (to --checkpoint, else OUT with .checkpoint.h5). A signal
 stops the run at the end of its window, so the checkpoint resumes bit for bit; a second one
-stops it at once (that checkpoint resumes the run, not bit for bit). Before the first window
-has ended (the set-up included) a signal stops the run at once and writes nothing.)";
+stops it at once and writes the window's start, which resumes bit for bit too. Before the
+first window has ended (the set-up included) a signal stops the run at once and writes
+nothing.)";
 
 /// CLI11's help without its generic "Usage: sbgen [OPTIONS]" line: the description carries
 /// sbgen's own two usage lines.

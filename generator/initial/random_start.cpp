@@ -36,7 +36,8 @@ double boxLengthFor(int particles, double particleVolume, double phi) {
     return std::cbrt(particles * particleVolume / phi);
 }
 
-RandomPlacement randomPlacement(int particles, double p, double boxLength, Random& random) {
+RandomPlacement randomPlacement(int particles, double p, double boxLength, Random& random,
+                                const PlacementWatch& watch) {
     const Superball body(p, 0.5);
     const double reach = 2.0 * body.circumradius(); // circumscribed spheres of diameter c
     CellGrid cells(boxLength, reach, particles);
@@ -47,6 +48,9 @@ RandomPlacement randomPlacement(int particles, double p, double boxLength, Rando
         if (attempt == maxAttempts)
             throw std::runtime_error("random start: could not place " + std::to_string(particles) +
                                      " particles without overlap; lower --phi-init");
+        if (watch && attempt % kPlacementPoll == 0 &&
+            !watch(static_cast<int>(placement.positions.size())))
+            throw PlacementStopped();
         const Vector3d r(random.uniform() * boxLength, random.uniform() * boxLength,
                          random.uniform() * boxLength);
         const Quaterniond q = body.isSphere() ? Quaterniond::Identity() : random.rotation();

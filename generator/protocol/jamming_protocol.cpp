@@ -44,11 +44,12 @@ Engine makeEngine(double p, double box, std::vector<ParticleState> state, Growth
     return EventDrivenMd<SuperballShape>(SuperballShape(p), box, std::move(state), clock);
 }
 
-template <class Engine> Engine freshEngine(const ProtocolParameters& parameters) {
+template <class Engine>
+Engine freshEngine(const ProtocolParameters& parameters, const PlacementWatch& placed) {
     Random random(parameters.seed);
     const int n = parameters.particles;
     const double box = boxLengthFor(n, Superball(parameters.p, 0.5).volume(), parameters.phiInit);
-    const RandomPlacement placement = randomPlacement(n, parameters.p, box, random);
+    const RandomPlacement placement = randomPlacement(n, parameters.p, box, random, placed);
     const std::vector<Vector3d> velocities = maxwellVelocities(n, random);
     std::vector<ParticleState> state(n);
     for (int i = 0; i < n; ++i)
@@ -134,9 +135,9 @@ void ProtocolParameters::validate() const {
             "must be in [0, 10000] (0: no contact forces)");
 }
 
-JammingProtocol::JammingProtocol(const ProtocolParameters& parameters)
-    : parameters_((parameters.validate(), parameters)), engine_(freshEngine<Engine>(parameters)),
-      forceWindows_(parameters.forceWindows) {
+JammingProtocol::JammingProtocol(const ProtocolParameters& parameters, const PlacementWatch& placed)
+    : parameters_((parameters.validate(), parameters)),
+      engine_(freshEngine<Engine>(parameters, placed)), forceWindows_(parameters.forceWindows) {
     status_.packingFraction = packingFraction();
     adaptSkin();
 }
@@ -198,8 +199,11 @@ bool JammingProtocol::run(const std::function<void(const ProtocolStatus&)>& onWi
     using Clock = std::chrono::steady_clock;
     const std::uint64_t perWindow = static_cast<std::uint64_t>(
         std::ceil(parameters_.collisionsPerWindow * parameters_.particles));
+    stoppedMidWindow_ = false;
     while (status_.phase != Phase::Done) {
         if (stopAtCostLimit()) return true;
+        // The state a repeated stop midway through this window resumes from (issue 65 item 3).
+        if (status_.windows > 0) windowStart_ = checkpoint();
         const auto start = Clock::now();
         const std::clock_t cpuStart = std::clock();
         const bool recorded = recordsForces();
@@ -222,7 +226,10 @@ bool JammingProtocol::run(const std::function<void(const ProtocolStatus&)>& onWi
                    engine_);
         status_.wallSeconds += std::chrono::duration<double>(Clock::now() - start).count();
         status_.cpuSeconds += static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
-        if (report.interrupted) return false;
+        if (report.interrupted) {
+            stoppedMidWindow_ = true;
+            return false;
+        }
         if (!(report.duration > 0.0))
             throw std::runtime_error("no time passed over a window of " +
                                      std::to_string(report.collisions) +
@@ -307,6 +314,12 @@ double JammingProtocol::packingFraction() const {
                    std::pow(engine.boxLength(), 3);
         },
         engine_);
+}
+
+std::optional<Packing> JammingProtocol::resumeCheckpoint() const {
+    if (stoppedMidWindow_) return windowStart_;
+    if (status_.windows == 0) return std::nullopt;
+    return checkpoint();
 }
 
 Packing JammingProtocol::checkpoint() const {

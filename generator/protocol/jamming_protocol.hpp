@@ -18,6 +18,7 @@
 
 #include "contacts/jam_check.hpp"
 #include "engine/event_driven_md.hpp"
+#include "initial/random_start.hpp"
 #include "packing/packing.hpp"
 #include "protocol/force_windows.hpp"
 #include "shapes/sphere.hpp"
@@ -134,8 +135,11 @@ struct ProtocolStatus {
 
 class JammingProtocol {
   public:
-    /// A fresh run: random start from the seed.
-    explicit JammingProtocol(const ProtocolParameters& parameters);
+    /// A fresh run: random start from the seed. `placed`, if given, is called with the count
+    /// placed every kPlacementPoll trials of the random start (the set-up's long part: about 30 s
+    /// at N = 1e6, p = 1.5); returning false stops it (PlacementStopped).
+    explicit JammingProtocol(const ProtocolParameters& parameters,
+                             const PlacementWatch& placed = {});
     /// Continues from a checkpoint written by checkpoint(); throws std::invalid_argument naming
     /// `source` if the packing carries no sbgen state.
     JammingProtocol(const Packing& checkpoint, const std::string& source);
@@ -145,7 +149,8 @@ class JammingProtocol {
     /// called there). A `stop` request is looked at after each window, so a run stopped by it is
     /// synchronised and its checkpoint resumes bit for bit like a periodic one; a repeated one
     /// interrupts the window at its next event (a checkpoint then resumes the run, but not bit
-    /// for bit). Returns true when done or at the cost limit.
+    /// for bit, but resumeCheckpoint() gives the window's start, which does). Returns true when
+    /// done or at the cost limit.
     bool run(const std::function<void(const ProtocolStatus&)>& onWindow,
              const StopRequest& stop = processStopRequest());
 
@@ -159,6 +164,10 @@ class JammingProtocol {
     /// The synchronised state as a packing whose provenance holds every parameter and the exact
     /// engine state (readable by the resume constructor).
     Packing checkpoint() const;
+    /// The state a stopped run resumes from bit for bit: checkpoint() after a stop at a window's
+    /// end, the window's start after a repeated stop ended a window midway (kept at every
+    /// window's start), none before the first window has ended (issue 65 item 3).
+    std::optional<Packing> resumeCheckpoint() const;
 
     /// The windows recorded for the contact forces: the run's last ones in a row (at most
     /// 2 forceWindows - 1), since its pressure reached half the final one or since its resume
@@ -194,6 +203,8 @@ class JammingProtocol {
     Engine engine_;
     ContactImpulses impulses_; ///< the window's, while recorded
     ForceWindows forceWindows_;
+    std::optional<Packing> windowStart_; ///< checkpoint() at the running window's start
+    bool stoppedMidWindow_ = false;      ///< the last run() ended midway through a window
 };
 
 } // namespace sbpack

@@ -80,7 +80,17 @@ Packing generate(const ProtocolParameters& parameters, const py::object& progres
     for (const std::string& warning : protocolWarnings(parameters)) // as sbgen's, before the run
         if (PyErr_WarnEx(PyExc_RuntimeWarning, warning.c_str(), 1) != 0)
             throw py::error_already_set();
-    JammingProtocol protocol(parameters);
+    std::optional<JammingProtocol> started;
+    try { // the random start polls Ctrl-C too (about 30 s at N = 1e6, p = 1.5; issue 65 item 3)
+        py::gil_scoped_release release;
+        started.emplace(parameters, [](int) {
+            py::gil_scoped_acquire acquire;
+            return PyErr_CheckSignals() == 0;
+        });
+    } catch (const PlacementStopped&) {
+        throw py::error_already_set(); // the KeyboardInterrupt that PyErr_CheckSignals raised
+    }
+    JammingProtocol& protocol = *started;
     const bool done = runProtocol(protocol, progress, interval);
     if (PyErr_Occurred() != nullptr) throw py::error_already_set();
     if (!done) throw std::logic_error("sbpack.generate: the protocol stopped without a reason");

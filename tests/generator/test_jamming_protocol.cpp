@@ -1,5 +1,6 @@
 // The protocol: bad parameters, determinism, and exact checkpoint/resume through the HDF5 file.
 #include "io/packing_io.hpp"
+#include "protocol/checkpoint_entries.hpp"
 #include "protocol/final_packing.hpp"
 #include "protocol/jamming_protocol.hpp"
 #include "protocol/paper_rates.hpp"
@@ -7,11 +8,14 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <limits>
 #include <optional>
+#include <thread>
 
 namespace sbpack {
 namespace {
@@ -140,7 +144,7 @@ TEST(JammingProtocol, AStopRequestEndsTheWindowAndResumesExactly) {
 }
 
 // A repeated request stops the window at its next event: nothing runs after the window in
-// which both came (sbgen's second SIGTERM; the checkpoint resumes, not bit for bit).
+// which both came (sbgen's second SIGTERM).
 TEST(JammingProtocol, ARepeatedStopRequestEndsTheRunAtItsNextEvent) {
     ProtocolParameters parameters = smallRun(11);
     parameters.particles = 27;
@@ -160,6 +164,44 @@ TEST(JammingProtocol, ARepeatedStopRequestEndsTheRunAtItsNextEvent) {
     EXPECT_EQ(stopped.status().collisions, collisionsThen);
 }
 
+// Issue 65 item 3: a second request midway through a window (sbgen's second SIGTERM, sent here
+// from another thread as the handler would) stops the run at its next event, and the state kept
+// at that window's start resumes bit for bit (a mid-window checkpoint did not).
+TEST(JammingProtocol, ARepeatedStopMidWindowResumesFromTheWindowStartBitForBit) {
+    ProtocolParameters parameters = smallSuperballRun(5);
+    parameters.collisionsPerWindow = 2000; // 54000 collisions: the requests land midway
+    JammingProtocol uninterrupted(parameters);
+    ASSERT_TRUE(uninterrupted.run([](const ProtocolStatus&) {}));
+    StopRequest stop;
+    std::atomic<bool> third{false};
+    std::thread signaller([&] {
+        while (!third.load())
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        stop.request(SIGTERM);
+        stop.request(SIGTERM);
+    });
+    JammingProtocol stopped(parameters);
+    const bool done = stopped.run(
+        [&](const ProtocolStatus& s) {
+            if (s.windows == 3) third.store(true);
+        },
+        stop);
+    signaller.join();
+    ASSERT_FALSE(done);
+    const std::optional<Packing> resume = stopped.resumeCheckpoint();
+    ASSERT_TRUE(resume.has_value());
+    const std::uint64_t kept = readCheckpoint(*resume, "resume").status.collisions;
+    EXPECT_GT(stopped.status().collisions, kept) << "the requests landed between two windows";
+    EXPECT_LT(stopped.status().collisions - kept, 54000u);
+    const auto file = std::filesystem::temp_directory_path() / "sbgen-test-mid-window.h5";
+    writePacking(*resume, file);
+    JammingProtocol resumed(readPacking(file), file.string());
+    std::filesystem::remove(file);
+    ASSERT_TRUE(resumed.run([](const ProtocolStatus&) {}));
+    expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
+}
+
 // Issue 65 item 3: both signals before the first window ends (sbgen's double SIGTERM during
 // its start): no pressure is measured yet, and the checkpoint must still be a valid packing
 // (none recorded, not 0) that resumes and jams.
@@ -174,6 +216,7 @@ TEST(JammingProtocol, ARepeatedStopBeforeTheFirstWindowLeavesAResumableCheckpoin
         JammingProtocol stopped(parameters);
         ASSERT_FALSE(stopped.run([](const ProtocolStatus&) {}, stop));
         EXPECT_EQ(stopped.status().windows, 0u);
+        EXPECT_FALSE(stopped.resumeCheckpoint().has_value()); // sbgen writes nothing
         const Packing checkpoint = stopped.checkpoint();
         EXPECT_FALSE(checkpoint.reducedPressure.has_value());
         const auto file = std::filesystem::temp_directory_path() / "sbgen-test-first-window.h5";
