@@ -6,7 +6,7 @@
 #    (--signal=B:USR1@300): the shell passes one SIGTERM on;
 #  - term: SIGTERM to sbgen and, 0.1 s later, to the shell, as preemption, `scontrol requeue`,
 #    scancel and the time limit do (Slurm signals every process of the job): the shell must pass
-#    nothing on (a second SIGTERM stops sbgen mid-window).
+#    nothing on (a second SIGTERM would stop sbgen mid-window, a window lost).
 # Each must save its checkpoint (sbgen stopped at the end of its window) and write no packing;
 # after USR1 the task requeues itself, after SIGTERM it leaves that to Slurm (which has requeued
 # it on preemption and `scontrol requeue`, and not on scancel). The task run again must resume
@@ -54,7 +54,7 @@ for how in usr1 term; do
     wait "$pid" || status=$?
     log=$work/$how-first.log
     (( status == 0 )) || { cat "$log"; fail "$how: the stopped task exited $status"; }
-    grep -q "at the end of a window (resumes bit for bit)" "$log" ||
+    grep -q "at the end of a window; it resumes bit for bit" "$log" ||
         { cat "$log"; fail "$how: sbgen did not stop at the end of its window"; }
     if [[ $how == usr1 ]]; then # the script requeues the task
         grep -q "^requeue test_1" "$log" || { cat "$log"; fail "$how: no requeue command"; }

@@ -14,14 +14,22 @@ from . import _sbpack
 
 
 def command_line_option(name, value):
-    """``--name value`` of one keyword (underscores to dashes; a pair joined by a comma). A
-    sequence is a pair: one of another length is refused, where ``tolerance=[1]`` was read as 1."""
+    """``--name value`` of one keyword (underscores to dashes; a sequence joined by commas). A
+    sequence is taken only by the options whose value is a pair (``T1,T2``: two items) or a list
+    (``LIST``); for any other it is refused, where ``tolerance=[1]`` was read as 1."""
+    option = name.replace("_", "-")
     if isinstance(value, (tuple, list)):
-        if len(value) != 2:
-            raise ValueError(f"{name}: a sequence of {len(value)} values; give one value, or a "
-                             "pair for the options that take one (alpha_window=(1, 5.8))")
+        value_name = _sbpack.analysis_options().get(option, {}).get("value", "")
+        if value_name == "LIST" and len(value) > 0:
+            pass
+        elif "," in value_name and len(value) == 2:
+            pass
+        else:
+            takes = ("a pair" if "," in value_name else "a non-empty list" if value_name == "LIST"
+                     else "one value")
+            raise ValueError(f"{name}: a sequence of {len(value)} values; it takes {takes}")
         value = ",".join(str(v) for v in value)
-    return ["--" + name.replace("_", "-"), str(value)]
+    return ["--" + option, str(value)]
 
 
 class Result:

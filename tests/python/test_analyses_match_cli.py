@@ -154,12 +154,15 @@ def test_hyperuniformity_skipped_on_a_small_box_warns():
 
 
 def test_a_sequence_is_a_pair_only():
-    """Issue 65 item 8: tolerance=[1] was read as --tolerance 1."""
-    with pytest.raises(ValueError, match="tolerance: a sequence of 1 values; give one value"):
+    """Issue 65 item 8: tolerance=[1] was read as --tolerance 1; pairs and lists keep theirs."""
+    with pytest.raises(ValueError, match="tolerance: a sequence of 1 values; it takes one value"):
         sbpack.Contacts(tolerance=[1])
-    with pytest.raises(ValueError, match="'1e-3,1e-4' is not a number"):
-        sbpack.Contacts(tolerance=("1e-3", "1e-4"))
+    with pytest.raises(ValueError, match="alpha_window: a sequence of 3 values; it takes a pair"):
+        sbpack.Hyperuniformity(alpha_window=(1, 2, 5.8))
+    with pytest.raises(ValueError, match="a sequence of 0 values; it takes a non-empty list"):
+        sbpack.Jamming(jamming_categories=[])
     assert sbpack.Hyperuniformity(alpha_window=(1, 5.8)) is not None
+    assert sbpack.Jamming(jamming_categories=("local", "collective", "strict")) is not None
 
 
 def test_unknown_option_is_a_type_error():

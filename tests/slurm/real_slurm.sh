@@ -146,7 +146,7 @@ for task in 1 2 3; do
     ! has "$(log "$task")" "twice: mid-window" || fail "task $task: sbgen signalled twice"
     ! has "$(log "$task")" "FAILED" || fail "task $task: $(grep FAILED "$(log "$task")")"
     ! has "$(log "$task")" "pending execution" || fail "task $task: requeued twice"
-    [[ $(grep -c "at the end of a window (resumes bit for bit)" "$(log "$task")") == 1 ]] ||
+    [[ $(grep -c "at the end of a window; it resumes bit for bit" "$(log "$task")") == 1 ]] ||
         fail "task $task was not stopped exactly once at the end of a window"
 done
 analysis_log=$SBPACK_OUT/logs/sbanalyze-$analysis.log
