@@ -1,14 +1,17 @@
 #pragma once
 // The results group of contacts, declared once (schema/field_table.hpp, docs/results-schema.md):
 // the contact network of common/contacts, whether its tolerance resolves the contacts, and where
-// on the particles the contacts sit (docs/contact-types.md).
+// on the particles the contacts sit (docs/contact-types.md), and the distribution of the contact
+// forces sbgen stored with the packing (docs/jamming.md §8).
 
 #include "contacts/contact_network.hpp"
 #include "contacts/contact_resolution.hpp"
 #include "contacts/contact_types.hpp"
+#include "packing/contact_forces.hpp"
 #include "schema/field_table.hpp"
 
 #include <limits>
+#include <optional>
 
 namespace sbpack {
 
@@ -17,6 +20,8 @@ struct ContactFigures {
     ContactResult network;
     ContactResolution resolution;
     ContactTypeDistribution types{}; ///< of the contacts among the non-rattlers
+    /// P(f / <f>) of sbgen's stored contact forces, where the packing has them.
+    std::optional<ForceDistribution> forces;
     double seconds = 0.0;
 
     /// Z and phi_R are undetermined when the tolerance cuts through the load-bearing gaps
@@ -93,6 +98,42 @@ inline constexpr std::array<schema::Column<R>, 13> kTypeColumns{{
      member<&R::types, &T::uniformAngleDensity>},
 }};
 
+/// A member of the stored forces' distribution, where the packing has them.
+template <auto Member> Optional forceField(const R& r, const Scales&) {
+    if (!r.forces) return std::nullopt;
+    return Value((*r.forces).*Member);
+}
+using FD = ForceDistribution;
+
+/// The distribution of sbgen's stored contact forces (docs/jamming.md §8), optional: packings
+/// from elsewhere have none.
+inline constexpr std::array<schema::Column<R>, 6> kForceColumns{{
+    {{"force_count", A, I, "1",
+      "contacts with a force stored by sbgen (the packing's contact_forces; only where it has "
+      "them)",
+      Mean, true},
+     forceField<&FD::count>},
+    {{"force_mean", A, F, "kT/D", "mean stored contact force <f> (only with stored forces)", Mean,
+      true},
+     forceField<&FD::mean>},
+    {{"force_second_moment", A, F, "1",
+      "<x^2> of x = f / <f> over the stored forces (<x> = 1; 2 for an exponential P(x))", Mean,
+      true},
+     forceField<&FD::secondMoment>},
+    {{"force_tail_fraction", A, F, "1",
+      "fraction of the stored forces with f / <f> >= the last force edge (only with stored "
+      "forces)",
+      Mean, true},
+     forceField<&FD::tailFraction>},
+    {{"force_edges", D, F, "1", "edges of the equal bins of x = f / <f> over [0, 4]", Same, true},
+     forceField<&FD::edges>},
+    {{"force_density", D, F, "1",
+      "probability density P(x) of x = f / <f> per bin over the stored forces (it integrates "
+      "to 1 - force_tail_fraction)",
+      Pointwise, true},
+     forceField<&FD::density>},
+}};
+
 inline constexpr schema::FieldTable kTable{schema::joinColumns(
     std::array<schema::Column<R>, 13>{{
         {{"z_mean", A, F, "1", "mean contact number Z over the non-rattlers (NaN if not resolved)",
@@ -140,7 +181,7 @@ inline constexpr schema::FieldTable kTable{schema::joinColumns(
              return Value(std::vector<std::int64_t>(counts.begin(), counts.end()));
          }},
     }},
-    kTypeColumns)};
+    kTypeColumns, kForceColumns)};
 } // namespace contacts_fields
 
 inline constexpr schema::Group kContactsGroup{"contacts", "files/<i>/contacts",

@@ -175,15 +175,30 @@ void copySame(const schema::Field& f, const Sources& in, schema::Record& out) {
     out.set(f.name, first);
 }
 
-/// Statistics of the fields of `source` over `in` into a record of `target`.
+/// The members of `in` whose record has `field` (an optional field: e.g. the force distribution,
+/// of the packings that store contact forces).
+Sources having(const Sources& in, std::string_view field) {
+    Sources out;
+    for (std::size_t i = 0; i < in.records.size(); ++i)
+        if (in.records[i]->has(field)) {
+            out.records.push_back(in.records[i]);
+            out.files.push_back(in.files[i]);
+        }
+    return out;
+}
+
+/// Statistics of the fields of `source` over `in` into a record of `target`; an optional field
+/// over the members that have it, none where no member has.
 schema::Record reduce(const schema::Group& source, const schema::Group& target, const Sources& in) {
     schema::Record out(target);
     for (const schema::Field& f : source.fields) {
-        if (f.reduce == schema::Reduce::MeanStd) reduceScalar(f, in, out);
-        if (f.reduce == schema::Reduce::Curve) reduceCurve(f, in, out);
-        if (f.reduce == schema::Reduce::Pointwise) reducePointwise(f, in, out);
-        if (f.reduce == schema::Reduce::Same) copySame(f, in, out);
-        if (f.reduce == schema::Reduce::Steps) reduceSteps(f, in, out);
+        const Sources members = f.optional ? having(in, f.name) : in;
+        if (members.records.empty()) continue;
+        if (f.reduce == schema::Reduce::MeanStd) reduceScalar(f, members, out);
+        if (f.reduce == schema::Reduce::Curve) reduceCurve(f, members, out);
+        if (f.reduce == schema::Reduce::Pointwise) reducePointwise(f, members, out);
+        if (f.reduce == schema::Reduce::Same) copySame(f, members, out);
+        if (f.reduce == schema::Reduce::Steps) reduceSteps(f, members, out);
     }
     return out;
 }

@@ -1,5 +1,6 @@
 #include "packing/contact_forces.hpp"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -44,6 +45,37 @@ double virialPressure(const Packing& packing, const ContactForces& forces) {
         virial += c.force * c.normal.dot(separation) / diameter;
     }
     return 1.0 + virial / (3.0 * static_cast<double>(packing.size()));
+}
+
+ForceDistribution forceDistribution(const ContactForces& forces) {
+    using D = ForceDistribution;
+    D d;
+    d.count = static_cast<std::int64_t>(forces.contacts.size());
+    const double width = D::kLargest / D::kBins;
+    for (int k = 0; k <= D::kBins; ++k)
+        d.edges.push_back(k * width);
+    d.density.assign(D::kBins, 0.0);
+    double sum = 0.0;
+    for (const ContactForce& c : forces.contacts)
+        sum += c.force;
+    d.mean = sum / static_cast<double>(d.count); // NaN without contacts
+    if (d.count == 0 || !(d.mean > 0.0)) {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        d.secondMoment = d.tailFraction = nan;
+        d.density.assign(D::kBins, nan);
+        return d;
+    }
+    const double weight = 1.0 / static_cast<double>(d.count);
+    for (const ContactForce& c : forces.contacts) {
+        const double x = c.force / d.mean;
+        d.secondMoment += x * x * weight;
+        const auto bin = static_cast<std::size_t>(x / width);
+        if (bin < d.density.size())
+            d.density[bin] += weight / width;
+        else
+            d.tailFraction += weight;
+    }
+    return d;
 }
 
 } // namespace sbpack

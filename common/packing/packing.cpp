@@ -17,6 +17,12 @@ Packing inLengthUnit(const Packing& packing, double unit) {
     reduced.orientations = packing.orientations;
     reduced.reducedPressure = packing.reducedPressure;
     reduced.seed = packing.seed;
+    if (packing.contactForces) { // forces in kT / D keep their values; points and times scale
+        reduced.contactForces = packing.contactForces;
+        reduced.contactForces->duration /= unit;
+        for (ContactForce& c : reduced.contactForces->contacts)
+            c.point = wrapIntoBox(c.point / unit, reduced.boxLength);
+    }
     return reduced;
 }
 

@@ -80,7 +80,8 @@ struct Packing {
 
 /// The particles of `packing` with every length divided by `unit` (a power of two: exact), so
 /// that a packing in any units is analysed at D ~ 1 and gives the same reduced results. The
-/// exponent, pressure and seed are kept; velocities, provenance and resume state are not.
+/// exponent, pressure, seed and contact forces (their points scaled) are kept; velocities,
+/// provenance and resume state are not.
 Packing inLengthUnit(const Packing& packing, double unit);
 
 /// A packing as the analyses see it: in its analysisLengthUnit, the packing itself where that is

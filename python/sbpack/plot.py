@@ -46,6 +46,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from . import figures_contacts as contact_figures  # noqa: E402
+from . import figures_forces as force_figures  # noqa: E402
 from . import figures_order as order_figures  # noqa: E402
 from . import figures_results as results_figures  # noqa: E402
 from . import figures_shape as shape_figures  # noqa: E402
@@ -70,6 +71,7 @@ FIGURES = {
     "order": order_figures.order,
     "contact_types": contact_figures.contact_types,
     "contact_types_versus_p": contact_figures.contact_types_versus_p,
+    "contact_forces": force_figures.contact_forces,
     "versus_p": versus.versus_p,
     "phi_vs_width": versus.phi_vs_width,
     "mean_width": shape_figures.mean_width,

@@ -248,6 +248,47 @@ TEST(Pipeline, SeveralInputsGetFilesAndAnEnsemble) {
                      0.0);
 }
 
+/// The lattice packing with stored forces of the given magnitudes on pairs (0, 1), (0, 2), ...
+Packing withForces(Packing packing, const std::vector<double>& magnitudes) {
+    ContactForces forces;
+    forces.windows = 1;
+    forces.duration = 1.0;
+    forces.reducedPressure = 1e6;
+    for (std::size_t k = 0; k < magnitudes.size(); ++k)
+        forces.contacts.push_back({0, static_cast<int>(k) + 1, Vector3d(0.5, 0.5, 0.5),
+                                   Vector3d::UnitX(), magnitudes[k]});
+    packing.contactForces = forces;
+    return packing;
+}
+
+// Issue 62: the stored forces' distribution is an optional field: an ensemble averages it over
+// the members that have it (a packing from elsewhere has none), pointwise.
+TEST(Pipeline, EnsembleForceDistributionIsOverTheMembersWithForces) {
+    const TempDir dir("sbpack-test-pipeline-forces");
+    const Packing packing = testing::latticePacking(1.0, 3, 1.2, 0.05, 7);
+    writePacking(withForces(packing, {2.0, 2.0}), dir / "a.h5"); // x = 1, 1
+    writePacking(withForces(packing, {1.0, 3.0}), dir / "b.h5"); // x = 0.5, 1.5
+    writePacking(packing, dir / "c.h5");
+    RunSettings s = settingsFor({dir / "a.h5", dir / "b.h5", dir / "c.h5"}, dir / "r.h5");
+    s.analyses = resolveAnalyses("contacts");
+    std::ostringstream log, out;
+    const RunResults results = runAnalyses(s, log, out);
+    EXPECT_FALSE(results.files[2].group("contacts")->has("force_density"));
+    EXPECT_EQ(results.files[1].group("contacts")->number("force_second_moment"), 1.25);
+    const schema::Record& e = *results.ensembles[0].group("contacts");
+    EXPECT_EQ(e.number("force_count"), 2.0);
+    EXPECT_EQ(e.number("force_mean"), 2.0);
+    EXPECT_EQ(e.number("force_second_moment"), 1.125); // (1 + 1.25) / 2
+    const std::vector<double>& edges = e.floats("force_edges");
+    const std::vector<double>& density = e.floats("force_density");
+    const double width = edges[1] - edges[0];
+    for (std::size_t k = 0; k < density.size();
+         ++k) { // bins of 0.1: x = 0.5, 1, 1.5 open 5, 10, 15
+        const double each = k == 10 ? 2.0 : (k == 5 || k == 15) ? 1.0 : 0.0;
+        EXPECT_DOUBLE_EQ(density[k], each / 2.0 / 2.0 / width) << k; // 2 forces, 2 members
+    }
+}
+
 /// F(at) of one file's right-continuous steps, by a plain scan.
 double stepsAt(const std::vector<double>& delta, const std::vector<double>& F, double at) {
     double value = F.front();

@@ -597,3 +597,29 @@ def test_contact_types_of_an_ensemble_are_its_means(ensemble, ensemble_figures):
         assert bars_of(pairs_axis, label) == [c[name] for name in PAIR_NAMES]
     bands = [p for p in theta_axis.patches if p.get_fill()]
     assert len(bands) == 2  # one per ensemble
+
+
+def test_contact_forces_are_the_results(sbgen, sbanalyze, tmp_path):
+    """Issue 62: the stored forces' P(f / <f>) is drawn from the results (an ensemble's mean and
+    band), beside e^-x, with <x^2> in the legend; results without stored forces (every input
+    of data/) have no such figure (NAMES)."""
+    paths = []
+    for seed in (3, 4):
+        path = str(tmp_path / f"forces-{seed}.h5")
+        r = run([sbgen, "--n", "64", "--p", "1.5", "--seed", str(seed), "--gamma-slow", "0.01",
+                 "--pressure-final", "1e9", "--quiet", "--out", path])
+        assert r.returncode in (0, 3), r.stderr  # jammed or not, the forces are stored
+        paths.append(path)
+    out = tmp_path / "r.h5"
+    assert run([sbanalyze, *paths, "--compute", "contacts", "--quiet", "--out", str(out)]
+               ).returncode == 0
+    figures = plot.make_figures([str(out)], slice_voxels=0, form_factor_voxels=0)
+    ax = figures["contact_forces"].axes[0]
+    ensemble = sbpack.read_results(str(out))["ensembles"][0]["contacts"]
+    steps = [p for p in ax.patches if p.get_gid() == r"p = 1.5, N = 64 (mean $\pm$ std of 2)"]
+    assert len(steps) == 1
+    heights = steps[0].get_data()[0]
+    assert np.allclose(heights, np.maximum(ensemble["force_density"], 1e-4))
+    legend = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert any(f"{ensemble['force_second_moment']:.3f}" in t for t in legend)
+    assert any("e^{-x}" in t for t in legend)

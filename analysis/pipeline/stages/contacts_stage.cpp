@@ -13,6 +13,8 @@ bool runContacts(FileContext& context, schema::Record& record) {
     ContactFigures c{ContactNetwork(context.settings().contacts).compute(context.packing()),
                      resolveContacts(context.packing(), context.settings().contacts.tolerance)};
     c.types = contactTypeDistribution(typedContacts(context.packing(), c.network));
+    if (context.packing().contactForces)
+        c.forces = forceDistribution(*context.packing().contactForces);
     c.seconds = clock.seconds();
     if (c.undetermined())
         context.progress().warn("contacts: " + c.resolution.verdict + "\n" +
