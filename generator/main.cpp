@@ -177,7 +177,18 @@ int generate(const sbpack::GeneratorOptions& o) {
         std::cerr << "sbgen: warning: " << o.out.string() << " has ordered (" << order.reason
                   << "; docs/order-metrics.md §5): jammed or not, it is not MRJ\n";
     const sbpack::JamCheck& jam = *protocol.status().jam;
-    if (jam.jammed) return EXIT_SUCCESS;
+    if (jam.jammed) {
+        // The jam check tests local jamming of translations only (docs/jamming.md §1); sbgen
+        // links no LP solver, so the categories with rotations are sbanalyze's to test.
+        if (!o.quiet)
+            std::fprintf(stderr,
+                         "sbgen: jammed by the jam check (translations: %.1f %% of the particles "
+                         "rattlers or free, at most %.0f %%); the jamming categories, rotations "
+                         "included: sbanalyze info --jamming %s (docs/jamming.md §7)\n",
+                         100.0 * jam.untrappedFraction,
+                         100.0 * protocol.parameters().jamCheck.maxRattlerFraction, o.out.c_str());
+        return EXIT_SUCCESS;
+    }
     std::cerr << "sbgen: " << o.out.string() << " (written, marked jammed = 0): " << jam.verdict
               << '\n';
     return kNotJammed;
