@@ -3,12 +3,15 @@
 The C++ core (the libraries of sbgen and sbanalyze) is the extension ``sbpack._sbpack``; this
 package adds the analyses as objects, a reader of results files and the figures (``sbpack.plot``).
 """
-from ._sbpack import Packing, __version__, expected_collisions, generate
+from ._arguments import generate, name_argument_errors
+from ._sbpack import Packing, __version__, expected_collisions
 from .analyses import analyze
 from .analysis_base import Analysis, Result
 from .analysis_classes import *  # noqa: F401,F403 (Contacts, ContactsResult, ...: __all__)
 from .analysis_classes import __all__ as _analysis_names
 from .results import read_results
+
+name_argument_errors()
 
 __all__ = ["Packing", "generate", "expected_collisions", "analyze", "read_results", "Analysis",
            "Result", "__version__", *_analysis_names]

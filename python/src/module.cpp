@@ -3,12 +3,14 @@
 // std::domain_error are ValueError; PackingFileError and OutputPathError are OSError; Interrupted
 // is KeyboardInterrupt.
 #include "bindings.hpp"
-
+#include "cli/option_suggestion.hpp"
 #include "io/atomic_file.hpp"
 #include "io/packing_io.hpp"
 #include "packing/validation.hpp"
 #include "progress/progress.hpp"
 #include "version.hpp"
+
+#include <pybind11/stl.h>
 
 namespace {
 
@@ -38,4 +40,8 @@ PYBIND11_MODULE(_sbpack, m) {
     sbpack::python::registerResults(m);
     sbpack::python::registerAnalyses(m);
     sbpack::python::registerGenerator(m);
+    // The rule for mistyped options, for sbpack's Python keywords too (python/sbpack/_arguments.py)
+    m.def("closest_options", &sbpack::closestOptions, pybind11::arg("given"),
+          pybind11::arg("known"),
+          "The known options nearest a mistyped one (sbgen's and sbanalyze's rule)");
 }

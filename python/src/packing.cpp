@@ -104,13 +104,20 @@ void write(const Packing& packing, const fs::path& file) {
     }
 }
 
+/// `a` made read-only: the arrays are copies, so an edit would be lost without a word (issue 66
+/// item 6); a new packing is made from edited copies.
+py::array_t<double> readOnly(py::array_t<double> a) {
+    a.attr("setflags")(py::arg("write") = false);
+    return a;
+}
+
 py::array_t<double> positionsOf(const Packing& packing) {
     py::array_t<double> a({static_cast<py::ssize_t>(packing.size()), py::ssize_t(3)});
     auto v = a.mutable_unchecked<2>();
     for (py::ssize_t i = 0; i < v.shape(0); ++i)
         for (py::ssize_t k = 0; k < 3; ++k)
             v(i, k) = packing.positions[i][k];
-    return a;
+    return readOnly(std::move(a));
 }
 
 /// (w, x, y, z) per row, as the packing file.
@@ -124,7 +131,7 @@ py::array_t<double> orientationsOf(const Packing& packing) {
         v(i, 2) = q.y();
         v(i, 3) = q.z();
     }
-    return a;
+    return readOnly(std::move(a));
 }
 
 py::dict provenanceOf(const Packing& packing) {
@@ -147,8 +154,10 @@ void registerPacking(py::module_& m) {
              "message, naming `source`)")
         .def_static("read", &read, py::arg("path"), "Reads a .h5 (or .txt) packing file")
         .def("write", &write, py::arg("path"), "Writes .h5, .txt or .xyz (OVITO), atomically")
-        .def_property_readonly("positions", &positionsOf, "N x 3 centroids in [0, L)")
-        .def_property_readonly("orientations", &orientationsOf, "N x 4 quaternions (w, x, y, z)")
+        .def_property_readonly("positions", &positionsOf,
+                               "N x 3 centroids in [0, L), a read-only copy")
+        .def_property_readonly("orientations", &orientationsOf,
+                               "N x 4 quaternions (w, x, y, z), a read-only copy")
         .def_readonly("box_length", &Packing::boxLength)
         .def_readonly("p", &Packing::p)
         .def_readonly("semi_axis", &Packing::semiAxis)

@@ -89,6 +89,10 @@ def test_misuses_are_refused_before_the_run():
         sbpack.generate(n=10**12)
     with pytest.raises(TypeError, match="progress must be a callable"):
         sbpack.generate(n=10**6, progress=5)
+    # issue 66 item 6: Python's message with sbgen's suggestion, not pybind11's signature list
+    with pytest.raises(TypeError, match=r"^generate\(\) got an unexpected keyword argument "
+                                        r"'gamma'; did you mean gamma_fast or gamma_slow\?$"):
+        sbpack.generate(gamma=1e-3)
     # issue 65 item 8: -1 or NaN called progress after every window (22,700 calls)
     for interval in (-1, float("nan"), float("inf")):
         with pytest.raises(ValueError, match="progress_interval = .*: must be a finite number of "

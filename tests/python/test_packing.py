@@ -116,6 +116,19 @@ def test_misuses_are_named(tmp_path):
         packing.write(tmp_path / "missing" / "x.h5")
 
 
+def test_arrays_are_read_only_copies():
+    """Issue 66 item 6: an edit of packing.positions was lost without a word (a copy)."""
+    packing = sbpack.Packing.read(P15)
+    for array in (packing.positions, packing.orientations):
+        with pytest.raises(ValueError, match="read-only"):
+            array[0, 0] = 1.0
+    moved = packing.positions.copy()
+    moved[0, 0] = (moved[0, 0] + 0.5) % packing.box_length
+    edited = sbpack.Packing(moved, packing.orientations, packing.box_length, p=packing.p,
+                            semi_axis=packing.semi_axis)
+    assert edited.positions[0, 0] == moved[0, 0]
+
+
 def test_arrays_of_other_than_real_numbers_are_refused():
     """Issue 65 item 8: boolean and complex arrays were cast (True as 1, the imaginary part
     dropped); integers are numbers."""
@@ -134,7 +147,9 @@ def test_the_shape_is_never_a_silent_default():
     """Issue 43: rebuilding an MRJ packing from its arrays without semi_axis once gave phi = 0.2
     (a default of 0.5); p and semi_axis are now required keywords."""
     p = sbpack.Packing.read(P15)
-    with pytest.raises(TypeError):
+    # issue 66 item 6: Python's message, naming the keyword, not pybind11's with the arrays
+    with pytest.raises(TypeError, match=r"^Packing.__init__\(\) missing 1 required keyword-only "
+                                        r"argument: 'semi_axis'$"):
         sbpack.Packing(p.positions, p.orientations, p.box_length, p=1.5)
     with pytest.raises(TypeError):
         sbpack.Packing(p.positions, p.orientations, p.box_length, semi_axis=p.semi_axis)

@@ -1,0 +1,53 @@
+"""Python's own argument errors for the extension's entry points (issue 66 item 6): pybind11
+answers a missing or unknown keyword with its signature list and the reprs of every argument
+(whole arrays); these wrappers raise Python's TypeError, which names the argument, and suggest
+the nearest keywords by sbpack's own rule for mistyped options (common/cli/option_suggestion)."""
+import inspect
+
+from . import _sbpack
+
+_PACKING_INIT = _sbpack.Packing.__init__
+_GENERATE = _sbpack.generate
+
+
+def __init__(self, positions, orientations, box_length, *, p, semi_axis, source="arrays"):
+    """From N x 3 positions and N x 4 unit quaternions (w, x, y, z), the shape's p and semi_axis
+    given by keyword (no default: a packing's grown size is its own, docs/python.md); checked as
+    the file readers check (ValueError with their message, naming `source`)."""
+    _PACKING_INIT(self, positions, orientations, box_length, p=p, semi_axis=semi_axis,
+                  source=source)
+
+
+def _named(function, qualname):
+    """`function` whose messages call it `qualname` (Python >= 3.11 names the code's qualname)."""
+    function.__qualname__ = qualname
+    if hasattr(function.__code__, "co_qualname"):
+        function.__code__ = function.__code__.replace(co_qualname=qualname)
+    return function
+
+
+def _keywords(function):
+    """The keyword names of an extension function, from its pybind11 signature line."""
+    line = function.__doc__.splitlines()[0]
+    inner = line[line.index("(") + 1:line.rindex(") ->")]
+    return [part.split(":")[0].strip() for part in inner.split(",") if ":" in part]
+
+
+def generate(**options):
+    """Jams a packing as sbgen does with the same options and defaults (docs/python.md)."""
+    for name in options:
+        if name not in _GENERATE_KEYWORDS:
+            near = _sbpack.closest_options("--" + name, ["--" + k for k in _GENERATE_KEYWORDS])
+            hint = f"; did you mean {' or '.join(n[2:] for n in near)}?" if near else ""
+            raise TypeError(f"generate() got an unexpected keyword argument {name!r}{hint}")
+    return _GENERATE(**options)
+
+
+_GENERATE_KEYWORDS = _keywords(_GENERATE)
+generate.__doc__ = _GENERATE.__doc__
+
+
+def name_argument_errors():
+    """Installs the wrappers: Packing's constructor and sbpack.generate."""
+    _sbpack.Packing.__init__ = _named(__init__, "Packing.__init__")
+    _sbpack.Packing.__init__.__signature__ = inspect.signature(__init__)
