@@ -109,6 +109,17 @@ std::vector<std::string> protocolWarnings(const ProtocolParameters& parameters) 
                         "compression follows the equilibrium branch and may crystallise "
                         "(paper Sec. III A)",
                         fast));
+    // issue 66 item 3: "--gamma-slow 1e-3, a faster slow phase" is so for spheres (1e-4) and five
+    // times slower for superballs (4e-3 to 7e-3); the slow phase's collisions go as 1 / rate.
+    ProtocolParameters defaults = parameters;
+    defaults.gammaSlow.reset();
+    if (parameters.gammaSlow && *parameters.gammaSlow < defaults.slowGrowthRate())
+        warnings.push_back(fmt::format(
+            "gamma-slow {:g} is slower than the default for p = {:g}, {:.2g}: about {:.2g} "
+            "times the slow phase's collisions; a larger rate is the faster one (docs/design.md "
+            "§3)",
+            *parameters.gammaSlow, parameters.p, defaults.slowGrowthRate(),
+            defaults.slowGrowthRate() / *parameters.gammaSlow));
     if (parameters.p > 10.0)
         warnings.push_back(
             fmt::format("p = {:g}: near-cubes this flat run at a few hundred collisions per "

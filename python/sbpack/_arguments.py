@@ -33,13 +33,19 @@ def _keywords(function):
     return [part.split(":")[0].strip() for part in inner.split(",") if ":" in part]
 
 
+def check_keywords(function, given, known):
+    """Raises Python's TypeError for the first keyword of `given` not in `known`, with the
+    nearest known ones by sbgen's rule for mistyped options ("did you mean gamma_slow?")."""
+    for name in given:
+        if name not in known:
+            near = _sbpack.closest_options("--" + name, ["--" + k for k in known])
+            hint = f"; did you mean {' or '.join(n[2:] for n in near)}?" if near else ""
+            raise TypeError(f"{function}() got an unexpected keyword argument {name!r}{hint}")
+
+
 def generate(**options):
     """Jams a packing as sbgen does with the same options and defaults (docs/python.md)."""
-    for name in options:
-        if name not in _GENERATE_KEYWORDS:
-            near = _sbpack.closest_options("--" + name, ["--" + k for k in _GENERATE_KEYWORDS])
-            hint = f"; did you mean {' or '.join(n[2:] for n in near)}?" if near else ""
-            raise TypeError(f"generate() got an unexpected keyword argument {name!r}{hint}")
+    check_keywords("generate", options, _GENERATE_KEYWORDS)
     return _GENERATE(**options)
 
 

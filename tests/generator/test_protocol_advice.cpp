@@ -64,11 +64,29 @@ TEST(ProtocolAdvice, AVerySlowRunIsToldItsExpectedCost) {
     ProtocolParameters slow = defaults(1.5, 5000);
     slow.gammaSlow = 1e-4;
     const auto warnings = protocolWarnings(slow);
-    ASSERT_EQ(warnings.size(), 1u);
+    ASSERT_EQ(warnings.size(), 2u); // and the rate slower than the default
     EXPECT_NE(warnings[0].find("CPU hours"), std::string::npos) << warnings[0];
     EXPECT_NE(warnings[0].find("after 40 times that"), std::string::npos) << warnings[0];
     slow.costLimit = 0.0;
     EXPECT_EQ(protocolWarnings(slow)[0].find("cost-limit"), std::string::npos);
+}
+
+// Issue 66 item 3: --gamma-slow 1e-3, offered as "a faster slow phase", is faster for spheres
+// (default 1e-4) and about six times slower at p = 1.3 (default 6.3e-3).
+TEST(ProtocolAdvice, ASlowRateBelowTheDefaultIsToldItsCost) {
+    ProtocolParameters superballs = defaults(1.3, 1000);
+    superballs.gammaSlow = 1e-3;
+    const auto warnings = protocolWarnings(superballs);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("gamma-slow 0.001 is slower than the default for p = 1.3, 0.0063: "
+                               "about 6.3 times the slow phase's collisions"),
+              std::string::npos)
+        << warnings[0];
+    ProtocolParameters spheres = defaults(1.0, 1000);
+    spheres.gammaSlow = 1e-3;
+    EXPECT_TRUE(protocolWarnings(spheres).empty());
+    superballs.gammaSlow = defaults(1.3, 1000).slowGrowthRate(); // the default, given
+    EXPECT_TRUE(protocolWarnings(superballs).empty());
 }
 
 TEST(ProtocolAdvice, SmallBoxesAreWarnedAtEveryP) { // issue 43

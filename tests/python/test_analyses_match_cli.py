@@ -165,6 +165,18 @@ def test_a_sequence_is_a_pair_only():
     assert sbpack.Jamming(jamming_categories=("local", "collective", "strict")) is not None
 
 
+def test_analyze_names_its_misuses_in_python(tmp_path):
+    """Issue 66 item 6: analyze(q_max=20) answered in the command line's spelling, and a Packing
+    given for the files failed with "'Packing' object is not iterable"."""
+    path = os.path.join(DATA, "fcc-spheres.txt")
+    with pytest.raises(TypeError, match=r"^analyze\(\) got an unexpected keyword argument "
+                                        r"'q_max'; did you mean qmax\?$"):
+        sbpack.analyze(path, tmp_path / "r.h5", q_max=20)
+    with pytest.raises(TypeError, match=r"a Packing goes to an analysis's compute\(packing\)"):
+        sbpack.analyze(sbpack.Packing.read(path), tmp_path / "r.h5")
+    assert not (tmp_path / "r.h5").exists()
+
+
 def test_unknown_option_is_a_type_error():
     with pytest.raises(TypeError, match="unexpected keyword argument 'voxels'"):
         sbpack.StructureFactor(voxels=10)
