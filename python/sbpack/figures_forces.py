@@ -1,10 +1,14 @@
-"""sbpack.plot's figure of the contact forces that sbgen stores with a packing (group `contacts`,
-fields force_*; docs/jamming.md §8): the density P(x) of x = f / <f>, one series per (p, N), on a
-logarithmic axis beside the exponential e^-x, with <x^2> in the legend (<x> = 1 by construction).
+"""sbpack.plot's figures of a packing's mechanics (docs/jamming.md): the contact forces that
+sbgen stores with a packing (group `contacts`, fields force_*, §8), the density P(x) of
+x = f / <f>, one series per (p, N), on a logarithmic axis beside the exponential e^-x, with <x^2>
+in the legend (<x> = 1 by construction); and the collective jamming test's unjamming motion on a
+section of its packing (group `jamming_collective`, --compute jamming, §7).
 
 Every value drawn is the results' (an ensemble's pointwise mean +- std of the density, its mean
 +- std of <x^2>); packings without stored forces (from elsewhere, or from sbgen before it stored
 them) have no force fields and no series here."""
+import os
+
 import numpy as np
 
 from .figures_results import new_figure, with_group
@@ -51,3 +55,66 @@ def contact_forces(series):
     ax.set_ylabel(r"$P(x)$")
     ax.set_title("Contact forces stored by sbgen")
     return fig
+
+
+MOTIONS = [("opening_displacement", "an opening (a motion that opens contacts)"),
+           ("flex_displacement", "a flex (a motion that keeps every contact)")]
+
+
+def motion_inputs(series):
+    """[(packing file, results input, dataset, what)] for the inputs whose collective jamming test
+    found a motion (the first such input per p, whose packing file exists): the opening where
+    there is one, else the flex."""
+    found = {}
+    for s in series:
+        for f in s.files:
+            group = f.get("jamming_collective", {})
+            motion = next(((name, what) for name, what in MOTIONS if name in group), None)
+            if motion and s.p not in found and os.path.isfile(str(f["input"])):
+                found[s.p] = (str(f["input"]), f, *motion)
+    return [found[p] for p in sorted(found)]
+
+
+def unjamming_motion(series, voxels=200, threads=1):
+    """The collective test's motion on a section x ~ L/2 of its packing: the solid in grey
+    (_sbpack.voxel_slice) and, for each particle whose centre lies within D/2 of the plane, its
+    displacement's (z, y) components as an arrow, the largest drawn a diameter long; None where
+    no input has a motion or its packing file is not found."""
+    from . import _sbpack
+    inputs = motion_inputs(series)
+    if not inputs or voxels == 0:
+        return None
+    fig, axes = new_figure(len(inputs), width=4.4, height=4.4)
+    for ax, (path, f, name, what) in zip(axes[0], inputs):
+        packing = _sbpack.Packing.read(path)
+        plane = section_plane(packing, voxels)
+        solid, _ = _sbpack.voxel_slice(packing, voxels, plane, threads)
+        L, D = packing.box_length, 2.0 * packing.semi_axis
+        ax.imshow(solid != 0, origin="lower", extent=(0, L / D, 0, L / D), cmap="Greys",
+                  vmin=0, vmax=1.6, interpolation="nearest")
+        x = (plane + 0.5) * L / voxels
+        r, u = slab_arrows(packing, np.asarray(f["jamming_collective"][name]), x)
+        ax.quiver(r[:, 2] / D, r[:, 1] / D, u[:, 2], u[:, 1], angles="xy", scale_units="xy",
+                  scale=1.0, color="tab:red", width=0.006, gid=f"{packing.p:g}")
+        ax.set(xlim=(0, L / D), ylim=(0, L / D), xlabel="$z/D$", ylabel="$y/D$")
+        ax.set_title(f"p = {packing.p:g}, N = {len(packing)}: {what}", fontsize=8)
+    return fig
+
+
+def section_plane(packing, voxels):
+    """The voxel plane through the centre of the particle nearest x = L/2: the section cuts a
+    layer of particles through their middles (a lattice's layers, not the gaps between them)."""
+    L = packing.box_length
+    x = np.asarray(packing.positions)[:, 0]
+    centre = x[np.argmin(np.abs(x - L / 2))]
+    return min(int(centre / L * voxels), voxels - 1)
+
+
+def slab_arrows(packing, displacement, x):
+    """(centres, arrows) of the particles whose centre lies within D/2 of the plane at `x`, the
+    arrows scaled so that the largest displacement of the packing is one D long."""
+    L, D = packing.box_length, 2.0 * packing.semi_axis
+    r = np.asarray(packing.positions)
+    near = np.abs((r[:, 0] - x + L / 2) % L - L / 2) < D / 2
+    largest = float(np.max(np.linalg.norm(displacement, axis=1)))
+    return r[near], displacement[near] * (D / largest if largest > 0 else 0.0)

@@ -30,9 +30,13 @@ splits them, p <= 1 | p >= 1.
   phi_vs_width       with two or more p: phi against w / A                (Fig. 6, superballs)
   mean_width         w / A against p over [0.5, 1000]                     (Fig. 3)
   form_factor        the form factor of one superball at each p, linear and log-log (Figs. S1, S2)
+  contact_forces     with sbgen's stored contact forces: P(f / <f>) per (p, N) beside e^-x
+  unjamming_motion   with --compute jamming: the collective test's opening or flex on a section
+                     of its packing, per p (slice grid: --slice-voxels, default 200)
   packing_slice      a section of a packing per p, the void coloured by pore size  (Fig. 2's)
 Every number drawn is sbanalyze's or sbpack's: read from the results, or (mean_width,
-form_factor, packing_slice) computed by the module's own engine (figures_shape). Two statistics
+form_factor, packing_slice, the section under unjamming_motion) computed by the module's own
+engine (figures_shape, figures_forces). Two statistics
 are taken here: the mean +- std of an ensemble's F(delta) and P(delta), which the results do not
 keep, and the histogram of the per-particle local q6 (an ensemble's members pooled).
 make_figures() returns the finished figures (legends, layout); the command saves exactly those.
@@ -89,6 +93,8 @@ def make_figures(paths, packing_path=None, slice_voxels=None, form_factor_voxels
     series = series_of([read_results(p) for p in paths], paths)
     figures = {name: draw(series) for name, draw in FIGURES.items()}
     figures["form_factor"] = shape_figures.form_factor(series, form_factor_voxels, threads)
+    figures["unjamming_motion"] = force_figures.unjamming_motion(series, slice_voxels or 200,
+                                                                 threads)
     figures["packing_slice"] = shape_figures.packing_slice(series, packing_path, slice_voxels,
                                                            threads)
     figures = {name: fig for name, fig in figures.items() if fig is not None}

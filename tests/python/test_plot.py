@@ -623,3 +623,28 @@ def test_contact_forces_are_the_results(sbgen, sbanalyze, tmp_path):
     legend = [t.get_text() for t in ax.get_legend().get_texts()]
     assert any(f"{ensemble['force_second_moment']:.3f}" in t for t in legend)
     assert any("e^{-x}" in t for t in legend)
+
+
+def test_unjamming_motion_is_the_results(sbanalyze, tmp_path):
+    """Issue 62 item 3: the simple-cubic lattice's flex (its rows slide) drawn on a section
+    through a layer of centres: one arrow per sphere of that layer, each the results' (z, y)
+    displacement scaled so that the largest is one diameter."""
+    from conftest import ROOT
+    lattice = str(tmp_path / "sc125.txt")
+    subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "make_lattice.py"), "1", "5",
+                    lattice], check=True)
+    out = tmp_path / "r.h5"
+    r = run([sbanalyze, lattice, "--compute", "jamming", "--jamming-categories", "collective",
+             "--quiet", "--out", str(out)])
+    assert r.returncode == 0, r.stderr
+    figures = plot.make_figures([str(out)], slice_voxels=100, form_factor_voxels=0)
+    quiver = figures["unjamming_motion"].axes[0].collections[0]
+    flex = np.asarray(sbpack.read_results(str(out))["files"][0]["jamming_collective"]
+                      ["flex_displacement"])
+    packing = sbpack.Packing.read(lattice)
+    layer = np.isclose(packing.positions[:, 0], packing.positions[:, 0][
+        np.argmin(np.abs(packing.positions[:, 0] - packing.box_length / 2))])
+    assert len(quiver.U) == 25 == layer.sum()
+    scale = 1.0 / np.max(np.linalg.norm(flex, axis=1))  # D = 1
+    assert np.allclose(quiver.U, flex[layer, 2] * scale)
+    assert np.allclose(quiver.V, flex[layer, 1] * scale)
