@@ -62,6 +62,16 @@ void expectIdentical(const Packing& a, const Packing& b) {
         }
 }
 
+/// The protocol resumed from `checkpoint` through a file, as sbgen --resume reads it (`name` in
+/// the temporary folder, removed after).
+JammingProtocol resumedThroughAFile(const Packing& checkpoint, const std::string& name) {
+    const auto file = std::filesystem::temp_directory_path() / name;
+    writePacking(checkpoint, file); // validated on the way
+    JammingProtocol resumed(readPacking(file), file.string());
+    std::filesystem::remove(file);
+    return resumed;
+}
+
 TEST(JammingProtocol, RejectsBadParametersNamingTheParameter) {
     const auto expectBad = [](auto change, const char* option) {
         ProtocolParameters p;
@@ -107,10 +117,7 @@ TEST(JammingProtocol, ResumingFromACheckpointFileGivesTheUninterruptedResult) {
         if (s.windows == 40) saved = uninterrupted.checkpoint();
     }));
     ASSERT_TRUE(saved.has_value());
-    const auto file = std::filesystem::temp_directory_path() / "sbgen-test-checkpoint.h5";
-    writePacking(*saved, file);
-    JammingProtocol resumed(readPacking(file), file.string());
-    std::filesystem::remove(file);
+    JammingProtocol resumed = resumedThroughAFile(*saved, "sbgen-test-checkpoint.h5");
     EXPECT_EQ(resumed.status().windows, 40u);
     ASSERT_TRUE(resumed.run([](const ProtocolStatus&) {}));
     expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
@@ -135,10 +142,7 @@ TEST(JammingProtocol, AStopRequestEndsTheWindowAndResumesExactly) {
         stop));
     EXPECT_EQ(stop.signal(), SIGINT);
     EXPECT_EQ(stopped.status().windows, 25u);
-    const auto file = std::filesystem::temp_directory_path() / "sbgen-test-stop.h5";
-    writePacking(stopped.checkpoint(), file);
-    JammingProtocol resumed(readPacking(file), file.string());
-    std::filesystem::remove(file);
+    JammingProtocol resumed = resumedThroughAFile(stopped.checkpoint(), "sbgen-test-stop.h5");
     ASSERT_TRUE(resumed.run([](const ProtocolStatus&) {}));
     expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
 }
@@ -194,10 +198,7 @@ TEST(JammingProtocol, ARepeatedStopMidWindowResumesFromTheWindowStartBitForBit) 
     const std::uint64_t kept = readCheckpoint(*resume, "resume").status.collisions;
     EXPECT_GT(stopped.status().collisions, kept) << "the requests landed between two windows";
     EXPECT_LT(stopped.status().collisions - kept, 54000u);
-    const auto file = std::filesystem::temp_directory_path() / "sbgen-test-mid-window.h5";
-    writePacking(*resume, file);
-    JammingProtocol resumed(readPacking(file), file.string());
-    std::filesystem::remove(file);
+    JammingProtocol resumed = resumedThroughAFile(*resume, "sbgen-test-mid-window.h5");
     ASSERT_TRUE(resumed.run([](const ProtocolStatus&) {}));
     expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
 }
@@ -219,10 +220,7 @@ TEST(JammingProtocol, ARepeatedStopBeforeTheFirstWindowLeavesAResumableCheckpoin
         EXPECT_FALSE(stopped.resumeCheckpoint().has_value()); // sbgen writes nothing
         const Packing checkpoint = stopped.checkpoint();
         EXPECT_FALSE(checkpoint.reducedPressure.has_value());
-        const auto file = std::filesystem::temp_directory_path() / "sbgen-test-first-window.h5";
-        writePacking(checkpoint, file); // validated on the way: throws on a pressure of 0
-        JammingProtocol resumed(readPacking(file), file.string());
-        std::filesystem::remove(file);
+        JammingProtocol resumed = resumedThroughAFile(checkpoint, "sbgen-test-first-window.h5");
         ASSERT_TRUE(resumed.run([](const ProtocolStatus&) {})) << "p = " << p;
         EXPECT_GE(resumed.status().reducedPressure, parameters.pressureFinal);
     }
@@ -239,10 +237,7 @@ TEST(JammingProtocol, SuperballRunsAreDeterministicAndResumeExactly) {
     // resume with the particles (issue 40).
     EXPECT_GT(saved->pairRecords.size(), kPairRecordColumns * saved->size());
     EXPECT_GE(uninterrupted.status().reducedPressure, 1e4);
-    const auto file = std::filesystem::temp_directory_path() / "sbgen-test-superball-checkpoint.h5";
-    writePacking(*saved, file);
-    JammingProtocol resumed(readPacking(file), file.string());
-    std::filesystem::remove(file);
+    JammingProtocol resumed = resumedThroughAFile(*saved, "sbgen-test-superball-checkpoint.h5");
     ASSERT_TRUE(resumed.run([](const ProtocolStatus&) {}));
     expectIdentical(uninterrupted.checkpoint(), resumed.checkpoint());
     JammingProtocol again(smallSuperballRun(4));
