@@ -24,10 +24,16 @@ def with_forces(series):
 
 
 def series_text(s):
-    """The series' legend entry: its label and <x^2> (ensembles: mean +- std)."""
+    """The series' legend entry: its label (saying how many members store forces where not all
+    do) and <x^2> (ensembles: mean +- std)."""
     mean, std = scalar(s, "contacts", "force_second_moment")
     moment = f"{mean:.3f}" + (fr" $\pm$ {std:.3f}" if s.averaged else "")
-    return f"{group_label(s, 'contacts')}\n" + fr"$\langle x^2 \rangle$ = {moment}"
+    members = s.members("contacts")
+    stored = sum("force_density" in f["contacts"] for f in members)
+    label = group_label(s, "contacts")
+    if stored < len(members):
+        label += f"; forces stored by {stored} of {len(members)}"
+    return f"{label}\n" + fr"$\langle x^2 \rangle$ = {moment}"
 
 
 def contact_forces(series):
