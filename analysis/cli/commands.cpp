@@ -2,6 +2,7 @@
 
 #include "info/packing_info.hpp"
 #include "io/atomic_file.hpp"
+#include "io/naming_file.hpp"
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
 #include "pipeline/analysis_registry.hpp"
@@ -48,9 +49,7 @@ int infoCommand(const std::vector<std::string>& files, const ContactParameters& 
         try {
             printPackingInfo(file, packingInfo(file, parameters, jamming), out);
         } catch (const std::exception& e) { // readers name the file, analyses do not
-            const std::string what = e.what(), name = "'" + file + "'";
-            err << "sbanalyze: error: " << (what.find(name) == std::string::npos ? name + ": " : "")
-                << what << '\n';
+            err << "sbanalyze: error: " << messageNamingFile(e.what(), file) << '\n';
             ++failures;
         }
     }

@@ -1,6 +1,7 @@
 #include "pipeline/run.hpp"
 
 #include "io/atomic_file.hpp"
+#include "io/naming_file.hpp"
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
 #include "parallel/parallel.hpp"
@@ -36,11 +37,11 @@ std::string quotedName(const fs::path& file) {
 /// already (readers do); invalid input stays std::invalid_argument (issue 65 item 5: an
 /// analysis's own message, e.g. the order metrics', named no file).
 [[noreturn]] void rethrowNamingFile(const fs::path& file, const std::exception& e) {
-    const std::string what = e.what();
-    if (what.find(quotedName(file)) != std::string::npos) throw;
+    const std::string what = e.what(), named = messageNamingFile(what, file.string());
+    if (named == what) throw;
     if (dynamic_cast<const std::invalid_argument*>(&e) != nullptr)
-        throw std::invalid_argument(quotedName(file) + ": " + what);
-    throw std::runtime_error(quotedName(file) + ": " + what);
+        throw std::invalid_argument(named);
+    throw std::runtime_error(named);
 }
 
 /// "[2/5] packing.h5": the prefix of a file's progress lines.
