@@ -178,11 +178,14 @@ double stiffnessOnFlexes(const Sparse& s, const Sparse& loaded,
     return scale;
 }
 
-/// A self-stress to test: not empty, and the program's least-residual forces within
-/// residualAcceptance of balance (docs/jamming.md §6.6).
+/// A self-stress to test: not empty; given forces only where the network has a self-stress for
+/// them to approximate (dim ker A > 0: sbgen's stored forces on a network without one proved
+/// "not jammed" of nothing, bench/RESULTS.md "p = 1.1"); the program's least-residual forces
+/// within residualAcceptance of balance (docs/jamming.md §6.6).
 bool accepted(const SecondOrderResult& result, const SecondOrderParameters& parameters) {
     if (result.stress.forces.size() == 0) return false;
-    return result.forcesGiven || parameters.selfStress == SelfStressProgram::Exact ||
+    if (result.forcesGiven) return result.selfStresses > 0;
+    return parameters.selfStress == SelfStressProgram::Exact ||
            result.stress.balanceResidual <= parameters.residualAcceptance;
 }
 

@@ -186,6 +186,18 @@ TEST(SecondOrder, SuperballsHeldAtTheirDiagonalsAreJammedOnlyWhereFlatterThanThe
     }
 }
 
+// Given forces on a network with no self-stress (dim ker A = 0) approximate none: the verdict is
+// "no self-stress", not the stiffness under them (the reproduction's p = 1.1 packings with
+// sbgen's stored forces were called "not jammed" so; bench/RESULTS.md).
+TEST(SecondOrder, GivenForcesWithoutAnySelfStressTestNothing) {
+    RigidityNetwork network = diagonalPair(1.5);
+    network.contacts.resize(1); // one contact: A has full column rank
+    const SecondOrderResult given = SecondOrderTest({}).compute(network, Eigen::VectorXd::Ones(1));
+    EXPECT_EQ(given.selfStresses, 0);
+    EXPECT_TRUE(given.forcesGiven);
+    EXPECT_EQ(given.verdict, SecondOrderVerdict::NoSelfStress);
+}
+
 RigidityNetwork networkOf(const Packing& packing) {
     return backboneNetwork(packing, ContactNetwork({}).compute(packing));
 }
