@@ -20,13 +20,9 @@ def command_line_option(name, value):
     option = name.replace("_", "-")
     if isinstance(value, (tuple, list)):
         value_name = _sbpack.analysis_options().get(option, {}).get("value", "")
-        if value_name == "LIST" and len(value) > 0:
-            pass
-        elif "," in value_name and len(value) == 2:
-            pass
-        else:
-            takes = ("a pair" if "," in value_name else "a non-empty list" if value_name == "LIST"
-                     else "one value")
+        pair, listed = "," in value_name, value_name == "LIST"
+        if not ((listed and len(value) > 0) or (pair and len(value) == 2)):
+            takes = "a pair" if pair else "a non-empty list" if listed else "one value"
             raise ValueError(f"{name}: a sequence of {len(value)} values; it takes {takes}")
         value = ",".join(str(v) for v in value)
     return ["--" + option, str(value)]

@@ -10,7 +10,7 @@ _sbpack.uniform_region_fractions); the independent ends' pair fractions are thei
 import numpy as np
 
 from . import _sbpack
-from .figures_results import bands, new_figure, note, side_rows, with_group
+from .figures_results import bands, draw_steps, new_figure, note, side_rows, with_group
 from .figures_series import curve, group_label, line_style, scalar
 
 REGIONS = ["axis", "edge", "diagonal"]
@@ -55,11 +55,8 @@ def draw_theta(ax, s):
     """The series' density of theta as steps, an ensemble's +- std as a band between steps, its
     mean theta marked at the top of the axes."""
     edges, density, std = curve(s, "contacts", "axis_angle_edges", "axis_angle_density")
+    draw_steps(ax, s, edges, density, std)
     style = line_style(s)
-    ax.stairs(density, edges, color=style["color"], ls=style["ls"], lw=1.4, gid=s.label)
-    if std is not None:
-        ax.stairs(density + std, edges, baseline=density - std, fill=True,
-                  color=style["color"], alpha=0.2, lw=0)
     mean = scalar(s, "contacts", "axis_angle_mean")[0]
     ax.plot([mean], [0.97], style["marker"], color=style["color"], ms=6,
             transform=ax.get_xaxis_transform(), clip_on=False)

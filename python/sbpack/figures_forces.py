@@ -11,8 +11,8 @@ import os
 
 import numpy as np
 
-from .figures_results import new_figure, with_group
-from .figures_series import curve, group_label, line_style, scalar
+from .figures_results import draw_steps, new_figure, with_group
+from .figures_series import curve, group_label, scalar
 
 FLOOR = 1e-4  # the density axis's bottom: a band's lower edge is clipped to it
 
@@ -45,13 +45,7 @@ def contact_forces(series):
     ax = axes[0][0]
     for s in series:
         edges, density, std = curve(s, "contacts", "force_edges", "force_density")
-        style = line_style(s)
-        ax.stairs(np.maximum(density, FLOOR), edges, color=style["color"], ls=style["ls"],
-                  lw=1.4, label=series_text(s), gid=s.label)
-        if std is not None:
-            ax.stairs(np.maximum(density + std, FLOOR), edges,
-                      baseline=np.maximum(density - std, FLOOR), fill=True,
-                      color=style["color"], alpha=0.2, lw=0)
+        draw_steps(ax, s, edges, density, std, label=series_text(s), floor=FLOOR)
     x = np.linspace(0.0, float(edges[-1]), 200)
     ax.plot(x, np.exp(-x), "k--", lw=1.0, label=r"$e^{-x}$")
     ax.set_yscale("log")

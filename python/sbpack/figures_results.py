@@ -43,6 +43,18 @@ def draw(ax, s, xyz, label, x_scale=1.0, y_scale=1.0, step=False, log_y=False):
                         step="post" if step else None)
 
 
+def draw_steps(ax, s, edges, density, std, label=None, floor=None):
+    """A density per bin as steps in the series' style (gid: its label), an ensemble's +- std as
+    a band between steps; with `floor` (a log axis), every step and band edge clipped to it."""
+    clip = (lambda y: np.maximum(y, floor)) if floor is not None else (lambda y: y)
+    style = line_style(s)
+    ax.stairs(clip(density), edges, color=style["color"], ls=style["ls"], lw=1.4, label=label,
+              gid=s.label)
+    if std is not None:
+        ax.stairs(clip(density + std), edges, baseline=clip(density - std), fill=True,
+                  color=style["color"], alpha=0.2, lw=0)
+
+
 def bands(series, what="bands: ensemble mean ± std"):
     """`what` where a series is an ensemble mean (two inputs or more), else ''."""
     return f"; {what}" if any(s.averaged for s in series) else ""
