@@ -11,11 +11,12 @@ _GENERATE = _sbpack.generate
 
 
 def __init__(self, positions, orientations, box_length, *, p, semi_axis, source="arrays"):
-    """From N x 3 positions and N x 4 unit quaternions (w, x, y, z), the shape's p and semi_axis
-    given by keyword (no default: a packing's grown size is its own, docs/python.md); checked as
-    the file readers check (ValueError with their message, naming `source`)."""
     _PACKING_INIT(self, positions, orientations, box_length, p=p, semi_axis=semi_axis,
                   source=source)
+
+
+# The extension's own description (python/src/packing.cpp), without pybind11's signature line.
+__init__.__doc__ = _PACKING_INIT.__doc__.split("\n\n", 1)[-1]
 
 
 def _named(function, qualname):
