@@ -154,21 +154,20 @@ std::uint64_t rowWord(int z0, int z1, grid::IndexRange inner, int shift, const S
     return rowBits(first, last, shift);
 }
 
-/// The 8 words of block (ox, oy, oz) from its candidates. Per row (x, y) the solid voxels of one
-/// particle form an interval (the body is convex): the inscribed sphere's part is solid without
-/// a test, and the exact test runs from each end of the circumscribed sphere's part inwards up to
-/// the first solid voxel.
-std::array<std::uint64_t, kBlock> voxelizeBlock(int ox, int oy, int oz,
-                                                std::span<const Candidate> candidates,
-                                                const std::vector<Eigen::Matrix3d>& toBody,
-                                                const ContainmentTest& inside,
-                                                const BlockGeometry& g) {
+/// Calls row(particle, x - ox, word) with the solid voxels of each candidate in each row (x, y)
+/// of block (ox, oy, oz) it reaches, as rowBits. Per row one particle's solid voxels form an
+/// interval (the body is convex): the inscribed sphere's part is solid without a test, and the
+/// exact test runs from each end of the circumscribed sphere's part inwards up to the first solid
+/// voxel.
+template <class Row>
+void forEachCandidateRow(int ox, int oy, int oz, std::span<const Candidate> candidates,
+                         const std::vector<Eigen::Matrix3d>& toBody, const ContainmentTest& inside,
+                         const BlockGeometry& g, const Row& row) {
     const int lastX = std::min(g.x1, ox + kBlock) - 1;
     const int firstX = std::max(g.x0, ox);
     const int lastY = std::min(g.m, oy + kBlock) - 1;
     const int lastZ = std::min(g.m, oz + kBlock) - 1;
     const double rc2 = g.rc * g.rc, ri2 = g.ri * g.ri;
-    std::array<std::uint64_t, kBlock> words{};
     for (const Candidate& candidate : candidates) {
         const Vector3d& c = candidate.centre;
         const Eigen::Matrix3d& rotation = toBody[candidate.particle];
@@ -188,10 +187,22 @@ std::array<std::uint64_t, kBlock> voxelizeBlock(int ox, int oy, int oz,
                 const grid::IndexRange inner =
                     rxy2 < ri2 ? voxelRange(c.z(), std::sqrt(ri2 - rxy2), g.a, z0, z1)
                                : grid::IndexRange{z1 + 1, z1};
-                words[x - ox] |= rowWord(z0, z1, inner, (y - oy) * kBlock - oz, solidAt);
+                row(candidate.particle, x - ox,
+                    rowWord(z0, z1, inner, (y - oy) * kBlock - oz, solidAt));
             }
         }
     }
+}
+
+/// The 8 words of block (ox, oy, oz) from its candidates.
+std::array<std::uint64_t, kBlock> voxelizeBlock(int ox, int oy, int oz,
+                                                std::span<const Candidate> candidates,
+                                                const std::vector<Eigen::Matrix3d>& toBody,
+                                                const ContainmentTest& inside,
+                                                const BlockGeometry& g) {
+    std::array<std::uint64_t, kBlock> words{};
+    forEachCandidateRow(ox, oy, oz, candidates, toBody, inside, g,
+                        [&](int, int x, std::uint64_t word) { words[x] |= word; });
     return words;
 }
 
@@ -503,33 +514,82 @@ openvdb::MaskGrid::Ptr assembleTree(BlockMasks& masks, const BlockGeometry& g,
 
 } // namespace
 
-Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress) const {
-    const Stopwatch clock;
-    const int m = parameters_.voxels;
-    checkResolution(packing, m);
-    const Superball shape = packing.shape();
-    const double boxLength = packing.boxLength;
-    const double a = boxLength / m;
-    const double rc = reach(shape);
-    const double ri = shape.inradius() * (1.0 - kSphereMargin);
+namespace {
+
+/// The blocks of the grid (or slab) of `parameters` over `packing`.
+BlockGeometry blockGeometry(const Packing& packing, const VoxelizationParameters& parameters) {
+    const int m = parameters.voxels;
     const int blocks = (m + kBlock - 1) / kBlock;
-    const int x0 = parameters_.slabBegin, x1 = parameters_.slabEnd;
+    const int x0 = parameters.slabBegin, x1 = parameters.slabEnd;
     const int firstBlockX = x0 / kBlock;
-    const BlockGeometry geometry{
-        m,      a,           rc,
-        ri,     x0,          x1,
-        blocks, firstBlockX, x1 > x0 ? (x1 - 1) / kBlock - firstBlockX + 1 : 0};
-    // Lab-to-body rotations: x_body = R^T (x - r).
+    const Superball shape = packing.shape();
+    return {m,
+            packing.boxLength / m,
+            Voxelizer::reach(shape),
+            shape.inradius() * (1.0 - kSphereMargin),
+            x0,
+            x1,
+            blocks,
+            firstBlockX,
+            x1 > x0 ? (x1 - 1) / kBlock - firstBlockX + 1 : 0};
+}
+
+/// Lab-to-body rotations: x_body = R^T (x - r).
+std::vector<Eigen::Matrix3d> bodyRotations(const Packing& packing) {
     std::vector<Eigen::Matrix3d> toBody(packing.size());
     for (std::size_t j = 0; j < packing.size(); ++j)
         toBody[j] = packing.orientations[j].toRotationMatrix().transpose();
-    BlockMasks masks = voxelizeBlocks(blockCandidates(packing, geometry), toBody,
-                                      ContainmentTest(shape), geometry, progress);
+    return toBody;
+}
+
+} // namespace
+
+Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress) const {
+    const Stopwatch clock;
+    checkResolution(packing, parameters_.voxels);
+    const BlockGeometry geometry = blockGeometry(packing, parameters_);
+    BlockMasks masks = voxelizeBlocks(blockCandidates(packing, geometry), bodyRotations(packing),
+                                      ContainmentTest(packing.shape()), geometry, progress);
     auto grid = std::make_unique<Voxelization::Grid>();
     std::int64_t solid = 0;
     grid->grid = assembleTree(masks, geometry, solid);
-    return Voxelization(std::move(grid), parameters_, boxLength, packing.p,
+    return Voxelization(std::move(grid), parameters_, packing.boxLength, packing.p,
                         packing.packingFraction(), solid, clock.seconds());
+}
+
+std::vector<std::uint32_t> Voxelizer::particleLabels(const Packing& packing,
+                                                     const Progress& progress) const {
+    const std::int64_t m = parameters_.voxels;
+    if (parameters_.slabBegin != 0 || parameters_.slabEnd != m)
+        throw std::invalid_argument("particle labels: of the whole grid only, not of a slab");
+    checkResolution(packing, parameters_.voxels);
+    const BlockGeometry g = blockGeometry(packing, parameters_);
+    const BlockCandidates in = blockCandidates(packing, g);
+    const std::vector<Eigen::Matrix3d> toBody = bodyRotations(packing);
+    const ContainmentTest inside(packing.shape());
+    std::vector<std::uint32_t> labels(static_cast<std::size_t>(m * m * m), 0);
+    parallelFor(
+        0, g.blockCount(), kBlocksPerTask,
+        [&](std::int64_t begin, std::int64_t end) {
+            progress.checkInterrupt();
+            for (std::int64_t b = begin; b < end; ++b) {
+                const auto [ox, oy, oz] = g.origin(b);
+                const std::span<const Candidate> mine(in.candidates.data() + in.start[b],
+                                                      in.candidates.data() + in.start[b + 1]);
+                // A block's voxels are its own: no two tasks write one label.
+                forEachCandidateRow(
+                    ox, oy, oz, mine, toBody, inside, g, [&](int particle, int x, std::uint64_t w) {
+                        for (; w != 0; w &= w - 1) {
+                            const int bit = std::countr_zero(w);
+                            const std::int64_t y = oy + bit / kBlock, z = oz + bit % kBlock;
+                            labels[((ox + x) * m + y) * m + z] =
+                                static_cast<std::uint32_t>(particle) + 1;
+                        }
+                    });
+            }
+        },
+        progress);
+    return labels;
 }
 
 Voxelization Voxelizer::fromRowBits(std::span<const std::uint32_t> rows, const Packing& packing,

@@ -15,6 +15,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace sbpack {
 
@@ -159,6 +160,14 @@ class Voxelizer {
     /// voxels inside the inscribed sphere are solid without a test, only the shell up to the
     /// circumscribed sphere needs Superball::contains. Fully solid blocks become tiles.
     Voxelization compute(const Packing& packing, const Progress& progress) const;
+
+    /// The particle whose body holds each voxel centre, the same test as compute(): index
+    /// (i * M + j) * M + k, value the particle's index + 1, 0 on void voxels (where two
+    /// overlapping particles hold a centre, one of them). The whole grid only (4 bytes per
+    /// voxel), for the set-Voronoi cells (voronoi/set_voronoi.hpp). Throws as compute(), and
+    /// std::invalid_argument for a slab.
+    std::vector<std::uint32_t> particleLabels(const Packing& packing,
+                                              const Progress& progress) const;
 
     const VoxelizationParameters& parameters() const { return parameters_; }
 

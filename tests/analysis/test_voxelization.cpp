@@ -19,33 +19,39 @@ namespace fs = std::filesystem;
 
 const Progress quiet;
 
-/// Solid by the definition, independently of the voxelizer: the minimum image of the voxel
-/// centre relative to some particle is inside it (rc < L/2, so no other image can contain it).
-bool solidByDefinition(const Packing& packing, int m, int i, int j, int k) {
+/// The particle holding a voxel centre by the definition, independently of the voxelizer: the
+/// minimum image of the centre relative to it is inside it (rc < L/2, so no other image can
+/// contain it); -1 for none.
+int holderByDefinition(const Packing& packing, int m, int i, int j, int k) {
     const double a = packing.boxLength / m;
     const Vector3d centre((i + 0.5) * a, (j + 0.5) * a, (k + 0.5) * a);
     const Superball shape = packing.shape();
     for (std::size_t n = 0; n < packing.size(); ++n) {
         const Vector3d d = minimumImage(centre - packing.positions[n], packing.boxLength);
-        if (shape.contains(packing.orientations[n].toRotationMatrix().transpose() * d)) return true;
+        if (shape.contains(packing.orientations[n].toRotationMatrix().transpose() * d))
+            return static_cast<int>(n);
     }
-    return false;
+    return -1;
 }
 
 void expectMatchesDefinition(const Packing& packing, int m) {
     const Voxelization voxels = Voxelizer({m}).compute(packing, quiet);
     std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m, 7);
     voxels.copySolidMask(mask);
-    std::int64_t solid = 0, wrong = 0;
+    const std::vector<std::uint32_t> labels = Voxelizer({m}).particleLabels(packing, quiet);
+    std::int64_t solid = 0, wrong = 0, wrongLabels = 0;
     for (int i = 0; i < m; ++i)
         for (int j = 0; j < m; ++j)
             for (int k = 0; k < m; ++k) {
-                const bool expected = solidByDefinition(packing, m, i, j, k);
-                const std::uint8_t got = mask[(static_cast<std::size_t>(i) * m + j) * m + k];
+                const int holder = holderByDefinition(packing, m, i, j, k);
+                const bool expected = holder >= 0;
+                const std::size_t index = (static_cast<std::size_t>(i) * m + j) * m + k;
                 solid += expected;
-                wrong += got != (expected ? 1 : 0) || voxels.solid(i, j, k) != expected;
+                wrong += mask[index] != (expected ? 1 : 0) || voxels.solid(i, j, k) != expected;
+                wrongLabels += labels[index] != static_cast<std::uint32_t>(holder + 1);
             }
     EXPECT_EQ(wrong, 0) << "p = " << packing.p << ", M = " << m;
+    EXPECT_EQ(wrongLabels, 0) << "particle labels, p = " << packing.p << ", M = " << m;
     EXPECT_EQ(voxels.solidCount(), solid);
     EXPECT_DOUBLE_EQ(voxels.phiVoxel(), static_cast<double>(solid) / (double(m) * m * m));
 }
