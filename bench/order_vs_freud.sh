@@ -8,25 +8,17 @@
 # usage: bash bench/order_vs_freud.sh [SBANALYZE] [PACKING]
 #   SBANALYZE  default build/analysis/sbanalyze; PACKING  default data/mrj-spheres-5000.h5
 # environment:
-#   SBPACK_FREUD_VENV  virtual environment with freud, h5py and numpy; created with the python3
-#                      on PATH and pip when missing
-#                      (default ${XDG_CACHE_HOME:-$HOME/.cache}/sbpack/freud-venv)
+#   SBPACK_FREUD_VENV  virtual environment with freud, h5py and numpy (bench/freud_venv.sh)
 #   REPEATS            timed runs of each side, median reported (default 5)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 sbanalyze=${1:-$root/build/analysis/sbanalyze}
 packing=${2:-$root/data/mrj-spheres-5000.h5}
-venv=${SBPACK_FREUD_VENV:-${XDG_CACHE_HOME:-$HOME/.cache}/sbpack/freud-venv}
-
-if ! "$venv/bin/python" -c 'import freud, h5py, numpy' 2> /dev/null; then
-    echo "creating $venv: pip install freud-analysis h5py numpy" >&2
-    python3 -m venv "$venv"
-    "$venv/bin/python" -m pip install --quiet 'freud-analysis>=3,<4' h5py numpy
-fi
+python=$(bash "$root/bench/freud_venv.sh")
 
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-"$venv/bin/python" "$root/bench/order_vs_freud.py" "$sbanalyze" "$packing" \
+"$python" "$root/bench/order_vs_freud.py" "$sbanalyze" "$packing" \
     --repeats "${REPEATS:-5}" --work "$work"
-"$venv/bin/python" "$root/bench/solid_like_vs_freud.py" "$sbanalyze" "$packing" --lattices \
+"$python" "$root/bench/solid_like_vs_freud.py" "$sbanalyze" "$packing" --lattices \
     --work "$work"

@@ -21,7 +21,7 @@ struct ContactFigures {
     ContactResolution resolution;
     ContactTypeDistribution types{}; ///< of the contacts among the non-rattlers
     /// P(f / <f>) of sbgen's stored contact forces, where the packing has them.
-    std::optional<ForceDistribution> forces;
+    std::optional<ForceDistribution> forces{};
     double seconds = 0.0;
 
     /// Z and phi_R are undetermined when the tolerance cuts through the load-bearing gaps

@@ -9,6 +9,7 @@
 #include "spectral/spectral_density_fields.hpp"
 #include "structure/structure_factor_fields.hpp"
 #include "transport/transport_fields.hpp"
+#include "voronoi/voronoi_fields.hpp"
 #include "voxels/voxelization_fields.hpp"
 
 #include <algorithm>
@@ -24,6 +25,7 @@ constexpr std::array<Analysis, 1> kSpectralNeeds{Analysis::Voxels};
 constexpr std::array<Analysis, 1> kTransportNeeds{Analysis::PoreSizes};
 constexpr std::array<Analysis, 1> kHyperuniformityNeeds{Analysis::SpectralDensity};
 constexpr std::array<Analysis, 1> kOrderNeeds{Analysis::Contacts};
+constexpr std::array<Analysis, 1> kVoronoiNeeds{Analysis::Contacts};
 
 constexpr std::array<const schema::Group*, 1> kContactsGroups{&kContactsGroup};
 constexpr std::array<const schema::Group*, 1> kStructureFactorGroups{&kStructureFactorGroup};
@@ -32,6 +34,7 @@ constexpr std::array<const schema::Group*, 1> kVoxelizationGroups{&kVoxelization
 constexpr std::array<const schema::Group*, 1> kPoreSizeGroups{&kPoreSizeGroup};
 constexpr std::array<const schema::Group*, 1> kTransportGroups{&kTransportGroup};
 constexpr std::array<const schema::Group*, 1> kOrderGroups{&kOrderGroup};
+constexpr std::array<const schema::Group*, 1> kVoronoiGroups{&kVoronoiGroup};
 constexpr std::array<const schema::Group*, 3> kHyperuniformityGroups{
     &kSpreadabilityGroup, &kHyperuniformityGroup, &kSpreadabilityDebyeGroup};
 constexpr std::array<const schema::Group*, 4> kJammingGroups{
@@ -54,7 +57,7 @@ constexpr std::array<Options, 7> kJammingOptions{
 
 // One row per analysis (docs/architecture.md, "Add an analysis"): its results groups are
 // declared beside its result, its stage in pipeline/stages/.
-constexpr std::array<AnalysisInfo, 9> kRegistry{{
+constexpr std::array<AnalysisInfo, 10> kRegistry{{
     {.analysis = Analysis::Contacts,
      .name = "contacts",
      .groups = kContactsGroups,
@@ -142,6 +145,17 @@ constexpr std::array<AnalysisInfo, 9> kRegistry{{
      .options = kJammingOptions,
      .pythonClass = "Jamming",
      .inAll = false},
+    {.analysis = Analysis::Voronoi,
+     .name = "voronoi",
+     .groups = kVoronoiGroups,
+     .description = "set-Voronoi cells on the --voxels grid: local packing fractions v1 / "
+                    "v_cell, their moments (rattlers apart) and density",
+     .grid = VoxelGrid::Spectral,
+     .needs = kVoronoiNeeds,
+     .run = stages::runVoronoi,
+     .memory = stages::voronoiMemory,
+     .options = kVoxelOptions,
+     .pythonClass = "SetVoronoi"},
 }};
 
 /// The results groups of the registry's rows, in order.

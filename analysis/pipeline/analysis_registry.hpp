@@ -31,6 +31,7 @@ enum class Analysis {
     Hyperuniformity, ///< excess spreadability, alpha, the small-Q fit and H (hyperuniformity/)
     Order,           ///< g2, Q4 and Q6, T, the cubatic P4 (common/order)
     Jamming,         ///< the jamming categories at first order (common/jamming)
+    Voronoi,         ///< set-Voronoi cells and local packing fractions (voronoi/)
 };
 
 /// Which voxel grid an analysis works on: none, the spectral grid (--voxels, default 300 as the

@@ -160,7 +160,7 @@ constexpr std::array kRunRows{
 // The grids, S(Q) and the pores.
 constexpr std::array kGridRows{
     OptionRow{"voxels", "M",
-              "spectral grid, M^3 voxels of the box, for chi and voxels (default {})",
+              "spectral grid, M^3 voxels of the box, for chi, voxels and voronoi (default {})",
               [](Settings& s, Text o, Text v) { s.voxelization.voxels = parseGrid(o, v); },
               [](const Settings& d) { return std::to_string(d.voxelization.voxels); }},
     OptionRow{"pore-voxels", "M",

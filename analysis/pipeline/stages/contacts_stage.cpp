@@ -26,8 +26,10 @@ bool runContacts(FileContext& context, schema::Record& record) {
                                                    describe(c.network.meanContactNumber),
                                                    describe(c.network.rattlerFraction)));
     contacts_fields::kTable.fill(record, c, context.scales());
-    if (context.settings().runs(Analysis::Order))
-        context.keep(Analysis::Contacts, ContactPairs(std::move(c.network.contacts)));
+    if (context.settings().runs(Analysis::Order) || context.settings().runs(Analysis::Voronoi))
+        context.keep(Analysis::Contacts,
+                     KeptContacts{std::move(c.network.contacts),
+                                  c.undetermined() ? std::vector<bool>() : c.network.rattler});
     return true;
 }
 

@@ -27,7 +27,7 @@ bool runOrder(FileContext& context, schema::Record& record) {
     const Stopwatch clock;
     const Packing& packing = context.packing();
     OrderFigures figures;
-    figures.metrics = measureOrder(packing, &context.kept<ContactPairs>(Analysis::Contacts));
+    figures.metrics = measureOrder(packing, &context.kept<KeptContacts>(Analysis::Contacts).pairs);
     figures.verdict = orderVerdict(figures.metrics);
     figures.majorAxis = 2.0 * packing.semiAxis;
     figures.seconds = clock.seconds();

@@ -18,8 +18,12 @@
 
 namespace sbpack::stages {
 
-/// What contacts keeps for order: the contact network's pairs (i, j), i < j.
-using ContactPairs = std::vector<std::pair<int, int>>;
+/// What contacts keeps for order and voronoi: the contact network's pairs (i, j), i < j, and its
+/// rattlers per particle (empty where the contacts are not resolved).
+struct KeptContacts {
+    std::vector<std::pair<int, int>> pairs;
+    std::vector<bool> rattler;
+};
 bool runContacts(FileContext& context, schema::Record& record);
 
 bool runOrder(FileContext& context, schema::Record& record);
@@ -42,6 +46,9 @@ bool runPoreSizes(FileContext& context, schema::Record& record);
 StageMemory poreSizesMemory(const Packing& packing, const RunSettings& settings);
 
 bool runTransport(FileContext& context, schema::Record& record);
+
+bool runVoronoi(FileContext& context, schema::Record& record);
+StageMemory voronoiMemory(const Packing& packing, const RunSettings& settings);
 
 /// What chi keeps for hyper: the voxel spectrum at every wave vector and the peak of chi_V.
 struct KeptSpectrum {
