@@ -144,6 +144,12 @@ void CommandLine::finishAnalysis() {
         throw std::invalid_argument(
             fmt::format("option --pore-voxels: {} is above {}, the largest grid of --pores refined",
                         m, maxFeatureTransformVoxels));
+    if (settings_.runs(Analysis::Voronoi) &&
+        settings_.voxelization.voxels > maxFeatureTransformVoxels)
+        throw std::invalid_argument(fmt::format(
+            "option --voxels: {} is above {}, the largest grid of voronoi (leave it out of "
+            "--compute, or use a smaller --voxels)",
+            settings_.voxelization.voxels, maxFeatureTransformVoxels));
     if (method != PoreMethod::Exact && settings_.pores.points > m * m * m)
         throw std::invalid_argument(fmt::format(
             "option --pore-points: K = {} random void voxels exceed the {}^3 = {} voxels of "

@@ -573,7 +573,8 @@ std::vector<std::uint32_t> Voxelizer::particleLabels(const Packing& packing,
         [&](std::int64_t begin, std::int64_t end) {
             progress.checkInterrupt();
             for (std::int64_t b = begin; b < end; ++b) {
-                const auto [ox, oy, oz] = g.origin(b);
+                const std::array<int, 3> origin = g.origin(b); // captured: no structured binding
+                const int ox = origin[0], oy = origin[1], oz = origin[2];
                 const std::span<const Candidate> mine(in.candidates.data() + in.start[b],
                                                       in.candidates.data() + in.start[b + 1]);
                 // A block's voxels are its own: no two tasks write one label.

@@ -434,7 +434,10 @@ TEST(Pipeline, BadInputLeavesNoOutput) {
         runAnalyses(huge, log, out);
         FAIL() << "accepted a grid larger than memory";
     } catch (const std::invalid_argument& e) {
-        EXPECT_NE(std::string(e.what()).find("FFT grid 50000^3"), std::string::npos) << e.what();
+        // The largest stage of all at M = 50000: voronoi's labels and features.
+        EXPECT_NE(std::string(e.what()).find("set-Voronoi labels and features 50000^3"),
+                  std::string::npos)
+            << e.what();
     }
     RunSettings noThreads = settingsFor({dir / "good.h5"}, dir / "r.h5");
     noThreads.threads = 0;
