@@ -9,6 +9,7 @@
 #include "spectral/spectral_density_fields.hpp"
 #include "structure/structure_factor_fields.hpp"
 #include "transport/transport_fields.hpp"
+#include "variance/variance_fields.hpp"
 #include "voronoi/voronoi_fields.hpp"
 #include "voxels/voxelization_fields.hpp"
 
@@ -26,6 +27,7 @@ constexpr std::array<Analysis, 1> kTransportNeeds{Analysis::PoreSizes};
 constexpr std::array<Analysis, 1> kHyperuniformityNeeds{Analysis::SpectralDensity};
 constexpr std::array<Analysis, 1> kOrderNeeds{Analysis::Contacts};
 constexpr std::array<Analysis, 1> kVoronoiNeeds{Analysis::Contacts};
+constexpr std::array<Analysis, 2> kVarianceNeeds{Analysis::Voxels, Analysis::SpectralDensity};
 
 constexpr std::array<const schema::Group*, 1> kContactsGroups{&kContactsGroup};
 constexpr std::array<const schema::Group*, 1> kStructureFactorGroups{&kStructureFactorGroup};
@@ -35,6 +37,7 @@ constexpr std::array<const schema::Group*, 1> kPoreSizeGroups{&kPoreSizeGroup};
 constexpr std::array<const schema::Group*, 1> kTransportGroups{&kTransportGroup};
 constexpr std::array<const schema::Group*, 1> kOrderGroups{&kOrderGroup};
 constexpr std::array<const schema::Group*, 1> kVoronoiGroups{&kVoronoiGroup};
+constexpr std::array<const schema::Group*, 1> kVarianceGroups{&kVarianceGroup};
 constexpr std::array<const schema::Group*, 3> kHyperuniformityGroups{
     &kSpreadabilityGroup, &kHyperuniformityGroup, &kSpreadabilityDebyeGroup};
 constexpr std::array<const schema::Group*, 4> kJammingGroups{
@@ -47,6 +50,7 @@ constexpr std::array<Options, 4> kSpectralOptions{"qmax", "fft-plan", "fft-plann
                                                   "fft-wisdom"};
 constexpr std::array<Options, 1> kVoxelOptions{"voxels"};
 constexpr std::array<Options, 4> kPoreOptions{"pore-voxels", "pores", "pore-points", "pore-seed"};
+constexpr std::array<Options, 2> kVarianceOptions{"variance-windows", "chi-exact-qmax"};
 constexpr std::array<Options, 5> kHyperuniformityOptions{
     "chi-exact-qmax", "fit-qmax", "alpha-window", "bootstrap", "spread-times"};
 // The network's rattlers by --rattler-threshold, and its tolerance --tolerance where the file
@@ -57,7 +61,7 @@ constexpr std::array<Options, 7> kJammingOptions{
 
 // One row per analysis (docs/architecture.md, "Add an analysis"): its results groups are
 // declared beside its result, its stage in pipeline/stages/.
-constexpr std::array<AnalysisInfo, 10> kRegistry{{
+constexpr std::array<AnalysisInfo, 11> kRegistry{{
     {.analysis = Analysis::Contacts,
      .name = "contacts",
      .groups = kContactsGroups,
@@ -156,6 +160,17 @@ constexpr std::array<AnalysisInfo, 10> kRegistry{{
      .memory = stages::voronoiMemory,
      .options = kVoxelOptions,
      .pythonClass = "SetVoronoi"},
+    {.analysis = Analysis::Variance,
+     .name = "variance",
+     .groups = kVarianceGroups,
+     .description = "local volume-fraction variance sigma_V^2(R) of spherical windows, by random "
+                    "windows on the --voxels grid and from chi_V; alpha from its tail",
+     .grid = VoxelGrid::Spectral,
+     .needs = kVarianceNeeds,
+     .run = stages::runVariance,
+     .memory = stages::varianceMemory,
+     .options = kVarianceOptions,
+     .pythonClass = "VolumeFractionVariance"},
 }};
 
 /// The results groups of the registry's rows, in order.

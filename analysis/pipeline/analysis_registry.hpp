@@ -32,6 +32,7 @@ enum class Analysis {
     Order,           ///< g2, Q4 and Q6, T, the cubatic P4 (common/order)
     Jamming,         ///< the jamming categories at first order (common/jamming)
     Voronoi,         ///< set-Voronoi cells and local packing fractions (voronoi/)
+    Variance,        ///< local volume-fraction variance sigma_V^2(R) (variance/)
 };
 
 /// Which voxel grid an analysis works on: none, the spectral grid (--voxels, default 300 as the

@@ -226,6 +226,19 @@ constexpr std::array kHyperuniformityRows{
         "0: none, about 0.3 s less at N = 5000)",
         [](Settings& s, Text o, Text v) { s.hyperuniformity.replicas = parseInt(o, v, 0, 100000); },
         [](const Settings& d) { return std::to_string(d.hyperuniformity.replicas); }},
+    OptionRow{
+        "variance-windows", "K",
+        "variance: random windows per radius on the voxel grid (default {}; 0: the\n"
+        "spectral route alone), their error bar by 20 batch means",
+        [](Settings& s, Text o, Text v) {
+            s.variance.windows = parseInt(o, v, 0, 10000000);
+            if (s.variance.windows > 0 && s.variance.windows < s.variance.batches)
+                throw std::invalid_argument(fmt::format(
+                    "option --variance-windows: {} is below {}, the batches of its error bar (0: "
+                    "the spectral route alone)",
+                    s.variance.windows, s.variance.batches));
+        },
+        [](const Settings& d) { return std::to_string(d.variance.windows); }},
     OptionRow{"spread-times", "T1,T2",
               "hyper: E(t) at t D / w^2 from T1 to T2, 20 a decade (default {})",
               [](Settings& s, Text o, Text v) {

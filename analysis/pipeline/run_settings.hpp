@@ -11,6 +11,7 @@
 #include "pores/pore_size_settings.hpp"
 #include "spectral/spectral_density.hpp"
 #include "structure/structure_factor.hpp"
+#include "variance/volume_fraction_variance.hpp"
 #include "voxels/voxelization.hpp"
 
 #include <filesystem>
@@ -50,8 +51,13 @@ struct RunSettings {
     PoreSizeSettings pores;                    ///< pores (and transport, which reads them)
     HyperuniformityParameters hyperuniformity; ///< hyper
     JammingSettings jamming;                   ///< jamming, and info --jamming
+    VarianceParameters variance;               ///< variance
 
     bool runs(Analysis analysis) const { return analyses.count(analysis) != 0; }
+    /// Whether chi keeps its voxel spectrum (hyper and variance read it).
+    bool keepsVoxelSpectrum() const {
+        return runs(Analysis::Hyperuniformity) || runs(Analysis::Variance);
+    }
     /// chi's parameters: S(Q)'s Q range (--qmax serves both) and FFTW's planning.
     SpectralDensityParameters spectralDensity() const { return {structureFactor.maxQw, fft}; }
     /// The pores' method: --pores; else voxel under --distribute grids, the only one the
@@ -72,6 +78,7 @@ struct RunSettings {
     /// Why this run's grids must all stay on the CPU ("" when the GPU may compute those it can;
     /// refined pore sizes then run on the CPU beside them, docs/gpu.md).
     std::string cpuOnlyReason() const {
+        if (runs(Analysis::Variance)) return "variance samples windows on the host's voxel grid";
         return distribute == Distribution::Grids ? "--distribute grids shares CPU slabs" : "";
     }
     /// Why --device cuda cannot compute every grid of the run ("" when it can).

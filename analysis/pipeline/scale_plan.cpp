@@ -68,6 +68,8 @@ void checkDistribution(const RunSettings& settings, const Communicator& comm) {
     const char* why = nullptr;
     if (settings.runs(Analysis::Hyperuniformity))
         why = "hyper (it needs every wave vector on one rank; leave it out of --compute)";
+    else if (settings.runs(Analysis::Variance))
+        why = "variance (its windows need the whole grid on one rank; leave it out of --compute)";
     else if (settings.runs(Analysis::Voronoi))
         why = "voronoi (its cells need the whole grid on one rank; leave it out of --compute)";
     else if (!settings.vdbDirectory.empty())

@@ -24,9 +24,9 @@ namespace sbpack {
 struct VarianceParameters {
     /// Window radii R / w: minRadiusW 10^(k / radiiPerDecade), k = 0, 1, ..., up to L / (2 w).
     double minRadiusW = 0.5;
-    int radiiPerDecade = 12;
+    int radiiPerDecade = 24;
     /// Random windows per radius of the sampled route (--variance-windows); 0: spectral only.
-    int windows = 2000;
+    int windows = 1000;
     /// Batches of the sampled route's error bar (batch means of the squared deviations).
     int batches = 20;
     std::uint64_t seed = 1;

@@ -69,7 +69,7 @@ bool runCudaVoxels(FileContext& context, schema::Record& record) {
 SpectralDensityResult cudaSpectralDensity(FileContext& context,
                                           const SpectralDensityParameters& parameters) {
     const CudaGrid& grid = context.kept<CudaGrid>(Analysis::Voxels);
-    const bool hyper = context.settings().runs(Analysis::Hyperuniformity);
+    const bool hyper = context.settings().keepsVoxelSpectrum();
     const VoxelSpectrumOptions spectrum; // as the CPU stage's voxelSpectrum
     CudaGrid::Spectra s =
         grid.spectralDensity(context.packing(), parameters, context.settings().fftSingle,

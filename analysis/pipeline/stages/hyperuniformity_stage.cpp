@@ -6,7 +6,6 @@
 #include "pipeline/ensemble.hpp"
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
-#include "spectral/exact_spectral_density.hpp"
 
 #include <fmt/format.h>
 
@@ -15,20 +14,6 @@
 namespace sbpack::stages {
 
 namespace {
-
-/// The voxel spectrum with the exact values at small Q (none when --chi-exact-qmax is 0).
-DiscreteSpectrum spectrumOf(FileContext& context, const DiscreteSpectrum& voxel) {
-    const double qmax = context.settings().hyperuniformity.chiExactQw;
-    if (qmax == 0.0) return voxel;
-    ExactSpectralDensityParameters parameters;
-    parameters.maxQw = qmax;
-    const ExactSpectralDensityResult exact =
-        ExactSpectralDensity(parameters).compute(context.packing(), context.progress());
-    context.progress().stageDone(
-        "exact chi", exact.runtimeSeconds,
-        fmt::format("{} wave vectors up to Q w = {}", 2 * exact.modes.size(), describe(qmax, 3)));
-    return withExactSmallQ(voxel, exact);
-}
 
 /// A results group of hyper, filled from the recorded figures.
 template <class Table>

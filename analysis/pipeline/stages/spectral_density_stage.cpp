@@ -63,7 +63,7 @@ SpectralDensityResult wholeGrid(FileContext& context, const SpectralDensityParam
         SpectralDensity(parameters)
             .compute(context.packing(), voxels, transform, context.progress());
     s.planSource = transform.planSource();
-    if (context.settings().runs(Analysis::Hyperuniformity)) {
+    if (context.settings().keepsVoxelSpectrum()) {
         DiscreteSpectrum spectrum =
             voxelSpectrum(transform, voxels, context.meanWidth(), {}, context.progress());
         const SpectralPeak peak = principalPeak(spectrum);

@@ -1,6 +1,8 @@
 // What several stages share.
+#include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
 #include "schema/record.hpp"
+#include "spectral/exact_spectral_density.hpp"
 
 #include "packing/packing.hpp"
 
@@ -10,6 +12,19 @@
 #include <numbers>
 
 namespace sbpack::stages {
+
+DiscreteSpectrum spectrumOf(FileContext& context, const DiscreteSpectrum& voxel) {
+    const double qmax = context.settings().hyperuniformity.chiExactQw;
+    if (qmax == 0.0) return voxel;
+    ExactSpectralDensityParameters parameters;
+    parameters.maxQw = qmax;
+    const ExactSpectralDensityResult exact =
+        ExactSpectralDensity(parameters).compute(context.packing(), context.progress());
+    context.progress().stageDone(
+        "exact chi", exact.runtimeSeconds,
+        fmt::format("{} wave vectors up to Q w = {}", 2 * exact.modes.size(), describe(qmax, 3)));
+    return withExactSmallQ(voxel, exact);
+}
 
 std::string describe(double value, int digits) {
     return fmt::format("{:.{}g}", value, digits);

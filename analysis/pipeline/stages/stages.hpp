@@ -56,6 +56,12 @@ struct KeptSpectrum {
     SpectralPeak peak;
 };
 bool runHyperuniformity(FileContext& context, schema::Record& record);
+/// The voxel spectrum with chi_V exact at Q w <= --chi-exact-qmax (none when it is 0), as hyper
+/// and variance read it.
+DiscreteSpectrum spectrumOf(FileContext& context, const DiscreteSpectrum& voxel);
+
+bool runVariance(FileContext& context, schema::Record& record);
+StageMemory varianceMemory(const Packing& packing, const RunSettings& settings);
 /// An ensemble's alpha_pooled from its mean E(t) over the mean window, and the fit of every
 /// member's wave vectors at that alpha (a0_pooled, a1_pooled, H_pooled).
 void poolHyperuniformity(EnsembleResults& ensemble, std::span<const FileResults> files);
