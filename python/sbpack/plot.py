@@ -31,6 +31,10 @@ splits them, p <= 1 | p >= 1.
   mean_width         w / A against p over [0.5, 1000]                     (Fig. 3)
   form_factor        the form factor of one superball at each p, linear and log-log (Figs. S1, S2)
   contact_forces     with sbgen's stored contact forces: P(f / <f>) per (p, N) beside e^-x
+  local_phi          with --compute voronoi: the density of the set-Voronoi local packing
+                     fractions per (p, N) (docs/local-structure.md; not in the paper)
+  volume_fraction_variance  with --compute variance: sigma_V^2 (R / w)^3 against R / w, the
+                     spectral route a line, the sampled windows points with error bars
   unjamming_motion   with --compute jamming: the collective test's opening or flex on a section
                      of its packing, per p (slice grid: --slice-voxels, default 200)
   packing_slice      a section of a packing per p, the void coloured by pore size  (Fig. 2's)
@@ -51,6 +55,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from . import figures_contacts as contact_figures  # noqa: E402
 from . import figures_forces as force_figures  # noqa: E402
+from . import figures_local as local_figures  # noqa: E402
 from . import figures_order as order_figures  # noqa: E402
 from . import figures_results as results_figures  # noqa: E402
 from . import figures_shape as shape_figures  # noqa: E402
@@ -76,6 +81,8 @@ FIGURES = {
     "contact_types": contact_figures.contact_types,
     "contact_types_versus_p": contact_figures.contact_types_versus_p,
     "contact_forces": force_figures.contact_forces,
+    "local_phi": local_figures.local_phi,
+    "volume_fraction_variance": local_figures.volume_fraction_variance,
     "versus_p": versus.versus_p,
     "phi_vs_width": versus.phi_vs_width,
     "mean_width": shape_figures.mean_width,

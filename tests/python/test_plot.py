@@ -26,7 +26,8 @@ matplotlib.rcParams["figure.max_open_warning"] = 0  # the module's fixtures hold
 CHEAP = dict(slice_voxels=64, form_factor_voxels=64, threads=2)  # the engine's figures, small
 
 NAMES = ["structure_factor", "spectral_density", "small_q", "major_axis", "spreadability",
-                "pore_size", "order", "contact_types", "contact_types_versus_p", "versus_p", "phi_vs_width", "mean_width",
+                "pore_size", "order", "contact_types", "contact_types_versus_p", "local_phi",
+                "volume_fraction_variance", "versus_p", "phi_vs_width", "mean_width",
                 "form_factor", "packing_slice"]
 
 
@@ -623,6 +624,24 @@ def test_contact_forces_are_the_results(sbgen, sbanalyze, tmp_path):
     legend = [t.get_text() for t in ax.get_legend().get_texts()]
     assert any(f"{ensemble['force_second_moment']:.3f}" in t for t in legend)
     assert any("e^{-x}" in t for t in legend)
+
+
+def test_local_structure_figures_are_the_results(results, figures):
+    """Issue 69: the local-phi density is the results' phi_density per input, and the variance
+    figure's line and points are sigma2_spectral and sigma2_sampled times (R / w)^3."""
+    r = sbpack.read_results(results)
+    for f in r["files"]:
+        v, s = f["voronoi"], f["variance"]
+        steps = [p for p in figures["local_phi"].axes[0].patches if p.get_gid() is not None
+                 and p.get_gid().startswith(f"p = {f['p']:g}, N")]
+        assert len(steps) == 1
+        assert np.array_equal(steps[0].get_data()[0], v["phi_density"])
+        lines = [line for line in figures["volume_fraction_variance"].axes[0].get_lines()
+                 if line.get_label().startswith(f"p = {f['p']:g}, N")]
+        assert len(lines) == 1
+        radius = s["radius_w"]
+        assert np.allclose(lines[0].get_xdata(), radius, rtol=0, atol=0)
+        assert np.allclose(lines[0].get_ydata(), s["sigma2_spectral"] * radius**3, rtol=1e-15)
 
 
 def test_unjamming_motion_is_the_results(sbanalyze, tmp_path):
