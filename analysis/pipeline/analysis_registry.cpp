@@ -169,6 +169,7 @@ constexpr std::array<AnalysisInfo, 11> kRegistry{{
      .needs = kVarianceNeeds,
      .run = stages::runVariance,
      .memory = stages::varianceMemory,
+     .finishEnsemble = stages::poolVariance,
      .options = kVarianceOptions,
      .pythonClass = "VolumeFractionVariance"},
 }};

@@ -36,7 +36,7 @@ inline Optional routeDeviation(const R& r, const Scales&) {
     return Value(worst);
 }
 
-inline constexpr schema::FieldTable kTable{std::array<schema::Column<R>, 16>{{
+inline constexpr schema::FieldTable kTable{std::array<schema::Column<R>, 19>{{
     {{"alpha", A, F, "1",
       "alpha from the tail sigma_V^2 = A R^-(3 + alpha) + B R^-4 of the spectral route over "
       "fit_min_w <= R / w <= fit_max_w; absent with fewer than 4 radii there",
@@ -48,6 +48,15 @@ inline constexpr schema::FieldTable kTable{std::array<schema::Column<R>, 16>{{
       "1 if the fit sits at the top of its range (alpha >= 1: the windows' surface term leads)", No,
       true},
      schema::inside<&R::exponent, &E::saturated>},
+    {{"alpha_pooled", A, F, "1",
+      "ensembles only: alpha of the tail fit to the members' mean sigma2_spectral over the "
+      "radii they share (R / w from 2 to the smallest L / 4 w)",
+      Pooled, true},
+     schema::ensembleOnly<R>},
+    {{"alpha_pooled_error", A, F, "1", "ensembles only: its alpha_error", Pooled, true},
+     schema::ensembleOnly<R>},
+    {{"alpha_pooled_saturated", A, I, "1", "ensembles only: its alpha_saturated", Pooled, true},
+     schema::ensembleOnly<R>},
     {{"fit_min_w", A, F, "1", "smallest R / w of the tail fit", No, true},
      perWidthInside<&E::minRadius>},
     {{"fit_max_w", A, F, "1", "largest R / w of the tail fit (<= L / 4)", No, true},

@@ -159,7 +159,7 @@ void sampleWindows(const Voxelization& voxels, const VarianceParameters& p,
 /// The residual sum of the tail model sigma^2 = A R^-(3 + alpha) + B R^-4 (the volume term of
 /// an exponent-alpha medium and the windows' surface term) at one alpha, relative to sigma^2,
 /// with A and B by linear least squares; +inf where the two terms cannot be told apart.
-double tailResiduals(const std::vector<double>& r, const std::vector<double>& y, std::size_t first,
+double tailResiduals(std::span<const double> r, std::span<const double> y, std::size_t first,
                      std::size_t last, double alpha) {
     double s11 = 0.0, s12 = 0.0, s22 = 0.0, t1 = 0.0, t2 = 0.0;
     for (std::size_t i = first; i < last; ++i) {
@@ -178,24 +178,27 @@ double tailResiduals(const std::vector<double>& r, const std::vector<double>& y,
     return sum;
 }
 
-/// The tail fit over fitMinRadiusW w <= R <= L / 4: alpha on a grid of kAlphaStep over
-/// [kAlphaLow, kAlphaHigh] minimising tailResiduals, its error the half width of the profile
-/// interval where the residuals exceed the least by at most their variance per degree of
-/// freedom (s^2 = RSS / (n - 3)); none below four radii.
-std::optional<VarianceExponent> fitTail(const VarianceResult& r, const DiscreteSpectrum& s,
-                                        const VarianceParameters& p) {
+} // namespace
+
+std::optional<VarianceExponent> fitVarianceTail(std::span<const double> radius,
+                                                std::span<const double> sigma2, double minRadius,
+                                                double maxRadius) {
+    // alpha on a grid of kAlphaStep over [kAlphaLow, kAlphaHigh] minimising tailResiduals; its
+    // error the half width of the profile interval where the residuals exceed the least by at
+    // most their variance per degree of freedom (s^2 = RSS / (n - 3)).
     std::size_t first = 0, last = 0;
-    for (std::size_t i = 0; i < r.radius.size(); ++i) {
-        if (r.radius[i] < p.fitMinRadiusW * s.meanWidth) first = i + 1;
-        if (r.radius[i] <= 0.25 * s.boxLength) last = i + 1;
+    for (std::size_t i = 0; i < radius.size(); ++i) {
+        if (radius[i] < minRadius) first = i + 1;
+        if (radius[i] <= maxRadius) last = i + 1;
     }
     if (last < first + 4) return std::nullopt;
     std::vector<double> alphas, residuals;
     for (double alpha = kAlphaLow; alpha <= kAlphaHigh + 1e-9; alpha += kAlphaStep) {
         alphas.push_back(alpha);
-        residuals.push_back(tailResiduals(r.radius, r.spectral, first, last, alpha));
+        residuals.push_back(tailResiduals(radius, sigma2, first, last, alpha));
     }
-    const auto best = std::min_element(residuals.begin(), residuals.end()) - residuals.begin();
+    const auto best = static_cast<std::size_t>(
+        std::min_element(residuals.begin(), residuals.end()) - residuals.begin());
     const double bound = residuals[best] * (1.0 + 1.0 / static_cast<double>(last - first - 3));
     std::size_t lo = best, hi = best;
     while (lo > 0 && residuals[lo - 1] <= bound)
@@ -204,15 +207,13 @@ std::optional<VarianceExponent> fitTail(const VarianceResult& r, const DiscreteS
         ++hi;
     VarianceExponent e;
     e.alpha = alphas[best];
-    e.saturated = static_cast<std::size_t>(best) + 1 == alphas.size();
+    e.saturated = best + 1 == alphas.size();
     e.standardError = std::max(0.5 * (alphas[hi] - alphas[lo]), 0.5 * kAlphaStep);
-    e.minRadius = r.radius[first];
-    e.maxRadius = r.radius[last - 1];
+    e.minRadius = radius[first];
+    e.maxRadius = radius[last - 1];
     e.points = static_cast<int>(last - first);
     return e;
 }
-
-} // namespace
 
 VolumeFractionVariance::VolumeFractionVariance(VarianceParameters parameters)
     : parameters_(parameters) {
@@ -246,7 +247,9 @@ VarianceResult VolumeFractionVariance::compute(const DiscreteSpectrum& spectrum,
         r.spectral.push_back(spectralVariance(spectrum, radius));
         r.truncation.push_back(truncationBound(spectrum, radius));
     }
-    r.exponent = fitTail(r, spectrum, parameters_);
+    r.exponent =
+        fitVarianceTail(r.radius, r.spectral, parameters_.fitMinRadiusW * spectrum.meanWidth,
+                        0.25 * spectrum.boxLength);
     r.spectrumSource = spectrum.source;
     r.phi = spectrum.phi;
     if (voxels != nullptr && parameters_.windows > 0) {

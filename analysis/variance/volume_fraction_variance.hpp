@@ -17,6 +17,8 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace sbpack {
@@ -64,6 +66,12 @@ double sphereWindowFactor(double x);
 
 /// sigma_V^2(R) by the spectral route over the wave vectors of `spectrum`.
 double spectralVariance(const DiscreteSpectrum& spectrum, double radius);
+
+/// The tail fit sigma^2 = A R^-(3 + alpha) + B R^-4 over the radii in [minRadius, maxRadius]
+/// (docs/local-structure.md §2); none below four radii there.
+std::optional<VarianceExponent> fitVarianceTail(std::span<const double> radius,
+                                                std::span<const double> sigma2, double minRadius,
+                                                double maxRadius);
 
 /// The radii of `parameters` for a box of edge L and particles of mean width w.
 std::vector<double> windowRadii(double boxLength, double meanWidth,

@@ -49,23 +49,37 @@ def variance_curves(s):
 
 
 def volume_fraction_variance(series):
-    """sigma_V^2 (R / w)^3 against R / w per series; None where no series has the variance."""
+    """sigma_V^2 (R / w)^3 against R / w per series, the tail fit's window shaded and the two
+    pure tails as guides (flat: R^-3, a Poisson-like volume term; slope -1: R^-4, the windows'
+    surface term); None where no series has the variance."""
     series = with_group(series, "variance")
     if not series:
         return None
     fig, axes = new_figure(1, width=6.0, height=4.2)
     ax = axes[0][0]
-    for s in series:
+    windows = []
+    for k, s in enumerate(series):
         radius, spectral, sampled, error = variance_curves(s)
         style = line_style(s)
         ax.plot(radius, spectral * radius**3, color=style["color"], ls=style["ls"], lw=1.3,
-                label=group_label(s, "variance") + ": spectral")
+                label=group_label(s, "variance"))
         if sampled is not None:
             ax.errorbar(radius, sampled * radius**3, yerr=error * radius**3, fmt="o", ms=2.5,
-                        color=style["color"], elinewidth=0.8, label="sampled windows")
+                        color=style["color"], elinewidth=0.8,
+                        label="sampled windows (points)" if k == 0 else None)
+        windows += [(g["fit_min_w"], g["fit_max_w"]) for g in
+                    (f["variance"] for f in s.members("variance")) if "fit_min_w" in g]
+    if windows:
+        ax.axvspan(min(w[0] for w in windows), max(w[1] for w in windows), color="0.9",
+                   zorder=0, label="tail fit's radii")
+    r0, y0 = radius[-1], spectral[-1] * radius[-1] ** 3
+    guide = np.array([r0 / 4.0, r0])
+    ax.plot(guide, np.full(2, y0), "k:", lw=0.9, label=r"$\propto R^{-3}$")
+    ax.plot(guide, y0 * r0 / guide, "k--", lw=0.9, label=r"$\propto R^{-4}$")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel(r"window radius $R / w$")
     ax.set_ylabel(r"$\sigma_V^2(R)\,(R / w)^3$")
-    ax.set_title("Local volume-fraction variance")
+    ax.set_title("Local volume-fraction variance: spectral route (lines), sampled (points)",
+                 fontsize=9)
     return fig

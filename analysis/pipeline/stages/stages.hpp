@@ -62,6 +62,8 @@ DiscreteSpectrum spectrumOf(FileContext& context, const DiscreteSpectrum& voxel)
 
 bool runVariance(FileContext& context, schema::Record& record);
 StageMemory varianceMemory(const Packing& packing, const RunSettings& settings);
+/// An ensemble's alpha_pooled: the tail fit to its members' mean spectral sigma_V^2.
+void poolVariance(EnsembleResults& ensemble, std::span<const FileResults> files);
 /// An ensemble's alpha_pooled from its mean E(t) over the mean window, and the fit of every
 /// member's wave vectors at that alpha (a0_pooled, a1_pooled, H_pooled).
 void poolHyperuniformity(EnsembleResults& ensemble, std::span<const FileResults> files);

@@ -1,11 +1,16 @@
 // variance: the local volume-fraction variance by sampled windows on the kept voxel grid
 // (--voxels) and by the spectral route over chi's kept spectrum with chi_V exact at small Q as
 // hyper's (docs/local-structure.md §2).
+#include "pipeline/ensemble.hpp"
 #include "pipeline/stage.hpp"
 #include "pipeline/stages/stages.hpp"
 #include "variance/variance_fields.hpp"
 
 #include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 
 namespace sbpack::stages {
 
@@ -34,6 +39,33 @@ bool runVariance(FileContext& context, schema::Record& record) {
         fmt::format("{} radii, {} windows each; {}", r.radius.size(), r.windows, detail));
     variance_fields::kTable.fill(record, r, context.scales());
     return true;
+}
+
+void poolVariance(EnsembleResults& e, std::span<const FileResults> files) {
+    std::vector<const schema::Record*> groups;
+    double maxRadiusW = INFINITY;
+    for (std::size_t m : e.members)
+        if (const schema::Record* v = files[m].group(kVarianceGroup.name)) {
+            groups.push_back(v);
+            maxRadiusW = std::min(maxRadiusW, 0.25 * files[m].root.number("box_length") /
+                                                  files[m].root.number("mean_width"));
+        }
+    if (groups.empty()) return;
+    std::size_t n = SIZE_MAX;
+    for (const schema::Record* v : groups)
+        n = std::min(n, v->floats("radius_w").size()); // the radii are one sequence's prefixes
+    std::vector<double> mean(n, 0.0);
+    for (const schema::Record* v : groups)
+        for (std::size_t i = 0; i < n; ++i)
+            mean[i] += v->floats("sigma2_spectral")[i] / static_cast<double>(groups.size());
+    const std::span<const double> radius(groups.front()->floats("radius_w").data(), n);
+    const std::optional<VarianceExponent> tail =
+        fitVarianceTail(radius, mean, VarianceParameters{}.fitMinRadiusW, maxRadiusW);
+    if (!tail) return;
+    e.group(kVarianceGroup.name)
+        ->set("alpha_pooled", tail->alpha)
+        .set("alpha_pooled_error", tail->standardError)
+        .set("alpha_pooled_saturated", static_cast<std::int64_t>(tail->saturated));
 }
 
 } // namespace sbpack::stages
