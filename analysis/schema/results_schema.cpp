@@ -92,10 +92,11 @@ class EnsembleSchemas {
                             " over the files (n - 1; 0 for one file)"),
                        No, f.optional});
     }
-    /// A file never has it (optional there); every ensemble with the group does.
+    /// A file never has it (optional there); every ensemble with the group does, unless the
+    /// field is pooledOptional.
     static void addPooled(std::vector<Field>& out, const Field& f) {
         out.push_back(f);
-        out.back().optional = false;
+        out.back().optional = f.pooledOptional;
     }
     void addCurve(std::vector<Field>& out, const Field& f) {
         const std::string v(f.name);

@@ -58,6 +58,9 @@ struct Field {
     /// A dataset of rows of `width` values (3: n x 3, one row per particle, as OVITO and h5py
     /// read vectors), held flat in a Record; 0: one-dimensional.
     int width = 0;
+    /// Reduce::Pooled: absent from an ensemble whose finisher could not compute it (variance's
+    /// tail fit in a small box); false: every ensemble with the group has it.
+    bool pooledOptional = false;
 };
 
 /// "n" for a one-dimensional dataset, "n x 3" for rows of width 3; "" for an attribute.
