@@ -145,8 +145,10 @@ void sampleWindows(const Voxelization& voxels, const VarianceParameters& p,
         std::vector<double> batch(static_cast<std::size_t>(p.batches), 0.0);
         for (std::int64_t i = 0; i < k; ++i)
             batch[i % p.batches] += squares[j * k + i];
-        for (std::int64_t b = 0; b < p.batches; ++b) // windows per batch: k / B or one more
-            batch[b] /= static_cast<double>((k - b + p.batches - 1) / p.batches);
+        for (std::int64_t b = 0; b < p.batches; ++b) {
+            const std::int64_t windows = (k - b + p.batches - 1) / p.batches; // k / B or one more
+            batch[b] /= static_cast<double>(windows);
+        }
         const SampleStatistics s = sampleStatistics(batch);
         double all = 0.0;
         for (std::int64_t i = 0; i < k; ++i)
