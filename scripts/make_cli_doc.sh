@@ -161,7 +161,10 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   pressure sets the jam check's tolerance, so Z and phi_R), then one particle per line
   `x y z qw qx qy qz`. `convert` to it (or to XYZ) names what the target leaves out
   (velocities, provenance, a checkpoint's resume state).
-- **Extended XYZ** (`convert`, output only): OVITO reads positions, `orientation` (its
+- **Extended XYZ** (`.xyz`, written by `convert`; read by `info`, the analysis and `convert`:
+  one frame, sbpack's export or OVITO's, a cubic `Lattice`, the shape from the keys `p=` and
+  `semi_axis=` or the columns below; it carries no reduced pressure, so the contacts take
+  `--tolerance`): OVITO reads positions, `orientation` (its
   quaternion order `x y z w`) and `aspherical_shape` directly; map the two
   `superquadric_roundness` columns (both `1/p`) to OVITO's "Superquadric Roundness" in the
   import dialog to see superball shapes.

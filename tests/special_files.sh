@@ -94,7 +94,7 @@ expect "use a smaller --qmax" "$sbanalyze" good.h5 --compute sq --qmax 1e300 --j
 output=$("$sbanalyze" good.h5 --compute sq --qmax 1e300 --json - 2>&1)
 [[ ${#output} -lt 400 ]] || { echo "FAIL: a 300-digit qmax: $output"; failures=$((failures + 1)); }
 # Smaller ones (defect 14): a name of 250 characters still gets its temporary; an XYZ given to a
-# reader is named as such; a relative XDG_CACHE_HOME is ignored (the XDG specification).
+# reader is read (issue 66 item 1); a relative XDG_CACHE_HOME is ignored (the XDG specification).
 long=$(printf 'a%.0s' {1..247}).h5
 "$sbanalyze" convert good.h5 "$long" 2>/dev/null && [[ -f "$long" ]] ||
     { echo "FAIL: a 250-character output name"; failures=$((failures + 1)); }
@@ -102,7 +102,8 @@ rm -f "$long" # and sbgen's lock beside it (.NAME.lock) fits too
 "$sbgen" --n 10 --out "$long" --quiet 2>/dev/null && [[ -f "$long" ]] ||
     { echo "FAIL: sbgen with a 250-character output name"; failures=$((failures + 1)); }
 "$sbanalyze" convert good.h5 out.xyz 2>/dev/null
-expect "extended XYZ is written for OVITO, not read" "$sbanalyze" info out.xyz
+"$sbanalyze" info out.xyz > /dev/null 2>&1 ||
+    { echo "FAIL: sbanalyze info of its own XYZ export"; failures=$((failures + 1)); }
 mkdir -p home && HOME=$PWD/home XDG_CACHE_HOME=relative "$sbanalyze" good.h5 --compute chi \
     --voxels 40 --fft-plan measure --fft-planning-budget none --json - >/dev/null 2>&1
 [[ ! -e relative && -f home/.cache/sbpack/fftw-wisdom ]] ||

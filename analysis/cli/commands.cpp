@@ -57,11 +57,11 @@ int infoCommand(const std::vector<std::string>& files, const ContactParameters& 
 }
 
 int convertCommand(const std::string& input, const std::string& output, std::ostream& err) {
-    const Format in = formatOf(input), out = formatOf(output);
-    if (in == Format::Xyz) throw std::invalid_argument("'" + input + "': XYZ is output only");
+    static_cast<void>(formatOf(input)); // refuses an unknown extension
+    const Format out = formatOf(output);
     checkWritable(output);
     checkNotInput(output, input, "convert");
-    const Packing packing = in == Format::Hdf5 ? readPacking(input) : readTextPacking(input);
+    const Packing packing = readPackingFile(input); // .h5, .txt or .xyz by the extension
     if (out != Format::Hdf5)
         if (const auto left = notCarriedBy(packing, out == Format::Xyz); !left.empty())
             err << "sbanalyze: warning: '" << output << "' cannot carry the "

@@ -324,10 +324,9 @@ Packing readPacking(const fs::path& file) {
         const std::string extension = file.extension().string();
         throw PackingFileError(
             "'" + name + "': not an HDF5 file (no HDF5 signature)" +
-            (extension == ".txt" ? std::string("; a text packing is read by 'sbanalyze convert'")
-             : extension == ".xyz"
-                 ? std::string("; extended XYZ is written for OVITO, not read: give the .h5 "
-                               "or .txt packing")
+            (extension == ".txt" || extension == ".xyz"
+                 ? std::string("; a text or extended-XYZ packing is read by its extension "
+                               "(readPackingFile)")
                  : std::string()));
     }
     const ReadGuard guard(file); // armed by the programs only (io/read_guard.hpp)

@@ -3,7 +3,9 @@
 #include "io/atomic_file.hpp"
 #include "packing/validation.hpp"
 
+#include <cctype>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <map>
@@ -124,7 +126,9 @@ void writeTextPacking(const Packing& packing, const fs::path& file) {
 }
 
 Packing readPackingFile(const fs::path& file) {
-    return file.extension() == ".txt" ? readTextPacking(file) : readPacking(file);
+    if (file.extension() == ".txt") return readTextPacking(file);
+    if (file.extension() == ".xyz") return readExtendedXyz(file);
+    return readPacking(file);
 }
 
 namespace {
@@ -244,6 +248,168 @@ void writeExtendedXyz(const Packing& packing, const fs::path& file) {
                 << roundness << '\n';
         }
     });
+}
+
+namespace {
+
+/// The comment line of an extended-XYZ frame as key=value pairs, keys in lower case, values
+/// unquoted ("..." may hold blanks).
+std::map<std::string, std::string> xyzKeys(const std::string& line, const LineReader& reader) {
+    std::map<std::string, std::string> keys;
+    std::size_t i = 0;
+    while (i < line.size()) {
+        while (i < line.size() && (line[i] == ' ' || line[i] == '\t'))
+            ++i;
+        if (i == line.size()) break;
+        const std::size_t equals = line.find('=', i);
+        if (equals == std::string::npos) reader.fail("'" + line.substr(i) + "' is not key=value");
+        std::string key = line.substr(i, equals - i);
+        for (char& c : key)
+            c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        i = equals + 1;
+        std::string value;
+        if (i < line.size() && line[i] == '"') {
+            const std::size_t close = line.find('"', i + 1);
+            if (close == std::string::npos) reader.fail("the value of '" + key + "' is not closed");
+            value = line.substr(i + 1, close - i - 1);
+            i = close + 1;
+        } else {
+            const std::size_t end = line.find_first_of(" \t", i);
+            value = line.substr(i, end == std::string::npos ? std::string::npos : end - i);
+            i = end == std::string::npos ? line.size() : end;
+        }
+        keys[key] = value;
+    }
+    return keys;
+}
+
+/// The columns of the Properties key: name (lower case) to its first column and width.
+struct XyzColumns {
+    std::map<std::string, std::pair<std::size_t, std::size_t>> at;
+    std::size_t count = 0;
+};
+
+XyzColumns xyzColumns(const std::string& properties, const LineReader& reader) {
+    XyzColumns c;
+    std::vector<std::string> parts;
+    for (std::size_t start = 0;;) {
+        const std::size_t colon = properties.find(':', start);
+        parts.push_back(properties.substr(start, colon - start));
+        if (colon == std::string::npos) break;
+        start = colon + 1;
+    }
+    if (parts.size() % 3 != 0)
+        reader.fail("Properties='" + properties + "' is not name:type:count");
+    for (std::size_t k = 0; k < parts.size(); k += 3) {
+        std::string name = parts[k];
+        for (char& ch : name)
+            ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        const long long width = reader.parseCount(parts[k + 2]);
+        c.at[name] = {c.count, static_cast<std::size_t>(width)};
+        c.count += static_cast<std::size_t>(width);
+    }
+    for (const char* required : {"pos"})
+        if (!c.at.count(required)) reader.fail("Properties has no '" + std::string(required) + "'");
+    return c;
+}
+
+/// L of a cubic Lattice="L 0 0 0 L 0 0 0 L"; fails on any other cell.
+double cubicLattice(const std::string& lattice, const LineReader& reader) {
+    const std::vector<std::string> tokens = splitWhitespace(lattice);
+    if (tokens.size() != 9) reader.fail("Lattice=\"" + lattice + "\" is not 9 numbers");
+    std::vector<double> v;
+    for (const std::string& t : tokens)
+        v.push_back(reader.parseDouble(t));
+    for (int k : {1, 2, 3, 5, 6, 7})
+        if (v[k] != 0.0) reader.fail("Lattice is not a cube (only cubic periodic boxes are read)");
+    if (v[0] != v[4] || v[0] != v[8])
+        reader.fail("Lattice is not a cube (edges " + tokens[0] + ", " + tokens[4] + ", " +
+                    tokens[8] + ")");
+    return v[0];
+}
+
+/// One shape parameter: the header's key where there is one, else the column's value, the same
+/// in every particle and every component (the header and the columns must agree to 1e-12).
+class ShapeParameter {
+  public:
+    ShapeParameter(std::string key, std::optional<double> header)
+        : key_(std::move(key)), value_(header) {}
+    void column(double v, const LineReader& reader) {
+        if (!value_) value_ = v;
+        if (std::abs(v - *value_) > 1e-12 * std::abs(*value_))
+            reader.fail("the particles differ in " + key_ +
+                        " (only identical superballs are read)");
+    }
+    double value(const LineReader& reader) const {
+        if (!value_) reader.fail("no " + key_ + ": give the header key or its column");
+        return *value_;
+    }
+
+  private:
+    std::string key_;
+    std::optional<double> value_;
+};
+
+} // namespace
+
+Packing readExtendedXyz(const fs::path& file) {
+    LineReader reader(file);
+    std::string line;
+    if (!reader.next(line)) reader.fail("empty: extended XYZ starts with the particle count");
+    const long long count = reader.parseCount(line);
+    if (!reader.next(line)) reader.fail("no comment line (Lattice, Properties)");
+    const std::map<std::string, std::string> keys = xyzKeys(line, reader);
+    auto key = [&](const std::string& name) {
+        const auto it = keys.find(name);
+        return it == keys.end() ? std::optional<std::string>() : std::optional(it->second);
+    };
+    if (!key("lattice")) reader.fail("no Lattice: the periodic box is needed");
+    if (!key("properties")) reader.fail("no Properties");
+    const XyzColumns columns = xyzColumns(*key("properties"), reader);
+    auto number = [&](const std::string& name) {
+        return key(name) ? std::optional(reader.parseDouble(*key(name))) : std::nullopt;
+    };
+    ShapeParameter roundness("p (superquadric_roundness = 1 / p)",
+                             number("p") ? std::optional(1.0 / *number("p")) : std::nullopt);
+    ShapeParameter semiAxis("semi_axis (aspherical_shape)", number("semi_axis"));
+    Packing packing;
+    packing.boxLength = cubicLattice(*key("lattice"), reader);
+    const auto column = [&](const char* name) {
+        const auto it = columns.at.find(name);
+        return it == columns.at.end() ? nullptr : &it->second;
+    };
+    while (static_cast<long long>(packing.positions.size()) < count && reader.next(line)) {
+        const std::vector<std::string> tokens = splitWhitespace(line);
+        if (tokens.size() != columns.count)
+            reader.fail(std::to_string(tokens.size()) + " columns, Properties gives " +
+                        std::to_string(columns.count));
+        auto value = [&](const std::pair<std::size_t, std::size_t>& c, std::size_t k) {
+            return reader.parseDouble(tokens[c.first + k]);
+        };
+        const auto& pos = *column("pos");
+        packing.positions.emplace_back(value(pos, 0), value(pos, 1), value(pos, 2));
+        if (const auto* q = column("orientation"))
+            packing.orientations.emplace_back(value(*q, 3), value(*q, 0), value(*q, 1),
+                                              value(*q, 2)); // OVITO's (x, y, z, w)
+        else
+            packing.orientations.push_back(Quaterniond::Identity());
+        if (const auto* r = column("superquadric_roundness"))
+            for (std::size_t k = 0; k < r->second; ++k)
+                roundness.column(value(*r, k), reader);
+        if (const auto* a = column("aspherical_shape"))
+            for (std::size_t k = 0; k < a->second; ++k)
+                semiAxis.column(value(*a, k), reader);
+    }
+    if (static_cast<long long>(packing.positions.size()) != count)
+        reader.fail("the header says " + std::to_string(count) + " particles but the file has " +
+                    std::to_string(packing.positions.size()));
+    packing.p = 1.0 / roundness.value(reader);
+    packing.semiAxis = semiAxis.value(reader);
+    if (!column("orientation") && packing.p != 1.0)
+        reader.fail("no orientation column: superballs (p != 1) need their orientations");
+    validatePacking(packing, reader.name());
+    canonicalizePacking(packing);
+    return packing;
 }
 
 std::vector<std::string> notCarriedBy(const Packing& packing, bool extendedXyz) {

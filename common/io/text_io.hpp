@@ -31,15 +31,25 @@ void writeTextPacking(const Packing& packing, const std::filesystem::path& file)
 /// the quaternions and wraps positions into [0, L).
 Packing readTextPacking(const std::filesystem::path& file);
 
-/// A packing in either documented format, by its extension: `.txt` the text format
-/// (readTextPacking), anything else the HDF5 file (readPacking, whose errors name a `.xyz` as
-/// output only). Every reader of the tools takes its inputs through here (issue 43).
+/// A packing in any documented format, by its extension: `.txt` the text format
+/// (readTextPacking), `.xyz` extended XYZ (readExtendedXyz), anything else the HDF5 file
+/// (readPacking). Every reader of the tools takes its inputs through here (issue 43).
 Packing readPackingFile(const std::filesystem::path& file);
 
 /// What of `packing` the text format (or, with `extendedXyz`, the XYZ export) leaves out, in
 /// words ("velocities", "provenance", "contact forces", ...): what `convert` warns of (issue 65
 /// item 4).
 std::vector<std::string> notCarriedBy(const Packing& packing, bool extendedXyz);
+
+/// Reads one frame of extended XYZ (sbpack's export, OVITO's and ASE's writers): the particle
+/// count, a comment line of key=value pairs (keys in any case, values "quoted" where they hold
+/// blanks) with a cubic Lattice and Properties (pos required; orientation as OVITO's
+/// (x, y, z, w); aspherical_shape and superquadric_roundness, or the keys semi_axis and p, give
+/// the shape: roundness 1 / p, equal semi-axes), then one line per particle. Throws
+/// PackingFileError naming the file and line for a non-cubic cell, a missing column or key, a
+/// wrong count, particles of differing shapes, or superballs without orientations; normalises
+/// the quaternions and wraps positions into [0, L).
+Packing readExtendedXyz(const std::filesystem::path& file);
 
 /// Writes an extended-XYZ file that OVITO opens with the periodic cell, orientations and
 /// superquadric shapes (Properties species, pos, orientation, aspherical_shape,

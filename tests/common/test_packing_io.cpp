@@ -783,6 +783,54 @@ TEST_F(TextIo, ExtendedXyzForOvito) {
     EXPECT_FALSE(std::getline(in, line) && !line.empty());
 }
 
+// Issue 66 item 1: the XYZ export reads back bit for bit (17 digits); OVITO's spelling (keys
+// in any case, only the shape keys or only the shape columns) reads alike; what is not a
+// packing of identical superballs in a cube is refused with the file and line.
+TEST_F(TextIo, ExtendedXyzReadsBackBitForBit) {
+    const Packing packing = makePacking();
+    const fs::path path = file("round.xyz");
+    writeExtendedXyz(packing, path);
+    const Packing read = readPackingFile(path);
+    EXPECT_EQ(read.p, packing.p);
+    EXPECT_EQ(read.semiAxis, packing.semiAxis);
+    EXPECT_EQ(read.boxLength, packing.boxLength);
+    ASSERT_EQ(read.size(), packing.size());
+    for (std::size_t i = 0; i < packing.size(); ++i) {
+        EXPECT_EQ(read.positions[i], wrapIntoBox(packing.positions[i], packing.boxLength)) << i;
+        EXPECT_EQ(read.orientations[i].coeffs(), packing.orientations[i].normalized().coeffs())
+            << i;
+    }
+}
+
+TEST_F(TextIo, ExtendedXyzInOvitosSpellingAndItsRefusals) {
+    const std::string ovito = "2\nlattice=\"4 0 0 0 4 0 0 0 4\" PBC=\"T T T\" "
+                              "properties=Species:S:1:Pos:R:3:Orientation:R:4:"
+                              "Aspherical_Shape:R:3:Superquadric_Roundness:R:2\n";
+    const std::string a = "A 1 1 1 0 0 0 1 0.5 0.5 0.5 0.8 0.8\n";
+    const std::string b = "A 3 3 3 0 0 0.6 0.8 0.5 0.5 0.5 0.8 0.8\n";
+    const Packing read = readExtendedXyz(textFile(ovito + a + b, "ovito.xyz"));
+    EXPECT_DOUBLE_EQ(read.p, 1.25);
+    EXPECT_EQ(read.semiAxis, 0.5);
+    EXPECT_NEAR(read.orientations[1].w(), 0.8, 1e-15);
+    EXPECT_NEAR(read.orientations[1].z(), 0.6, 1e-15);
+    const std::string spheres = "1\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=pos:R:3 p=1 "
+                                "semi_axis=0.5\n1 2 3\n";
+    EXPECT_EQ(readExtendedXyz(textFile(spheres, "spheres.xyz")).p, 1.0);
+    const auto refused = [&](const std::string& body, const std::string& words) {
+        expectError<PackingFileError>([&] { readExtendedXyz(textFile(body, "bad.xyz")); },
+                                      {"bad.xyz", words});
+    };
+    refused("2\nLattice=\"4 0 0 0 5 0 0 0 4\" Properties=pos:R:3 p=1 semi_axis=0.5\n",
+            "not a cube");
+    refused("1\nProperties=pos:R:3 p=1 semi_axis=0.5\n1 2 3\n", "no Lattice");
+    refused("1\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=pos:R:3 semi_axis=0.5\n1 2 3\n", "no p");
+    refused("1\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=pos:R:3 p=1.5 semi_axis=0.5\n1 2 3\n",
+            "no orientation column");
+    refused(ovito + a + "A 3 3 3 0 0 0.6 0.8 0.5 0.5 0.5 0.7 0.7\n", "differ in p");
+    refused(ovito + a, "the header says 2 particles but the file has 1");
+    refused(ovito + "A 1 1 1 0 0 0 1\n", "8 columns, Properties gives 13");
+}
+
 class AtomicOutputTest : public TemporaryDirectoryTest {};
 
 TEST_F(AtomicOutputTest, LeavesNothingWhenNotCommitted) {
