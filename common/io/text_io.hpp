@@ -41,7 +41,8 @@ Packing readPackingFile(const std::filesystem::path& file);
 /// item 4).
 std::vector<std::string> notCarriedBy(const Packing& packing, bool extendedXyz);
 
-/// Reads one frame of extended XYZ (sbpack's export, OVITO's and ASE's writers): the particle
+/// Reads one frame of extended XYZ (sbpack's export; the same columns in other spellings, as
+/// OVITO names them): the particle
 /// count, a comment line of key=value pairs (keys in any case, values "quoted" where they hold
 /// blanks) with a cubic Lattice and Properties (pos required; orientation as OVITO's
 /// (x, y, z, w); aspherical_shape and superquadric_roundness, or the keys semi_axis and p, give
