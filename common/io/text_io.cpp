@@ -67,8 +67,10 @@ class LineReader {
         return true;
     }
 
-    [[noreturn]] void fail(const std::string& problem) const {
-        throw PackingFileError("'" + name_ + "', line " + std::to_string(number_) + ": " + problem);
+    [[noreturn]] void fail(const std::string& problem) const { failAt(number_, problem); }
+    /// Names an earlier line (a header's problem found at the end).
+    [[noreturn]] void failAt(int line, const std::string& problem) const {
+        throw PackingFileError("'" + name_ + "', line " + std::to_string(line) + ": " + problem);
     }
 
     double parseDouble(std::string token) const {
@@ -283,7 +285,8 @@ std::map<std::string, std::string> xyzKeys(const std::string& line, const LineRe
     return keys;
 }
 
-/// The columns of the Properties key: name (lower case) to its first column and width.
+/// The columns of the Properties key: name (lower case, without '_': OVITO writes
+/// SuperquadricRoundness for superquadric_roundness) to its first column and width.
 struct XyzColumns {
     std::map<std::string, std::pair<std::size_t, std::size_t>> at;
     std::size_t count = 0;
@@ -301,9 +304,9 @@ XyzColumns xyzColumns(const std::string& properties, const LineReader& reader) {
     if (parts.size() % 3 != 0)
         reader.fail("Properties='" + properties + "' is not name:type:count");
     for (std::size_t k = 0; k < parts.size(); k += 3) {
-        std::string name = parts[k];
-        for (char& ch : name)
-            ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        std::string name;
+        for (char ch : parts[k])
+            if (ch != '_') name += static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
         const long long width = reader.parseCount(parts[k + 2]);
         c.at[name] = {c.count, static_cast<std::size_t>(width)};
         c.count += static_cast<std::size_t>(width);
@@ -340,8 +343,9 @@ class ShapeParameter {
             reader.fail("the particles differ in " + key_ +
                         " (only identical superballs are read)");
     }
+    /// The value; fails naming the comment line (2) where there is none.
     double value(const LineReader& reader) const {
-        if (!value_) reader.fail("no " + key_ + ": give the header key or its column");
+        if (!value_) reader.failAt(2, "no " + key_ + ": give the header key or its column");
         return *value_;
     }
 
@@ -349,6 +353,14 @@ class ShapeParameter {
     std::string key_;
     std::optional<double> value_;
 };
+
+/// p from a roundness written in single precision (OVITO's export: 1 / 0.6666667008 =
+/// 1.49999992): the value of 6 significant digits within 1e-7 of it, else p itself.
+double singlePrecisionRepaired(double p) {
+    const double scale = std::pow(10.0, 5 - static_cast<int>(std::floor(std::log10(p))));
+    const double rounded = std::round(p * scale) / scale;
+    return std::abs(rounded - p) <= 1e-7 * p ? rounded : p;
+}
 
 } // namespace
 
@@ -393,20 +405,20 @@ Packing readExtendedXyz(const fs::path& file) {
                                               value(*q, 2)); // OVITO's (x, y, z, w)
         else
             packing.orientations.push_back(Quaterniond::Identity());
-        if (const auto* r = column("superquadric_roundness"))
+        if (const auto* r = column("superquadricroundness"))
             for (std::size_t k = 0; k < r->second; ++k)
                 roundness.column(value(*r, k), reader);
-        if (const auto* a = column("aspherical_shape"))
+        if (const auto* a = column("asphericalshape"))
             for (std::size_t k = 0; k < a->second; ++k)
                 semiAxis.column(value(*a, k), reader);
     }
     if (static_cast<long long>(packing.positions.size()) != count)
         reader.fail("the header says " + std::to_string(count) + " particles but the file has " +
                     std::to_string(packing.positions.size()));
-    packing.p = 1.0 / roundness.value(reader);
+    packing.p = singlePrecisionRepaired(1.0 / roundness.value(reader));
     packing.semiAxis = semiAxis.value(reader);
     if (!column("orientation") && packing.p != 1.0)
-        reader.fail("no orientation column: superballs (p != 1) need their orientations");
+        reader.failAt(2, "no orientation column: superballs (p != 1) need their orientations");
     validatePacking(packing, reader.name());
     canonicalizePacking(packing);
     return packing;

@@ -45,8 +45,10 @@ std::vector<std::string> notCarriedBy(const Packing& packing, bool extendedXyz);
 /// OVITO names them): the particle
 /// count, a comment line of key=value pairs (keys in any case, values "quoted" where they hold
 /// blanks) with a cubic Lattice and Properties (pos required; orientation as OVITO's
-/// (x, y, z, w); aspherical_shape and superquadric_roundness, or the keys semi_axis and p, give
-/// the shape: roundness 1 / p, equal semi-axes), then one line per particle. Throws
+/// (x, y, z, w); aspherical_shape and superquadric_roundness (OVITO: SuperquadricRoundness), or
+/// the keys semi_axis and p, give the shape: roundness 1 / p, equal semi-axes; a p within 1e-7
+/// of one of 6 significant digits is that one, as a single-precision roundness rounds it), then
+/// one line per particle. Throws
 /// PackingFileError naming the file and line for a non-cubic cell, a missing column or key, a
 /// wrong count, particles of differing shapes, or superballs without orientations; normalises
 /// the quaternions and wraps positions into [0, L).

@@ -816,6 +816,13 @@ TEST_F(TextIo, ExtendedXyzInOvitosSpellingAndItsRefusals) {
     const std::string spheres = "1\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=pos:R:3 p=1 "
                                 "semi_axis=0.5\n1 2 3\n";
     EXPECT_EQ(readExtendedXyz(textFile(spheres, "spheres.xyz")).p, 1.0);
+    // OVITO 3.17's own export: SuperquadricRoundness in single precision, 10 digits.
+    const std::string written = "1\nLattice=\"4.0 0.0 0.0 0.0 4.0 0.0 0.0 0.0 4.0\" pbc=\"T T T\" "
+                                "Properties=species:S:1:pos:R:3:orientation:R:4:"
+                                "aspherical_shape:R:3:SuperquadricRoundness:R:2\n"
+                                "Superball 1 2 3 0 0 0 1 0.7653366272 0.7653366272 0.7653366272 "
+                                "0.6666667008 0.6666667008\n";
+    EXPECT_EQ(readExtendedXyz(textFile(written, "ovito-written.xyz")).p, 1.5);
     const auto refused = [&](const std::string& body, const std::string& words) {
         expectError<PackingFileError>([&] { readExtendedXyz(textFile(body, "bad.xyz")); },
                                       {"bad.xyz", words});
