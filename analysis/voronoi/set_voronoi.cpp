@@ -1,12 +1,12 @@
 #include "voronoi/set_voronoi.hpp"
 
+#include "numerics/sample_statistics.hpp"
 #include "parallel/parallel.hpp"
 #include "pores/distance_transform.hpp"
 #include "voxels/voxelization.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -56,30 +56,17 @@ VoxelCounts countVoxels(std::span<const std::uint32_t> labels,
 /// empty); nullopt where there are none.
 std::optional<LocalPhiMoments> moments(const std::vector<double>& phi,
                                        const std::vector<bool>& rattler, bool selected) {
-    LocalPhiMoments m{0,
-                      0.0,
-                      0.0,
-                      0.0,
-                      std::numeric_limits<double>::infinity(),
-                      -std::numeric_limits<double>::infinity()};
-    double inverse = 0.0;
-    for (std::size_t i = 0; i < phi.size(); ++i) {
-        if (!rattler.empty() && rattler[i] != selected) continue;
-        ++m.count;
-        m.mean += phi[i];
-        inverse += 1.0 / phi[i];
-        m.min = std::min(m.min, phi[i]);
-        m.max = std::max(m.max, phi[i]);
-    }
-    if (m.count == 0) return std::nullopt;
-    m.mean /= static_cast<double>(m.count);
-    m.harmonicMean = static_cast<double>(m.count) / inverse;
-    double squares = 0.0;
+    std::vector<double> chosen;
     for (std::size_t i = 0; i < phi.size(); ++i)
-        if (rattler.empty() || rattler[i] == selected)
-            squares += (phi[i] - m.mean) * (phi[i] - m.mean);
-    if (m.count > 1) m.sd = std::sqrt(squares / static_cast<double>(m.count - 1));
-    return m;
+        if (rattler.empty() || rattler[i] == selected) chosen.push_back(phi[i]);
+    if (chosen.empty()) return std::nullopt;
+    const SampleStatistics s = sampleStatistics(chosen);
+    double inverse = 0.0;
+    for (double v : chosen)
+        inverse += 1.0 / v;
+    const auto [low, high] = std::minmax_element(chosen.begin(), chosen.end());
+    return LocalPhiMoments{static_cast<std::int64_t>(chosen.size()),     s.mean, s.std,
+                           static_cast<double>(chosen.size()) / inverse, *low,   *high};
 }
 
 /// The density of phi over [0, 1] in kHistogramBins bins (values of 1 and above in the last).

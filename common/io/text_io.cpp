@@ -381,8 +381,9 @@ Packing readExtendedXyz(const fs::path& file) {
     auto number = [&](const std::string& name) {
         return key(name) ? std::optional(reader.parseDouble(*key(name))) : std::nullopt;
     };
+    const std::optional<double> headerP = number("p");
     ShapeParameter roundness("p (superquadric_roundness = 1 / p)",
-                             number("p") ? std::optional(1.0 / *number("p")) : std::nullopt);
+                             headerP ? std::optional(1.0 / *headerP) : std::nullopt);
     ShapeParameter semiAxis("semi_axis (aspherical_shape)", number("semi_axis"));
     Packing packing;
     packing.boxLength = cubicLattice(*key("lattice"), reader);
@@ -415,7 +416,8 @@ Packing readExtendedXyz(const fs::path& file) {
     if (static_cast<long long>(packing.positions.size()) != count)
         reader.fail("the header says " + std::to_string(count) + " particles but the file has " +
                     std::to_string(packing.positions.size()));
-    packing.p = singlePrecisionRepaired(1.0 / roundness.value(reader));
+    // The header's p as written; only a p from the roundness column is inverted and repaired.
+    packing.p = headerP ? *headerP : singlePrecisionRepaired(1.0 / roundness.value(reader));
     packing.semiAxis = semiAxis.value(reader);
     if (!column("orientation") && packing.p != 1.0)
         reader.failAt(2, "no orientation column: superballs (p != 1) need their orientations");

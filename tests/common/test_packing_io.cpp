@@ -792,6 +792,12 @@ TEST_F(TextIo, ExtendedXyzReadsBackBitForBit) {
     writeExtendedXyz(packing, path);
     const Packing read = readPackingFile(path);
     EXPECT_EQ(read.p, packing.p);
+    // A p of many digits is the header's as written, not 1 / (1 / p) (which may miss it by an
+    // ulp) nor rounded to 6 digits.
+    Packing manyDigits = packing;
+    manyDigits.p = 7.390019499834; // 1 / (1 / p) is 7.3900194998340005
+    writeExtendedXyz(manyDigits, path);
+    EXPECT_EQ(readPackingFile(path).p, manyDigits.p);
     EXPECT_EQ(read.semiAxis, packing.semiAxis);
     EXPECT_EQ(read.boxLength, packing.boxLength);
     ASSERT_EQ(read.size(), packing.size());

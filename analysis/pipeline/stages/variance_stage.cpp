@@ -55,9 +55,11 @@ void poolVariance(EnsembleResults& e, std::span<const FileResults> files) {
     for (const schema::Record* v : groups)
         n = std::min(n, v->floats("radius_w").size()); // the radii are one sequence's prefixes
     std::vector<double> mean(n, 0.0);
-    for (const schema::Record* v : groups)
+    for (const schema::Record* v : groups) {
+        const std::vector<double>& sigma2 = v->floats("sigma2_spectral");
         for (std::size_t i = 0; i < n; ++i)
-            mean[i] += v->floats("sigma2_spectral")[i] / static_cast<double>(groups.size());
+            mean[i] += sigma2[i] / static_cast<double>(groups.size());
+    }
     const std::span<const double> radius(groups.front()->floats("radius_w").data(), n);
     const std::optional<VarianceExponent> tail =
         fitVarianceTail(radius, mean, VarianceParameters{}.fitMinRadiusW, maxRadiusW);
