@@ -108,7 +108,7 @@ void CommandLine::addSubcommands() {
         "also test the jamming categories (first order, and second where collective\n"
         "is undecided), as --compute jamming (docs/jamming.md), with the options below");
     for (std::string_view name : {"jamming-categories", "jamming-tolerance", "jamming-max-step",
-                                  "jamming-contacts", "jamming-second-order"})
+                                  "jamming-contacts", "jamming-second-order", "jamming-relax"})
         addOption(*info_, infoSettings_, findOption(name), defaults);
     info_->add_option("FILE", infoFiles_,
                       "packing files (.h5 or .txt); a bad one is reported, the others still are");

@@ -51,6 +51,8 @@ void printOrder(const PackingInfo& info, std::ostream& out) {
 
 /// The jamming categories: the network, a line per category tested, the category reached.
 void printJamming(const PackingJamming& j, std::ostream& out) {
+    if (j.relaxation)
+        out << std::setprecision(3) << "  jamming relaxation   " << j.relaxationSummary() << '\n';
     out << std::setprecision(3) << "  jamming              contacts at gap < " << j.tolerance
         << " D (" << j.toleranceFrom << "): backbone " << j.backbone << " of " << j.particles
         << " particles, " << j.contacts << " contacts\n";

@@ -134,6 +134,16 @@ std::string PackingJamming::undecided() const {
     return fmt::format("{}", fmt::join(open(), ","));
 }
 
+std::string PackingJamming::relaxationSummary() const {
+    if (!relaxation) return "";
+    const JammingPoint& j = *relaxation;
+    if (!j.found) return fmt::format("not jammed up to a shell of {:.3g} D", j.jammedShell);
+    return fmt::format(
+        "relaxed to the nearest jammed packing: jamming shell in ({:.3g}, {:.3g}] D, "
+        "particles moved <= {:.3g} D, turned <= {:.3g} rad",
+        j.unjammedShell, j.jammedShell, j.largestDisplacement, j.largestRotation);
+}
+
 std::string PackingJamming::verdict() const {
     if (tests.empty()) return "no backbone: every particle is a rattler";
     const auto r = reached();
@@ -184,20 +194,52 @@ std::optional<Eigen::VectorXd> storedForces(const Packing& packing,
     return f;
 }
 
+namespace {
+
+/// The relaxed packing's network at its jamming shell and the relaxation's forces on it,
+/// f_c = shell - s_c (docs/jamming.md §6.7).
+std::pair<RigidityNetwork, Eigen::VectorXd>
+relaxedNetwork(const JammingPoint& point, const ContactParameters& contacts, PackingJamming& out) {
+    // Just above the shell: every pair the relaxation loaded, none it did not (rounding apart).
+    out.tolerance = point.jammedShell * (1.0 + 1e-6);
+    out.toleranceFrom = "the relaxation's jamming shell";
+    const ContactResult network =
+        ContactNetwork({out.tolerance, contacts.rattlerThreshold}).compute(point.relaxed.packing);
+    RigidityNetwork backbone = backboneNetwork(point.relaxed.packing, network);
+    Eigen::VectorXd forces(static_cast<Eigen::Index>(backbone.contacts.size()));
+    Eigen::Index k = 0;
+    for (std::size_t c = 0; c < network.contacts.size(); ++c) {
+        const auto [i, j] = network.contacts[c];
+        if (!network.rattler[i] && !network.rattler[j])
+            forces[k++] = std::max(point.jammedShell - network.gaps[c], 0.0);
+    }
+    return {std::move(backbone), std::move(forces)};
+}
+
+} // namespace
+
 PackingJamming testJammingCategories(const Packing& packing, const JammingSettings& settings,
                                      const ContactParameters& contacts,
                                      const JammingObserver& observer) {
     const auto start = std::chrono::steady_clock::now();
     const JammingTest test(settings.test); // refuses bad parameters before any work
+    if (settings.relax) validate(settings.relaxation);
     PackingJamming out;
-    std::tie(out.tolerance, out.toleranceFrom) = networkTolerance(packing, settings, contacts);
-    const ContactResult network =
-        ContactNetwork({out.tolerance, contacts.rattlerThreshold}).compute(packing);
-    const RigidityNetwork backbone = backboneNetwork(packing, network);
+    RigidityNetwork backbone;
+    std::optional<Eigen::VectorXd> forces;
+    if (settings.relax) out.relaxation = findJammingPoint(packing, settings.relaxation);
+    if (out.relaxation && out.relaxation->found) {
+        std::tie(backbone, forces) = relaxedNetwork(*out.relaxation, contacts, out);
+    } else {
+        std::tie(out.tolerance, out.toleranceFrom) = networkTolerance(packing, settings, contacts);
+        const ContactResult network =
+            ContactNetwork({out.tolerance, contacts.rattlerThreshold}).compute(packing);
+        backbone = backboneNetwork(packing, network);
+        forces = storedForces(packing, backbone);
+    }
     out.particles = static_cast<int>(packing.size());
     out.backbone = static_cast<int>(backbone.backbone.size());
     out.contacts = static_cast<int>(backbone.contacts.size());
-    const std::optional<Eigen::VectorXd> forces = storedForces(packing, backbone);
     for (JammingCategory category : settings.categories) {
         if (backbone.backbone.empty()) break;
         if (observer.before) observer.before(category);

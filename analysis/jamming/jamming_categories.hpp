@@ -6,6 +6,7 @@
 
 #include "contacts/contact_network.hpp"
 #include "jamming/jamming_test.hpp"
+#include "jamming/soft_relaxation.hpp"
 #include "packing/packing.hpp"
 
 #include <functional>
@@ -31,6 +32,10 @@ struct JammingSettings {
     /// maxStep (Delta, units of D) and useGaps (ideal contacts, as Donev et al. 2004, or gaps);
     /// their defaults are the jamming test's own (docs/jamming.md §3-4).
     JammingParameters test;
+    /// --jamming-relax: test the nearest jammed packing instead (docs/jamming.md §6.7): the
+    /// network of the relaxed packing at its jamming shell, with the relaxation's forces.
+    bool relax = false;
+    RelaxationParameters relaxation;
 };
 
 /// "local", "collective", "strict": the names of the options and of the results groups.
@@ -56,6 +61,8 @@ struct PackingJamming {
     int contacts = 0;          ///< contacts among the backbone
     /// One first-order test per category asked, ascending; empty where there is no backbone.
     std::vector<JammingResult> tests;
+    /// --jamming-relax: the jamming point; the tests are of its relaxed packing where found.
+    std::optional<JammingPoint> relaxation;
     double seconds = 0.0; ///< the network and every test
 
     /// The highest category tested that is jammed, at first order or, where first order is
@@ -74,6 +81,10 @@ struct PackingJamming {
     /// One line: "strictly jammed at first order", "locally jammed, not collectively (first
     /// order)", "undecided at first order: local, collective (second order pending)", ...
     std::string verdict() const;
+    /// With --jamming-relax, one line: "relaxed to the nearest jammed packing: jamming shell in
+    /// (1.56e-04, 1.63e-04] D, particles moved <= 0.0497 D, turned <= 0.512 rad" or "not
+    /// jammed up to a shell of 0.01 D"; "" without.
+    std::string relaxationSummary() const;
 };
 
 /// Called before each category's test (it may throw to stop the analysis: an interrupt) and

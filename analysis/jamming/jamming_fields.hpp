@@ -28,7 +28,13 @@ inline std::vector<double> rowsOf(const std::vector<Vector3d>& vectors) {
     return flat;
 }
 
-inline constexpr schema::FieldTable kTable{std::array<schema::Column<P>, 14>{{
+/// A number of the relaxation (--jamming-relax), absent without it.
+template <class T> Optional relaxationValue(const P& p, T (*value)(const JammingPoint&)) {
+    if (!p.relaxation) return std::nullopt;
+    return Value(value(*p.relaxation));
+}
+
+inline constexpr schema::FieldTable kTable{std::array<schema::Column<P>, 25>{{
     {{"category", A, S, "",
       "the highest category tested that is jammed, at first order or (collective) at second: "
       "strict, collective, "
@@ -58,6 +64,87 @@ inline constexpr schema::FieldTable kTable{std::array<schema::Column<P>, 14>{{
      member<&P::backbone>},
     {{"contacts", A, I, "1", "contacts among the backbone", Mean}, member<&P::contacts>},
     {{"runtime_s", A, F, "s", kRuntime, Mean}, member<&P::seconds>},
+    {{"relaxed", A, I, "1",
+      "1 where the categories are those of the nearest jammed packing (--jamming-relax and "
+      "a jamming shell found: docs/jamming.md §6.7), 0 where of the packing as given"},
+     +[](const P& p, const Scales&) -> Optional {
+         return Value(std::int64_t{p.relaxation && p.relaxation->found ? 1 : 0});
+     }},
+    {{"relaxation_shell_unjammed", A, F, "D",
+      "--jamming-relax: the largest shell found unjammed (its overlaps relax away; 0 where "
+      "jammed at the smallest, 1e-10 D): the particles fit, rearranged, inflated by it",
+      Mean, true},
+     +[](const P& p, const Scales&) -> Optional {
+         return relaxationValue<double>(p, [](const JammingPoint& j) { return j.unjammedShell; });
+     }},
+    {{"relaxation_shell_jammed", A, F, "D",
+      "--jamming-relax: the smallest shell found jammed (a minimum with E > 0); the jamming "
+      "shell lies between the two, the relaxed packing is the minimum at this one; the largest "
+      "shell tried (1e-2 D) where none is jammed",
+      Mean, true},
+     +[](const P& p, const Scales&) -> Optional {
+         return relaxationValue<double>(p, [](const JammingPoint& j) { return j.jammedShell; });
+     }},
+    {{"relaxation_displacement_max", A, F, "D",
+      "--jamming-relax: the largest displacement from the given packing to the relaxed one", Mean,
+      true},
+     +[](const P& p, const Scales&) -> Optional {
+         return relaxationValue<double>(
+             p, [](const JammingPoint& j) { return j.largestDisplacement; });
+     }},
+    {{"relaxation_rotation_max", A, F, "rad",
+      "--jamming-relax: the largest rotation from the given packing to the relaxed one", Mean,
+      true},
+     +[](const P& p, const Scales&) -> Optional {
+         return relaxationValue<double>(p, [](const JammingPoint& j) { return j.largestRotation; });
+     }},
+    {{"relaxation_path_overlap", A, F, "D",
+      "--jamming-relax: the deepest overlap of the particles themselves on the way from the "
+      "given packing to the relaxed one (0: a motion of hard particles)",
+      Mean, true},
+     +[](const P& p, const Scales&) -> Optional {
+         return relaxationValue<double>(p, [](const JammingPoint& j) { return j.deepestOverlap; });
+     }},
+    {{"relaxation_balance", A, F, "1",
+      "--jamming-relax: |grad E|_inf over the mean force at the relaxed minimum: how exactly "
+      "its forces balance",
+      Mean, true},
+     +[](const P& p, const Scales&) -> Optional {
+         return relaxationValue<double>(
+             p, [](const JammingPoint& j) { return j.relaxed.balanceResidual; });
+     }},
+    {{"relaxation_minimisations", A, I, "1",
+      "--jamming-relax: minimisations of the bracketing (unconverged ones in "
+      "relaxation_unconverged, counted unjammed)",
+      Mean, true},
+     +[](const P& p, const Scales&) -> Optional {
+         return relaxationValue<std::int64_t>(
+             p, [](const JammingPoint& j) { return std::int64_t{j.minimisations}; });
+     }},
+    {{"relaxation_unconverged", A, I, "1",
+      "--jamming-relax: minimisations that stopped at their iteration limit", Mean, true},
+     +[](const P& p, const Scales&) -> Optional {
+         return relaxationValue<std::int64_t>(
+             p, [](const JammingPoint& j) { return std::int64_t{j.unconverged}; });
+     }},
+    {{"relaxation_runtime_s", A, F, "s", "--jamming-relax: wall-clock time of the relaxation", Mean,
+      true},
+     +[](const P& p, const Scales&) -> Optional {
+         return relaxationValue<double>(p, [](const JammingPoint& j) { return j.seconds; });
+     }},
+    {{"relaxation_displacement",
+      D,
+      F,
+      "D",
+      "--jamming-relax: each particle's displacement from the given packing to the relaxed one",
+      No,
+      true,
+      {},
+      3},
+     +[](const P& p, const Scales&) -> Optional {
+         if (!p.relaxation) return std::nullopt;
+         return Value(rowsOf(p.relaxation->displacement));
+     }},
     {{"n_strict", A, I, "1", "ensembles only: members strictly jammed at first order", Pooled,
       true},
      schema::ensembleOnly<P>},

@@ -105,6 +105,32 @@ TEST(JammingAnalysis, FaceCentredCubicSpheresAreStrictlyJammed) {
     EXPECT_EQ(file.group("jamming_collective")->integer("isostatic_deficit"), 3 * 108 - 3 - 648);
 }
 
+// --jamming-relax (docs/jamming.md §6.7): fcc spheres 1e-4 D apart are jammed only once a shell
+// closes that gap; the categories are those of the relaxed packing at its shell, strict, and
+// the relaxation's numbers and per-particle displacement are in the file. Without the option the
+// same packing has no contact at all.
+TEST(JammingAnalysis, RelaxedFaceCentredCubicWithGapsIsStrictlyJammedAtItsShell) {
+    const TempDir dir("sbpack-test-jamming-relax");
+    const double gap = 1e-4;
+    writePacking(lattices::cubicCrystal(2, std::sqrt(2.0) * (1.0 + gap), lattices::kFaceCentred),
+                 dir / "fcc.h5");
+    const RunResults results =
+        runJamming({dir / "fcc.h5"}, dir / "r.h5", {"--jamming-relax", "on"});
+    const schema::Record& jamming = *results.files.at(0).group("jamming");
+    EXPECT_EQ(jamming.integer("relaxed"), 1);
+    EXPECT_EQ(jamming.text("category"), "strict");
+    EXPECT_EQ(jamming.text("tolerance_from"), "the relaxation's jamming shell");
+    EXPECT_LT(jamming.number("relaxation_shell_unjammed"), gap);
+    EXPECT_GE(jamming.number("relaxation_shell_jammed"), gap);
+    EXPECT_LE(jamming.number("relaxation_shell_jammed"), 1.05 * gap);
+    EXPECT_LT(jamming.number("relaxation_displacement_max"), 1e-12);
+    EXPECT_EQ(jamming.integer("contacts"), 6 * 32);
+    EXPECT_EQ(datasetShape(dir / "r.h5", "files/0/jamming", "relaxation_displacement"),
+              (std::vector<hsize_t>{32, 3}));
+    const RunResults plain = runJamming({dir / "fcc.h5"}, dir / "plain.h5");
+    EXPECT_EQ(plain.files.at(0).group("jamming"), nullptr); // every particle a rattler: skipped
+}
+
 // p = 1.5: the rotations are degrees of freedom, every category is undecided at first order
 // (docs/jamming.md, "Known answers": the aligned simple-cubic superballs rotate), and the flex's
 // rotation is in the file as n x 3 radians.

@@ -50,6 +50,9 @@ bool runJamming(FileContext& context, schema::Record& record) {
                                   jamming.tolerance, jamming.toleranceFrom));
         return false;
     }
+    if (jamming.relaxation)
+        progress.stageDone("jamming relaxation", jamming.relaxation->seconds,
+                           jamming.relaxationSummary());
     progress.stageDone("jamming", jamming.seconds,
                        fmt::format("{} ({} of {} particles, {} contacts at gap < {:.3g} D)",
                                    jamming.verdict(), jamming.backbone, jamming.particles,

@@ -1,0 +1,51 @@
+"""The table of bench/jamming_relax.sh: per packing, its jamming category as given and relaxed
+(docs/jamming.md §6.7), the jamming shell's bracket, the motion, the second order's numbers."""
+import glob
+import os
+import re
+import sys
+
+import h5py
+
+
+def attributes(path, group):
+    with h5py.File(path, "r") as f:
+        key = f"files/0/{group}"
+        return dict(f[key].attrs) if key in f else {}
+
+
+def text(value):
+    return value.decode() if isinstance(value, bytes) else str(value)
+
+
+def row(work, name):
+    given = attributes(os.path.join(work, f"given-{name}.h5"), "jamming")
+    relaxed = attributes(os.path.join(work, f"relaxed-{name}.h5"), "jamming")
+    second = attributes(os.path.join(work, f"relaxed-{name}.h5"), "jamming_collective")
+    if not relaxed:
+        return None
+    stiffness = second.get("smallest_stiffness")
+    return "| {} | {} | {} | {:.3g}-{:.3g} | {:.3g} | {:.3g} | {} | {} | {} | {} | {:.1e} | {:.0f} |".format(
+        name, text(given.get("category", "skipped")), text(relaxed["category"]),
+        relaxed["relaxation_shell_unjammed"], relaxed["relaxation_shell_jammed"],
+        relaxed["relaxation_displacement_max"], relaxed.get("relaxation_rotation_max", 0.0),
+        relaxed["contacts"], text(second.get("second_order", "-")),
+        second.get("floppy_modes", "-"), "-" if stiffness is None else f"{stiffness:.3g}",
+        relaxed["relaxation_balance"], relaxed["relaxation_runtime_s"])
+
+
+def main(work):
+    print("| packing | as given | relaxed | jamming shell (D) | moved (D) | turned (rad) | "
+          "contacts | second order | floppy modes | stiffness | balance | s |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    names = sorted(re.sub(r"^relaxed-|\.h5$", "", os.path.basename(p))
+                   for p in glob.glob(os.path.join(work, "relaxed-*.h5")))
+    names.sort(key=lambda n: (float(n.split("-")[0][1:]), n))
+    for name in names:
+        line = row(work, name)
+        if line:
+            print(line)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1] if len(sys.argv) > 1 else "/tmp/sbpack-jamming-relax")
