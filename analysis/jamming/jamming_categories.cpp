@@ -137,7 +137,10 @@ std::string PackingJamming::undecided() const {
 std::string PackingJamming::relaxationSummary() const {
     if (!relaxation) return "";
     const JammingPoint& j = *relaxation;
-    if (!j.found) return fmt::format("not jammed up to a shell of {:.3g} D", j.jammedShell);
+    if (!j.found)
+        return fmt::format("no jammed minimum up to a shell of {:.3g} D ({} of {} minimisations "
+                           "unconverged)",
+                           j.unjammedShell, j.unconverged, j.minimisations);
     return fmt::format(
         "relaxed to the nearest jammed packing: jamming shell in ({:.3g}, {:.3g}] D, "
         "particles moved <= {:.3g} D, turned <= {:.3g} rad",
@@ -227,7 +230,8 @@ PackingJamming testJammingCategories(const Packing& packing, const JammingSettin
     PackingJamming out;
     RigidityNetwork backbone;
     std::optional<Eigen::VectorXd> forces;
-    if (settings.relax) out.relaxation = findJammingPoint(packing, settings.relaxation);
+    if (settings.relax)
+        out.relaxation = findJammingPoint(packing, settings.relaxation, observer.relaxing);
     if (out.relaxation && out.relaxation->found) {
         std::tie(backbone, forces) = relaxedNetwork(*out.relaxation, contacts, out);
     } else {

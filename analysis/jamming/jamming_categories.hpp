@@ -82,8 +82,8 @@ struct PackingJamming {
     /// order)", "undecided at first order: local, collective (second order pending)", ...
     std::string verdict() const;
     /// With --jamming-relax, one line: "relaxed to the nearest jammed packing: jamming shell in
-    /// (1.56e-04, 1.63e-04] D, particles moved <= 0.0497 D, turned <= 0.512 rad" or "not
-    /// jammed up to a shell of 0.01 D"; "" without.
+    /// (1.56e-04, 1.63e-04] D, particles moved <= 0.0497 D, turned <= 0.512 rad" or "no
+    /// jammed minimum up to a shell of 0.01 D (4 of 9 minimisations unconverged)"; "" without.
     std::string relaxationSummary() const;
 };
 
@@ -92,6 +92,8 @@ struct PackingJamming {
 struct JammingObserver {
     std::function<void(JammingCategory)> before;
     std::function<void(const JammingResult&)> after;
+    /// Before every step of the relaxation (--jamming-relax): it may throw, as `before`.
+    RelaxationPoll relaxing;
 };
 
 /// Tests `settings.categories` on `packing`'s backbone; the network's rattlers by `contacts`

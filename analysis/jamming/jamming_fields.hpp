@@ -79,8 +79,8 @@ inline constexpr schema::FieldTable kTable{std::array<schema::Column<P>, 25>{{
      }},
     {{"relaxation_shell_jammed", A, F, "D",
       "--jamming-relax: the smallest shell found jammed (a minimum with E > 0); the jamming "
-      "shell lies between the two, the relaxed packing is the minimum at this one; the largest "
-      "shell tried (1e-2 D) where none is jammed",
+      "shell lies between the two, the relaxed packing is the minimum at this one; 0 where none "
+      "up to 1e-2 D is jammed",
       Mean, true},
      +[](const P& p, const Scales&) -> Optional {
          return relaxationValue<double>(p, [](const JammingPoint& j) { return j.jammedShell; });

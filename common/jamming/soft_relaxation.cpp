@@ -178,13 +178,19 @@ std::optional<Eigen::VectorXd> dampedStep(const OverlapEnergy& energy, const Ene
     return dq;
 }
 
-SoftVerdict verdictOf(const EnergyTerms& terms, double shell, const RelaxationParameters& p,
-                      bool stalled) {
+/// Jammed, unjammed or not yet (lengths in the packing's units, D = `diameter`). A stall counts
+/// as jammed only where the gradient is down to rounding (of the gaps, absolute, or of the
+/// normals, relative to the forces), not where the model Hessian (Gauss-Newton on flat faces)
+/// finds no descent.
+SoftVerdict verdictOf(const EnergyTerms& terms, double shell, double diameter,
+                      const RelaxationParameters& p, bool stalled) {
     const double meanForce = terms.contacts > 0 ? terms.forceSum / terms.contacts : 0.0;
+    const double gradient = terms.gradient.lpNorm<Eigen::Infinity>();
     if (meanForce <= p.unjammedForce * shell) return SoftVerdict::Unjammed;
-    if (terms.gradient.lpNorm<Eigen::Infinity>() <= p.balanceTolerance * meanForce)
+    if (gradient <= p.balanceTolerance * meanForce) return SoftVerdict::Jammed;
+    if (stalled && meanForce > p.stalledForce * shell &&
+        gradient <= std::max(p.stalledGradient * diameter, p.stalledBalance * meanForce))
         return SoftVerdict::Jammed;
-    if (stalled && meanForce > p.stalledForce * shell) return SoftVerdict::Jammed;
     return SoftVerdict::Unconverged;
 }
 
@@ -197,14 +203,16 @@ void validate(const RelaxationParameters& p) {
                                     std::to_string(p.smallestShell) + ") <= largest (" +
                                     std::to_string(p.largestShell) + ") <= 0.1 D");
     if (!inUnit(p.bracketWidth) || !inUnit(p.balanceTolerance) || !inUnit(p.unjammedForce) ||
-        !inUnit(p.stalledForce) || !(p.candidateMargin > 0.0 && p.candidateMargin <= 0.05))
+        !inUnit(p.stalledForce) || !inUnit(p.stalledGradient) || !inUnit(p.stalledBalance) ||
+        !(p.candidateMargin > 0.0 && p.candidateMargin <= 0.05))
         throw std::invalid_argument("relaxation: the bracket width and the tolerances must lie "
                                     "in (0, 1), the candidate margin in (0, 0.05] D");
     if (p.maxIterations < 1) throw std::invalid_argument("relaxation: at least one iteration");
 }
 
 SoftMinimum minimiseOverlapEnergy(const Packing& packing, double shell,
-                                  const RelaxationParameters& parameters) {
+                                  const RelaxationParameters& parameters,
+                                  const RelaxationPoll& poll) {
     validate(parameters);
     const double diameter = packing.shape().diameter();
     OverlapEnergy energy(packing, shell, parameters.candidateMargin);
@@ -216,8 +224,9 @@ SoftMinimum minimiseOverlapEnergy(const Packing& packing, double shell,
     double mu = energy.shell();
     bool stalled = false;
     for (; out.iterations < parameters.maxIterations; ++out.iterations) {
-        out.verdict = verdictOf(terms, energy.shell(), parameters, stalled);
+        out.verdict = verdictOf(terms, energy.shell(), diameter, parameters, stalled);
         if (out.verdict != SoftVerdict::Unconverged || stalled) break;
+        if (poll) poll();
         bool improved = false;
         for (; !improved && mu < 1e3 * diameter; mu *= 10.0) {
             const std::optional<Eigen::VectorXd> dq = dampedStep(energy, terms, mu, diameter);
@@ -261,7 +270,8 @@ void measureMotion(const Packing& given, JammingPoint& point) {
 
 } // namespace
 
-JammingPoint findJammingPoint(const Packing& packing, const RelaxationParameters& parameters) {
+JammingPoint findJammingPoint(const Packing& packing, const RelaxationParameters& parameters,
+                              const RelaxationPoll& poll) {
     validate(parameters);
     const auto start = std::chrono::steady_clock::now();
     JammingPoint point;
@@ -270,7 +280,7 @@ JammingPoint findJammingPoint(const Packing& packing, const RelaxationParameters
     // Jammed only at a minimum whose forces balance (or stall at rounding); an unconverged
     // minimisation is still sliding and counts as unjammed, its state not kept.
     const auto attempt = [&](double shell) {
-        SoftMinimum minimum = minimiseOverlapEnergy(base, shell, parameters);
+        SoftMinimum minimum = minimiseOverlapEnergy(base, shell, parameters, poll);
         ++point.minimisations;
         if (minimum.verdict == SoftVerdict::Jammed) {
             point.relaxed = std::move(minimum);

@@ -13,6 +13,7 @@
 
 #include "packing/packing.hpp"
 
+#include <functional>
 #include <vector>
 
 namespace sbpack {
@@ -29,9 +30,14 @@ struct RelaxationParameters {
     /// Converged when |grad E|_inf <= this times the mean force.
     double balanceTolerance = 1e-10;
     /// The minimum counts as unjammed when its mean force is below this times delta, jammed when
-    /// above `stalledForce` delta where the steps stall at rounding.
+    /// above `stalledForce` delta where the steps stall at rounding: |grad E|_inf below
+    /// `stalledGradient` D (the gaps' rounding, 1e-15 D, times the few contacts of a particle)
+    /// or `stalledBalance` times the mean force (the normals' rounding, about 1e-8, and the
+    /// stress test's acceptance of a self-stress, docs/jamming.md §6.6).
     double unjammedForce = 1e-6;
     double stalledForce = 1e-3;
+    double stalledGradient = 1e-12;
+    double stalledBalance = 1e-6;
     /// The pairs within delta + this (units of D) are the candidates, found again after a particle
     /// has moved by a quarter of it.
     double candidateMargin = 1e-2;
@@ -62,7 +68,7 @@ struct SoftMinimum {
 struct JammingPoint {
     bool found = false;         ///< jammed at some shell <= largestShell
     double unjammedShell = 0.0; ///< the largest shell found unjammed (0: jammed at the smallest)
-    double jammedShell = 0.0;   ///< the smallest found jammed (delta_J lies between)
+    double jammedShell = 0.0;   ///< the smallest found jammed (delta_J lies between); 0: none
     SoftMinimum relaxed;        ///< the minimum at jammedShell (at largestShell where not found)
     std::vector<Vector3d> displacement; ///< relaxed - given, minimum image, units of D
     std::vector<double> rotation;       ///< angle of relaxed against given orientation, radians
@@ -78,13 +84,18 @@ struct JammingPoint {
 /// largest, bracket in (0, 1), tolerances in (0, 1), iterations >= 1).
 void validate(const RelaxationParameters& parameters);
 
+/// Called before every step (it may throw to stop the relaxation: an interrupt).
+using RelaxationPoll = std::function<void()>;
+
 /// E minimised at `shell` from `packing`.
 SoftMinimum minimiseOverlapEnergy(const Packing& packing, double shell,
-                                  const RelaxationParameters& parameters);
+                                  const RelaxationParameters& parameters,
+                                  const RelaxationPoll& poll = {});
 
 /// delta_J bracketed from `packing`: shells 10^k smallestShell until jammed, then bisection;
 /// each minimisation starts from the last unjammed minimum (the given packing at first), so that
 /// the shells compress it step by step. Jammed only where a minimisation converges to E > 0.
-JammingPoint findJammingPoint(const Packing& packing, const RelaxationParameters& parameters);
+JammingPoint findJammingPoint(const Packing& packing, const RelaxationParameters& parameters,
+                              const RelaxationPoll& poll = {});
 
 } // namespace sbpack

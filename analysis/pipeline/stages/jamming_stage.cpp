@@ -41,7 +41,8 @@ bool runJamming(FileContext& context, schema::Record& record) {
         [&](const JammingResult& r) {
             progress.stageDone("jamming " + std::string(jammingCategoryName(r.category)), r.seconds,
                                categoryDetail(r));
-        }};
+        },
+        [&] { progress.checkInterrupt(); }};
     const PackingJamming jamming = testJammingCategories(
         context.packing(), context.settings().jamming, context.settings().contacts, observer);
     if (jamming.tests.empty()) {
