@@ -25,6 +25,11 @@ def row(work, name):
     if not relaxed:
         return None
     stiffness = second.get("smallest_stiffness")
+    if not relaxed["relaxed"]:  # no jammed minimum: the categories are of the packing as given
+        return "| {} | {} | no jammed minimum up to {:.3g} D ({} of {} unconverged) | | | | | | | | | {:.0f} |".format(
+            name, text(given.get("category", "skipped")), relaxed["relaxation_shell_unjammed"],
+            relaxed["relaxation_unconverged"], relaxed["relaxation_minimisations"],
+            relaxed["relaxation_runtime_s"])
     return "| {} | {} | {} | {:.3g}-{:.3g} | {:.3g} | {:.3g} | {} | {} | {} | {} | {:.1e} | {:.0f} |".format(
         name, text(given.get("category", "skipped")), text(relaxed["category"]),
         relaxed["relaxation_shell_unjammed"], relaxed["relaxation_shell_jammed"],
