@@ -105,7 +105,12 @@ void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info
         out << "  jam check            none: the file has no reduced pressure\n";
     printOrder(info, out);
     if (info.jamming) printJamming(*info.jamming, out);
-    if (c.overlappingPairs > 0) out << "  warning: " << describeOverlaps(c, diameter) << '\n';
+    if (c.overlappingPairs > 0)
+        out << "  warning: " << describeOverlaps(c, diameter)
+            << (info.resolution.singlePrecision ? " (single-precision rounding: see the contact "
+                                                  "resolution above)"
+                                                : "")
+            << '\n';
 }
 
 } // namespace sbpack

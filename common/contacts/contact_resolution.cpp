@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <iterator>
 
@@ -17,7 +18,35 @@ std::string scientific(double x) {
     return text;
 }
 
+/// Significant bits of x's binary mantissa (0 for 0): at most 24 for a float32.
+int significantBits(double x) {
+    if (x == 0.0) return 0;
+    int exponent = 0;
+    const double mantissa = std::frexp(std::abs(x), &exponent); // in [0.5, 1)
+    auto bits = static_cast<std::uint64_t>(std::ldexp(mantissa, 53));
+    int width = 53;
+    for (; width > 0 && (bits & 1U) == 0; bits >>= 1U)
+        --width;
+    return width;
+}
+
 } // namespace
+
+std::optional<double> singlePrecisionRounding(const Packing& packing) {
+    int widest = 0;
+    const auto widen = [&](double x) {
+        const bool single = static_cast<double>(static_cast<float>(x)) == x;
+        widest = single ? std::max(widest, significantBits(x)) : 64;
+    };
+    // The positions only: a reader normalises the quaternions, which leaves float32's grid.
+    for (std::size_t i = 0; i < packing.size() && widest <= 24; ++i)
+        for (int k = 0; k < 3; ++k)
+            widen(packing.positions[i][k]);
+    if (widest > 24 || widest <= 12) return std::nullopt;
+    const double centres = 2.0 * std::sqrt(3.0) * std::ldexp(packing.boxLength, -24);
+    const double turns = 2.0 * packing.shape().circumradius() * std::ldexp(1.0, -23);
+    return (centres + turns) / packing.shape().diameter();
+}
 
 GapDistribution gapDistribution(const Packing& packing) {
     GapDistribution d;
@@ -36,6 +65,21 @@ GapDistribution gapDistribution(const Packing& packing) {
 ContactResolution resolveContacts(const Packing& packing, double tolerance,
                                   const JamCheckParameters& scale) {
     ContactResolution r;
+    r.singlePrecision = singlePrecisionRounding(packing);
+    if (r.singlePrecision && tolerance < *r.singlePrecision) {
+        r.resolved = false;
+        r.neededTolerance = std::pow(10.0, std::ceil(std::log10(*r.singlePrecision)));
+        r.gaps = gapDistribution(packing);
+        r.verdict = "NOT resolved: every coordinate is a single-precision (float32) number, whose "
+                    "rounding moves surfaces by up to " +
+                    scientific(*r.singlePrecision) + " D, above the tolerance " +
+                    scientific(tolerance) +
+                    " D: gaps and overlaps of that size are rounding, so Z and phi_R are "
+                    "undetermined (count the contacts through it with --tolerance " +
+                    scientific(r.neededTolerance) +
+                    ", or analyse the double-precision file); the gap distribution instead:";
+        return r;
+    }
     if (!packing.reducedPressure || !(*packing.reducedPressure > 0.0)) {
         r.verdict = "unknown: the file has no reduced pressure to set the scale of its gaps";
         return r;

@@ -30,10 +30,23 @@ struct ContactResolution {
     double neededTolerance = 0.0;
     /// Filled only when not resolved: what to look at instead of Z.
     std::optional<GapDistribution> gaps;
+    /// Where every coordinate is a single-precision number (singlePrecisionRounding): how far
+    /// that rounding may move a pair's surfaces, units of D.
+    std::optional<double> singlePrecision;
     std::string verdict; ///< one line
 };
 
-/// The resolution of `tolerance` (units of D) for `packing` at its recorded reduced pressure.
+/// Whether `packing` was stored in single precision (a file through OVITO or GSD: every position
+/// coordinate a float32, some with more than 12 significant bits, so not a hand-made lattice of
+/// short binary fractions; the orientations are normalised on reading, off float32's grid), and if
+/// so how far that rounding may move two particles' surfaces against each other, units of D: 2
+/// sqrt(3) L 2^-24 for the centres, 2 r_c 2^-23 for the orientations (docs/design.md §3, "Honest
+/// contacts").
+std::optional<double> singlePrecisionRounding(const Packing& packing);
+
+/// The resolution of `tolerance` (units of D) for `packing`: not resolved where the file is in
+/// single precision and the tolerance is below its rounding, or below the gaps of its recorded
+/// reduced pressure.
 ContactResolution resolveContacts(const Packing& packing, double tolerance,
                                   const JamCheckParameters& scale = {});
 

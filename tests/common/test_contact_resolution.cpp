@@ -4,10 +4,12 @@
 // neighbours each) and none below sqrt(2) - 1 D beyond them: the gap distribution must put
 // all 6 N in g's decade.
 #include "contacts/contact_resolution.hpp"
+#include "io/packing_io.hpp"
 #include "io/text_io.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <numeric>
 
 namespace sbpack {
@@ -59,6 +61,50 @@ TEST(ContactResolution, TouchingPairsFallInTheFirstBin) {
     const GapDistribution d = gapDistribution(fccWithGap(0.0, std::nullopt));
     EXPECT_EQ(d.edges.size(), 15u);
     EXPECT_EQ(d.counts.front(), 6 * 108L) << "fcc-spheres.txt: 108 spheres";
+}
+
+/// `packing` as a float32 file gives it back: positions and quaternion coefficients rounded to
+/// single precision, the quaternions normalised again (as a reader does).
+Packing roundedToSinglePrecision(Packing packing) {
+    for (Vector3d& r : packing.positions)
+        r = r.cast<float>().cast<double>();
+    for (Quaterniond& q : packing.orientations)
+        q = Quaterniond(q.coeffs().cast<float>().cast<double>()).normalized();
+    return packing;
+}
+
+TEST(ContactResolution, SinglePrecisionCoordinatesAreFoundAndTheirRoundingBoundsTheOverlaps) {
+    const Packing original = readPacking(kData + "/mrj-p1.5-1000.h5");
+    EXPECT_FALSE(singlePrecisionRounding(original).has_value()); // double precision
+    const Packing rounded = roundedToSinglePrecision(original);
+    const std::optional<double> rounding = singlePrecisionRounding(rounded);
+    ASSERT_TRUE(rounding.has_value());
+    const double diameter = original.shape().diameter();
+    EXPECT_NEAR(*rounding,
+                (2.0 * std::sqrt(3.0) * std::ldexp(original.boxLength, -24) +
+                 2.0 * original.shape().circumradius() * std::ldexp(1.0, -23)) /
+                    diameter,
+                1e-20);
+    // The bound holds, and is not loose by more than a decade: the worst overlap of the rounded
+    // packing (the double-precision one has none) lies between a tenth of it and it.
+    const ContactResult contacts = ContactNetwork({1e-10, 4}).compute(rounded);
+    const double worstOverlap = -contacts.worstGap / diameter;
+    EXPECT_LE(worstOverlap, *rounding);
+    EXPECT_GE(worstOverlap, 0.1 * *rounding);
+    // Not resolved at the paper's tolerance, whatever the pressure; resolved at the advised one.
+    const ContactResolution r = resolveContacts(rounded, 1e-10);
+    EXPECT_FALSE(r.resolved.value_or(true));
+    EXPECT_NE(r.verdict.find("single-precision (float32)"), std::string::npos) << r.verdict;
+    EXPECT_DOUBLE_EQ(r.neededTolerance, 1e-5);
+    EXPECT_TRUE(resolveContacts(rounded, r.neededTolerance).resolved.value_or(false));
+}
+
+TEST(ContactResolution, ALatticeOfShortBinaryFractionsIsNotSinglePrecision) {
+    // Typed as quarters, a lattice's coordinates are float32 numbers too, but exact, not rounded.
+    Packing lattice = fccWithGap(0.0, std::nullopt);
+    for (Vector3d& r : lattice.positions)
+        r = (r * 4.0).array().round() / 4.0; // quarters: 2 to 5 bits
+    EXPECT_FALSE(singlePrecisionRounding(lattice).has_value());
 }
 
 } // namespace
