@@ -1,6 +1,7 @@
 #include "pipeline/file_analysis.hpp"
 
 #include "contacts/contact_network.hpp"
+#include "contacts/contact_resolution.hpp"
 
 #include <fmt/format.h>
 
@@ -29,8 +30,12 @@ schema::Record fileRecord(const Packing& packing, const std::filesystem::path& i
 void warnAboutOverlaps(const Packing& packing, const Progress& progress) {
     const ContactResult c = ContactNetwork({}).compute(packing);
     if (c.overlappingPairs == 0) return;
+    const std::optional<double> rounding = singlePrecisionRounding(packing);
+    const bool rounded = rounding && -c.worstGap <= *rounding * 2.0 * packing.semiAxis;
     progress.warn(describeOverlaps(c, 2.0 * packing.semiAxis) +
-                  ": not a packing of hard particles; analysed as given");
+                  (rounded ? ": within the rounding of its single-precision coordinates "
+                             "(docs/design.md §3, \"Honest contacts\"); analysed as given"
+                           : ": not a packing of hard particles; analysed as given"));
 }
 
 /// Whether a stage after position `done` of `order` needs `analysis`.
