@@ -34,9 +34,13 @@ int significantBits(double x) {
 
 std::optional<double> singlePrecisionRounding(const Packing& packing) {
     int widest = 0;
+    // A float32 as read back: exactly (binary files), or from the 9 significant digits that
+    // print it (text, extended XYZ), within half a unit of the 9th digit.
     const auto widen = [&](double x) {
-        const bool single = static_cast<double>(static_cast<float>(x)) == x;
-        widest = single ? std::max(widest, significantBits(x)) : 64;
+        const auto single = static_cast<double>(static_cast<float>(x));
+        widest = std::abs(x - single) <= 1e-8 * std::abs(x)
+                     ? std::max(widest, significantBits(single))
+                     : 64;
     };
     // The positions only: a reader normalises the quaternions, which leaves float32's grid.
     for (std::size_t i = 0; i < packing.size() && widest <= 24; ++i)

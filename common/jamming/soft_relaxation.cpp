@@ -73,10 +73,14 @@ class OverlapEnergy {
     }
 
   private:
+    /// The largest surface motion since the candidates were found: translation plus the
+    /// circumradius times the angle turned.
     double movedSinceBuilt(const Packing& state) const {
         double largest = 0.0;
         for (int i = 0; i < particles_; ++i)
-            largest = std::max(largest, (state.positions[i] - built_[i]).norm());
+            largest = std::max(largest, (state.positions[i] - built_[i]).norm() +
+                                            shape_.circumradius() *
+                                                state.orientations[i].angularDistance(turned_[i]));
         return largest;
     }
 
@@ -90,6 +94,7 @@ class OverlapEnergy {
         candidates_ = pairs.contacts;
         normals_ = pairs.normals;
         built_ = state.positions;
+        turned_ = state.orientations;
     }
 
     void addPair(const Packing& state, std::size_t k, bool hessian, EnergyTerms& terms);
@@ -101,6 +106,7 @@ class OverlapEnergy {
     std::vector<std::pair<int, int>> candidates_;
     std::vector<Vector3d> normals_;
     std::vector<Vector3d> built_;
+    std::vector<Quaterniond> turned_;
 };
 
 void OverlapEnergy::addPair(const Packing& state, std::size_t k, bool hessian, EnergyTerms& terms) {
@@ -134,7 +140,7 @@ void OverlapEnergy::addPair(const Packing& state, std::size_t k, bool hessian, E
     terms.forceSum += force;
     ++terms.contacts;
     Matrix12d second = column * column.transpose();
-    if (hessian && rotations_) {
+    if (hessian) {
         const Matrix12d curvature = gapHessian(contact);
         if (curvature.allFinite()) second -= force * curvature; // flat faces: Gauss-Newton
     }
@@ -153,6 +159,9 @@ void OverlapEnergy::addPair(const Packing& state, std::size_t k, bool hessian, E
 }
 
 constexpr double kLargestStep = 1e-2;
+/// Whatever the rounding, a stall whose net forces reach this fraction of the mean force is no
+/// balance (at delta = 1e-10 D the gaps' rounding is 1e-5 of the forces, docs/jamming.md §6.7).
+constexpr double kStalledImbalance = 1e-3;
 
 /// The Levenberg-Marquardt step (H + mu M) dq = -grad E, M = 1 on translations and (D / 2)^2 on
 /// rotations (units); empty where the factorisation fails or is not positive definite.
@@ -173,7 +182,7 @@ std::optional<Eigen::VectorXd> dampedStep(const OverlapEnergy& energy, const Ene
     double largest = 0.0;
     for (int u = 0; u < n; u += 3)
         largest =
-            std::max(largest, dq.segment<3>(u).norm() / (u < translations ? 1.0 : 0.5 * diameter));
+            std::max(largest, dq.segment<3>(u).norm() * (u < translations ? 1.0 : 0.5 * diameter));
     if (largest > kLargestStep * diameter) dq *= kLargestStep * diameter / largest;
     return dq;
 }
@@ -189,19 +198,28 @@ SoftVerdict verdictOf(const EnergyTerms& terms, double shell, double diameter,
     if (meanForce <= p.unjammedForce * shell) return SoftVerdict::Unjammed;
     if (gradient <= p.balanceTolerance * meanForce) return SoftVerdict::Jammed;
     if (stalled && meanForce > p.stalledForce * shell &&
-        gradient <= std::max(p.stalledGradient * diameter, p.stalledBalance * meanForce))
+        gradient <= std::max(p.stalledGradient * diameter, p.stalledBalance * meanForce) &&
+        gradient <= kStalledImbalance * meanForce)
         return SoftVerdict::Jammed;
     return SoftVerdict::Unconverged;
 }
 
 } // namespace
 
+OverlapEnergyTerms overlapEnergy(const Packing& packing, double shell) {
+    OverlapEnergy energy(packing, shell, RelaxationParameters{}.candidateMargin);
+    EnergyTerms terms = energy.evaluate(packing, true);
+    Eigen::SparseMatrix<double> hessian(energy.unknowns(), energy.unknowns());
+    hessian.setFromTriplets(terms.hessian.begin(), terms.hessian.end());
+    return {terms.energy, std::move(terms.gradient), Eigen::MatrixXd(hessian)};
+}
+
 void validate(const RelaxationParameters& p) {
     const auto inUnit = [](double x) { return x > 0.0 && x < 1.0; };
-    if (!(p.smallestShell > 0.0 && p.smallestShell <= p.largestShell && p.largestShell <= 0.1))
+    if (!(p.smallestShell > 0.0 && p.smallestShell <= p.largestShell && p.largestShell <= 0.05))
         throw std::invalid_argument("relaxation: shells must satisfy 0 < smallest (" +
                                     std::to_string(p.smallestShell) + ") <= largest (" +
-                                    std::to_string(p.largestShell) + ") <= 0.1 D");
+                                    std::to_string(p.largestShell) + ") <= 0.05 D");
     if (!inUnit(p.bracketWidth) || !inUnit(p.balanceTolerance) || !inUnit(p.unjammedForce) ||
         !inUnit(p.stalledForce) || !inUnit(p.stalledGradient) || !inUnit(p.stalledBalance) ||
         !(p.candidateMargin > 0.0 && p.candidateMargin <= 0.05))
@@ -221,14 +239,14 @@ SoftMinimum minimiseOverlapEnergy(const Packing& packing, double shell,
     out.packing = packing;
     EnergyTerms terms = energy.evaluate(out.packing, true);
     out.deepestOverlap = std::max(0.0, -terms.smallestGap / diameter);
-    double mu = energy.shell();
+    double mu = shell; // dimensionless, as the translation block of H (units of D)
     bool stalled = false;
     for (; out.iterations < parameters.maxIterations; ++out.iterations) {
         out.verdict = verdictOf(terms, energy.shell(), diameter, parameters, stalled);
         if (out.verdict != SoftVerdict::Unconverged || stalled) break;
         if (poll) poll();
         bool improved = false;
-        for (; !improved && mu < 1e3 * diameter; mu *= 10.0) {
+        for (; !improved && mu < 1e3; mu *= 10.0) {
             const std::optional<Eigen::VectorXd> dq = dampedStep(energy, terms, mu, diameter);
             if (!dq) continue;
             Packing trial = energy.moved(out.packing, *dq);
@@ -240,7 +258,7 @@ SoftMinimum minimiseOverlapEnergy(const Packing& packing, double shell,
                 improved = true;
             }
         }
-        mu = std::max(mu / 100.0, 1e-20 * diameter);
+        mu = std::max(mu / 100.0, 1e-20);
         stalled = !improved; // rounding: no damped step lowers E
     }
     for (Vector3d& r : out.packing.positions)
@@ -277,6 +295,7 @@ JammingPoint findJammingPoint(const Packing& packing, const RelaxationParameters
     JammingPoint point;
     Packing base = packing; // the last unjammed minimum: each shell compresses from there
     double chainOverlap = 0.0;
+    SoftMinimum last; // the latest minimisation not jammed: the result where none is
     // Jammed only at a minimum whose forces balance (or stall at rounding); an unconverged
     // minimisation is still sliding and counts as unjammed, its state not kept.
     const auto attempt = [&](double shell) {
@@ -292,6 +311,7 @@ JammingPoint findJammingPoint(const Packing& packing, const RelaxationParameters
             chainOverlap = std::max(chainOverlap, minimum.deepestOverlap);
             base = minimum.packing;
         }
+        last = std::move(minimum);
         return false;
     };
     for (double shell = parameters.smallestShell;; shell *= 10.0) {
@@ -305,8 +325,7 @@ JammingPoint findJammingPoint(const Packing& packing, const RelaxationParameters
         const double middle = 0.5 * (point.unjammedShell + point.jammedShell);
         (attempt(middle) ? point.jammedShell : point.unjammedShell) = middle;
     }
-    if (!point.found)
-        point.relaxed = minimiseOverlapEnergy(base, parameters.largestShell, parameters);
+    if (!point.found) point.relaxed = std::move(last);
     point.deepestOverlap = std::max(chainOverlap, point.relaxed.deepestOverlap);
     measureMotion(packing, point);
     point.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -8,8 +8,8 @@
 // with E > 0 the forces f balance every particle's force and torque exactly (grad E = -A f = 0):
 // the inflated packing is jammed, and f is a self-stress of its network. The jamming point
 // delta_J, the smallest shell at which the minimum keeps E > 0, is bracketed by bisection, each
-// minimisation from the given packing; the particles keep their size, so the relaxed packing at
-// delta > delta_J has gaps in [0, delta) where f_c < delta.
+// minimisation from the last unjammed minimum; the particles keep their size, so the relaxed
+// packing at delta > delta_J has gaps in [0, delta) where f_c < delta.
 
 #include "packing/packing.hpp"
 
@@ -21,7 +21,8 @@ namespace sbpack {
 struct RelaxationParameters {
     /// The smallest shell tried (units of D): a packing jammed there is jammed within its gaps.
     double smallestShell = 1e-10;
-    /// The largest (units of D): a packing not jammed there is reported unjammed.
+    /// The largest (units of D, at most 0.05 so that it and the candidate margin stay within
+    /// the contact analyses' 0.1 D): a packing not jammed there is reported unjammed.
     double largestShell = 1e-2;
     /// The bracket [unjammed, jammed] is narrowed to this fraction of its upper end.
     double bracketWidth = 0.05;
@@ -31,12 +32,13 @@ struct RelaxationParameters {
     double balanceTolerance = 1e-10;
     /// The minimum counts as unjammed when its mean force is below this times delta, jammed when
     /// above `stalledForce` delta where the steps stall at rounding: |grad E|_inf below
-    /// `stalledGradient` D (the gaps' rounding, 1e-15 D, times the few contacts of a particle)
+    /// `stalledGradient` D (the gaps' rounding, 1e-15 D, times the dozen contacts of a particle)
     /// or `stalledBalance` times the mean force (the normals' rounding, about 1e-8, and the
-    /// stress test's acceptance of a self-stress, docs/jamming.md §6.6).
+    /// stress test's acceptance of a self-stress, docs/jamming.md §6.6), and in any case below
+    /// 1e-3 of the mean force.
     double unjammedForce = 1e-6;
     double stalledForce = 1e-3;
-    double stalledGradient = 1e-12;
+    double stalledGradient = 1e-14;
     double stalledBalance = 1e-6;
     /// The pairs within delta + this (units of D) are the candidates, found again after a particle
     /// has moved by a quarter of it.
@@ -69,16 +71,28 @@ struct JammingPoint {
     bool found = false;         ///< jammed at some shell <= largestShell
     double unjammedShell = 0.0; ///< the largest shell found unjammed (0: jammed at the smallest)
     double jammedShell = 0.0;   ///< the smallest found jammed (delta_J lies between); 0: none
-    SoftMinimum relaxed;        ///< the minimum at jammedShell (at largestShell where not found)
+    SoftMinimum relaxed; ///< the minimum at jammedShell (where not found: the last one tried)
     std::vector<Vector3d> displacement; ///< relaxed - given, minimum image, units of D
     std::vector<double> rotation;       ///< angle of relaxed against given orientation, radians
     double largestDisplacement = 0.0;
     double largestRotation = 0.0;
     double deepestOverlap = 0.0; ///< the largest SoftMinimum::deepestOverlap on the way
     int minimisations = 0;
-    int unconverged = 0; ///< minimisations that hit maxIterations (counted unjammed)
+    /// Minimisations that ended neither jammed nor unjammed (the iteration limit, or a stall
+    /// above rounding), counted unjammed.
+    int unconverged = 0;
     double seconds = 0.0;
 };
+
+/// E at `shell` (units of D) with its gradient and Hessian, in the packing's length units and
+/// the unknowns' layout of jamming/rigidity_matrix.hpp (3 translations per particle, then 3
+/// rotations for p != 1): what every step uses, for tests.
+struct OverlapEnergyTerms {
+    double energy = 0.0;
+    Eigen::VectorXd gradient;
+    Eigen::MatrixXd hessian;
+};
+OverlapEnergyTerms overlapEnergy(const Packing& packing, double shell);
 
 /// Throws std::invalid_argument for parameters out of range (shells in (0, 0.1], smallest <=
 /// largest, bracket in (0, 1), tolerances in (0, 1), iterations >= 1).

@@ -10,7 +10,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numeric>
+#include <string>
 
 namespace sbpack {
 namespace {
@@ -63,6 +65,12 @@ TEST(ContactResolution, TouchingPairsFallInTheFirstBin) {
     EXPECT_EQ(d.counts.front(), 6 * 108L) << "fcc-spheres.txt: 108 spheres";
 }
 
+std::string nineDigits(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", x);
+    return text;
+}
+
 /// `packing` as a float32 file gives it back: positions and quaternion coefficients rounded to
 /// single precision, the quaternions normalised again (as a reader does).
 Packing roundedToSinglePrecision(Packing packing) {
@@ -91,6 +99,12 @@ TEST(ContactResolution, SinglePrecisionCoordinatesAreFoundAndTheirRoundingBounds
     const double worstOverlap = -contacts.worstGap / diameter;
     EXPECT_LE(worstOverlap, *rounding);
     EXPECT_GE(worstOverlap, 0.1 * *rounding);
+    // Printed with 9 significant digits (a text or extended XYZ file), still single precision.
+    Packing printed = rounded;
+    for (Vector3d& r : printed.positions)
+        for (int k = 0; k < 3; ++k)
+            r[k] = std::stod(nineDigits(r[k]));
+    EXPECT_TRUE(singlePrecisionRounding(printed).has_value());
     // Not resolved at the paper's tolerance, whatever the pressure; resolved at the advised one.
     const ContactResolution r = resolveContacts(rounded, 1e-10);
     EXPECT_FALSE(r.resolved.value_or(true));

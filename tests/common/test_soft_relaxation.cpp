@@ -8,10 +8,13 @@
 #include "io/packing_io.hpp"
 #include "jamming/jamming_test.hpp"
 #include "jamming/soft_relaxation.hpp"
+#include "pair/pair_geometry.hpp"
 
 #include "order_lattices.hpp"
 
 #include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
 
 #include <cmath>
 #include <stdexcept>
@@ -92,6 +95,78 @@ TEST(SoftRelaxation, ItsForcesAreASelfStressOfTheContactAnalysesNetworkAndTheStr
     ASSERT_TRUE(result.secondOrder.has_value());
     EXPECT_NE(result.secondOrder->verdict, SecondOrderVerdict::NoSelfStress);
     EXPECT_GT(result.secondOrder->floppyModes, 0);
+}
+
+/// Three p = 1.5 superballs at random orientations, the pairs (0, 1) and (0, 2) placed at a gap
+/// of 0.01 D (within a shell of 0.02 D: f = 0.01), alone in a large box.
+Packing threeSuperballs() {
+    Packing packing;
+    packing.p = 1.5;
+    packing.semiAxis = 0.5;
+    packing.boxLength = 10.0;
+    packing.orientations = {Quaterniond(0.9, 0.2, -0.3, 0.1).normalized(),
+                            Quaterniond(0.4, -0.5, 0.6, 0.2).normalized(),
+                            Quaterniond(0.1, 0.8, 0.3, -0.5).normalized()};
+    packing.positions = {Vector3d(3.0, 3.0, 3.0), Vector3d::Zero(), Vector3d::Zero()};
+    const Vector3d directions[2] = {Vector3d(1.0, 0.1, 0.05).normalized(),
+                                    Vector3d(0.4, 1.0, 0.2).normalized()};
+    for (int j = 1; j <= 2; ++j) {
+        double distance = 1.0;
+        for (int k = 0; k < 40; ++k) { // the gap grows with the distance at slope n . d^ ~ 1
+            const SuperballPair pair{packing.shape(), packing.orientations[0].toRotationMatrix(),
+                                     packing.orientations[j].toRotationMatrix(),
+                                     distance * directions[j - 1]};
+            distance += 0.01 - signedDistance(pair).signedDistance;
+        }
+        packing.positions[j] = packing.positions[0] + distance * directions[j - 1];
+    }
+    return packing;
+}
+
+/// `packing` moved by dq in the unknowns' layout: r += dr, R = exp([dtheta]) R per particle.
+Packing movedBy(Packing packing, const Eigen::VectorXd& dq) {
+    const int n = static_cast<int>(packing.size());
+    for (int i = 0; i < n; ++i) {
+        packing.positions[i] += dq.segment<3>(3 * i);
+        const Vector3d turn = dq.segment<3>(3 * (n + i));
+        if (turn.norm() > 0.0)
+            packing.orientations[i] =
+                Quaterniond(Eigen::AngleAxisd(turn.norm(), turn.normalized())) *
+                packing.orientations[i];
+    }
+    return packing;
+}
+
+double energyAt(const Packing& packing, int u, double hu, int w, double hw, double shell) {
+    Eigen::VectorXd dq = Eigen::VectorXd::Zero(18);
+    dq[u] += hu;
+    dq[w] += hw;
+    return overlapEnergy(movedBy(packing, dq), shell).energy;
+}
+
+// The assembled gradient and Hessian (rigidity columns, gap Hessians, their indices and signs)
+// against differences of E itself, in the chart the steps use: one exponential per particle.
+TEST(SoftRelaxation, TheEnergysGradientAndHessianAreItsFiniteDifferences) {
+    const Packing packing = threeSuperballs();
+    const double shell = 0.02, h = 1e-4;
+    const OverlapEnergyTerms terms = overlapEnergy(packing, shell);
+    ASSERT_GT(terms.energy, 0.0);
+    ASSERT_EQ(terms.gradient.size(), 18);
+    const double scale = terms.hessian.lpNorm<Eigen::Infinity>();
+    for (int u = 0; u < 18; ++u) {
+        const double slope =
+            (energyAt(packing, u, h, u, 0.0, shell) - energyAt(packing, u, -h, u, 0.0, shell)) /
+            (2.0 * h);
+        EXPECT_NEAR(terms.gradient[u], slope, 1e-6 * terms.gradient.lpNorm<Eigen::Infinity>())
+            << "unknown " << u;
+        for (int w = 0; w < 18; ++w) {
+            const double second =
+                (energyAt(packing, u, h, w, h, shell) - energyAt(packing, u, h, w, -h, shell) -
+                 energyAt(packing, u, -h, w, h, shell) + energyAt(packing, u, -h, w, -h, shell)) /
+                (4.0 * h * h);
+            EXPECT_NEAR(terms.hessian(u, w), second, 1e-5 * scale) << u << ", " << w;
+        }
+    }
 }
 
 TEST(SoftRelaxation, RejectsParametersOutOfRange) {
