@@ -122,7 +122,9 @@ inline constexpr schema::FieldTable kTable{std::array<schema::Column<P>, 25>{{
              p, [](const JammingPoint& j) { return std::int64_t{j.minimisations}; });
      }},
     {{"relaxation_unconverged", A, I, "1",
-      "--jamming-relax: minimisations that stopped at their iteration limit", Mean, true},
+      "--jamming-relax: minimisations that ended neither jammed nor unjammed (the iteration "
+      "limit, or a stall above rounding), counted unjammed",
+      Mean, true},
      +[](const P& p, const Scales&) -> Optional {
          return relaxationValue<std::int64_t>(
              p, [](const JammingPoint& j) { return std::int64_t{j.unconverged}; });
