@@ -107,9 +107,9 @@ void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info
     if (info.jamming) printJamming(*info.jamming, out);
     if (c.overlappingPairs > 0)
         out << "  warning: " << describeOverlaps(c, diameter)
-            << (info.resolution.singlePrecision ? " (single-precision rounding: see the contact "
-                                                  "resolution above)"
-                                                : "")
+            << (overlapsWithinRounding(c, diameter, info.resolution.singlePrecision)
+                    ? " (single-precision rounding: see the contact resolution above)"
+                    : "")
             << '\n';
 }
 

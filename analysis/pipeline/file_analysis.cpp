@@ -30,8 +30,8 @@ schema::Record fileRecord(const Packing& packing, const std::filesystem::path& i
 void warnAboutOverlaps(const Packing& packing, const Progress& progress) {
     const ContactResult c = ContactNetwork({}).compute(packing);
     if (c.overlappingPairs == 0) return;
-    const std::optional<double> rounding = singlePrecisionRounding(packing);
-    const bool rounded = rounding && -c.worstGap <= *rounding * 2.0 * packing.semiAxis;
+    const bool rounded =
+        overlapsWithinRounding(c, 2.0 * packing.semiAxis, singlePrecisionRounding(packing));
     progress.warn(describeOverlaps(c, 2.0 * packing.semiAxis) +
                   (rounded ? ": within the rounding of its single-precision coordinates "
                              "(docs/design.md §3, \"Honest contacts\"); analysed as given"

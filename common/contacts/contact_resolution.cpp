@@ -52,6 +52,11 @@ std::optional<double> singlePrecisionRounding(const Packing& packing) {
     return (centres + turns) / packing.shape().diameter();
 }
 
+bool overlapsWithinRounding(const ContactResult& contacts, double diameter,
+                            const std::optional<double>& rounding) {
+    return rounding && -contacts.worstGap <= *rounding * diameter;
+}
+
 GapDistribution gapDistribution(const Packing& packing) {
     GapDistribution d;
     for (int k = kFirstDecade; k <= kLastDecade; ++k)

@@ -38,12 +38,16 @@ struct ContactResolution {
 
 /// Whether `packing` was stored in single precision (a file through OVITO or GSD: every position
 /// coordinate a float32, exactly or as its 9-digit decimal, some with more than 12 significant
-/// bits, so not a hand-made lattice of
-/// short binary fractions; the orientations are normalised on reading, off float32's grid), and if
-/// so how far that rounding may move two particles' surfaces against each other, units of D: 2
-/// sqrt(3) L 2^-24 for the centres, 2 r_c 2^-23 for the orientations (docs/design.md §3, "Honest
-/// contacts").
+/// bits, so not a hand-made lattice of short binary fractions; the orientations are normalised
+/// on reading, off float32's grid), and if so how far that rounding may move two particles'
+/// surfaces against each other, units of D: 2 sqrt(3) L 2^-24 for the centres, 2 r_c 2^-23 for
+/// the orientations (docs/design.md §3, "Honest contacts").
 std::optional<double> singlePrecisionRounding(const Packing& packing);
+
+/// Whether the worst overlap of `contacts` (computed at particle diameter `diameter`) lies within
+/// `rounding` (singlePrecisionRounding, units of D): overlaps that are rounding, not a defect.
+bool overlapsWithinRounding(const ContactResult& contacts, double diameter,
+                            const std::optional<double>& rounding);
 
 /// The resolution of `tolerance` (units of D) for `packing`: not resolved where the file is in
 /// single precision and the tolerance is below its rounding, or below the gaps of its recorded

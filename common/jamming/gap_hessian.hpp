@@ -39,6 +39,12 @@ ContactCurvature contactCurvature(const Superball& shape, const Matrix3d& rotati
                                   const Matrix3d& rotationB, const Vector3d& displacement,
                                   const Vector3d& normal, double gap);
 
+/// The lever arm of A to the midpoint of the two closest points, x - r_A: the contact point of
+/// the rigidity matrix (docs/jamming.md §2; B's is this minus the displacement).
+inline Vector3d midpointLever(const ContactCurvature& contact) {
+    return contact.leverA + 0.5 * contact.gap * contact.normal;
+}
+
 using Matrix12d = Eigen::Matrix<double, 12, 12>;
 
 /// Hess s in the order (dr_A, dtheta_A, dr_B, dtheta_B) (docs/jamming.md §6.1, Eq. H). Needs the

@@ -8,15 +8,13 @@ namespace {
 
 using Triplets = std::vector<Eigen::Triplet<double>>;
 
-/// The entries of one body's part of ds_c in column `column`: sign n . (dr + dtheta x rho), i.e.
-/// sign n on dr and sign rho x n on dtheta (n . (dtheta x rho) = dtheta . (rho x n)).
-void addBody(Triplets& entries, const DegreesOfFreedom& dof, int particle, double sign,
-             const Vector3d& normal, const Vector3d& lever, int column) {
-    const Vector3d torqueArm = lever.cross(normal);
+/// The entries of one body's part of ds_c in column `column`: `part`, the body's six entries of
+/// gapGradient (translation, then rotation where the rotations are unknowns).
+void addBody(Triplets& entries, const DegreesOfFreedom& dof, int particle,
+             const Eigen::Matrix<double, 6, 1>& part, int column) {
     for (int a = 0; a < 3; ++a) {
-        entries.emplace_back(dof.translation(particle) + a, column, sign * normal[a]);
-        if (dof.rotations)
-            entries.emplace_back(dof.rotation(particle) + a, column, sign * torqueArm[a]);
+        entries.emplace_back(dof.translation(particle) + a, column, part[a]);
+        if (dof.rotations) entries.emplace_back(dof.rotation(particle) + a, column, part[3 + a]);
     }
 }
 
@@ -37,6 +35,13 @@ void addStrain(Triplets& entries, const DegreesOfFreedom& dof, const RigidContac
 
 } // namespace
 
+Eigen::Matrix<double, 12, 1> gapGradient(const Vector3d& normal, const Vector3d& leverI,
+                                         const Vector3d& leverJ) {
+    Eigen::Matrix<double, 12, 1> g;
+    g << -normal, -leverI.cross(normal), normal, leverJ.cross(normal);
+    return g;
+}
+
 DegreesOfFreedom degreesOfFreedom(const RigidityNetwork& network, JammingCategory category) {
     return {static_cast<int>(network.backbone.size()), network.rotations,
             category == JammingCategory::Strict};
@@ -53,8 +58,10 @@ Eigen::SparseMatrix<double> rigidityMatrix(const RigidityNetwork& network,
     for (int c = 0; c < contacts; ++c) {
         const RigidContact& contact = network.contacts[c];
         const int columnI = local ? 2 * c : c, columnJ = local ? 2 * c + 1 : c;
-        addBody(entries, dof, contact.i, -1.0, contact.normal, contact.leverI, columnI);
-        addBody(entries, dof, contact.j, 1.0, contact.normal, contact.leverJ, columnJ);
+        const Eigen::Matrix<double, 12, 1> g =
+            gapGradient(contact.normal, contact.leverI, contact.leverJ);
+        addBody(entries, dof, contact.i, g.head<6>(), columnI);
+        addBody(entries, dof, contact.j, g.tail<6>(), columnJ);
         if (dof.strain) addStrain(entries, dof, contact, c);
     }
     Eigen::SparseMatrix<double> a(dof.count(), local ? 2 * contacts : contacts);

@@ -39,6 +39,12 @@ struct DegreesOfFreedom {
 
 DegreesOfFreedom degreesOfFreedom(const RigidityNetwork& network, JammingCategory category);
 
+/// The first-order change of one contact's gap in (dr_i, dtheta_i, dr_j, dtheta_j), the order of
+/// jamming/gap_hessian.hpp: (-n, -rho_i x n, n, rho_j x n), since n . (dtheta x rho) =
+/// dtheta . (rho x n). The rigidity matrix's column, and the relaxation's gradient.
+Eigen::Matrix<double, 12, 1> gapGradient(const Vector3d& normal, const Vector3d& leverI,
+                                         const Vector3d& leverJ);
+
 /// A (degrees of freedom x gaps). Collective and Strict: one column per contact. Local: two per
 /// contact, 2c the change of gap c with j held fixed (in particle i's test), 2c + 1 with i held
 /// fixed (in j's), so that the particles' tests are independent blocks of one program.

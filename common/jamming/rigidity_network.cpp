@@ -45,8 +45,7 @@ RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& net
         const ContactCurvature curvature = contactCurvature(
             shape, packing.orientations[i].toRotationMatrix(),
             packing.orientations[j].toRotationMatrix(), separation, network.normals[c], gap);
-        // The lever arms to the midpoint of the closest points (docs/jamming.md §2).
-        const Vector3d point = curvature.leverA + 0.5 * gap * network.normals[c];
+        const Vector3d point = midpointLever(curvature);
         result.contacts.push_back({backboneIndex[i], backboneIndex[j], network.normals[c], point,
                                    point - separation, separation - inBox, std::max(gap, 0.0),
                                    curvature.curvatureA, curvature.curvatureB});

@@ -2,6 +2,7 @@
 
 #include "contacts/contact_network.hpp"
 #include "jamming/gap_hessian.hpp"
+#include "jamming/rigidity_matrix.hpp"
 #include "pair/pair_geometry.hpp"
 
 #include <Eigen/Geometry>
@@ -31,6 +32,7 @@ struct EnergyTerms {
     int contacts = 0;
     double forceSum = 0.0;                                        ///< sum of f_c, length units
     double smallestGap = std::numeric_limits<double>::infinity(); ///< min s_c, length units
+    double meanForce() const { return contacts > 0 ? forceSum / contacts : 0.0; }
 };
 
 /// E at one shell, in the packing's length units (forces f_c = shell - s_c are lengths): the
@@ -121,13 +123,11 @@ void OverlapEnergy::addPair(const Packing& state, std::size_t k, bool hessian, E
     terms.smallestGap = std::min(terms.smallestGap, pair.signedDistance);
     const double force = shell_ - pair.signedDistance;
     if (force <= 0.0) return;
-    // The rigidity column a_c (rigidity_network.cpp's lever arms to the closest points' midpoint)
+    // The rigidity column a_c, with the rigidity network's lever arms.
     const ContactCurvature contact =
         contactCurvature(shape_, rotationI, rotationJ, d, pair.normal, pair.signedDistance);
-    const Vector3d& n = pair.normal;
-    const Vector3d leverI = contact.leverA + 0.5 * pair.signedDistance * n, leverJ = leverI - d;
-    Vector12d column;
-    column << -n, -leverI.cross(n), n, leverJ.cross(n);
+    const Vector3d leverI = midpointLever(contact);
+    const Vector12d column = gapGradient(pair.normal, leverI, leverI - d);
     int index[12];
     for (int a = 0; a < 3; ++a) {
         index[a] = 3 * i + a;
@@ -193,7 +193,7 @@ std::optional<Eigen::VectorXd> dampedStep(const OverlapEnergy& energy, const Ene
 /// finds no descent.
 SoftVerdict verdictOf(const EnergyTerms& terms, double shell, double diameter,
                       const RelaxationParameters& p, bool stalled) {
-    const double meanForce = terms.contacts > 0 ? terms.forceSum / terms.contacts : 0.0;
+    const double meanForce = terms.meanForce();
     const double gradient = terms.gradient.lpNorm<Eigen::Infinity>();
     if (meanForce <= p.unjammedForce * shell) return SoftVerdict::Unjammed;
     if (gradient <= p.balanceTolerance * meanForce) return SoftVerdict::Jammed;
@@ -264,10 +264,9 @@ SoftMinimum minimiseOverlapEnergy(const Packing& packing, double shell,
     for (Vector3d& r : out.packing.positions)
         r = wrapIntoBox(r, packing.boxLength);
     out.contacts = terms.contacts;
-    out.meanForce = terms.contacts > 0 ? terms.forceSum / terms.contacts / diameter : 0.0;
-    out.balanceResidual = terms.contacts > 0 ? terms.gradient.lpNorm<Eigen::Infinity>() /
-                                                   (terms.forceSum / terms.contacts)
-                                             : 0.0;
+    out.meanForce = terms.meanForce() / diameter;
+    out.balanceResidual =
+        terms.contacts > 0 ? terms.gradient.lpNorm<Eigen::Infinity>() / terms.meanForce() : 0.0;
     return out;
 }
 
@@ -279,10 +278,10 @@ void measureMotion(const Packing& given, JammingPoint& point) {
     for (std::size_t i = 0; i < given.size(); ++i) {
         point.displacement.push_back(
             minimumImage(relaxed.positions[i] - given.positions[i], given.boxLength) / diameter);
-        point.rotation.push_back(relaxed.orientations[i].angularDistance(given.orientations[i]));
         point.largestDisplacement =
             std::max(point.largestDisplacement, point.displacement.back().norm());
-        point.largestRotation = std::max(point.largestRotation, point.rotation.back());
+        point.largestRotation = std::max(
+            point.largestRotation, relaxed.orientations[i].angularDistance(given.orientations[i]));
     }
 }
 

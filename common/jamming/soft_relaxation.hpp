@@ -73,7 +73,6 @@ struct JammingPoint {
     double jammedShell = 0.0;   ///< the smallest found jammed (delta_J lies between); 0: none
     SoftMinimum relaxed; ///< the minimum at jammedShell (where not found: the last one tried)
     std::vector<Vector3d> displacement; ///< relaxed - given, minimum image, units of D
-    std::vector<double> rotation;       ///< angle of relaxed against given orientation, radians
     double largestDisplacement = 0.0;
     double largestRotation = 0.0;
     double deepestOverlap = 0.0; ///< the largest SoftMinimum::deepestOverlap on the way
