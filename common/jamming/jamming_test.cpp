@@ -1,5 +1,6 @@
 #include "jamming/jamming_test.hpp"
 
+#include "jamming/gordan_motion.hpp"
 #include "random/random.hpp"
 
 #include <algorithm>
@@ -197,6 +198,32 @@ FirstOrderVerdict verdictOf(const JammingResult& result, bool rotations) {
     return rotations ? FirstOrderVerdict::Undecided : FirstOrderVerdict::Unjammed;
 }
 
+/// The programs' motions found without them where Gordan's alternative allows (Collective and
+/// Strict, A of full column rank: jamming/gordan_motion.hpp): an opening accepted only where
+/// A^T x opens every contact by more than the tolerance, a flex only where it keeps every gap
+/// to the solver's feasibility and moves. Each one not found here is left to its program.
+void gordanShortcut(JammingResult& result, const Eigen::SparseMatrix<double>& a,
+                    const RigidityNetwork& network, const DegreesOfFreedom& dof,
+                    const JammingParameters& parameters) {
+    const auto motions = gordanMotions(a, dof, 0, parameters.seed);
+    if (!motions) return;
+    const double threshold = parameters.motionTolerance * parameters.maxStep;
+    if (motions->opening.size() > 0) {
+        UnjammingMotion opening = motionOf(motions->opening, a, network, dof, parameters);
+        if (opening.gapChange.size() > 0 && opening.gapChange.minCoeff() > threshold) {
+            result.largestOpening = opening.gapChange.maxCoeff();
+            result.opensEveryContact = true;
+            result.opening = std::move(opening);
+        }
+    }
+    if (motions->flex.size() > 0) {
+        UnjammingMotion flex = motionOf(motions->flex, a, network, dof, parameters);
+        if (flex.gapChange.lpNorm<Eigen::Infinity>() <= parameters.solver.feasibility &&
+            moves(flex, network, parameters))
+            result.flex = std::move(flex);
+    }
+}
+
 } // namespace
 
 JammingTest::JammingTest(JammingParameters parameters) : parameters_(parameters) {
@@ -231,22 +258,26 @@ JammingResult JammingTest::compute(const RigidityNetwork& network, JammingCatego
     if (!local) {
         result.fixedParticle = network.backbone.front();
         result.isostaticDeficit = dof.count() - 3 - result.contacts;
+        if (parameters_.gordanShortcut) gordanShortcut(result, a, network, dof, parameters_);
     }
     const LinearProgramMethod method =
         local ? LinearProgramMethod::DualSimplex : LinearProgramMethod::Barrier;
     LinearProgram program = boundedProgram(a, dof, network.boxLength, local ? -1 : 0);
 
-    makeOpening(program, a, network, category, parameters_);
-    UnjammingMotion opening =
-        motionOf(maximise(program, method, parameters_.solver), a, network, dof, parameters_);
-    result.largestOpening = opening.gapChange.size() > 0 ? opening.gapChange.maxCoeff() : 0.0;
-    if (result.largestOpening > parameters_.motionTolerance * parameters_.maxStep)
-        result.opening = std::move(opening);
-
-    makeFlex(program, a, parameters_.seed);
-    UnjammingMotion flex =
-        motionOf(maximise(program, method, parameters_.solver), a, network, dof, parameters_);
-    if (moves(flex, network, parameters_)) result.flex = std::move(flex);
+    if (!result.opensEveryContact) {
+        makeOpening(program, a, network, category, parameters_);
+        UnjammingMotion opening =
+            motionOf(maximise(program, method, parameters_.solver), a, network, dof, parameters_);
+        result.largestOpening = opening.gapChange.size() > 0 ? opening.gapChange.maxCoeff() : 0.0;
+        if (result.largestOpening > parameters_.motionTolerance * parameters_.maxStep)
+            result.opening = std::move(opening);
+    }
+    if (!result.flex) {
+        makeFlex(program, a, parameters_.seed);
+        UnjammingMotion flex =
+            motionOf(maximise(program, method, parameters_.solver), a, network, dof, parameters_);
+        if (moves(flex, network, parameters_)) result.flex = std::move(flex);
+    }
 
     result.freed = freedParticles(result, network);
     result.verdict = verdictOf(result, network.rotations);

@@ -6,8 +6,10 @@
 //   opening:  maximise sum_c ds_c  subject to ds = A^T dq >= -g   (a contact opens, none closes)
 //   flex:     maximise c . dq      subject to A^T dq = 0,  c random (a motion that keeps every
 //             contact at its gap to first order, found with probability 1 if one exists)
-// Strict adds the strain eps with tr eps <= 0 to both. Where the collective first order is
-// Undecided (p != 1), the second-order stress test follows (jamming/second_order.hpp).
+// Strict adds the strain eps with tr eps <= 0 to both. Where A has full column rank the motions
+// come without the programs (Gordan's alternative, jamming/gordan_motion.hpp): an opening of
+// every contact. Where the collective first order is Undecided (p != 1), the second-order stress
+// test follows (jamming/second_order.hpp).
 
 #include "jamming/linear_program.hpp"
 #include "jamming/rigidity_matrix.hpp"
@@ -29,6 +31,9 @@ struct JammingParameters {
     /// feasibility tolerance, far below a real motion's O(Delta) (docs/jamming.md §4).
     double motionTolerance = 1e-6;
     std::uint64_t seed = 1; ///< of the flex program's random objective
+    /// Collective and Strict: the motions by Gordan's alternative where A has full column rank
+    /// (jamming/gordan_motion.hpp); false: the programs always (bench/bench_jamming's baseline).
+    bool gordanShortcut = true;
     LinearProgramTolerances solver;
     /// The second-order test where the collective first order is Undecided (enabled: true).
     SecondOrderParameters secondOrder;
@@ -56,9 +61,14 @@ struct UnjammingMotion {
 struct JammingResult {
     JammingCategory category = JammingCategory::Collective;
     FirstOrderVerdict verdict = FirstOrderVerdict::Jammed;
-    double largestOpening = 0.0;            ///< max_c ds_c of the opening program, units of D
+    double largestOpening = 0.0;            ///< max_c ds_c of the opening, units of D
     std::optional<UnjammingMotion> opening; ///< when a contact opens by > tolerance Delta
-    std::optional<UnjammingMotion> flex;    ///< when a flex moves by > tolerance Delta
+    /// The opening opens every contact (Collective, Strict): A has full column rank, no
+    /// self-stress exists, and the network is not jammed by Gordan's alternative; the opening
+    /// and, where it checks, the flex come from one factorisation of A^T A
+    /// (jamming/gordan_motion.hpp), not the programs, and the flexes number isostaticDeficit.
+    bool opensEveryContact = false;
+    std::optional<UnjammingMotion> flex; ///< when a flex moves by > tolerance Delta
     /// Packing indices of the particles an opening contact frees (its two ends; Local: the end
     /// whose test it is), for p != 1 only where no closed contact slides or rolls (in the local
     /// test per particle, else for the whole motion), and, for spheres, those the flex moves.

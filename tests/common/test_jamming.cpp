@@ -7,7 +7,11 @@
 #include "contacts/jam_check.hpp"
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
+#include "jamming/gordan_motion.hpp"
 #include "jamming/jamming_test.hpp"
+#include "jamming/rigidity_matrix.hpp"
+#include "jamming/second_order.hpp"
+#include "jamming/self_stress.hpp"
 #include "pair/pair_geometry.hpp"
 #include "random/random.hpp"
 
@@ -189,7 +193,8 @@ TEST(JammingCategories, SimpleCubicIsLocallyButNotCollectivelyJammedARowSlides) 
     EXPECT_EQ(test(network, JammingCategory::Local).verdict, FirstOrderVerdict::Jammed);
     const JammingResult collective = test(network, JammingCategory::Collective);
     EXPECT_EQ(collective.verdict, FirstOrderVerdict::Unjammed);
-    EXPECT_FALSE(collective.opening); // no contact opens at first order: rows slide
+    EXPECT_FALSE(collective.opening);           // no contact opens at first order: rows slide
+    EXPECT_FALSE(collective.opensEveryContact); // the rows' self-stresses: A^T A is singular
     EXPECT_LT(collective.largestOpening, 1e-9);
     ASSERT_TRUE(collective.flex);
     const UnjammingMotion& flex = *collective.flex;
@@ -371,6 +376,51 @@ TEST(JammingCategories, AnOpeningFreesASphereButLeavesASlidingSuperballUndecided
             EXPECT_TRUE(local.freed.empty());
         }
     }
+}
+
+TEST(JammingCategories, GordansAlternativeOpensEveryContactWhereNoSelfStressExists) {
+    // data/ordered-p1.2-40.h5 as sbgen left it (P = 1e12, the jam check's network): hypostatic,
+    // and at the finite growth rate without any self-stress (docs/jamming.md §6.6). Gordan: then
+    // a first-order motion opens every contact; the shortcut finds it, the exact self-stress
+    // program (the other alternative, an independent method) finds nothing to balance.
+    const Packing packing = readPacking(kData + "/ordered-p1.2-40.h5");
+    const RigidityNetwork network =
+        backboneNetwork(packing, checkJam(packing, *packing.reducedPressure).contacts);
+    const SelfStress stress = findSelfStress(network, 1e-6, {}, SelfStressProgram::Exact);
+    EXPECT_TRUE(stress.forces.size() == 0);
+    for (const JammingCategory category : {JammingCategory::Collective, JammingCategory::Strict}) {
+        const JammingResult result = test(network, category);
+        EXPECT_TRUE(result.opensEveryContact);
+        EXPECT_EQ(result.verdict, FirstOrderVerdict::Unjammed);
+        EXPECT_EQ(result.freed, network.backbone);
+        ASSERT_TRUE(result.opening && result.flex);
+        EXPECT_GT(result.opening->gapChange.minCoeff(), 1e-6);
+        EXPECT_LT(result.flex->gapChange.cwiseAbs().maxCoeff(), 1e-9);
+        EXPECT_FALSE(result.secondOrder); // decided at first order
+        // Without the shortcut the opening program finds an opening too (one that may slide
+        // closed contacts: its verdict can stay undecided), never a jammed network.
+        JammingParameters programs;
+        programs.gordanShortcut = false;
+        const JammingResult baseline = test(network, category, programs);
+        EXPECT_FALSE(baseline.opensEveryContact);
+        EXPECT_TRUE(baseline.opening);
+        EXPECT_NE(baseline.verdict, FirstOrderVerdict::Jammed);
+    }
+    // The least-norm opening opens every contact alike (A^T dq = 1, scaled), and the flexes
+    // number the Maxwell deficit, as the second order's rank-revealing QR counts them.
+    const DegreesOfFreedom dof = degreesOfFreedom(network, JammingCategory::Collective);
+    const Eigen::SparseMatrix<double> a = rigidityMatrix(network, JammingCategory::Collective);
+    const auto motions = gordanMotions(a, dof, 0, 1);
+    ASSERT_TRUE(motions);
+    const Eigen::VectorXd ds = a.transpose() * motions->opening;
+    EXPECT_LT(ds.maxCoeff() - ds.minCoeff(), 1e-7 * ds.maxCoeff()); // 5e-9 measured
+    const SecondOrderResult rank = SecondOrderTest({}).compute(network);
+    EXPECT_EQ(rank.selfStresses, 0);
+    EXPECT_EQ(rank.floppyModes, test(network, JammingCategory::Collective).isostaticDeficit);
+    // More contacts than degrees of freedom (fcc): the other alternative, no shortcut.
+    const RigidityNetwork fcc = networkOf(readTextPacking(kData + "/fcc-spheres.txt"));
+    EXPECT_FALSE(gordanMotions(rigidityMatrix(fcc, JammingCategory::Collective),
+                               degreesOfFreedom(fcc, JammingCategory::Collective), 0, 1));
 }
 
 TEST(JammingTest, RejectsInvalidParametersAndAnEmptyBackbone) {
