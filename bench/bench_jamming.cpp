@@ -5,9 +5,12 @@
 // the flex is (participation ratio), the particles freed, and the wall time of both programs;
 // where the collective first order is undecided, the second-order stress test. Letter r: the
 // least-residual self-stress of a finite-pressure snapshot (docs/jamming.md §6.6) and its rho;
-// letter a: that and the second-order test with it (bench/RESULTS.md, "Approximate self-stress").
+// letter a: that and the second-order test with it (bench/RESULTS.md, "Approximate self-stress");
+// letter g: the collective and strict tests by Gordan's shortcut and by the programs alone, side
+// by side in one run, with their verdicts and the time ratio (bench/RESULTS.md, "Gordan's
+// shortcut").
 //
-//   bench_jamming FILE [TOLERANCES] [CATEGORIES]   (e.g. 1e-10,1e-8 and lcsra; default: jam
+//   bench_jamming FILE [TOLERANCES] [CATEGORIES]   (e.g. 1e-10,1e-8 and lcsrag; default: jam
 //   check's, lcs)
 
 #include "contacts/jam_check.hpp"
@@ -113,6 +116,27 @@ void approximateRow(const RigidityNetwork& network, bool secondOrder) {
     std::fflush(stdout);
 }
 
+/// The collective and strict tests with Gordan's shortcut and with the programs alone.
+void gordanRows(const RigidityNetwork& network) {
+    JammingParameters programs; // first order only: seconds exclude the second order anyway
+    programs.gordanShortcut = false;
+    programs.secondOrder.enabled = false;
+    const char* verdicts[] = {"jammed", "unjammed", "undecided"};
+    for (const auto& [name, category] : {std::pair{"collective", JammingCategory::Collective},
+                                         std::pair{"strict", JammingCategory::Strict}}) {
+        const JammingResult shortcut = JammingTest({}).compute(network, category);
+        const JammingResult baseline = JammingTest(programs).compute(network, category);
+        std::printf("gordan %s: shortcut %s (every contact opens: %s, by %.3g D) %.2f s; programs "
+                    "%s %.2f s; programs / shortcut %.1f\n",
+                    name, verdicts[static_cast<int>(shortcut.verdict)],
+                    shortcut.opensEveryContact ? "yes" : "no",
+                    shortcut.opening ? shortcut.opening->gapChange.minCoeff() : 0.0,
+                    shortcut.seconds, verdicts[static_cast<int>(baseline.verdict)],
+                    baseline.seconds, baseline.seconds / shortcut.seconds);
+        std::fflush(stdout);
+    }
+}
+
 std::vector<double> parseList(const std::string& text) {
     std::vector<double> values;
     std::stringstream stream(text);
@@ -165,6 +189,7 @@ int main(int argc, char** argv) {
             }
         if (categories.find('r') != std::string::npos || categories.find('a') != std::string::npos)
             approximateRow(network, categories.find('a') != std::string::npos);
+        if (categories.find('g') != std::string::npos) gordanRows(network);
     }
     return 0;
 }

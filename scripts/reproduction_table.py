@@ -15,6 +15,10 @@ Table 5, when the results have them: the mean width w / D (D = 2R, paper Eq. w),
 moments and transport bounds in units of w (paper Eqs. 17-20), and the hyperuniformity fit
 (alpha from the spreadability, a0, a1 and H from chi_V = a0 + a1 Q^alpha; the paper's a0 in
 1e-4 w^3, a1 in 1e-3, H in 1e-3, as printed in its Table tab:fit).
+Table 6, when the results have them: the jamming categories (docs/jamming.md): the packings per
+category reached, those left undecided, whether every contact opens (no self-stress: Gordan's
+alternative), the backbone, its contacts and the Maxwell deficit (the floppy modes where every
+contact opens).
 
 usage: reproduction_table.py RESULTS.h5 REFERENCE.csv"""
 import csv
@@ -254,6 +258,45 @@ LOCAL_NOTE = (
     "reports none of them.")
 
 
+JAMMING_HEADER = ("p", "N", "n", "strict", "collective", "local", "none",
+                  "undecided (local)", "every contact opens", "opening per contact (1e-4 D)",
+                  "backbone", "contacts", "floppy modes", "s per packing")
+JAMMING_NOTE = (
+    "Jamming categories (sbanalyze --compute jamming, docs/jamming.md) at the jam check's "
+    "network (gap < max(1e-10, 100 / P) D), rattlers removed: the packings per category reached "
+    "(strict, collective, local, none), those whose local test is left undecided (an opening "
+    "that slides a closed contact: curvature decides, p != 1), and those whose collective and "
+    "strict tests find a first-order motion that opens every contact (Gordan's alternative: "
+    "no self-stress exists, the packing as given is not collectively jammed; docs/jamming.md "
+    "§3), with that motion's opening per contact at a largest step of 1 D. Floppy modes: the "
+    "collective Maxwell deficit, 6 N_b - 3 - contacts (3 N_b for spheres), which equals "
+    "dim ker A^T - 3 where every contact opens (A has full column rank). Mean +- sd over the "
+    "packings. The paper tests no category.")
+
+
+def jamming_row(group):
+    n = int(group.attrs["n_files"])
+    p = float(group.attrs["p"])
+    j = group["jamming"].attrs
+    counts = [str(int(j.get(f"n_{name}", 0))) for name in
+              ("strict", "collective", "local", "none")]
+    undecided = int(group["jamming_local"].attrs.get("n_undecided", 0)) \
+        if "jamming_local" in group else 0
+    collective = group["jamming_collective"] if "jamming_collective" in group else None
+    opens = "-"
+    opening = floppy = "-"
+    if collective is not None:
+        c = collective.attrs
+        opens = str(round(float(c.get("opens_every_contact", 0.0)) * n))
+        opening = pm(attr(group, "jamming_collective", "largest_opening"), 1e4, 2, n)
+        floppy = pm(attr(group, "jamming_collective", "isostatic_deficit"), 1.0, 0, n)
+    return (f"| {p:g} | {int(group.attrs['n_particles'])} | {n} | " + " | ".join(counts)
+            + f" | {undecided} | {opens} of {n} | {opening} | "
+            + f"{pm(attr(group, 'jamming', 'backbone'), 1.0, 0, n)} | "
+            + f"{pm(attr(group, 'jamming', 'contacts'), 1.0, 0, n)} | {floppy} | "
+            + f"{float(j.get('runtime_s', math.nan)):.2g} |")
+
+
 def pore_method(results):
     """The pore-size methods of the files, as their pore_size groups record them."""
     methods = set()
@@ -295,6 +338,9 @@ def main(results_path, reference):
             print()
             print_table(TRANSPORT_HEADER, [transport_row(results, g, paper) for g in groups],
                         TRANSPORT_NOTE.format(pores=pore_method(results)))
+        if any("jamming" in g for g in groups):
+            print()
+            print_table(JAMMING_HEADER, [jamming_row(g) for g in groups], JAMMING_NOTE)
 
 
 if __name__ == "__main__":

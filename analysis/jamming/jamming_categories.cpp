@@ -94,6 +94,9 @@ std::string categoryDetail(const JammingResult& r) {
     std::string detail(firstOrderVerdictName(r.verdict));
     if (!r.freed.empty()) detail += fmt::format(", {} freed", r.freed.size());
     if (r.opening) detail += fmt::format(", an opening moves {}", r.opening->moving.size());
+    if (r.opensEveryContact)
+        detail += fmt::format(" and opens every contact by {:.3g} D (no self-stress: Gordan)",
+                              r.opening->gapChange.minCoeff());
     if (r.flex) detail += fmt::format(", a flex moves {}", r.flex->moving.size());
     if (const auto& s = r.secondOrder)
         detail += fmt::format("; second order: {} ({} floppy modes, {} self-stresses, smallest "
@@ -176,7 +179,16 @@ std::string PackingJamming::verdict() const {
         second != tests.end()
             ? fmt::format("collective {}", secondOrderVerdictName(second->secondOrder->verdict))
             : std::string("not run"));
-    return r ? fmt::format("{} jammed; {}", adverb(*r), pending) : pending;
+    // A category above the undecided ones that first order already decided (unjammed).
+    const auto above = std::find_if(next, tests.end(), [](const JammingResult& t) {
+        return t.verdict == FirstOrderVerdict::Unjammed;
+    });
+    const std::string decided =
+        above == tests.end()
+            ? std::string()
+            : fmt::format("; not {} jammed (first order{})", adverb(above->category),
+                          above->opensEveryContact ? ": every contact opens" : "");
+    return (r ? fmt::format("{} jammed; {}", adverb(*r), pending) : pending) + decided;
 }
 
 /// sbgen's stored contact forces on the network's contacts (0 where a contact has none), the
@@ -247,7 +259,13 @@ PackingJamming testJammingCategories(const Packing& packing, const JammingSettin
     for (JammingCategory category : settings.categories) {
         if (backbone.backbone.empty()) break;
         if (observer.before) observer.before(category);
-        out.tests.push_back(test.compute(backbone, category, forces));
+        const auto collective =
+            std::find_if(out.tests.begin(), out.tests.end(), [](const JammingResult& t) {
+                return t.category == JammingCategory::Collective && t.opensEveryContact;
+            });
+        out.tests.push_back(category == JammingCategory::Strict && collective != out.tests.end()
+                                ? JammingTest::strictFromCollective(*collective, backbone)
+                                : test.compute(backbone, category, forces));
         if (observer.after) observer.after(out.tests.back());
     }
     out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

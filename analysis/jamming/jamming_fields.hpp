@@ -198,7 +198,7 @@ template <class T> Optional secondOrderValue(const R& r, T (*value)(const Second
     return Value(value(*r.secondOrder));
 }
 
-inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>, 26>{{
+inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>, 27>{{
     {{"verdict", A, S, "",
       "first-order verdict: jammed (no motion), unjammed (a particle certainly freed; for "
       "spheres any motion) or undecided (p != 1: only motions that curvature may block, for the "
@@ -279,10 +279,20 @@ inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>,
          return Value(std::int64_t{r.isostaticDeficit});
      }},
     {{"largest_opening", A, F, "D",
-      "largest first-order opening of a contact by the opening program, max_c ds_c, at steps "
+      "largest first-order opening of a contact by the opening motion, max_c ds_c, at steps "
       "up to --jamming-max-step",
       Mean},
      member<&R::largestOpening>},
+    {{"opens_every_contact", A, I, "1",
+      "1 where the opening opens every contact: the rigidity matrix has full column rank, no "
+      "self-stress exists and, by Gordan's alternative, the network is not jammed (the motions "
+      "by one factorisation of A^T A, not the programs; the flexes number isostatic_deficit; "
+      "docs/jamming.md §3); not for local",
+      Mean, true},
+     +[](const R& r, const Scales&) -> Optional {
+         if (r.category == JammingCategory::Local) return std::nullopt;
+         return Value(std::int64_t{r.opensEveryContact ? 1 : 0});
+     }},
     {{"n_freed", A, I, "1", "particles certainly freed (the dataset freed)", Mean},
      +[](const R& r, const Scales&) -> Optional {
          return Value(static_cast<std::int64_t>(r.freed.size()));

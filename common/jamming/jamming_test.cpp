@@ -289,4 +289,21 @@ JammingResult JammingTest::compute(const RigidityNetwork& network, JammingCatego
     return result;
 }
 
+JammingResult JammingTest::strictFromCollective(const JammingResult& collective,
+                                                const RigidityNetwork& network) {
+    if (collective.category != JammingCategory::Collective || !collective.opensEveryContact ||
+        collective.contacts != static_cast<int>(network.contacts.size()))
+        throw std::invalid_argument("jamming test: strict from collective needs a collective "
+                                    "result on the same network that opens every contact");
+    const auto start = std::chrono::steady_clock::now();
+    JammingResult strict = collective;
+    strict.category = JammingCategory::Strict;
+    strict.isostaticDeficit =
+        degreesOfFreedom(network, JammingCategory::Strict).count() - 3 - strict.contacts;
+    strict.secondOrder.reset();
+    strict.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return strict;
+}
+
 } // namespace sbpack

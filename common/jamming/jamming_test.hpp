@@ -105,6 +105,13 @@ class JammingTest {
     JammingResult compute(const RigidityNetwork& network, JammingCategory category,
                           const std::optional<Eigen::VectorXd>& forces = std::nullopt) const;
 
+    /// Strict from a Collective result that opens every contact, without a second
+    /// factorisation: its motions, of the fixed box, are strict motions too (tr eps = 0), so
+    /// strict is unjammed by the same opening. Throws std::invalid_argument unless `collective`
+    /// is a Collective result with opensEveryContact on `network`.
+    static JammingResult strictFromCollective(const JammingResult& collective,
+                                              const RigidityNetwork& network);
+
     const JammingParameters& parameters() const { return parameters_; }
 
   private:

@@ -417,6 +417,16 @@ TEST(JammingCategories, GordansAlternativeOpensEveryContactWhereNoSelfStressExis
     const SecondOrderResult rank = SecondOrderTest({}).compute(network);
     EXPECT_EQ(rank.selfStresses, 0);
     EXPECT_EQ(rank.floppyModes, test(network, JammingCategory::Collective).isostaticDeficit);
+    // Strict from the collective's opening (a motion of the fixed box) answers as its own test.
+    const JammingResult collective = test(network, JammingCategory::Collective);
+    const JammingResult strict = JammingTest::strictFromCollective(collective, network);
+    const JammingResult direct = test(network, JammingCategory::Strict);
+    EXPECT_EQ(strict.category, JammingCategory::Strict);
+    EXPECT_EQ(strict.verdict, direct.verdict);
+    EXPECT_EQ(strict.freed, direct.freed);
+    EXPECT_EQ(strict.isostaticDeficit, direct.isostaticDeficit);
+    EXPECT_THROW(JammingTest::strictFromCollective(test(network, JammingCategory::Local), network),
+                 std::invalid_argument);
     // More contacts than degrees of freedom (fcc): the other alternative, no shortcut.
     const RigidityNetwork fcc = networkOf(readTextPacking(kData + "/fcc-spheres.txt"));
     EXPECT_FALSE(gordanMotions(rigidityMatrix(fcc, JammingCategory::Collective),
