@@ -57,8 +57,8 @@ def contact_forces(series):
     return fig
 
 
-MOTIONS = [("opening_displacement", "an opening (a motion that opens contacts)"),
-           ("flex_displacement", "a flex (a motion that keeps every contact)")]
+MOTIONS = [("opening_displacement", "an opening"), ("flex_displacement", "a flex")]
+COLUMNS = 3  # panels per row of the motion figure
 
 
 def motion_inputs(series):
@@ -84,8 +84,12 @@ def unjamming_motion(series, voxels=200, threads=1):
     inputs = motion_inputs(series)
     if not inputs or voxels == 0:
         return None
-    fig, axes = new_figure(len(inputs), width=4.4, height=4.4)
-    for ax, (path, f, name, what) in zip(axes[0], inputs):
+    columns = min(COLUMNS, len(inputs))
+    rows = -(-len(inputs) // columns)
+    fig, axes = new_figure(columns, rows, width=3.6, height=3.6)
+    for ax in axes.flat[len(inputs):]:
+        ax.remove()
+    for ax, (path, f, name, what) in zip(axes.flat, inputs):
         packing = _sbpack.Packing.read(path)
         plane = section_plane(packing, voxels)
         solid, _ = _sbpack.voxel_slice(packing, voxels, plane, threads)
@@ -97,7 +101,10 @@ def unjamming_motion(series, voxels=200, threads=1):
         ax.quiver(r[:, 2] / D, r[:, 1] / D, u[:, 2], u[:, 1], angles="xy", scale_units="xy",
                   scale=1.0, color="tab:red", width=0.006, gid=f"{packing.p:g}")
         ax.set(xlim=(0, L / D), ylim=(0, L / D), xlabel="$z/D$", ylabel="$y/D$")
-        ax.set_title(f"p = {packing.p:g}, N = {len(packing)}: {what}", fontsize=8)
+        ax.set_title(f"p = {packing.p:g}, N = {len(packing)}: {what}", fontsize=9)
+    fig.suptitle("The collective test's unjamming motion on a section x = L/2: each particle's "
+                 "(z, y) displacement,\nthe largest one D long (an opening opens contacts, a flex "
+                 "keeps every one)", fontsize=9)
     return fig
 
 
