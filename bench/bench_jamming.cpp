@@ -14,7 +14,7 @@
 //   check's, lcs)
 
 #include "contacts/jam_check.hpp"
-#include "io/text_io.hpp"
+#include "io/packing_formats.hpp"
 #include "jamming/jamming_test.hpp"
 #include "jamming/rigidity_matrix.hpp"
 

@@ -168,6 +168,22 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   quaternion order `x y z w`) and `aspherical_shape` directly; map the two
   `superquadric_roundness` columns (both `1/p`) to OVITO's "Superquadric Roundness" in the
   import dialog to see superball shapes.
+- **GSD** (`.gsd`, HOOMD-blue's format, read and written by `convert`, `info`, the analysis and
+  `sbpack.Packing.read`/`write`; `common/io/gsd_io.hpp`, by the reference library vendored in
+  `common/third_party/gsd`, BSD-2-Clause, gsd 5.0.1): one frame of HOOMD schema 1.4, which
+  HOOMD 4, gsd.hoomd 4 and 5, freud and OVITO read: the cubic `configuration/box`, one type
+  `superball` whose `particles/type_shapes` is a `ConvexPolyhedron` of 266 points on the
+  superball's surface (OVITO draws the particles as superballs, no dialog),
+  `particles/position` in `[-L/2, L/2)` and `particles/orientation` `(w, x, y, z)` in single
+  precision as the schema has them, and, so that nothing is lost, double-precision copies
+  `log/particles/sbpack/position` (in `[0, L)`) and `log/particles/sbpack/orientation` with
+  the scalars `log/sbpack/p`, `semi_axis`, `box_length`, `reduced_pressure` and `seed`: an sbpack
+  file round-trips bit for bit. A file from elsewhere is read from its last frame: the
+  single-precision positions (a jammed packing then overlaps by up to the rounding: `info` and
+  the contacts say so and advise `--tolerance`), orientations (identity where absent), a cubic
+  box without tilt, and the shape from sbpack's scalars or one `Sphere` type_shape (a HOOMD
+  hard-sphere frame: `p = 1`, `a` = diameter / 2); anything else is refused naming the file.
+  Checked against gsd.hoomd, freud and OVITO by `bench/gsd_vs_peers.sh` (bench/RESULTS.md).
 - **Results file** (HDF5, `format = "sbpack.results"`, `format_version = 4`): the root holds the
   run, `files/<i>` one input with one subgroup per analysis, `ensembles/<k>` the inputs of equal
   `p` and `N`; every name and unit is in docs/results-schema.md. Reading it with h5py

@@ -111,12 +111,15 @@ void CommandLine::addSubcommands() {
                                   "jamming-contacts", "jamming-second-order", "jamming-relax"})
         addOption(*info_, infoSettings_, findOption(name), defaults);
     info_->add_option("FILE", infoFiles_,
-                      "packing files (.h5 or .txt); a bad one is reported, the others still are");
+                      "packing files (.h5, .txt, .xyz or .gsd); a bad one is reported, the others "
+                      "still are");
     convert_ = app_.add_subcommand(
-        "convert", "convert between .h5 and .txt (a header with p, semi_axis, box_length, then\n"
-                   "x y z qw qx qy qz per particle), and to extended XYZ (.xyz) for OVITO");
-    convert_->add_option("IN", convertIn_, "packing to read (.h5 or .txt)")->required();
-    convert_->add_option("OUT", convertOut_, "packing to write (.h5, .txt or .xyz)")->required();
+        "convert", "convert between .h5, .txt (a header with p, semi_axis, box_length, then\n"
+                   "x y z qw qx qy qz per particle), extended XYZ (.xyz, for OVITO) and GSD\n"
+                   "(.gsd: HOOMD-blue, freud, OVITO; docs/cli.md, \"Files\")");
+    convert_->add_option("IN", convertIn_, "packing to read (.h5, .txt, .xyz or .gsd)")->required();
+    convert_->add_option("OUT", convertOut_, "packing to write (.h5, .txt, .xyz or .gsd)")
+        ->required();
     schema_ = app_.add_subcommand(
         "schema",
         "print the results file's schema: groups, names, units (docs/results-schema.md);\n"

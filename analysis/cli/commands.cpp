@@ -3,6 +3,7 @@
 #include "info/packing_info.hpp"
 #include "io/atomic_file.hpp"
 #include "io/naming_file.hpp"
+#include "io/packing_formats.hpp"
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
 #include "pipeline/analysis_registry.hpp"
@@ -19,21 +20,6 @@
 #include <stdexcept>
 
 namespace sbpack {
-
-namespace {
-
-enum class Format { Hdf5, Text, Xyz };
-
-Format formatOf(const std::string& name) {
-    const auto dot = name.rfind('.');
-    const std::string ext = dot == std::string::npos ? "" : name.substr(dot);
-    if (ext == ".h5" || ext == ".hdf5") return Format::Hdf5;
-    if (ext == ".txt") return Format::Text;
-    if (ext == ".xyz") return Format::Xyz;
-    throw std::invalid_argument("'" + name + "': unknown extension (use .h5, .txt or .xyz)");
-}
-
-} // namespace
 
 int analyzeCommand(const RunSettings& settings, const Communicator& communicator) {
     installStopHandler();
@@ -57,18 +43,15 @@ int infoCommand(const std::vector<std::string>& files, const ContactParameters& 
 }
 
 int convertCommand(const std::string& input, const std::string& output, std::ostream& err) {
-    static_cast<void>(formatOf(input)); // refuses an unknown extension
-    const Format out = formatOf(output);
+    static_cast<void>(packingFormatOf(input)); // refuses an unknown extension
+    const PackingFormat out = packingFormatOf(output);
     checkWritable(output);
     checkNotInput(output, input, "convert");
-    const Packing packing = readPackingFile(input); // .h5, .txt or .xyz by the extension
-    if (out != Format::Hdf5)
-        if (const auto left = notCarriedBy(packing, out == Format::Xyz); !left.empty())
-            err << "sbanalyze: warning: '" << output << "' cannot carry the "
-                << fmt::format("{}", fmt::join(left, ", ")) << " of '" << input << "': left out\n";
-    if (out == Format::Hdf5) writePacking(packing, output);
-    if (out == Format::Text) writeTextPacking(packing, output);
-    if (out == Format::Xyz) writeExtendedXyz(packing, output);
+    const Packing packing = readPackingFile(input); // by the extension (io/packing_formats.hpp)
+    if (const auto left = notCarriedBy(packing, out); !left.empty())
+        err << "sbanalyze: warning: '" << output << "' cannot carry the "
+            << fmt::format("{}", fmt::join(left, ", ")) << " of '" << input << "': left out\n";
+    writePackingFile(packing, output);
     err << "wrote " << output << " (" << packing.size() << " particles)\n";
     return EXIT_SUCCESS;
 }

@@ -127,12 +127,6 @@ void writeTextPacking(const Packing& packing, const fs::path& file) {
     });
 }
 
-Packing readPackingFile(const fs::path& file) {
-    if (file.extension() == ".txt") return readTextPacking(file);
-    if (file.extension() == ".xyz") return readExtendedXyz(file);
-    return readPacking(file);
-}
-
 namespace {
 
 /// The header of a text packing: "# key value" lines before the first particle line.
@@ -424,20 +418,6 @@ Packing readExtendedXyz(const fs::path& file) {
     validatePacking(packing, reader.name());
     canonicalizePacking(packing);
     return packing;
-}
-
-std::vector<std::string> notCarriedBy(const Packing& packing, bool extendedXyz) {
-    std::vector<std::string> left;
-    if (extendedXyz && packing.reducedPressure) left.emplace_back("reduced_pressure");
-    if (extendedXyz && packing.seed) left.emplace_back("seed");
-    if (!packing.velocities.empty()) left.emplace_back("velocities");
-    if (!packing.angularVelocities.empty()) left.emplace_back("angular velocities");
-    if (!packing.provenance.empty() || !packing.generatorVersion.empty())
-        left.emplace_back("provenance");
-    if (packing.contactForces) left.emplace_back("contact forces");
-    if (!packing.resumeState.empty() || !packing.pairRecords.empty())
-        left.emplace_back("resume state (a checkpoint's)");
-    return left;
 }
 
 } // namespace sbpack

@@ -21,8 +21,9 @@ namespace sbpack {
 ///   # seed 1                     (likewise)
 ///   # columns x y z qw qx qy qz
 /// then one particle per line at full precision (17 significant digits). Velocities and
-/// provenance are not part of the text format (notCarriedBy). The reduced pressure sets the jam
-/// check's contact tolerance, so a packing keeps its contact numbers through the text format.
+/// provenance are not part of the text format (io/packing_formats.hpp, notCarriedBy). The reduced
+/// pressure sets the jam check's contact tolerance, so a packing keeps its contact numbers through
+/// the text format.
 void writeTextPacking(const Packing& packing, const std::filesystem::path& file);
 
 /// Reads the text format. Other comment lines and blank lines are ignored. Throws
@@ -30,16 +31,6 @@ void writeTextPacking(const Packing& packing, const std::filesystem::path& file)
 /// header key, or a wrong particle count, and InvalidPacking for invalid contents; normalises
 /// the quaternions and wraps positions into [0, L).
 Packing readTextPacking(const std::filesystem::path& file);
-
-/// A packing in any documented format, by its extension: `.txt` the text format
-/// (readTextPacking), `.xyz` extended XYZ (readExtendedXyz), anything else the HDF5 file
-/// (readPacking). Every reader of the tools takes its inputs through here (issue 43).
-Packing readPackingFile(const std::filesystem::path& file);
-
-/// What of `packing` the text format (or, with `extendedXyz`, the XYZ export) leaves out, in
-/// words ("velocities", "provenance", "contact forces", ...): what `convert` warns of (issue 65
-/// item 4).
-std::vector<std::string> notCarriedBy(const Packing& packing, bool extendedXyz);
 
 /// Reads one frame of extended XYZ (sbpack's export; the same columns in other spellings, as
 /// OVITO names them): the particle

@@ -2,6 +2,7 @@
 // numpy arrays with the file readers' checks (docs/python.md, "Packing").
 #include "bindings.hpp"
 
+#include "io/packing_formats.hpp"
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
 #include "packing/validation.hpp"
@@ -79,29 +80,15 @@ Packing fromArrays(const py::object& positionsObject, const py::object& orientat
     return packing;
 }
 
-bool isText(const fs::path& file) {
-    return file.extension() == ".txt";
-}
-
 Packing read(const fs::path& file) {
     py::gil_scoped_release release;
     return readPackingFile(file);
 }
 
 void write(const Packing& packing, const fs::path& file) {
-    const fs::path extension = file.extension();
-    if (extension != ".h5" && extension != ".hdf5" && extension != ".txt" && extension != ".xyz")
-        throw std::invalid_argument("'" + file.string() +
-                                    "': unknown extension (use .h5, .txt or .xyz), as sbanalyze "
-                                    "convert");
+    static_cast<void>(packingFormatOf(file)); // refuses an unknown extension, as convert does
     py::gil_scoped_release release;
-    if (isText(file)) {
-        writeTextPacking(packing, file);
-    } else if (extension == ".xyz") {
-        writeExtendedXyz(packing, file);
-    } else {
-        writePacking(packing, file);
-    }
+    writePackingFile(packing, file);
 }
 
 /// `a` made read-only: the arrays are copies, so an edit would be lost without a word (issue 66
@@ -153,7 +140,8 @@ void registerPacking(py::module_& m) {
              "docs/python.md); checked as the file readers check (ValueError with their "
              "message, naming `source`)")
         .def_static("read", &read, py::arg("path"), "Reads a .h5 (or .txt) packing file")
-        .def("write", &write, py::arg("path"), "Writes .h5, .txt or .xyz (OVITO), atomically")
+        .def("write", &write, py::arg("path"),
+             "Writes .h5, .txt, .xyz (OVITO) or .gsd (HOOMD, freud, OVITO), atomically")
         .def_property_readonly("positions", &positionsOf,
                                "N x 3 centroids in [0, L), a read-only copy")
         .def_property_readonly("orientations", &orientationsOf,

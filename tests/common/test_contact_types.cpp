@@ -4,7 +4,7 @@
 // lattices (face to face only), and invariance under a rotation of the whole packing.
 
 #include "contacts/contact_types.hpp"
-#include "io/text_io.hpp"
+#include "io/packing_formats.hpp"
 #include "order_lattices.hpp"
 #include "random/random.hpp"
 

@@ -3,7 +3,7 @@
 // lattices, perfect and displaced, are called ordered, for the reason each shows, and so is an
 // MRJ packing with an fcc nucleus carved in; the MRJ packings are not.
 #include "contacts/contact_network.hpp"
-#include "io/text_io.hpp"
+#include "io/packing_formats.hpp"
 #include "order/order_metrics.hpp"
 #include "order_lattices.hpp"
 

@@ -5,6 +5,7 @@
 #include "io/hdf5_handles.hpp"
 #include "io/packing_io.hpp"
 #include "io/packing_schema.hpp"
+#include "io/packing_formats.hpp"
 #include "io/text_io.hpp"
 #include "packing/contact_forces.hpp"
 #include "packing/validation.hpp"
@@ -649,11 +650,13 @@ TEST_F(TextIo, CarriesThePressureAndSeedAndNamesWhatItLeavesOut) {
     EXPECT_EQ(read.seed, original.seed);
     const std::vector<std::string> left{"velocities", "angular velocities", "provenance",
                                         "resume state (a checkpoint's)"};
-    EXPECT_EQ(notCarriedBy(original, false), left); // makePacking has them all
+    EXPECT_EQ(notCarriedBy(original, PackingFormat::Text), left); // makePacking has them all
+    EXPECT_EQ(notCarriedBy(original, PackingFormat::Gsd), left);
+    EXPECT_TRUE(notCarriedBy(original, PackingFormat::Hdf5).empty());
     std::vector<std::string> leftByXyz{"reduced_pressure", "seed"};
     leftByXyz.insert(leftByXyz.end(), left.begin(), left.end());
-    EXPECT_EQ(notCarriedBy(original, true), leftByXyz);
-    EXPECT_TRUE(notCarriedBy(read, false).empty());
+    EXPECT_EQ(notCarriedBy(original, PackingFormat::ExtendedXyz), leftByXyz);
+    EXPECT_TRUE(notCarriedBy(read, PackingFormat::Text).empty());
     const fs::path bare = textFile(std::string(kHeader) + "# n_particles 1\n1 2 3 1 0 0 0\n");
     EXPECT_FALSE(readTextPacking(bare).reducedPressure.has_value());
     expectError<PackingFileError>(

@@ -1,11 +1,13 @@
-// libFuzzer target for the file-type dispatch readPackingFile (io/text_io.hpp; issue 46): the
-// tools take every packing through it, which picks the reader from the name (".txt": the text
-// format; anything else: HDF5). The input's bytes are written under one of several names, picked
-// by the input's size so that the bytes stay the file (scripts/fuzz.sh checks findings against
-// the release sbanalyze as they are). Whatever the name, the outcome must be the one of the
-// reader its extension names, called directly: the same packing, or the same refusal of the
-// documented type (PackingFileError, InvalidPacking) naming the file.
+// libFuzzer target for the file-type dispatch readPackingFile (io/packing_formats.hpp; issue 46):
+// the tools take every packing through it, which picks the reader from the name (".txt": the
+// text format, ".xyz": extended XYZ, ".gsd": GSD; anything else: HDF5). The input's bytes are
+// written under one of several names, picked by the input's size so that the bytes stay the file
+// (scripts/fuzz.sh checks findings against the release sbanalyze as they are). Whatever the name,
+// the outcome must be the one of the reader its extension names, called directly: the same packing,
+// or the same refusal of the documented type (PackingFileError, InvalidPacking) naming the file.
 #include "fuzz_input.hpp"
+#include "io/gsd_io.hpp"
+#include "io/packing_formats.hpp"
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
 
@@ -18,9 +20,9 @@
 
 namespace {
 
-/// Names whose extension is not exactly ".txt" go to the HDF5 reader.
-constexpr const char* kNames[] = {"input.txt",    "input.h5",  "input.xyz",         "input",
-                                  "input.txt.h5", "input.TXT", "it's a packing.txt"};
+/// Names whose extension is not exactly ".txt", ".xyz" or ".gsd" go to the HDF5 reader.
+constexpr const char* kNames[] = {"input.txt",    "input.h5",  "input.xyz",          "input",
+                                  "input.txt.h5", "input.TXT", "it's a packing.txt", "input.gsd"};
 
 struct Outcome {
     std::optional<sbpack::Packing> packing;
@@ -54,15 +56,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const char* name = kNames[size % (sizeof kNames / sizeof *kNames)];
     const auto path = sbpack::fuzz::writeInput(data, size, name);
     const Outcome dispatched = outcome(path, sbpack::readPackingFile);
-    const bool text = path.extension() == ".txt";
-    const Outcome direct =
-        text ? outcome(path, sbpack::readTextPacking) : outcome(path, sbpack::readPacking);
+    const auto extension = path.extension();
+    const auto [reader, read] =
+        extension == ".txt"   ? std::pair{"readTextPacking", &sbpack::readTextPacking}
+        : extension == ".xyz" ? std::pair{"readExtendedXyz", &sbpack::readExtendedXyz}
+        : extension == ".gsd" ? std::pair{"readGsd", &sbpack::readGsd}
+                              : std::pair{"readPacking", &sbpack::readPacking};
+    const Outcome direct = outcome(path, read);
     const bool same = dispatched.packing
                           ? direct.packing && samePacking(*dispatched.packing, *direct.packing)
                           : !direct.packing && dispatched.refusal == direct.refusal;
     if (!same)
-        sbpack::fuzz::finding(std::string("readPackingFile('") + name + "') differs from " +
-                                  (text ? "readTextPacking" : "readPacking"),
+        sbpack::fuzz::finding(std::string("readPackingFile('") + name + "') differs from " + reader,
                               std::runtime_error(dispatched.refusal + " | " + direct.refusal));
     return 0;
 }

@@ -1,0 +1,335 @@
+#include "io/gsd_io.hpp"
+
+#include "io/atomic_file.hpp"
+#include "io/packing_io.hpp"
+#include "packing/validation.hpp"
+
+#include "third_party/gsd/gsd.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace sbpack {
+
+namespace {
+
+constexpr const char* kLog = "log/sbpack/";
+constexpr const char* kParticleLog = "log/particles/sbpack/";
+
+/// A gsd call's status as PackingFileError naming the file and what was done.
+void check(int status, const fs::path& file, const std::string& what) {
+    if (status != GSD_SUCCESS)
+        throw PackingFileError(
+            fmt::format("'{}': GSD: {} failed (gsd error {})", file.string(), what, status));
+}
+
+/// Points on the superball's surface by the superquadric parametrisation
+/// (sgn(c) |c|^(1/p) ...), dense at the edges of near-cubes as at the poles; the hull OVITO
+/// builds from them is the shape.
+std::vector<Vector3d> surfacePoints(double p, double a) {
+    const auto power = [p](double t) { return std::copysign(std::pow(std::abs(t), 1.0 / p), t); };
+    constexpr int kLatitudes = 12, kLongitudes = 24;
+    std::vector<Vector3d> points{{0.0, 0.0, a}, {0.0, 0.0, -a}};
+    for (int i = 1; i < kLatitudes; ++i) {
+        const double eta = std::numbers::pi * (static_cast<double>(i) / kLatitudes - 0.5);
+        for (int j = 0; j < kLongitudes; ++j) {
+            const double omega = 2.0 * std::numbers::pi * j / kLongitudes;
+            points.emplace_back(a * power(std::cos(eta)) * power(std::cos(omega)),
+                                a * power(std::cos(eta)) * power(std::sin(omega)),
+                                a * power(std::sin(eta)));
+        }
+    }
+    return points;
+}
+
+/// The type_shapes JSON of the superball (GSD's shape specification: ConvexPolyhedron).
+std::string shapeJson(double p, double a) {
+    std::string json = R"({"type": "ConvexPolyhedron", "rounding_radius": 0, "vertices": [)";
+    const std::vector<Vector3d> points = surfacePoints(p, a);
+    for (std::size_t k = 0; k < points.size(); ++k)
+        json += fmt::format("{}[{:.9g}, {:.9g}, {:.9g}]", k ? ", " : "", points[k].x(),
+                            points[k].y(), points[k].z());
+    return json + "]}";
+}
+
+/// A writer of one frame's chunks on an open handle.
+class FrameWriter {
+  public:
+    FrameWriter(gsd_handle& handle, const fs::path& file) : handle_(handle), file_(file) {}
+
+    template <class T>
+    void chunk(const std::string& name, gsd_type type, std::uint64_t rows, std::uint32_t columns,
+               const std::vector<T>& data) {
+        check(gsd_write_chunk(&handle_, name.c_str(), type, rows, columns, 0, data.data()), file_,
+              "writing " + name);
+    }
+    void scalar(const std::string& name, double value) {
+        chunk(name, GSD_TYPE_DOUBLE, 1, 1, std::vector<double>{value});
+    }
+    /// NUL-terminated strings as int8 rows of one width.
+    void strings(const std::string& name, const std::vector<std::string>& values) {
+        std::size_t width = 1;
+        for (const std::string& v : values)
+            width = std::max(width, v.size() + 1);
+        std::vector<std::int8_t> rows(values.size() * width, 0);
+        for (std::size_t k = 0; k < values.size(); ++k)
+            std::memcpy(rows.data() + k * width, values[k].data(), values[k].size());
+        chunk(name, GSD_TYPE_INT8, values.size(), static_cast<std::uint32_t>(width), rows);
+    }
+
+  private:
+    gsd_handle& handle_;
+    fs::path file_;
+};
+
+/// The schema's single-precision position: centred on the origin, in [-L/2, L/2) after
+/// rounding (a value that rounds onto L/2 goes to -L/2).
+std::vector<float> centredPositions(const Packing& packing) {
+    const double half = 0.5 * packing.boxLength;
+    const float halfFloat = static_cast<float>(half);
+    std::vector<float> out;
+    out.reserve(3 * packing.size());
+    for (const Vector3d& r : packing.positions)
+        for (int k = 0; k < 3; ++k) {
+            float x = static_cast<float>(wrapIntoBox(r, packing.boxLength)[k] - half);
+            if (x >= halfFloat) x = -halfFloat;
+            out.push_back(x);
+        }
+    return out;
+}
+
+/// The chunks of one frame of an open file (the last; frame 0 for what the last lacks, as the
+/// schema says), checked for type and size before they are read.
+class FrameReader {
+  public:
+    explicit FrameReader(const fs::path& file) : file_(file) {
+        check(gsd_open(&handle_, file.string().c_str(), GSD_OPEN_READONLY), file,
+              "opening the file (not a GSD file, or truncated)");
+        const std::uint64_t frames = gsd_get_nframes(&handle_);
+        if (frames == 0) {
+            gsd_close(&handle_);
+            throw PackingFileError("'" + file.string() + "': GSD file without a frame");
+        }
+        frame_ = frames - 1;
+    }
+    FrameReader(const FrameReader&) = delete;
+    FrameReader& operator=(const FrameReader&) = delete;
+    ~FrameReader() { gsd_close(&handle_); }
+
+    /// The chunk as doubles (stored as float or double), rows x columns (rows 0: any); nullopt
+    /// where absent.
+    std::optional<std::vector<double>> numbers(const std::string& name, std::uint64_t rows,
+                                               std::uint32_t columns) {
+        const gsd_index_entry* e = find(name);
+        if (!e) return std::nullopt;
+        if ((e->type != GSD_TYPE_FLOAT && e->type != GSD_TYPE_DOUBLE) ||
+            (rows != 0 && e->N != rows) || e->M != columns)
+            fail(name, fmt::format("{} x {} floating-point numbers", rows ? rows : e->N, columns),
+                 e);
+        std::vector<double> out(e->N * e->M);
+        if (e->type == GSD_TYPE_DOUBLE) {
+            read(e, name, out);
+            return out;
+        }
+        std::vector<float> single(out.size());
+        read(e, name, single);
+        std::copy(single.begin(), single.end(), out.begin());
+        return out;
+    }
+    /// An unsigned integer chunk of `rows` x 1 (uint8 to uint64) as uint64; nullopt if absent.
+    std::optional<std::vector<std::uint64_t>> counts(const std::string& name, std::uint64_t rows);
+    /// NUL-terminated int8 rows as strings; empty where absent.
+    std::vector<std::string> strings(const std::string& name);
+
+  private:
+    const gsd_index_entry* find(const std::string& name) {
+        const gsd_index_entry* e = gsd_find_chunk(&handle_, frame_, name.c_str());
+        return e || frame_ == 0 ? e : gsd_find_chunk(&handle_, 0, name.c_str());
+    }
+    template <class T>
+    void read(const gsd_index_entry* e, const std::string& name, std::vector<T>& out) {
+        check(gsd_read_chunk(&handle_, out.data(), e), file_, "reading " + name);
+    }
+    [[noreturn]] void fail(const std::string& name, const std::string& expected,
+                           const gsd_index_entry* e) const {
+        throw PackingFileError(fmt::format("'{}': GSD chunk {} holds {} x {} of type {}, "
+                                           "expected {}",
+                                           file_.string(), name, e->N, e->M, e->type, expected));
+    }
+
+    gsd_handle handle_{};
+    fs::path file_;
+    std::uint64_t frame_ = 0;
+};
+
+std::optional<std::vector<std::uint64_t>> FrameReader::counts(const std::string& name,
+                                                              std::uint64_t rows) {
+    const gsd_index_entry* e = find(name);
+    if (!e) return std::nullopt;
+    if (e->type < GSD_TYPE_UINT8 || e->type > GSD_TYPE_UINT64 || e->N != rows || e->M != 1)
+        fail(name, fmt::format("{} x 1 unsigned integers", rows), e);
+    std::vector<std::uint8_t> bytes(e->N * gsd_sizeof_type(static_cast<gsd_type>(e->type)));
+    read(e, name, bytes);
+    std::vector<std::uint64_t> out(e->N);
+    const std::size_t width = bytes.size() / e->N;
+    for (std::size_t k = 0; k < out.size(); ++k) {
+        std::uint64_t v = 0;
+        std::memcpy(&v, bytes.data() + k * width, width); // little-endian, as GSD is
+        out[k] = v;
+    }
+    return out;
+}
+
+std::vector<std::string> FrameReader::strings(const std::string& name) {
+    const gsd_index_entry* e = find(name);
+    if (!e) return {};
+    if (e->type != GSD_TYPE_INT8 && e->type != GSD_TYPE_UINT8) fail(name, "int8 strings", e);
+    std::vector<char> bytes(e->N * e->M);
+    read(e, name, bytes);
+    std::vector<std::string> out;
+    for (std::size_t k = 0; k < e->N; ++k)
+        out.emplace_back(bytes.data() + k * e->M, strnlen(bytes.data() + k * e->M, e->M));
+    return out;
+}
+
+/// p and the semi-axis: sbpack's scalars, else one Sphere shape shared by every type.
+std::pair<double, double> shapeOf(FrameReader& frame, const fs::path& file) {
+    const auto p = frame.numbers(std::string(kLog) + "p", 1, 1);
+    const auto a = frame.numbers(std::string(kLog) + "semi_axis", 1, 1);
+    if (p && a) return {p->front(), a->front()};
+    std::optional<double> diameter;
+    for (const std::string& text : frame.strings("particles/type_shapes")) {
+        const nlohmann::json shape = nlohmann::json::parse(text, nullptr, false);
+        if (shape.is_discarded() || shape.value("type", "") != "Sphere" ||
+            !shape.contains("diameter") || !shape["diameter"].is_number() ||
+            (diameter && *diameter != shape["diameter"].get<double>()))
+            throw PackingFileError(fmt::format(
+                "'{}': GSD file without a superball shape: neither {}p and semi_axis nor one "
+                "Sphere type_shape shared by every type (found '{}')",
+                file.string(), kLog, text.substr(0, 80)));
+        diameter = shape["diameter"].get<double>();
+    }
+    if (!diameter)
+        throw PackingFileError(fmt::format("'{}': GSD file without a shape: neither {}p and "
+                                           "semi_axis nor particles/type_shapes",
+                                           file.string(), kLog));
+    return {1.0, 0.5 * *diameter};
+}
+
+/// The cubic box's edge: sbpack's scalar, else configuration/box with equal edges, no tilt.
+double boxLengthOf(FrameReader& frame, const fs::path& file) {
+    if (const auto l = frame.numbers(std::string(kLog) + "box_length", 1, 1)) return l->front();
+    const auto box = frame.numbers("configuration/box", 6, 1);
+    if (!box) throw PackingFileError("'" + file.string() + "': GSD file without configuration/box");
+    const std::vector<double>& b = *box;
+    if (b[1] != b[0] || b[2] != b[0] || b[3] != 0.0 || b[4] != 0.0 || b[5] != 0.0)
+        throw PackingFileError(fmt::format("'{}': GSD box [{}] is not cubic (equal edges, no "
+                                           "tilt): sbpack's boxes are",
+                                           file.string(), fmt::join(b, ", ")));
+    return b[0];
+}
+
+void writeFrame(const Packing& packing, FrameWriter& w) {
+    const auto n = static_cast<std::uint32_t>(packing.size());
+    const auto length = static_cast<float>(packing.boxLength);
+    w.chunk("configuration/step", GSD_TYPE_UINT64, 1, 1, std::vector<std::uint64_t>{0});
+    w.chunk("configuration/box", GSD_TYPE_FLOAT, 6, 1,
+            std::vector<float>{length, length, length, 0.0F, 0.0F, 0.0F});
+    w.chunk("particles/N", GSD_TYPE_UINT32, 1, 1, std::vector<std::uint32_t>{n});
+    w.strings("particles/types", {"superball"});
+    w.strings("particles/type_shapes", {shapeJson(packing.p, packing.semiAxis)});
+    w.chunk("particles/typeid", GSD_TYPE_UINT32, n, 1, std::vector<std::uint32_t>(n, 0));
+    w.chunk("particles/position", GSD_TYPE_FLOAT, n, 3, centredPositions(packing));
+    std::vector<float> q;
+    std::vector<double> exactPositions, exactOrientations;
+    for (std::size_t i = 0; i < packing.size(); ++i) {
+        const Quaterniond o = packing.orientations[i];
+        for (const double c : {o.w(), o.x(), o.y(), o.z()}) {
+            q.push_back(static_cast<float>(c));
+            exactOrientations.push_back(c);
+        }
+        for (int k = 0; k < 3; ++k)
+            exactPositions.push_back(packing.positions[i][k]);
+    }
+    w.chunk("particles/orientation", GSD_TYPE_FLOAT, n, 4, q);
+    w.chunk(std::string(kParticleLog) + "position", GSD_TYPE_DOUBLE, n, 3, exactPositions);
+    w.chunk(std::string(kParticleLog) + "orientation", GSD_TYPE_DOUBLE, n, 4, exactOrientations);
+    w.scalar(std::string(kLog) + "p", packing.p);
+    w.scalar(std::string(kLog) + "semi_axis", packing.semiAxis);
+    w.scalar(std::string(kLog) + "box_length", packing.boxLength);
+    if (packing.reducedPressure)
+        w.scalar(std::string(kLog) + "reduced_pressure", *packing.reducedPressure);
+    if (packing.seed)
+        w.chunk(std::string(kLog) + "seed", GSD_TYPE_UINT64, 1, 1,
+                std::vector<std::uint64_t>{*packing.seed});
+}
+
+} // namespace
+
+void writeGsd(const Packing& packing, const fs::path& file) {
+    validatePacking(packing, file.string());
+    AtomicOutput output(file);
+    const std::string temporary = output.temporaryPath().string();
+    gsd_handle handle{};
+    check(gsd_create_and_open(&handle, temporary.c_str(), "sbpack", "hoomd", gsd_make_version(1, 4),
+                              GSD_OPEN_APPEND, 0),
+          file, "creating the file");
+    try {
+        FrameWriter writer(handle, file);
+        writeFrame(packing, writer);
+        check(gsd_end_frame(&handle), file, "ending the frame");
+    } catch (...) {
+        gsd_close(&handle);
+        throw;
+    }
+    check(gsd_close(&handle), file, "closing the file");
+    output.commit();
+}
+
+Packing readGsd(const fs::path& file) {
+    checkInputFile(file);
+    FrameReader frame(file);
+    Packing packing;
+    std::tie(packing.p, packing.semiAxis) = shapeOf(frame, file);
+    packing.boxLength = boxLengthOf(frame, file);
+    const auto n = frame.counts("particles/N", 1);
+    if (!n || n->front() == 0)
+        throw PackingFileError("'" + file.string() + "': GSD file without particles (particles/N)");
+    const std::uint64_t count = n->front();
+    const auto exact = frame.numbers(std::string(kParticleLog) + "position", count, 3);
+    const auto single = exact ? exact : frame.numbers("particles/position", count, 3);
+    if (!single)
+        throw PackingFileError("'" + file.string() + "': GSD file without particles/position");
+    const double shift = exact ? 0.0 : 0.5 * packing.boxLength; // the schema's box is centred
+    for (std::uint64_t i = 0; i < count; ++i)
+        packing.positions.push_back(
+            wrapIntoBox(Vector3d((*single)[3 * i], (*single)[3 * i + 1], (*single)[3 * i + 2]) +
+                            Vector3d::Constant(shift),
+                        packing.boxLength));
+    auto q = frame.numbers(std::string(kParticleLog) + "orientation", count, 4);
+    if (!q) q = frame.numbers("particles/orientation", count, 4);
+    for (std::uint64_t i = 0; i < count; ++i)
+        packing.orientations.push_back(
+            q ? Quaterniond((*q)[4 * i], (*q)[4 * i + 1], (*q)[4 * i + 2], (*q)[4 * i + 3])
+              : Quaterniond::Identity()); // normalised by canonicalizePacking
+    if (const auto pressure = frame.numbers(std::string(kLog) + "reduced_pressure", 1, 1))
+        packing.reducedPressure = pressure->front();
+    if (const auto seed = frame.counts(std::string(kLog) + "seed", 1)) packing.seed = seed->front();
+    canonicalizePacking(packing);
+    validatePacking(packing, file.string());
+    return packing;
+}
+
+} // namespace sbpack

@@ -1,0 +1,59 @@
+#include "io/packing_formats.hpp"
+
+#include "io/gsd_io.hpp"
+#include "io/packing_io.hpp"
+#include "io/text_io.hpp"
+
+#include <stdexcept>
+
+namespace fs = std::filesystem;
+
+namespace sbpack {
+
+PackingFormat packingFormatOf(const fs::path& file) {
+    const fs::path extension = file.extension();
+    if (extension == ".h5" || extension == ".hdf5") return PackingFormat::Hdf5;
+    if (extension == ".txt") return PackingFormat::Text;
+    if (extension == ".xyz") return PackingFormat::ExtendedXyz;
+    if (extension == ".gsd") return PackingFormat::Gsd;
+    throw std::invalid_argument("'" + file.string() +
+                                "': unknown extension (use .h5, .txt, .xyz or .gsd)");
+}
+
+Packing readPackingFile(const fs::path& file) {
+    if (file.extension() == ".txt") return readTextPacking(file);
+    if (file.extension() == ".xyz") return readExtendedXyz(file);
+    if (file.extension() == ".gsd") return readGsd(file);
+    return readPacking(file);
+}
+
+void writePackingFile(const Packing& packing, const fs::path& file) {
+    switch (packingFormatOf(file)) {
+    case PackingFormat::Hdf5:
+        return writePacking(packing, file);
+    case PackingFormat::Text:
+        return writeTextPacking(packing, file);
+    case PackingFormat::ExtendedXyz:
+        return writeExtendedXyz(packing, file);
+    case PackingFormat::Gsd:
+        return writeGsd(packing, file);
+    }
+}
+
+std::vector<std::string> notCarriedBy(const Packing& packing, PackingFormat format) {
+    std::vector<std::string> left;
+    if (format == PackingFormat::Hdf5) return left;
+    if (format == PackingFormat::ExtendedXyz && packing.reducedPressure)
+        left.emplace_back("reduced_pressure");
+    if (format == PackingFormat::ExtendedXyz && packing.seed) left.emplace_back("seed");
+    if (!packing.velocities.empty()) left.emplace_back("velocities");
+    if (!packing.angularVelocities.empty()) left.emplace_back("angular velocities");
+    if (!packing.provenance.empty() || !packing.generatorVersion.empty())
+        left.emplace_back("provenance");
+    if (packing.contactForces) left.emplace_back("contact forces");
+    if (!packing.resumeState.empty() || !packing.pairRecords.empty())
+        left.emplace_back("resume state (a checkpoint's)");
+    return left;
+}
+
+} // namespace sbpack
