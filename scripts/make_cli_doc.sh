@@ -183,7 +183,22 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   the contacts say so and advise `--tolerance`), orientations (identity where absent), a cubic
   box without tilt, and the shape from sbpack's scalars or one `Sphere` type_shape (a HOOMD
   hard-sphere frame: `p = 1`, `a` = diameter / 2); anything else is refused naming the file.
-  Checked against gsd.hoomd, freud and OVITO by `bench/gsd_vs_peers.sh` (bench/RESULTS.md).
+  Checked against gsd.hoomd, freud and OVITO by `bench/formats_vs_peers.sh` (bench/RESULTS.md).
+- **LAMMPS** (`common/io/lammps_io.hpp`, read and written like GSD, 17 significant digits): a
+  dump (`.dump` or `.lammpstrj`, `dump custom` of one frame: `BOX BOUNDS pp pp pp` `0 L` and the
+  columns `id type x y z quatw quati quatj quatk shapex shapey shapez
+  SuperquadricRoundness.Phi SuperquadricRoundness.Theta`, shapes as LAMMPS's diameters `2a`, the
+  roundness `1/p`: OVITO 3.8.5 and later maps the columns by name to Orientation, Aspherical
+  Shape and Superquadric Roundness and draws superballs with no dialog) and a data file (`.data`,
+  `atom_style ellipsoid`: `Atoms # ellipsoid` lines `id type 1 1 x y z` and `Ellipsoids` lines
+  `id 2a 2a 2a quatw quati quatj quatk`, with the superellipsoid blockiness `2p 2p` appended
+  where `p != 1`, which `atom_style ellipsoid superellipsoid` of LAMMPS 30Mar2026 and later
+  reads and older versions refuse; spheres keep the 8 columns every version reads). Reading
+  takes a dump's first frame from any origin, in `x y z`, `xu yu zu` or scaled `xs ys zs`, the
+  particles in the order of their ids (`p = 1` without the roundness columns), and a data file's
+  Atoms and Ellipsoids joined by id (`p` = blockiness / 2, or 1); neither carries the reduced
+  pressure, so the contacts take `--tolerance`. A non-cubic or tilted box, missing shape columns,
+  a repeated id or a short frame is refused naming the file and line.
 - **Results file** (HDF5, `format = "sbpack.results"`, `format_version = 4`): the root holds the
   run, `files/<i>` one input with one subgroup per analysis, `ensembles/<k>` the inputs of equal
   `p` and `N`; every name and unit is in docs/results-schema.md. Reading it with h5py

@@ -88,7 +88,9 @@ CommandLine::CommandLine(const Communicator& communicator) : communicator_(commu
     });
     app_.footer(kFooter);
     app_.get_formatter()->column_width(28);
-    app_.add_option("FILE", inputs_, "packing files (.h5 or .txt) to analyse, one after the other");
+    app_.add_option(
+        "FILE", inputs_,
+        "packing files (.h5, .txt, .xyz, .gsd, .dump or .data) to analyse, one after the other");
     const RunSettings defaults = defaultRunSettings();
     for (const OptionRow& row : analysisOptionTable())
         addOption(app_, settings_, row, defaults);
@@ -110,15 +112,19 @@ void CommandLine::addSubcommands() {
     for (std::string_view name : {"jamming-categories", "jamming-tolerance", "jamming-max-step",
                                   "jamming-contacts", "jamming-second-order", "jamming-relax"})
         addOption(*info_, infoSettings_, findOption(name), defaults);
-    info_->add_option("FILE", infoFiles_,
-                      "packing files (.h5, .txt, .xyz or .gsd); a bad one is reported, the others "
-                      "still are");
+    info_->add_option(
+        "FILE", infoFiles_,
+        "packing files (.h5, .txt, .xyz, .gsd, .dump or .data); a bad one is reported, "
+        "the others still are");
     convert_ = app_.add_subcommand(
         "convert", "convert between .h5, .txt (a header with p, semi_axis, box_length, then\n"
-                   "x y z qw qx qy qz per particle), extended XYZ (.xyz, for OVITO) and GSD\n"
-                   "(.gsd: HOOMD-blue, freud, OVITO; docs/cli.md, \"Files\")");
-    convert_->add_option("IN", convertIn_, "packing to read (.h5, .txt, .xyz or .gsd)")->required();
-    convert_->add_option("OUT", convertOut_, "packing to write (.h5, .txt, .xyz or .gsd)")
+                   "x y z qw qx qy qz per particle), extended XYZ (.xyz, for OVITO), GSD (.gsd:\n"
+                   "HOOMD-blue, freud, OVITO) and LAMMPS (.dump, .data); docs/cli.md, \"Files\"");
+    convert_
+        ->add_option("IN", convertIn_, "packing to read (.h5, .txt, .xyz, .gsd, .dump or .data)")
+        ->required();
+    convert_
+        ->add_option("OUT", convertOut_, "packing to write (.h5, .txt, .xyz, .gsd, .dump or .data)")
         ->required();
     schema_ = app_.add_subcommand(
         "schema",

@@ -1,6 +1,7 @@
 #include "io/packing_formats.hpp"
 
 #include "io/gsd_io.hpp"
+#include "io/lammps_io.hpp"
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
 
@@ -16,14 +17,19 @@ PackingFormat packingFormatOf(const fs::path& file) {
     if (extension == ".txt") return PackingFormat::Text;
     if (extension == ".xyz") return PackingFormat::ExtendedXyz;
     if (extension == ".gsd") return PackingFormat::Gsd;
+    if (extension == ".dump" || extension == ".lammpstrj") return PackingFormat::LammpsDump;
+    if (extension == ".data") return PackingFormat::LammpsData;
     throw std::invalid_argument("'" + file.string() +
-                                "': unknown extension (use .h5, .txt, .xyz or .gsd)");
+                                "': unknown extension (use .h5, .txt, .xyz, .gsd, .dump or .data)");
 }
 
 Packing readPackingFile(const fs::path& file) {
     if (file.extension() == ".txt") return readTextPacking(file);
     if (file.extension() == ".xyz") return readExtendedXyz(file);
-    if (file.extension() == ".gsd") return readGsd(file);
+    const fs::path extension = file.extension();
+    if (extension == ".gsd") return readGsd(file);
+    if (extension == ".dump" || extension == ".lammpstrj") return readLammpsDump(file);
+    if (extension == ".data") return readLammpsData(file);
     return readPacking(file);
 }
 
@@ -37,15 +43,19 @@ void writePackingFile(const Packing& packing, const fs::path& file) {
         return writeExtendedXyz(packing, file);
     case PackingFormat::Gsd:
         return writeGsd(packing, file);
+    case PackingFormat::LammpsDump:
+        return writeLammpsDump(packing, file);
+    case PackingFormat::LammpsData:
+        return writeLammpsData(packing, file);
     }
 }
 
 std::vector<std::string> notCarriedBy(const Packing& packing, PackingFormat format) {
     std::vector<std::string> left;
     if (format == PackingFormat::Hdf5) return left;
-    if (format == PackingFormat::ExtendedXyz && packing.reducedPressure)
-        left.emplace_back("reduced_pressure");
-    if (format == PackingFormat::ExtendedXyz && packing.seed) left.emplace_back("seed");
+    const bool scalars = format == PackingFormat::Text || format == PackingFormat::Gsd;
+    if (!scalars && packing.reducedPressure) left.emplace_back("reduced_pressure");
+    if (!scalars && packing.seed) left.emplace_back("seed");
     if (!packing.velocities.empty()) left.emplace_back("velocities");
     if (!packing.angularVelocities.empty()) left.emplace_back("angular velocities");
     if (!packing.provenance.empty() || !packing.generatorVersion.empty())

@@ -16,15 +16,17 @@ enum class PackingFormat {
     Text,        ///< .txt: the text format (io/text_io.hpp)
     ExtendedXyz, ///< .xyz: extended XYZ for OVITO (io/text_io.hpp)
     Gsd,         ///< .gsd: HOOMD's GSD (io/gsd_io.hpp)
+    LammpsDump,  ///< .dump, .lammpstrj: a LAMMPS dump (io/lammps_io.hpp)
+    LammpsData,  ///< .data: a LAMMPS data file, atom_style ellipsoid (io/lammps_io.hpp)
 };
 
 /// The format of `file` by its extension. Throws std::invalid_argument naming the file and the
 /// extensions known for any other.
 PackingFormat packingFormatOf(const std::filesystem::path& file);
 
-/// A packing in any documented format, by its extension: `.txt`, `.xyz`, `.gsd` by their
-/// readers, anything else the HDF5 file (readPacking, which names a file that is not one).
-/// Every reader of the tools takes its inputs through here (issue 43).
+/// A packing in any documented format, by its extension: `.txt`, `.xyz`, `.gsd`, `.dump`,
+/// `.lammpstrj` and `.data` by their readers, anything else the HDF5 file (readPacking, which names
+/// a file that is not one). Every reader of the tools takes its inputs through here (issue 43).
 Packing readPackingFile(const std::filesystem::path& file);
 
 /// Writes `packing` in the format of `file`'s extension (packingFormatOf), atomically.

@@ -1,6 +1,7 @@
 #include "io/text_io.hpp"
 
 #include "io/atomic_file.hpp"
+#include "io/text_lines.hpp"
 #include "packing/validation.hpp"
 
 #include <cctype>
@@ -18,93 +19,11 @@ namespace sbpack {
 
 namespace fs = std::filesystem;
 
+using namespace text;
+
 namespace {
 
 constexpr const char* kTextMagic = "# sbpack text packing v1";
-
-/// 17 significant digits (%.17g): every double reads back bit for bit.
-std::string full(double x) {
-    char buffer[32];
-    return std::string(
-        buffer,
-        std::to_chars(buffer, buffer + sizeof buffer, x, std::chars_format::general, 17).ptr);
-}
-
-/// Writes what `body` puts into a stream through AtomicOutput (checked writes).
-template <typename Body> void writeTextFile(const fs::path& file, Body body) {
-    AtomicOutput output(file);
-    std::ostringstream out;
-    body(out);
-    output.write(out.str());
-    output.commit();
-}
-
-std::vector<std::string> splitWhitespace(const std::string& line) {
-    std::istringstream in(line);
-    std::vector<std::string> tokens;
-    for (std::string token; in >> token;)
-        tokens.push_back(token);
-    return tokens;
-}
-
-/// Reads the text file line by line and names the file and line in every error.
-class LineReader {
-  public:
-    /// The file is checked (checkInputFile) before it is opened.
-    explicit LineReader(const fs::path& file)
-        : name_((checkInputFile(file), file.string())), in_(file) {
-        if (!in_) throw PackingFileError("'" + name_ + "': cannot open for reading");
-    }
-
-    /// The next line without its line end (LF or CRLF) and trailing blanks, and on the first line
-    /// without a UTF-8 byte-order mark (issue 65 item 8: editors on Windows add both).
-    bool next(std::string& line) {
-        if (!std::getline(in_, line)) return false;
-        if (number_ == 0 && line.starts_with("\xEF\xBB\xBF")) line.erase(0, 3);
-        while (!line.empty() && (line.back() == '\r' || line.back() == ' ' || line.back() == '\t'))
-            line.pop_back();
-        ++number_;
-        return true;
-    }
-
-    [[noreturn]] void fail(const std::string& problem) const { failAt(number_, problem); }
-    /// Names an earlier line (a header's problem found at the end).
-    [[noreturn]] void failAt(int line, const std::string& problem) const {
-        throw PackingFileError("'" + name_ + "', line " + std::to_string(line) + ": " + problem);
-    }
-
-    double parseDouble(std::string token) const {
-        if (!token.empty() && token.front() == '+') token.erase(0, 1);
-        double value = 0.0;
-        const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-        if (ec != std::errc() || end != token.data() + token.size())
-            fail("'" + token + "' is not a number");
-        return value;
-    }
-
-    long long parseCount(const std::string& token) const {
-        long long value = 0;
-        const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-        if (ec != std::errc() || end != token.data() + token.size() || value <= 0)
-            fail("'" + token + "' is not a positive particle count");
-        return value;
-    }
-
-    std::uint64_t parseSeed(const std::string& token) const {
-        std::uint64_t value = 0;
-        const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
-        if (ec != std::errc() || end != token.data() + token.size())
-            fail("'" + token + "' is not a seed (an integer in [0, 2^64))");
-        return value;
-    }
-
-    const std::string& name() const { return name_; }
-
-  private:
-    std::string name_;
-    std::ifstream in_;
-    int number_ = 0;
-};
 
 } // namespace
 
@@ -323,37 +242,6 @@ double cubicLattice(const std::string& lattice, const LineReader& reader) {
         reader.fail("Lattice is not a cube (edges " + tokens[0] + ", " + tokens[4] + ", " +
                     tokens[8] + ")");
     return v[0];
-}
-
-/// One shape parameter: the header's key where there is one, else the column's value, the same
-/// in every particle and every component (the header and the columns must agree to 1e-12).
-class ShapeParameter {
-  public:
-    ShapeParameter(std::string key, std::optional<double> header)
-        : key_(std::move(key)), value_(header) {}
-    void column(double v, const LineReader& reader) {
-        if (!value_) value_ = v;
-        if (std::abs(v - *value_) > 1e-12 * std::abs(*value_))
-            reader.fail("the particles differ in " + key_ +
-                        " (only identical superballs are read)");
-    }
-    /// The value; fails naming the comment line (2) where there is none.
-    double value(const LineReader& reader) const {
-        if (!value_) reader.failAt(2, "no " + key_ + ": give the header key or its column");
-        return *value_;
-    }
-
-  private:
-    std::string key_;
-    std::optional<double> value_;
-};
-
-/// p from a roundness written in single precision (OVITO's export: 1 / 0.6666667008 =
-/// 1.49999992): the value of 6 significant digits within 1e-7 of it, else p itself.
-double singlePrecisionRepaired(double p) {
-    const double scale = std::pow(10.0, 5 - static_cast<int>(std::floor(std::log10(p))));
-    const double rounded = std::round(p * scale) / scale;
-    return std::abs(rounded - p) <= 1e-7 * p ? rounded : p;
 }
 
 } // namespace

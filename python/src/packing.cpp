@@ -141,7 +141,8 @@ void registerPacking(py::module_& m) {
              "message, naming `source`)")
         .def_static("read", &read, py::arg("path"), "Reads a .h5 (or .txt) packing file")
         .def("write", &write, py::arg("path"),
-             "Writes .h5, .txt, .xyz (OVITO) or .gsd (HOOMD, freud, OVITO), atomically")
+             "Writes .h5, .txt, .xyz (OVITO), .gsd (HOOMD, freud, OVITO), .dump or .data (LAMMPS), "
+             "atomically")
         .def_property_readonly("positions", &positionsOf,
                                "N x 3 centroids in [0, L), a read-only copy")
         .def_property_readonly("orientations", &orientationsOf,

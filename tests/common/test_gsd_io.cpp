@@ -3,7 +3,7 @@
 // precision inside [-L/2, L/2), with a shape whose vertices lie on the superball; a frame as HOOMD
 // writes one (float32, a Sphere type_shape, no sbpack chunks) reads as spheres; what cannot be a
 // packing is refused naming the file. The peers' view (gsd.hoomd, freud, OVITO):
-// bench/gsd_vs_peers.sh.
+// bench/formats_vs_peers.sh.
 
 #include "io/gsd_io.hpp"
 #include "io/packing_formats.hpp"

@@ -1,7 +1,8 @@
-"""sbpack's GSD against the peers that read and write it (bench/gsd_vs_peers.sh; docs/cli.md,
-"Files"; bench/RESULTS.md, "GSD against gsd.hoomd, freud and OVITO").
+"""sbpack's GSD and LAMMPS files against the peers that read and write them
+(bench/formats_vs_peers.sh; docs/cli.md, "Files"; bench/RESULTS.md, "GSD and LAMMPS against
+gsd.hoomd, freud and OVITO").
 
-usage: gsd_vs_peers.py SBANALYZE PACKING.h5 WORKDIR
+usage: formats_vs_peers.py SBANALYZE PACKING.h5 WORKDIR
 
 1. sbanalyze convert PACKING.h5 WORKDIR/out.gsd, read by gsd.hoomd (the reference reader): the
    schema's single-precision positions and orientations against the packing's (h5py), the
@@ -9,6 +10,8 @@ usage: gsd_vs_peers.py SBANALYZE PACKING.h5 WORKDIR
    installed (positions, orientations, the type's shape).
 2. A hard-sphere frame written by gsd.hoomd as HOOMD writes one (float32, a Sphere
    type_shape, no sbpack chunks) read by sbanalyze info: N, L, p = 1 and a.
+3. sbanalyze convert PACKING.h5 to a LAMMPS dump and data file, read by OVITO's importers: the
+   superquadric roundness (1/p), the shape (a) and the orientations against the packing's.
 """
 import subprocess
 import sys
@@ -51,8 +54,11 @@ def written_by_sbpack(sbanalyze, packing, work):
         from ovito.io import import_file
         data = import_file(out).compute()
         p = data.particles
+        kind = p.particle_types.types[0]
+        mesh = kind.mesh
         print(f"OVITO: {p.count} particles, properties {sorted(p.keys())}; largest |position - "
-              f"gsd.hoomd's| {np.abs(np.asarray(p.positions) - pos).max():.3e}")
+              f"gsd.hoomd's| {np.abs(np.asarray(p.positions) - pos).max():.3e}; the type's "
+              f"shape {kind.shape.name} of {mesh.vertex_count if mesh else 0} vertices")
     except ImportError:
         print("OVITO: not installed")
 
@@ -78,8 +84,37 @@ def written_by_gsd(sbanalyze, work):
         print("  " + line.strip())
 
 
+def lammps_by_ovito(sbanalyze, packing, work):
+    try:
+        from ovito.io import import_file
+    except ImportError:
+        print("OVITO: not installed (LAMMPS files not checked)")
+        return
+    with h5py.File(packing) as f:
+        r, q = f["positions"][:], f["orientations"][:]
+        p, a = float(f.attrs["p"]), float(f.attrs["semi_axis"])
+    for name in ("out.dump", "out.data"):
+        path = f"{work}/{name}"
+        subprocess.run([sbanalyze, "convert", packing, path], check=True, capture_output=True)
+        particles = import_file(path).compute().particles
+        keys = sorted(particles.keys())
+        line = f"OVITO reads {name}: properties {keys}"
+        if "Superquadric Roundness" in keys:
+            roundness = np.asarray(particles["Superquadric Roundness"])
+            line += f"; roundness {roundness.min():.17g}..{roundness.max():.17g} (1/p {1 / p:.17g})"
+        if "Aspherical Shape" in keys:
+            shape = np.asarray(particles["Aspherical Shape"])
+            line += f"; shape {shape.min():.17g}..{shape.max():.17g} (a {a:.17g})"
+        xyzw = np.asarray(particles["Orientation"])
+        wxyz = np.concatenate([xyzw[:, 3:], xyzw[:, :3]], axis=1)
+        line += (f"; |orientation - packing's| {np.abs(wxyz - q).max():.2e}, "
+                 f"|position - packing's| {np.abs(np.asarray(particles.positions) - r).max():.2e}")
+        print(line)
+
+
 if __name__ == "__main__":
     if len(sys.argv) != 4:
         sys.exit(__doc__)
     written_by_sbpack(*sys.argv[1:])
     written_by_gsd(sys.argv[1], sys.argv[3])
+    lammps_by_ovito(*sys.argv[1:])

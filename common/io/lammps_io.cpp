@@ -1,0 +1,315 @@
+#include "io/lammps_io.hpp"
+
+#include "io/text_lines.hpp"
+#include "packing/validation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace sbpack {
+
+namespace fs = std::filesystem;
+using namespace text;
+
+namespace {
+
+/// One particle's line of either format, before the particles are put in the order of their ids.
+struct Particle {
+    long long id = 0;
+    Vector3d position = Vector3d::Zero();
+    Quaterniond orientation = Quaterniond::Identity();
+};
+
+/// Every particle in the order of its id; fails on a repeated id.
+void sortedInto(std::vector<Particle> particles, Packing& packing, const LineReader& reader) {
+    std::sort(particles.begin(), particles.end(),
+              [](const Particle& a, const Particle& b) { return a.id < b.id; });
+    for (std::size_t k = 0; k < particles.size(); ++k) {
+        if (k > 0 && particles[k].id == particles[k - 1].id)
+            reader.fail("atom id " + std::to_string(particles[k].id) + " appears twice");
+        packing.positions.push_back(wrapIntoBox(particles[k].position, packing.boxLength));
+        packing.orientations.push_back(particles[k].orientation);
+    }
+    canonicalizePacking(packing);
+    validatePacking(packing, reader.name());
+}
+
+/// The edge of a cubic box from three "lo hi" pairs; fails where the edges differ.
+double cubicEdge(const std::array<std::array<double, 2>, 3>& bounds, const LineReader& reader) {
+    const double edge = bounds[0][1] - bounds[0][0];
+    for (const auto& b : bounds)
+        if (!(edge > 0.0) || std::abs(b[1] - b[0] - edge) > 1e-12 * edge)
+            reader.fail("the box is not cubic (its three edges must be equal): sbpack's boxes are");
+    return edge;
+}
+
+/// The columns of a dump's ATOMS line, and the lookups of one particle's values.
+class DumpColumns {
+  public:
+    DumpColumns(const std::vector<std::string>& names, const LineReader& reader) {
+        for (std::size_t k = 0; k < names.size(); ++k)
+            index_[names[k]] = k;
+        if (!has("id")) reader.fail("the ATOMS line has no id column");
+        for (const char* set : {"x", "xu", "xs"})
+            if (has(set)) position_ = set;
+        if (position_.empty()) reader.fail("the ATOMS line has no x y z (or xu, xs) columns");
+        if (!has("shapex")) reader.fail("the ATOMS line has no shapex shapey shapez columns");
+    }
+    bool has(const std::string& name) const { return index_.count(name) != 0; }
+    const std::string& token(const std::vector<std::string>& tokens, const std::string& name,
+                             const LineReader& reader) const {
+        const auto it = index_.find(name);
+        if (it == index_.end()) reader.fail("the ATOMS line has no " + name + " column");
+        return tokens[it->second];
+    }
+    double value(const std::vector<std::string>& tokens, const std::string& name,
+                 const LineReader& reader) const {
+        return reader.parseDouble(token(tokens, name, reader));
+    }
+    /// "x", "xu" or "xs" with its y and z.
+    std::array<std::string, 3> positionNames() const {
+        const std::string tail = position_.substr(1);
+        return {"x" + tail, "y" + tail, "z" + tail};
+    }
+    bool scaled() const { return position_ == "xs"; }
+    std::size_t size() const { return index_.size(); }
+
+  private:
+    std::map<std::string, std::size_t> index_;
+    std::string position_;
+};
+
+/// The particle of one ATOMS line, feeding the shape parameters.
+Particle dumpParticle(const std::vector<std::string>& tokens, const DumpColumns& columns,
+                      const std::array<std::array<double, 2>, 3>& bounds,
+                      std::array<ShapeParameter, 2>& shape, const LineReader& reader) {
+    if (tokens.size() != columns.size())
+        reader.fail(fmt::format("{} values for {} columns", tokens.size(), columns.size()));
+    Particle particle;
+    particle.id = reader.parseCount(columns.token(tokens, "id", reader));
+    const auto names = columns.positionNames();
+    for (int k = 0; k < 3; ++k) {
+        const double v = columns.value(tokens, names[k], reader);
+        particle.position[k] =
+            columns.scaled() ? v * (bounds[k][1] - bounds[k][0]) : v - bounds[k][0];
+    }
+    if (columns.has("quatw"))
+        particle.orientation = Quaterniond(
+            columns.value(tokens, "quatw", reader), columns.value(tokens, "quati", reader),
+            columns.value(tokens, "quatj", reader), columns.value(tokens, "quatk", reader));
+    for (const char* axis : {"shapex", "shapey", "shapez"})
+        shape[0].column(0.5 * columns.value(tokens, axis, reader), reader);
+    if (columns.has("SuperquadricRoundness.Phi"))
+        for (const char* part : {"SuperquadricRoundness.Phi", "SuperquadricRoundness.Theta"})
+            shape[1].column(columns.value(tokens, part, reader), reader);
+    return particle;
+}
+
+} // namespace
+
+void writeLammpsDump(const Packing& packing, const fs::path& file) {
+    validatePacking(packing, file.string());
+    const std::string length = full(packing.boxLength);
+    const std::string diameter = full(2.0 * packing.semiAxis);
+    const std::string roundness = full(1.0 / packing.p); // OVITO's: (1/p, 1/p) is the superball
+    writeTextFile(file, [&](std::ostream& out) {
+        out << "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n"
+            << packing.size() << "\nITEM: BOX BOUNDS pp pp pp\n";
+        for (int k = 0; k < 3; ++k)
+            out << "0 " << length << '\n';
+        out << "ITEM: ATOMS id type x y z quatw quati quatj quatk shapex shapey shapez "
+               "SuperquadricRoundness.Phi SuperquadricRoundness.Theta\n";
+        for (std::size_t i = 0; i < packing.size(); ++i) {
+            const Vector3d r = wrapIntoBox(packing.positions[i], packing.boxLength);
+            const Quaterniond q = packing.orientations[i].normalized();
+            out << i + 1 << " 1 " << full(r.x()) << ' ' << full(r.y()) << ' ' << full(r.z()) << ' '
+                << full(q.w()) << ' ' << full(q.x()) << ' ' << full(q.y()) << ' ' << full(q.z())
+                << ' ' << diameter << ' ' << diameter << ' ' << diameter << ' ' << roundness << ' '
+                << roundness << '\n';
+        }
+    });
+}
+
+Packing readLammpsDump(const fs::path& file) {
+    LineReader reader(file);
+    std::string line;
+    long long count = 0;
+    std::array<std::array<double, 2>, 3> bounds{};
+    bool boxRead = false;
+    std::vector<Particle> particles;
+    std::array<ShapeParameter, 2> shape{ShapeParameter("the semi-axis (shapex / 2)", {}),
+                                        ShapeParameter("p (SuperquadricRoundness = 1 / p)", {})};
+    while (particles.empty() && reader.next(line)) {
+        if (!line.starts_with("ITEM: "))
+            reader.fail("expected an 'ITEM:' line, got '" + line + "'");
+        const std::vector<std::string> words = splitWhitespace(line.substr(6));
+        if (line.starts_with("ITEM: NUMBER OF ATOMS")) {
+            if (!reader.next(line)) break;
+            count = reader.parseCount(line);
+        } else if (line.starts_with("ITEM: BOX BOUNDS")) {
+            if (words.size() != 5 || words[2] != "pp" || words[3] != "pp" || words[4] != "pp")
+                reader.fail("the box must be periodic and orthogonal ('BOX BOUNDS pp pp pp')");
+            for (auto& b : bounds) {
+                if (!reader.next(line)) break;
+                const auto pair = splitWhitespace(line);
+                if (pair.size() != 2) reader.fail("expected 'lo hi'");
+                b = {reader.parseDouble(pair[0]), reader.parseDouble(pair[1])};
+            }
+            boxRead = true;
+        } else if (line.starts_with("ITEM: ATOMS")) {
+            if (count == 0 || !boxRead) reader.fail("ATOMS before NUMBER OF ATOMS and BOX BOUNDS");
+            const DumpColumns columns({words.begin() + 1, words.end()}, reader);
+            for (long long i = 0; i < count; ++i) {
+                if (!reader.next(line)) reader.fail(fmt::format("{} of {} atoms", i, count));
+                particles.push_back(
+                    dumpParticle(splitWhitespace(line), columns, bounds, shape, reader));
+            }
+        } else if (!reader.next(line)) { // TIMESTEP and the others: one value line
+            break;
+        }
+    }
+    if (particles.empty()) reader.fail("no ITEM: ATOMS frame");
+    Packing packing;
+    packing.boxLength = cubicEdge(bounds, reader);
+    packing.semiAxis = shape[0].value(reader);
+    packing.p = shape[1].has() ? singlePrecisionRepaired(1.0 / shape[1].value(reader)) : 1.0;
+    sortedInto(std::move(particles), packing, reader);
+    return packing;
+}
+
+namespace {
+
+/// The header of a data file: its counts and box, up to the first section's keyword (returned).
+struct DataHeader {
+    long long atoms = 0, ellipsoids = 0;
+    std::array<std::array<double, 2>, 3> bounds{};
+    int boxLines = 0;
+};
+
+std::string readDataHeader(LineReader& reader, DataHeader& header) {
+    std::string line;
+    if (!reader.next(line)) reader.fail("empty file"); // the title line
+    while (reader.next(line)) {
+        const std::vector<std::string> t = splitWhitespace(line.substr(0, line.find('#')));
+        if (t.empty()) continue;
+        if (t.size() == 1) return t[0]; // a section: Atoms, Ellipsoids, ...
+        const std::string& key = t.back();
+        if (key == "atoms")
+            header.atoms = reader.parseCount(t[0]);
+        else if (key == "ellipsoids")
+            header.ellipsoids = reader.parseCount(t[0]);
+        else if (key == "yz")
+            reader.fail("a triclinic box (xy xz yz): sbpack's boxes are cubic");
+        else if (key == "xhi" || key == "yhi" || key == "zhi") {
+            header.bounds[key[0] - 'x'] = {reader.parseDouble(t[0]), reader.parseDouble(t[1])};
+            ++header.boxLines;
+        }
+    }
+    reader.fail("no Atoms section");
+}
+
+/// The `count` lines of a section after its blank line.
+std::vector<std::vector<std::string>> sectionLines(LineReader& reader, long long count) {
+    std::vector<std::vector<std::string>> lines;
+    std::string line;
+    while (static_cast<long long>(lines.size()) < count && reader.next(line)) {
+        std::vector<std::string> t = splitWhitespace(line.substr(0, line.find('#')));
+        if (!t.empty()) lines.push_back(std::move(t));
+    }
+    if (static_cast<long long>(lines.size()) < count)
+        reader.fail(fmt::format("the section ends after {} of {} lines", lines.size(), count));
+    return lines;
+}
+
+/// One line of the Atoms (`atom`) or Ellipsoids section into its particle and the shape.
+void readDataLine(const std::vector<std::string>& t, bool atom, Particle& particle,
+                  const DataHeader& header, std::array<ShapeParameter, 2>& shape,
+                  const LineReader& reader) {
+    if (atom) {
+        if (t.size() != 7 && t.size() != 10) reader.fail("expected id type 1 density x y z");
+        for (int k = 0; k < 3; ++k)
+            particle.position[k] = reader.parseDouble(t[4 + k]) - header.bounds[k][0];
+        return;
+    }
+    if (t.size() != 8 && t.size() != 10)
+        reader.fail("expected id shapex shapey shapez quatw quati quatj quatk [n1 n2]");
+    for (int k = 1; k <= 3; ++k)
+        shape[0].column(0.5 * reader.parseDouble(t[k]), reader);
+    particle.orientation = Quaterniond(reader.parseDouble(t[4]), reader.parseDouble(t[5]),
+                                       reader.parseDouble(t[6]), reader.parseDouble(t[7]));
+    for (std::size_t k = 8; k < t.size(); ++k)
+        shape[1].column(0.5 * reader.parseDouble(t[k]), reader);
+}
+
+} // namespace
+
+void writeLammpsData(const Packing& packing, const fs::path& file) {
+    validatePacking(packing, file.string());
+    const bool blocky = packing.p != 1.0;
+    const std::string diameter = full(2.0 * packing.semiAxis), length = full(packing.boxLength);
+    const std::string blockiness = blocky ? " " + full(2.0 * packing.p) : std::string();
+    writeTextFile(file, [&](std::ostream& out) {
+        out << "LAMMPS data file from sbpack: superballs p = " << full(packing.p) << ", semi-axis "
+            << full(packing.semiAxis)
+            << (blocky ? " (atom_style ellipsoid superellipsoid, LAMMPS 30Mar2026 and later)\n\n"
+                       : " (atom_style ellipsoid)\n\n")
+            << packing.size() << " atoms\n1 atom types\n"
+            << packing.size() << " ellipsoids\n\n";
+        for (const char* axis : {"x", "y", "z"})
+            out << "0 " << length << ' ' << axis << "lo " << axis << "hi\n";
+        out << "\nAtoms # ellipsoid\n\n";
+        for (std::size_t i = 0; i < packing.size(); ++i) {
+            const Vector3d r = wrapIntoBox(packing.positions[i], packing.boxLength);
+            out << i + 1 << " 1 1 1 " << full(r.x()) << ' ' << full(r.y()) << ' ' << full(r.z())
+                << '\n';
+        }
+        out << "\nEllipsoids\n\n";
+        for (std::size_t i = 0; i < packing.size(); ++i) {
+            const Quaterniond q = packing.orientations[i].normalized();
+            out << i + 1 << ' ' << diameter << ' ' << diameter << ' ' << diameter << ' '
+                << full(q.w()) << ' ' << full(q.x()) << ' ' << full(q.y()) << ' ' << full(q.z())
+                << blockiness << blockiness << '\n';
+        }
+    });
+}
+
+Packing readLammpsData(const fs::path& file) {
+    LineReader reader(file);
+    DataHeader header;
+    const std::string section = readDataHeader(reader, header);
+    if (header.boxLines != 3) reader.fail("the header lacks xlo xhi, ylo yhi or zlo zhi");
+    if (header.ellipsoids != header.atoms)
+        reader.fail("every atom must be an ellipsoid (atom_style ellipsoid)");
+    std::map<long long, Particle> particles;
+    std::array<ShapeParameter, 2> shape{ShapeParameter("the semi-axis (shapex / 2)", {}),
+                                        ShapeParameter("p (blockiness / 2)", {})};
+    std::string line = section;
+    do { // the sections by their keyword lines; others (Masses, Velocities) are passed over
+        const std::vector<std::string> words = splitWhitespace(line.substr(0, line.find('#')));
+        if (words.size() != 1 || (words[0] != "Atoms" && words[0] != "Ellipsoids")) continue;
+        for (const auto& t : sectionLines(reader, header.atoms))
+            readDataLine(t, words[0] == "Atoms", particles[reader.parseCount(t[0])], header, shape,
+                         reader);
+    } while (reader.next(line));
+    if (static_cast<long long>(particles.size()) != header.atoms)
+        reader.fail("the Atoms and Ellipsoids sections name different atoms");
+    Packing packing;
+    packing.boxLength = cubicEdge(header.bounds, reader);
+    packing.semiAxis = shape[0].value(reader);
+    packing.p = shape[1].has() ? shape[1].value(reader) : 1.0;
+    std::vector<Particle> ordered;
+    for (auto& [id, particle] : particles) {
+        particle.id = id;
+        ordered.push_back(particle);
+    }
+    sortedInto(std::move(ordered), packing, reader);
+    return packing;
+}
+
+} // namespace sbpack
