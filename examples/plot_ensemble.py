@@ -30,7 +30,7 @@ def jam(n, seeds, out):
     ones not jammed)."""
     jammed, not_jammed = [], []
     for seed in seeds:
-        packing = sbpack.generate(n=n, seed=seed, gamma_slow=1e-3, pressure_final=PRESSURE)
+        packing = sbpack.generate(n=n, seed=seed, speed=10, pressure_final=PRESSURE)
         path = os.path.join(out, f"spheres-{n}-seed{seed}.h5")
         packing.write(path)
         if packing.provenance.get("jammed") == 1:

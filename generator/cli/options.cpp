@@ -126,6 +126,11 @@ void GeneratorCommandLine::addProtocolOptions() {
         "superballs, the paper's protocol at --p, 4.4e-3 to 1e-2: the rate that gives\n"
         "the paper's Z, bench/RESULTS.md, \"Fidelity\", E11)");
     protocol(
+        "--speed", "X", [&p](auto n, auto v) { p.speed = parseNumber(n, v); },
+        "faster, less accurate: the default slow rate times X, in [1, 1000], for every\n"
+        "p (default 1: the paper's protocol; 10: about ten times fewer slow-phase\n"
+        "collisions, at the cost in phi, Z and phi_R of docs/design.md §3, \"Speed\")");
+    protocol(
         "--pressure-switch", "P", [&p](auto n, auto v) { p.pressureSwitch = parseNumber(n, v); },
         "reduced pressure at which growth slows (default 1e6)");
     protocol(
@@ -191,6 +196,7 @@ void validateAsOptions(const ProtocolParameters& protocol) {
         {"phi_init", "--phi-init"},
         {"gamma_fast", "--gamma-fast"},
         {"gamma_slow", "--gamma-slow"},
+        {"speed", "--speed"},
         {"pressure_switch", "--pressure-switch"},
         {"pressure_final", "--pressure-final"},
         {"collisions_per_window", "--window"},

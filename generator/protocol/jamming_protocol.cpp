@@ -102,7 +102,7 @@ double ProtocolParameters::fastGrowthRate() const {
 }
 
 double ProtocolParameters::slowGrowthRate() const {
-    return gammaSlow.value_or(rotating(p) ? paperSlowRate(p) : 1e-4);
+    return gammaSlow.value_or(speed * (rotating(p) ? paperSlowRate(p) : 1e-4));
 }
 
 std::uint64_t ProtocolParameters::collisionLimit() const {
@@ -121,6 +121,10 @@ void ProtocolParameters::validate() const {
             "must be in [0.001, 0.5) (a more dilute start only adds growth time)");
     require(!gammaFast || positiveFinite(*gammaFast), "gamma_fast", "must be positive and finite");
     require(!gammaSlow || positiveFinite(*gammaSlow), "gamma_slow", "must be positive and finite");
+    require(std::isfinite(speed) && speed >= 1.0 && speed <= 1e3, "speed",
+            "must be in [1, 1000] (times the default slow rate; 1: the paper's protocol)");
+    require(speed == 1.0 || !gammaSlow, "speed",
+            "scales the default slow rate, which gamma_slow (--gamma-slow) replaces: give one");
     require(positiveFinite(pressureSwitch), "pressure_switch", "must be positive and finite");
     require(positiveFinite(pressureFinal), "pressure_final", "must be positive and finite");
     require(pressureFinal > pressureSwitch, "pressure_final",

@@ -56,6 +56,10 @@ struct ProtocolParameters {
     std::optional<double> gammaFast;
     /// Unset: slowGrowthRate()'s default for p.
     std::optional<double> gammaSlow;
+    /// The speed knob (docs/design.md §3, "Speed"): the default slow rate times speed, >= 1, for
+    /// every p; about speed times fewer slow-phase collisions at the cost tabulated there. Only
+    /// with gammaSlow unset (a checkpoint stores the rate it resolved to).
+    double speed = 1.0;
     double pressureSwitch = 1e6;
     double pressureFinal = 1e12;
     double collisionsPerWindow = 10.0; ///< per particle, between thermostat rescalings
@@ -77,8 +81,8 @@ struct ProtocolParameters {
     /// "Fidelity", E8).
     double fastGrowthRate() const;
 
-    /// The slow rate used: gammaSlow if set, else 1e-4 for spheres (Z = 5.978 +- 0.005 at
-    /// N = 1000, where 1e-3 leaves 5.94) and for superballs the paper's protocol at p
+    /// The slow rate used: gammaSlow if set, else speed times 1e-4 for spheres (Z = 5.978 +-
+    /// 0.005 at N = 1000, where 1e-3 leaves 5.94) and for superballs the paper's protocol at p
     /// (paperSlowRate: the rate that reproduces its Z, whose superball Z keeps rising as the slow
     /// phase slows; bench/RESULTS.md, "Fidelity", E11).
     double slowGrowthRate() const;

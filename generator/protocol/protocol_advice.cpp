@@ -116,8 +116,8 @@ std::vector<std::string> protocolWarnings(const ProtocolParameters& parameters) 
     if (parameters.gammaSlow && *parameters.gammaSlow < defaults.slowGrowthRate())
         warnings.push_back(fmt::format(
             "gamma-slow {:g} is slower than the default for p = {:g}, {:.2g}: about {:.2g} "
-            "times the slow phase's collisions; a larger rate is the faster one (docs/design.md "
-            "§3)",
+            "times the slow phase's collisions; a larger rate is the faster one, and speed "
+            "(--speed, speed=) scales the default for any p (docs/design.md §3, \"Speed\")",
             *parameters.gammaSlow, parameters.p, defaults.slowGrowthRate(),
             defaults.slowGrowthRate() / *parameters.gammaSlow));
     if (parameters.p > 10.0)

@@ -131,12 +131,13 @@ void checkProgress(const py::object& progress, double interval) {
 
 /// The parameters that set the expected cost (expected_collisions's keywords). Options left None
 /// keep ProtocolParameters' defaults, which are sbgen's.
-ProtocolParameters costParameters(const py::int_& n, double p, Option gammaSlow,
+ProtocolParameters costParameters(const py::int_& n, double p, Option gammaSlow, Option speed,
                                   Option pressureSwitch, Option pressureFinal) {
     ProtocolParameters parameters;
     parameters.particles = particleCount(n);
     parameters.p = p;
     if (gammaSlow) parameters.gammaSlow = gammaSlow;
+    parameters.speed = speed.value_or(parameters.speed);
     parameters.pressureSwitch = pressureSwitch.value_or(parameters.pressureSwitch);
     parameters.pressureFinal = pressureFinal.value_or(parameters.pressureFinal);
     return parameters;
@@ -148,12 +149,12 @@ void registerGenerator(py::module_& m) {
     m.def(
         "generate",
         [](const py::int_& n, double p, std::uint64_t seed, Option phiInit, Option gammaFast,
-           Option gammaSlow, Option pressureSwitch, Option pressureFinal, Option window,
-           Option costLimit, const py::object& progress, double progressInterval) {
+           Option gammaSlow, Option speed, Option pressureSwitch, Option pressureFinal,
+           Option window, Option costLimit, const py::object& progress, double progressInterval) {
             checkProgress(progress, progressInterval);
             // Options left None keep ProtocolParameters' defaults, which are sbgen's.
             ProtocolParameters parameters =
-                costParameters(n, p, gammaSlow, pressureSwitch, pressureFinal);
+                costParameters(n, p, gammaSlow, speed, pressureSwitch, pressureFinal);
             parameters.seed = seed;
             parameters.phiInit = phiInit.value_or(parameters.phiInit);
             if (gammaFast) parameters.gammaFast = gammaFast;
@@ -163,24 +164,25 @@ void registerGenerator(py::module_& m) {
         },
         py::kw_only(), py::arg("n") = 1000, py::arg("p") = 1.0, py::arg("seed") = 1,
         py::arg("phi_init") = py::none(), py::arg("gamma_fast") = py::none(),
-        py::arg("gamma_slow") = py::none(), py::arg("pressure_switch") = py::none(),
-        py::arg("pressure_final") = py::none(), py::arg("window") = py::none(),
-        py::arg("cost_limit") = py::none(), py::arg("progress") = py::none(),
-        py::arg("progress_interval") = 2.0,
+        py::arg("gamma_slow") = py::none(), py::arg("speed") = py::none(),
+        py::arg("pressure_switch") = py::none(), py::arg("pressure_final") = py::none(),
+        py::arg("window") = py::none(), py::arg("cost_limit") = py::none(),
+        py::arg("progress") = py::none(), py::arg("progress_interval") = 2.0,
         "Jams a packing as sbgen does with the same options and defaults (docs/python.md); "
         "progress(status) every progress_interval seconds; Ctrl-C stops at the end of the "
         "running window");
     m.def(
         "expected_collisions",
-        [](const py::int_& n, double p, Option gammaSlow, Option pressureSwitch,
+        [](const py::int_& n, double p, Option gammaSlow, Option speed, Option pressureSwitch,
            Option pressureFinal) {
             const ProtocolParameters parameters =
-                costParameters(n, p, gammaSlow, pressureSwitch, pressureFinal);
+                costParameters(n, p, gammaSlow, speed, pressureSwitch, pressureFinal);
             validateAsKeywords(parameters);
             return expectedCost(parameters).collisions;
         },
         py::kw_only(), py::arg("n") = 1000, py::arg("p") = 1.0, py::arg("gamma_slow") = py::none(),
-        py::arg("pressure_switch") = py::none(), py::arg("pressure_final") = py::none(),
+        py::arg("speed") = py::none(), py::arg("pressure_switch") = py::none(),
+        py::arg("pressure_final") = py::none(),
         "The collisions sbgen expects of this protocol (docs/design.md §3, \"Expected cost\"; "
         "provenance expected_collisions); cost_limit is a multiple of it");
 }

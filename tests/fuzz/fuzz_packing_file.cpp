@@ -1,12 +1,14 @@
 // libFuzzer target for the file-type dispatch readPackingFile (io/packing_formats.hpp; issue 46):
 // the tools take every packing through it, which picks the reader from the name (".txt": the
-// text format, ".xyz": extended XYZ, ".gsd": GSD; anything else: HDF5). The input's bytes are
+// text format, ".xyz": extended XYZ, ".gsd": GSD, ".dump" and ".data": LAMMPS; anything else:
+// HDF5). The input's bytes are
 // written under one of several names, picked by the input's size so that the bytes stay the file
 // (scripts/fuzz.sh checks findings against the release sbanalyze as they are). Whatever the name,
 // the outcome must be the one of the reader its extension names, called directly: the same packing,
 // or the same refusal of the documented type (PackingFileError, InvalidPacking) naming the file.
 #include "fuzz_input.hpp"
 #include "io/gsd_io.hpp"
+#include "io/lammps_io.hpp"
 #include "io/packing_formats.hpp"
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
@@ -20,9 +22,10 @@
 
 namespace {
 
-/// Names whose extension is not exactly ".txt", ".xyz" or ".gsd" go to the HDF5 reader.
+/// Names whose extension is none of ".txt", ".xyz", ".gsd", ".dump", ".data" go to HDF5's reader.
 constexpr const char* kNames[] = {"input.txt",    "input.h5",  "input.xyz",          "input",
-                                  "input.txt.h5", "input.TXT", "it's a packing.txt", "input.gsd"};
+                                  "input.txt.h5", "input.TXT", "it's a packing.txt", "input.gsd",
+                                  "input.dump",   "input.data"};
 
 struct Outcome {
     std::optional<sbpack::Packing> packing;
@@ -58,10 +61,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const Outcome dispatched = outcome(path, sbpack::readPackingFile);
     const auto extension = path.extension();
     const auto [reader, read] =
-        extension == ".txt"   ? std::pair{"readTextPacking", &sbpack::readTextPacking}
-        : extension == ".xyz" ? std::pair{"readExtendedXyz", &sbpack::readExtendedXyz}
-        : extension == ".gsd" ? std::pair{"readGsd", &sbpack::readGsd}
-                              : std::pair{"readPacking", &sbpack::readPacking};
+        extension == ".txt"    ? std::pair{"readTextPacking", &sbpack::readTextPacking}
+        : extension == ".xyz"  ? std::pair{"readExtendedXyz", &sbpack::readExtendedXyz}
+        : extension == ".gsd"  ? std::pair{"readGsd", &sbpack::readGsd}
+        : extension == ".dump" ? std::pair{"readLammpsDump", &sbpack::readLammpsDump}
+        : extension == ".data" ? std::pair{"readLammpsData", &sbpack::readLammpsData}
+                               : std::pair{"readPacking", &sbpack::readPacking};
     const Outcome direct = outcome(path, read);
     const bool same = dispatched.packing
                           ? direct.packing && samePacking(*dispatched.packing, *direct.packing)

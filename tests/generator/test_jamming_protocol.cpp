@@ -98,6 +98,15 @@ TEST(JammingProtocol, RejectsBadParametersNamingTheParameter) {
     expectBad([](auto& p) { p.collisionsPerWindow = 1e-4; }, "collisions_per_window");
     expectBad([](auto& p) { p.costLimit = -1.0; }, "cost_limit");
     expectBad([](auto& p) { p.costLimit = NAN; }, "cost_limit");
+    expectBad([](auto& p) { p.speed = 0.5; }, "speed"); // slower than the paper: --gamma-slow
+    expectBad([](auto& p) { p.speed = NAN; }, "speed");
+    expectBad([](auto& p) { p.speed = 2e3; }, "speed");
+    expectBad(
+        [](auto& p) {
+            p.speed = 10.0;
+            p.gammaSlow = 1e-3;
+        },
+        "speed");
 }
 
 TEST(JammingProtocol, SameSeedGivesIdenticalPacking) {
@@ -403,6 +412,29 @@ TEST(JammingProtocol, TheDefaultRatesAreTheMeasuredPaperRatesOfTheirP) {
     EXPECT_EQ(superballs.slowGrowthRate(), paperSlowRate(1.1));
     superballs.gammaSlow = 2e-3;
     EXPECT_EQ(superballs.slowGrowthRate(), 2e-3);
+}
+
+// Issue 66 item 3: the speed knob scales the default slow rate for every p, and the slow phase's
+// expected collisions by its inverse (docs/design.md §3, "Speed" and "Expected cost").
+TEST(JammingProtocol, TheSpeedKnobScalesTheDefaultSlowRateForEveryP) {
+    for (const double p : {1.0, 1.3, 3.0}) {
+        ProtocolParameters paper, faster;
+        paper.p = faster.p = p;
+        faster.speed = 10.0;
+        EXPECT_DOUBLE_EQ(faster.slowGrowthRate(), 10.0 * paper.slowGrowthRate()) << p;
+        EXPECT_EQ(faster.fastGrowthRate(), paper.fastGrowthRate()) << p;
+        // Collisions: the same fast phase, a tenth of the slow phase's.
+        ProtocolParameters fastOnly = paper;
+        fastOnly.pressureFinal = std::nextafter(paper.pressureSwitch, INFINITY);
+        const double fast = expectedCost(fastOnly).collisions;
+        EXPECT_NEAR(expectedCost(faster).collisions - fast,
+                    (expectedCost(paper).collisions - fast) / 10.0,
+                    1e-9 * expectedCost(paper).collisions)
+            << p;
+    }
+    ProtocolParameters spheres;
+    spheres.speed = 10.0;
+    EXPECT_EQ(spheres.slowGrowthRate(), 1e-3); // the demo's --speed 10 is its old --gamma-slow 1e-3
 }
 
 // A checkpoint whose engine state was tampered with is refused, naming it (issue 20, defect 7).

@@ -10,12 +10,14 @@ RUNS = {
     "spheres": dict(n=30, seed=3, gamma_slow=1e-3, pressure_switch=1e5, pressure_final=1e8),
     "superballs": dict(n=20, p=1.5, seed=3, gamma_slow=1e-2, pressure_switch=1e5,
                        pressure_final=1e8),
+    "speed": dict(n=20, p=1.5, seed=3, speed=3, pressure_switch=1e5, pressure_final=1e8),
 }
 TIMES = ("wall_time_s", "cpu_time_s")
 
 
 def sbgen_options(options):
     flags = {"n": "--n", "p": "--p", "seed": "--seed", "gamma_slow": "--gamma-slow",
+             "speed": "--speed",
              "pressure_switch": "--pressure-switch", "pressure_final": "--pressure-final",
              "cost_limit": "--cost-limit"}
     return [a for k, v in options.items() for a in (flags[k], str(v))]
@@ -98,3 +100,15 @@ def test_misuses_are_refused_before_the_run():
         with pytest.raises(ValueError, match="progress_interval = .*: must be a finite number of "
                                              r"seconds >= 0 \(0: after every window\)"):
             sbpack.generate(n=10**6, progress=print, progress_interval=interval)
+
+
+def test_speed_scales_the_default_slow_rate():
+    """speed=10 on spheres is the slow rate 10 x 1e-4 = 1e-3: the same run as gamma_slow=1e-3
+    (docs/design.md §3, "Speed"); with gamma_slow as well it is refused, naming speed."""
+    options = dict(n=30, seed=3, pressure_switch=1e5, pressure_final=1e8)
+    fast = sbpack.generate(**options, speed=10)
+    same = sbpack.generate(**options, gamma_slow=1e-3)
+    assert np.array_equal(fast.positions, same.positions)
+    assert fast.provenance["gamma_slow"] == 1e-3
+    with pytest.raises(ValueError, match="speed"):
+        sbpack.generate(**options, speed=10, gamma_slow=1e-3)
