@@ -8,6 +8,7 @@
 #include "io/gsd_io.hpp"
 #include "io/packing_formats.hpp"
 #include "io/packing_io.hpp"
+#include "packing_file_fixtures.hpp"
 #include "third_party/gsd/gsd.h"
 
 #include <gtest/gtest.h>
@@ -17,7 +18,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -27,26 +27,11 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / "sbpack_test_gsd_io";
-    fs::create_directories(dir);
-    return dir / name;
+    return fixtures::scratch("sbpack_test_gsd_io", name);
 }
 
-Packing superballs(double p, std::size_t n = 50) {
-    std::mt19937_64 rng(7);
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    std::normal_distribution<double> gauss(0.0, 1.0);
-    Packing packing;
-    packing.p = p;
-    packing.semiAxis = 0.6180339887498949;
-    packing.boxLength = 12.345678901234567;
-    for (std::size_t i = 0; i < n; ++i) {
-        packing.positions.emplace_back(packing.boxLength * uniform(rng),
-                                       packing.boxLength * uniform(rng),
-                                       packing.boxLength * uniform(rng));
-        packing.orientations.push_back(
-            Quaterniond(gauss(rng), gauss(rng), gauss(rng), gauss(rng)).normalized());
-    }
+Packing superballs(double p) {
+    Packing packing = fixtures::randomSuperballs(p, 50, 7);
     packing.positions[0].x() = std::nextafter(packing.boxLength, 0.0); // rounds onto +L/2
     packing.reducedPressure = 1.0e12 / 3.0;
     packing.seed = 18446744073709551557ULL;
@@ -157,16 +142,7 @@ TEST(GsdIo, AHoomdHardSphereFrameReadsAsSpheres) {
     EXPECT_FALSE(packing.reducedPressure.has_value());
 }
 
-/// Runs `read` and expects PackingFileError whose message names `file` and holds `words`.
-void expectRefused(const fs::path& file, const std::string& words) {
-    try {
-        readPackingFile(file);
-        ADD_FAILURE() << "read " << file;
-    } catch (const PackingFileError& e) {
-        EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-    }
-}
+using fixtures::expectRefused;
 
 TEST(GsdIo, RefusesWhatIsNotACubicSuperballPackingNamingTheFile) {
     const fs::path tilted = scratch("tilted.gsd");

@@ -7,12 +7,12 @@
 #include "io/lammps_io.hpp"
 #include "io/packing_formats.hpp"
 #include "io/packing_io.hpp"
+#include "packing_file_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
-#include <random>
 #include <string>
 
 namespace sbpack {
@@ -21,9 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / "sbpack_test_lammps_io";
-    fs::create_directories(dir);
-    return dir / name;
+    return fixtures::scratch("sbpack_test_lammps_io", name);
 }
 
 fs::path written(const std::string& name, const std::string& text) {
@@ -33,21 +31,7 @@ fs::path written(const std::string& name, const std::string& text) {
 }
 
 Packing superballs(double p, std::size_t n = 40) {
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    std::normal_distribution<double> gauss(0.0, 1.0);
-    Packing packing;
-    packing.p = p;
-    packing.semiAxis = 0.6180339887498949;
-    packing.boxLength = 9.876543210987654;
-    for (std::size_t i = 0; i < n; ++i) {
-        packing.positions.emplace_back(packing.boxLength * uniform(rng),
-                                       packing.boxLength * uniform(rng),
-                                       packing.boxLength * uniform(rng));
-        packing.orientations.push_back(
-            Quaterniond(gauss(rng), gauss(rng), gauss(rng), gauss(rng)).normalized());
-    }
-    return packing;
+    return fixtures::randomSuperballs(p, n, 11);
 }
 
 void expectSame(const Packing& read, const Packing& original) {
@@ -110,17 +94,10 @@ TEST(LammpsIo, ADumpAsLammpsWritesOneReadsAsTheSameParticles) {
     EXPECT_EQ(packing.orientations[1].coeffs(), Quaterniond(0, 0, 0, 1).coeffs());
 }
 
-/// Reading `file` throws PackingFileError holding its name, a line and `words`.
+/// Refused naming the file, the line and `words`.
 void expectRefused(const fs::path& file, const std::string& words) {
-    try {
-        readPackingFile(file);
-        ADD_FAILURE() << "read " << file;
-    } catch (const PackingFileError& e) {
-        const std::string what = e.what();
-        EXPECT_NE(what.find(file.string()), std::string::npos) << what;
-        EXPECT_NE(what.find("line"), std::string::npos) << what;
-        EXPECT_NE(what.find(words), std::string::npos) << what;
-    }
+    fixtures::expectRefused(file, words);
+    fixtures::expectRefused(file, "line");
 }
 
 TEST(LammpsIo, RefusesWhatIsNotACubicPackingNamingTheFileAndLine) {
