@@ -1,7 +1,7 @@
 #include "info/packing_info.hpp"
 
-#include "io/packing_io.hpp"
 #include "io/packing_formats.hpp"
+#include "io/packing_io.hpp"
 
 #include <iomanip>
 #include <ostream>

@@ -2,8 +2,8 @@
 
 #include "io/atomic_file.hpp"
 #include "io/naming_file.hpp"
-#include "io/packing_io.hpp"
 #include "io/packing_formats.hpp"
+#include "io/packing_io.hpp"
 #include "parallel/parallel.hpp"
 #include "pipeline/record_bytes.hpp"
 #include "pipeline/resources.hpp"

@@ -123,6 +123,7 @@ class FrameReader {
             throw PackingFileError("'" + file.string() + "': GSD file without a frame");
         }
         frame_ = frames - 1;
+        fileBytes_ = fs::file_size(file);
     }
     FrameReader(const FrameReader&) = delete;
     FrameReader& operator=(const FrameReader&) = delete;
@@ -138,15 +139,14 @@ class FrameReader {
             (rows != 0 && e->N != rows) || e->M != columns)
             fail(name, fmt::format("{} x {} floating-point numbers", rows ? rows : e->N, columns),
                  e);
-        std::vector<double> out(e->N * e->M);
+        std::vector<double> out;
         if (e->type == GSD_TYPE_DOUBLE) {
             read(e, name, out);
             return out;
         }
-        std::vector<float> single(out.size());
+        std::vector<float> single;
         read(e, name, single);
-        std::copy(single.begin(), single.end(), out.begin());
-        return out;
+        return std::vector<double>(single.begin(), single.end());
     }
     /// An unsigned integer chunk of `rows` x 1 (uint8 to uint64) as uint64; nullopt if absent.
     std::optional<std::vector<std::uint64_t>> counts(const std::string& name, std::uint64_t rows);
@@ -158,8 +158,18 @@ class FrameReader {
         const gsd_index_entry* e = gsd_find_chunk(&handle_, frame_, name.c_str());
         return e || frame_ == 0 ? e : gsd_find_chunk(&handle_, 0, name.c_str());
     }
+    /// Reads the chunk into `out`, sized to it here: a chunk that claims more bytes than the
+    /// file holds (a corrupt or hostile index, whose N x M the library does not check for
+    /// overflow) is refused before anything is allocated.
     template <class T>
     void read(const gsd_index_entry* e, const std::string& name, std::vector<T>& out) {
+        const std::uint64_t width = gsd_sizeof_type(static_cast<gsd_type>(e->type));
+        if (width == 0 || e->M == 0 || e->N > fileBytes_ / e->M / width ||
+            e->N * e->M * width % sizeof(T) != 0)
+            throw PackingFileError(fmt::format("'{}': GSD chunk {} claims {} x {} values of type "
+                                               "{}, more than the file holds",
+                                               file_.string(), name, e->N, e->M, e->type));
+        out.resize(e->N * e->M * width / sizeof(T));
         check(gsd_read_chunk(&handle_, out.data(), e), file_, "reading " + name);
     }
     [[noreturn]] void fail(const std::string& name, const std::string& expected,
@@ -172,6 +182,7 @@ class FrameReader {
     gsd_handle handle_{};
     fs::path file_;
     std::uint64_t frame_ = 0;
+    std::uint64_t fileBytes_ = 0;
 };
 
 std::optional<std::vector<std::uint64_t>> FrameReader::counts(const std::string& name,
@@ -180,7 +191,7 @@ std::optional<std::vector<std::uint64_t>> FrameReader::counts(const std::string&
     if (!e) return std::nullopt;
     if (e->type < GSD_TYPE_UINT8 || e->type > GSD_TYPE_UINT64 || e->N != rows || e->M != 1)
         fail(name, fmt::format("{} x 1 unsigned integers", rows), e);
-    std::vector<std::uint8_t> bytes(e->N * gsd_sizeof_type(static_cast<gsd_type>(e->type)));
+    std::vector<std::uint8_t> bytes;
     read(e, name, bytes);
     std::vector<std::uint64_t> out(e->N);
     const std::size_t width = bytes.size() / e->N;
@@ -196,7 +207,7 @@ std::vector<std::string> FrameReader::strings(const std::string& name) {
     const gsd_index_entry* e = find(name);
     if (!e) return {};
     if (e->type != GSD_TYPE_INT8 && e->type != GSD_TYPE_UINT8) fail(name, "int8 strings", e);
-    std::vector<char> bytes(e->N * e->M);
+    std::vector<char> bytes;
     read(e, name, bytes);
     std::vector<std::string> out;
     for (std::size_t k = 0; k < e->N; ++k)

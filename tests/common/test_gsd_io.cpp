@@ -165,5 +165,39 @@ TEST(GsdIo, RefusesWhatIsNotACubicSuperballPackingNamingTheFile) {
     expectRefused(scratch("absent.gsd"), "no such file");
 }
 
+// A hostile file: particles/N and the position chunk's N set to 2^32 - 1 (48 GB of positions in a
+// file of a few hundred bytes); refused, naming the file, before anything of that size is
+// allocated.
+TEST(GsdIo, RefusesAChunkClaimingMoreThanTheFileHolds) {
+    const fs::path file = scratch("hostile.gsd");
+    writeHoomdFrame(file, {8.0F, 8.0F, 8.0F, 0.0F, 0.0F, 0.0F},
+                    R"({"type": "Sphere", "diameter": 1})");
+    std::fstream bytes(file, std::ios::in | std::ios::out | std::ios::binary);
+    std::uint64_t index = 0;
+    bytes.seekg(8); // gsd_header: magic, then index_location
+    bytes.read(reinterpret_cast<char*>(&index), sizeof index);
+    const std::uint32_t huge = 0xFFFFFFFFU;
+    int patched = 0;
+    for (std::uint64_t at = index;; at += sizeof(gsd_index_entry)) {
+        gsd_index_entry entry{};
+        bytes.seekg(static_cast<std::streamoff>(at));
+        if (!bytes.read(reinterpret_cast<char*>(&entry), sizeof entry) || entry.location == 0)
+            break;
+        if (entry.N == 1 && entry.M == 1 && entry.type == GSD_TYPE_UINT32) { // particles/N
+            bytes.seekp(entry.location);
+            bytes.write(reinterpret_cast<const char*>(&huge), sizeof huge);
+            ++patched;
+        } else if (entry.N == 2 && entry.M == 3) { // particles/position
+            entry.N = huge;
+            bytes.seekp(static_cast<std::streamoff>(at));
+            bytes.write(reinterpret_cast<const char*>(&entry), sizeof entry);
+            ++patched;
+        }
+    }
+    bytes.close();
+    ASSERT_EQ(patched, 2);
+    expectRefused(file, "GSD");
+}
+
 } // namespace
 } // namespace sbpack

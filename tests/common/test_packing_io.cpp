@@ -3,9 +3,9 @@
 
 #include "io/atomic_file.hpp"
 #include "io/hdf5_handles.hpp"
+#include "io/packing_formats.hpp"
 #include "io/packing_io.hpp"
 #include "io/packing_schema.hpp"
-#include "io/packing_formats.hpp"
 #include "io/text_io.hpp"
 #include "packing/contact_forces.hpp"
 #include "packing/validation.hpp"

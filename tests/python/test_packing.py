@@ -109,7 +109,7 @@ def test_misuses_are_named(tmp_path):
         sbpack.Packing(np.zeros((1, 3)), [[1.0, 0, 0, 0]], 5.0, p=1.5, semi_axis=0.5,
                        source="a\0b")
     packing = sbpack.Packing.read(P15)
-    with pytest.raises(ValueError, match=r"unknown extension \(use .h5, .txt or .xyz\)"):
+    with pytest.raises(ValueError, match=r"unknown extension \(use .h5, .txt, .xyz, .gsd"):
         packing.write(tmp_path / "x.bad")
     assert not (tmp_path / "x.bad").exists()
     with pytest.raises(OSError, match="does not exist"):
