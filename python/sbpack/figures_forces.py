@@ -11,7 +11,7 @@ import os
 
 import numpy as np
 
-from .figures_results import draw_steps, new_figure, with_group
+from .figures_results import draw_steps, new_figure, note, with_group
 from .figures_series import curve, group_label, scalar
 
 FLOOR = 1e-4  # the density axis's bottom: a band's lower edge is clipped to it
@@ -102,9 +102,10 @@ def unjamming_motion(series, voxels=200, threads=1):
                   scale=1.0, color="tab:red", width=0.006, gid=f"{packing.p:g}")
         ax.set(xlim=(0, L / D), ylim=(0, L / D), xlabel="$z/D$", ylabel="$y/D$")
         ax.set_title(f"p = {packing.p:g}, N = {len(packing)}: {what}", fontsize=9)
-    fig.suptitle("The collective test's unjamming motion on a section x = L/2: each particle's "
-                 "(z, y) displacement,\nthe largest one D long (an opening opens contacts, a flex "
-                 "keeps every one)", fontsize=9)
+    note(fig, "The collective jamming test's unjamming motion (sbanalyze --compute jamming, "
+              "docs/jamming.md §7) on a section x = L/2 of each packing: each particle's (z, y) "
+              "displacement as an arrow, the largest one D long; an opening opens contacts, a "
+              "flex keeps every one.")
     return fig
 
 

@@ -22,10 +22,20 @@ def new_figure(columns, rows=1, width=5.0, height=3.8, **kwargs):
                         layout="constrained", **kwargs)
 
 
-def note(fig, text, width_chars=None):
-    """A suptitle wrapped to the figure's width (never clipped: constrained layout)."""
-    width_chars = width_chars or int(fig.get_figwidth() * 15)
-    fig.suptitle(textwrap.fill(text, width_chars), fontsize=9)
+def caption_title(text, longest=90):
+    """The caption's first phrase, up to its first '(', ':', ';' or '. ': a title of one line."""
+    cuts = [i for i in (text.find(mark) for mark in ("(", ":", ";", ". ")) if i > 0]
+    title = text[:min(cuts, default=len(text))].strip().rstrip(",")
+    return textwrap.shorten(title, longest, placeholder=" ...")
+
+
+def note(fig, text):
+    """The figure's caption: its first phrase as a one-line title above the panels, the whole
+    text as fig.sbpack_caption, which plot.save() writes beside the figure (captions.md) and
+    into the PNG's and PDF's metadata (issue 66 item 5: captions are text, not paragraphs drawn
+    over the figure)."""
+    fig.sbpack_caption = text
+    fig.suptitle(caption_title(text), fontsize=10)
 
 
 def draw(ax, s, xyz, label, x_scale=1.0, y_scale=1.0, step=False, log_y=False):
@@ -140,7 +150,8 @@ def major_axis(series):
                      x_scale=s.major_axis_over_width(),
                      y_scale=chi_scale(s, by_major_axis=True) if cubed else 1.0)
             ax.set(xlabel=r"$QA$", ylabel=ylabel, title=f"By the major axis A, {side}")
-    note(fig, f"Against Q times {AXIS_NOTE}, instead of the mean width; A/w from each "
+    note(fig, f"Structure factor and spectral density against Q A. Against Q times {AXIS_NOTE}, "
+              f"instead of the mean width; A/w from each "
               "input's own R and w")
     return fig
 
@@ -223,7 +234,8 @@ def small_q(series, qmax=4.0):
 
 def small_q_note(series, windows):
     """What the small-Q figure shows, and what the results do not hold."""
-    text = (f"Points: voxel shell averages ({grids_title(series, 'spectral_density')}"
+    text = (f"Spectral density at small Q. Points: voxel shell averages "
+            f"({grids_title(series, 'spectral_density')}"
             f"{bands(series, 'ensembles: mean ± std')}). ")
     if not windows:
         return text + "No hyper results: no fit."

@@ -129,15 +129,23 @@ def finish(fig):
 
 
 def save(figures, out):
-    """Each figure as out/NAME.png and out/NAME.pdf, as it is (make_figures finished it);
-    closes them; returns the PNG paths."""
+    """Each figure as out/NAME.png and out/NAME.pdf, as it is (make_figures finished it), its
+    caption (figures_results.note) in their metadata (PNG Description, PDF Subject) and, with
+    the others', in out/captions.md; closes them; returns the PNG paths."""
     os.makedirs(out, exist_ok=True)
-    written = []
+    written, captions = [], []
     for name, fig in figures.items():
-        for ext in ("png", "pdf"):
-            fig.savefig(os.path.join(out, f"{name}.{ext}"), dpi=130)
+        caption = getattr(fig, "sbpack_caption", "")
+        fig.savefig(os.path.join(out, f"{name}.png"), dpi=130,
+                    metadata={"Description": caption} if caption else None)
+        fig.savefig(os.path.join(out, f"{name}.pdf"), metadata={"Subject": caption})
+        if caption:
+            captions.append(f"## {name}.png\n\n{caption}\n")
         written.append(os.path.join(out, f"{name}.png"))
         plt.close(fig)
+    if captions:
+        with open(os.path.join(out, "captions.md"), "w") as f:
+            f.write("# Figure captions (python3 -m sbpack.plot)\n\n" + "\n".join(captions))
     return written
 
 

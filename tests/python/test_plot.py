@@ -106,6 +106,24 @@ def test_command_writes_png_and_pdf(command):
     assert r.stdout.split() == [str(out / f"{n}.png") for n in NAMES]
 
 
+def test_captions_are_text_beside_the_figure(command, ensemble_figures):
+    """Issue 66 item 5: a title of one line above the panels; the caption as text, in
+    captions.md beside the figures and in each PNG's metadata."""
+    from PIL import Image  # matplotlib's own dependency
+    r, out = command
+    captions = (out / "captions.md").read_text()
+    described = 0
+    for name in NAMES:
+        description = Image.open(out / f"{name}.png").info.get("Description", "")
+        if description:
+            assert f"## {name}.png\n\n{description}\n" in captions
+            described += 1
+    assert described >= 5
+    for name, fig in ensemble_figures.items():
+        if fig._suptitle is not None:
+            assert "\n" not in fig._suptitle.get_text(), name
+
+
 def test_make_figures_are_the_commands(ensemble, ensemble_figures, command, tmp_path):
     """One code path: make_figures() returns finished figures, and the command saves exactly
     those (the same PNG bytes, figure by figure)."""
@@ -266,7 +284,7 @@ def test_small_q_fit_over_its_window_and_its_points(results, figures):
         assert np.allclose(fit.get_ydata(), h["a0"] + h["a1"] * x ** h["alpha"])
     exact = [line for line in ax.lines if line.get_label().startswith("exact")]
     assert len(exact) == 1  # the spheres' exact chi_V, at the voxel points' shells
-    assert "crosses, the values fitted" in " ".join(figures["small_q"]._suptitle.get_text().split())
+    assert "crosses, the values fitted" in figures["small_q"].sbpack_caption
     for f in files:  # the wave vectors fitted, as the results keep them
         h = f["hyperuniformity"]
         crosses = [line for line in ax.lines if line.get_label().startswith(
@@ -282,7 +300,7 @@ def test_mixed_grids_are_named(results):
     labels = [line.get_label() for ax in fig.axes for line in ax.lines]
     assert any("on 300³" in label for label in labels)
     assert any("on 500³" in label for label in labels)
-    assert "grids differ" in " ".join(fig._suptitle.get_text().split())
+    assert "grids differ" in fig.sbpack_caption
 
 
 def test_sides_split_at_one():
@@ -426,8 +444,7 @@ def test_order_of_an_ensemble_draws_each_member(ensemble, ensemble_figures):
     histogram: every member's particles pooled; its legend: the ensemble's mean +- std."""
     r = sbpack.read_results(ensemble)
     g2_axis, q6_axis = ensemble_figures["order"].axes[:2]
-    assert "each member's g₂ thin" in " ".join(ensemble_figures["order"]._suptitle.get_text()
-                                              .split())
+    assert "each member's g₂ thin" in ensemble_figures["order"].sbpack_caption
     for e in r["ensembles"]:
         members = [r["files"][int(m)] for m in e["members"]]
         label = f"p = {e['p']:g}, N = {e['n_particles']} (mean $\\pm$ std of 3)"
