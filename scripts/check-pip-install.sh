@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Checks `pip install .` (pyproject.toml, scikit-build-core) in a fresh virtual environment made by
 # the first python3 on PATH (e.g. a PyPI/pyenv Python, not Debian's), then imports the module
-# outside the source tree. Needs the Debian packages of scripts/install-deps.sh and PyPI (pip
+# outside the source tree and runs the programs pip put on the environment's PATH. Needs the Debian packages of scripts/install-deps.sh and PyPI (pip
 # fetches scikit-build-core, pybind11, numpy, h5py and matplotlib). Not run by ctest (minutes:
 # it builds the libraries again). usage: scripts/check-pip-install.sh [VENV_DIR]
 set -euo pipefail
@@ -13,3 +13,5 @@ echo "venv: $venv ($("$venv/bin/python" --version))"
 nice -n 10 "$venv/bin/pip" install --quiet .
 cd "$(mktemp -d)"
 "$venv/bin/python" -c "import sbpack; print(sbpack.__version__)"
+"$venv/bin/sbgen" --help | head -1
+"$venv/bin/sbanalyze" --help | head -1
