@@ -101,12 +101,13 @@ std::vector<float> centredPositions(const Packing& packing) {
     const float halfFloat = static_cast<float>(half);
     std::vector<float> out;
     out.reserve(3 * packing.size());
-    for (const Vector3d& r : packing.positions)
+    for (const Vector3d& r : packing.positions) {
+        const Vector3d centred = wrapIntoBox(r, packing.boxLength) - Vector3d::Constant(half);
         for (int k = 0; k < 3; ++k) {
-            float x = static_cast<float>(wrapIntoBox(r, packing.boxLength)[k] - half);
-            if (x >= halfFloat) x = -halfFloat;
-            out.push_back(x);
+            const auto x = static_cast<float>(centred[k]);
+            out.push_back(x >= halfFloat ? -halfFloat : x);
         }
+    }
     return out;
 }
 
@@ -324,11 +325,10 @@ Packing readGsd(const fs::path& file) {
     if (!single)
         throw PackingFileError("'" + file.string() + "': GSD file without particles/position");
     const double shift = exact ? 0.0 : 0.5 * packing.boxLength; // the schema's box is centred
-    for (std::uint64_t i = 0; i < count; ++i)
+    for (std::uint64_t i = 0; i < count; ++i) // wrapped into [0, L) by canonicalizePacking
         packing.positions.push_back(
-            wrapIntoBox(Vector3d((*single)[3 * i], (*single)[3 * i + 1], (*single)[3 * i + 2]) +
-                            Vector3d::Constant(shift),
-                        packing.boxLength));
+            Vector3d((*single)[3 * i], (*single)[3 * i + 1], (*single)[3 * i + 2]) +
+            Vector3d::Constant(shift));
     auto q = frame.numbers(std::string(kParticleLog) + "orientation", count, 4);
     if (!q) q = frame.numbers("particles/orientation", count, 4);
     for (std::uint64_t i = 0; i < count; ++i)

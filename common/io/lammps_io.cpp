@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <array>
 #include <map>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -26,14 +25,15 @@ struct Particle {
     Quaterniond orientation = Quaterniond::Identity();
 };
 
-/// Every particle in the order of its id; fails on a repeated id.
+/// Every particle in the order of its id (wrapped into [0, L) by canonicalizePacking); fails on
+/// a repeated id.
 void sortedInto(std::vector<Particle> particles, Packing& packing, const LineReader& reader) {
     std::sort(particles.begin(), particles.end(),
               [](const Particle& a, const Particle& b) { return a.id < b.id; });
     for (std::size_t k = 0; k < particles.size(); ++k) {
         if (k > 0 && particles[k].id == particles[k - 1].id)
             reader.fail("atom id " + std::to_string(particles[k].id) + " appears twice");
-        packing.positions.push_back(wrapIntoBox(particles[k].position, packing.boxLength));
+        packing.positions.push_back(particles[k].position);
         packing.orientations.push_back(particles[k].orientation);
     }
     canonicalizePacking(packing);

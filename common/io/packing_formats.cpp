@@ -5,13 +5,17 @@
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
 
+#include <optional>
 #include <stdexcept>
 
 namespace fs = std::filesystem;
 
 namespace sbpack {
 
-PackingFormat packingFormatOf(const fs::path& file) {
+namespace {
+
+/// The format of `file`'s extension; nullopt for an extension of none of them.
+std::optional<PackingFormat> knownFormat(const fs::path& file) {
     const fs::path extension = file.extension();
     if (extension == ".h5" || extension == ".hdf5") return PackingFormat::Hdf5;
     if (extension == ".txt") return PackingFormat::Text;
@@ -19,17 +23,32 @@ PackingFormat packingFormatOf(const fs::path& file) {
     if (extension == ".gsd") return PackingFormat::Gsd;
     if (extension == ".dump" || extension == ".lammpstrj") return PackingFormat::LammpsDump;
     if (extension == ".data") return PackingFormat::LammpsData;
+    return std::nullopt;
+}
+
+} // namespace
+
+PackingFormat packingFormatOf(const fs::path& file) {
+    if (const auto format = knownFormat(file)) return *format;
     throw std::invalid_argument("'" + file.string() +
                                 "': unknown extension (use .h5, .txt, .xyz, .gsd, .dump or .data)");
 }
 
 Packing readPackingFile(const fs::path& file) {
-    if (file.extension() == ".txt") return readTextPacking(file);
-    if (file.extension() == ".xyz") return readExtendedXyz(file);
-    const fs::path extension = file.extension();
-    if (extension == ".gsd") return readGsd(file);
-    if (extension == ".dump" || extension == ".lammpstrj") return readLammpsDump(file);
-    if (extension == ".data") return readLammpsData(file);
+    switch (knownFormat(file).value_or(PackingFormat::Hdf5)) { // any other: the HDF5 reader
+    case PackingFormat::Hdf5:
+        break;
+    case PackingFormat::Text:
+        return readTextPacking(file);
+    case PackingFormat::ExtendedXyz:
+        return readExtendedXyz(file);
+    case PackingFormat::Gsd:
+        return readGsd(file);
+    case PackingFormat::LammpsDump:
+        return readLammpsDump(file);
+    case PackingFormat::LammpsData:
+        return readLammpsData(file);
+    }
     return readPacking(file);
 }
 

@@ -224,6 +224,31 @@ void gordanShortcut(JammingResult& result, const Eigen::SparseMatrix<double>& a,
     }
 }
 
+/// The opening and flex programs for the motions the shortcut left open (Local: both): the
+/// local program by the dual simplex, the coupled ones by the barrier (docs/jamming.md §3).
+void runPrograms(JammingResult& result, const Eigen::SparseMatrix<double>& a,
+                 const RigidityNetwork& network, JammingCategory category,
+                 const DegreesOfFreedom& dof, const JammingParameters& parameters) {
+    const bool local = category == JammingCategory::Local;
+    const LinearProgramMethod method =
+        local ? LinearProgramMethod::DualSimplex : LinearProgramMethod::Barrier;
+    LinearProgram program = boundedProgram(a, dof, network.boxLength, local ? -1 : 0);
+    if (!result.opensEveryContact) {
+        makeOpening(program, a, network, category, parameters);
+        UnjammingMotion opening =
+            motionOf(maximise(program, method, parameters.solver), a, network, dof, parameters);
+        result.largestOpening = opening.gapChange.size() > 0 ? opening.gapChange.maxCoeff() : 0.0;
+        if (result.largestOpening > parameters.motionTolerance * parameters.maxStep)
+            result.opening = std::move(opening);
+    }
+    if (!result.flex) {
+        makeFlex(program, a, parameters.seed);
+        UnjammingMotion flex =
+            motionOf(maximise(program, method, parameters.solver), a, network, dof, parameters);
+        if (moves(flex, network, parameters)) result.flex = std::move(flex);
+    }
+}
+
 } // namespace
 
 JammingTest::JammingTest(JammingParameters parameters) : parameters_(parameters) {
@@ -260,25 +285,8 @@ JammingResult JammingTest::compute(const RigidityNetwork& network, JammingCatego
         result.isostaticDeficit = dof.count() - 3 - result.contacts;
         if (parameters_.gordanShortcut) gordanShortcut(result, a, network, dof, parameters_);
     }
-    const LinearProgramMethod method =
-        local ? LinearProgramMethod::DualSimplex : LinearProgramMethod::Barrier;
-    LinearProgram program = boundedProgram(a, dof, network.boxLength, local ? -1 : 0);
-
-    if (!result.opensEveryContact) {
-        makeOpening(program, a, network, category, parameters_);
-        UnjammingMotion opening =
-            motionOf(maximise(program, method, parameters_.solver), a, network, dof, parameters_);
-        result.largestOpening = opening.gapChange.size() > 0 ? opening.gapChange.maxCoeff() : 0.0;
-        if (result.largestOpening > parameters_.motionTolerance * parameters_.maxStep)
-            result.opening = std::move(opening);
-    }
-    if (!result.flex) {
-        makeFlex(program, a, parameters_.seed);
-        UnjammingMotion flex =
-            motionOf(maximise(program, method, parameters_.solver), a, network, dof, parameters_);
-        if (moves(flex, network, parameters_)) result.flex = std::move(flex);
-    }
-
+    if (!result.opensEveryContact || !result.flex)
+        runPrograms(result, a, network, category, dof, parameters_);
     result.freed = freedParticles(result, network);
     result.verdict = verdictOf(result, network.rotations);
     result.seconds =

@@ -4,7 +4,6 @@
 
 #include "io/packing_formats.hpp"
 #include "io/packing_io.hpp"
-#include "io/text_io.hpp"
 #include "packing/validation.hpp"
 
 #include <pybind11/numpy.h>
@@ -86,8 +85,7 @@ Packing read(const fs::path& file) {
 }
 
 void write(const Packing& packing, const fs::path& file) {
-    static_cast<void>(packingFormatOf(file)); // refuses an unknown extension, as convert does
-    py::gil_scoped_release release;
+    py::gil_scoped_release release; // an unknown extension is refused as convert refuses it
     writePackingFile(packing, file);
 }
 
