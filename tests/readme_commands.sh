@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs the README's commands as a reader would on a built tree: the shell block of "Already
-# built? Start here" and the Python block of "Python", from a folder where build/ is the build
-# tree under test and data/ the repository's (issue 43: every command in the README is run in CI;
+# built? Start here" from a folder where build/ is the build tree under test and data/ the
+# repository's, and the Python block of "Python" from an empty folder (issue 66 item 4) (issue 43: every command in the README is run in CI;
 # "Two commands" are .ci/run and scripts/demo.sh themselves).
 # usage: readme_commands.sh ROOT BUILD PYTHON
 set -euo pipefail
@@ -33,8 +33,9 @@ bash -euo pipefail -c "$shell" > "$work/shell.log" 2>&1 ||
 for file in mrj-spheres-250.h5 mrj-spheres-250-results.h5 mrj-spheres-250.xyz structure_factor.png; do
     [[ -s build/demo/$file ]] || { echo "README.md: build/demo/$file was not written" >&2; exit 1; }
 done
-echo "== the Python block"
-PYTHONPATH=build/python "$python" -c "$python_code"
+echo "== the Python block, from an empty folder (its packings are the module's own)"
+mkdir "$work/elsewhere"
+(cd "$work/elsewhere" && PYTHONPATH="$build/python" "$python" -c "$python_code")
 manual=$root/docs/python.md
 manual_code=$(for heading in Packing Analyses Generator; do block "$heading" python "$manual"; done)
 [[ $(grep -c . <<< "$manual_code") -gt 10 ]] || { echo "docs/python.md: blocks not found" >&2; exit 1; }

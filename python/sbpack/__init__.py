@@ -10,8 +10,10 @@ from .analysis_base import Analysis, Result
 from .analysis_classes import *  # noqa: F401,F403 (Contacts, ContactsResult, ...: __all__)
 from .analysis_classes import __all__ as _analysis_names
 from .results import read_results
+from .shipped_data import data_file, data_files
 
 name_argument_errors()
 
-__all__ = ["Packing", "generate", "expected_collisions", "analyze", "read_results", "Analysis",
+__all__ = ["Packing", "generate", "expected_collisions", "analyze", "read_results", "data_file",
+           "data_files", "Analysis",
            "Result", "__version__", *_analysis_names]

@@ -12,9 +12,10 @@ import os
 import numpy as np
 
 from .figures_results import draw_steps, new_figure, note, with_group
-from .figures_series import curve, group_label, scalar
+from .figures_series import Skipped, curve, group_label, scalar
+from .figures_shape import missing_packings
 
-FLOOR = 1e-4  # the density axis's bottom: a band's lower edge is clipped to it
+FLOOR = 1e-4  # the density axis's bottom
 
 
 def with_forces(series):
@@ -45,7 +46,7 @@ def contact_forces(series):
     ax = axes[0][0]
     for s in series:
         edges, density, std = curve(s, "contacts", "force_edges", "force_density")
-        draw_steps(ax, s, edges, density, std, label=series_text(s), floor=FLOOR)
+        draw_steps(ax, s, edges, density, std, label=series_text(s), log_y=True)
     x = np.linspace(0.0, float(edges[-1]), 200)
     ax.plot(x, np.exp(-x), "k--", lw=1.0, label=r"$e^{-x}$")
     ax.set_yscale("log")
@@ -61,6 +62,12 @@ MOTIONS = [("opening_displacement", "an opening"), ("flex_displacement", "a flex
 COLUMNS = 3  # panels per row of the motion figure
 
 
+def motion_of(f):
+    """(dataset, what) of the input's collective motion (the opening first), or None."""
+    group = f.get("jamming_collective", {})
+    return next(((name, what) for name, what in MOTIONS if name in group), None)
+
+
 def motion_inputs(series):
     """[(packing file, results input, dataset, what)] for the inputs whose collective jamming test
     found a motion (the first such input per p, whose packing file exists): the opening where
@@ -68,8 +75,7 @@ def motion_inputs(series):
     found = {}
     for s in series:
         for f in s.files:
-            group = f.get("jamming_collective", {})
-            motion = next(((name, what) for name, what in MOTIONS if name in group), None)
+            motion = motion_of(f)
             if motion and s.p not in found and os.path.isfile(str(f["input"])):
                 found[s.p] = (str(f["input"]), f, *motion)
     return [found[p] for p in sorted(found)]
@@ -79,11 +85,13 @@ def unjamming_motion(series, voxels=200, threads=1):
     """The collective test's motion on a section x ~ L/2 of its packing: the solid in grey
     (_sbpack.voxel_slice) and, for each particle whose centre lies within D/2 of the plane, its
     displacement's (z, y) components as an arrow, the largest drawn a diameter long; None where
-    no input has a motion or its packing file is not found."""
+    no input has a motion, Skipped where none of their packing files is found."""
     from . import _sbpack
     inputs = motion_inputs(series)
-    if not inputs or voxels == 0:
+    if voxels == 0 or not any(motion_of(f) for s in series for f in s.files):
         return None
+    if not inputs:
+        return Skipped(missing_packings(series))
     columns = min(COLUMNS, len(inputs))
     rows = -(-len(inputs) // columns)
     fig, axes = new_figure(columns, rows, width=3.6, height=3.6)

@@ -25,6 +25,7 @@ MRJ_Q6 = _sbpack.mrj_local_q6  # the mean local q6 of the MRJ packings measured 
 Q6_BIN = 0.01  # the histogram's bins of q6
 G2_TOP = 5.0  # g2 axis: at least this high; main peaks above it are clipped, their height named
 HEADROOM = 1.25  # axes' top over the highest value they show unclipped
+MEAN_STRIP = 0.86  # the q6 axes' top strip, from this fraction up: the mean local q6, not a density
 
 
 def order_values(s):
@@ -64,10 +65,9 @@ def is_ordered(s):
     return any(int(o.get("ordered", 0)) for o in order_values(s))
 
 
-def series_text(s, clipped):
+def series_text(s):
     """The series' legend entry: its label, the verdict, and its cutoff, mean local q6, T, P4,
-    solid-like fraction and largest crystal (ensembles: mean +- std); `clipped` the heights of
-    its peaks beyond the axes."""
+    solid-like fraction and largest crystal (ensembles: mean +- std)."""
     verdict = verdict_text(s)
     head = group_label(s, "order") + (f": {verdict}" if verdict else "")
     shells = sorted({int(o["T_shells"]) for o in order_values(s) if "T_shells" in o})
@@ -78,9 +78,17 @@ def series_text(s, clipped):
               value_text(s, "P4", "P_4")]
     crystal = [value_text(s, "solid_like_fraction", r"f_\mathrm{solid}"),
                value_text(s, "crystal_cluster_fraction", r"n_\mathrm{crystal}/N")]
-    lines = [", ".join(v for v in values + clipped if v), ", ".join(v for v in crystal if v)]
+    lines = [", ".join(v for v in values if v), ", ".join(v for v in crystal if v)]
     return head + "".join("\n" + line for line in lines if line)
 
+
+def name_clipped(ax, s, x, height, y, k):
+    """Names a peak of the series clipped at the axes' top where it is: its height, in the
+    series' colour, at abscissa x, the k-th such name of the axes stacked below axes height y
+    (issue 66 item 5: the height in the panel that clips it, not in another's legend)."""
+    ax.annotate(f"{height:.3g}", xy=(x, y - 0.07 * k), xycoords=ax.get_xaxis_transform(),
+                xytext=(3, 0), textcoords="offset points", ha="left", va="top", fontsize=7,
+                color=s.style["color"], clip_on=True)
 
 def g2_top(part):
     """The g2 axis's top: G2_TOP, or higher where the structure beyond a cutoff (the second
@@ -98,7 +106,7 @@ def draw_g2(ax, s, top):
     """The series' g2 (each member's, thin, for an ensemble), its ideal-gas band 1 +- sigma (the
     first member's: sigma depends on N and the density only; drawn where sigma <= 1, at small r
     it spans every value and would only veil the axes) and its cutoff (dotted; an ensemble's
-    mean); the text naming a main peak clipped at `top`, or None."""
+    mean); (r / w, g2) of its highest point."""
     members = order_values(s)
     first = members[0]
     error = np.asarray(first["g2_ideal_gas_error"])
@@ -113,17 +121,20 @@ def draw_g2(ax, s, top):
     cutoff = scalar(s, "order", "cutoff_w")
     if cutoff is not None and np.isfinite(cutoff[0]):
         ax.axvline(cutoff[0], color=s.style["color"], ls=":", lw=1.1)
-    peak = max(float(np.max(o["g2"])) for o in members)
-    return fr"$g_2$ peak {peak:.1f} (clipped)" if peak > top else None
+    highest = max(members, key=lambda o: float(np.max(o["g2"])))
+    i = int(np.argmax(highest["g2"]))
+    return (float(highest["r_w"][i]), float(highest["g2"][i]))
 
 
 def q6_top(part):
-    """The q6 axis's top: HEADROOM over the highest density of the series that no member calls
-    ordered (an ordered box's narrow spike would flatten them), or None (matplotlib's) when
-    every series is ordered."""
-    peaks = [np.max(np.histogram(v, bins=q6_bins(), density=True)[0]) for s in part
-             if not is_ordered(s) and (v := q6_values(s)) is not None and len(v)]
-    return HEADROOM * max(peaks) if peaks else None
+    """The top of the q6 densities (the strip of the means above it): HEADROOM over the highest
+    density of the series that no member calls ordered (an ordered box's narrow spike would
+    flatten them), or over every series' where all are ordered."""
+    def peak(s):
+        return np.max(np.histogram(q6_values(s), bins=q6_bins(), density=True)[0])
+    drawn = [s for s in part if (v := q6_values(s)) is not None and len(v)]
+    peaks = [peak(s) for s in drawn if not is_ordered(s)] or [peak(s) for s in drawn] or [1.0]
+    return HEADROOM * max(peaks)
 
 
 def q6_bins():
@@ -132,33 +143,40 @@ def q6_bins():
 
 
 def draw_q6(ax, s, top):
-    """The density of the series' local q6 (pooled over an ensemble's members) as steps, its
-    mean local q6 marked at the top of the axes; the text naming a density clipped at `top`, or
-    None."""
+    """The density of the series' local q6 (pooled over an ensemble's members) as steps, cut at
+    `top` (the strip of the means starts there), its
+    mean local q6 marked in the strip of the means (MEAN_STRIP); (q6, density) of its highest
+    bin, or None."""
     values = q6_values(s)
     if values is None or not len(values):
         return None
     density, edges = np.histogram(values, bins=q6_bins(), density=True)
+    i = int(np.argmax(density))
+    highest = (0.5 * (edges[i] + edges[i + 1]), float(density[i]))
+    density = np.minimum(density, top)
     ax.stairs(density, edges, color=s.style["color"], ls=s.style["ls"], lw=1.3,
               fill=False, gid=s.label)
     if is_ordered(s):  # the verdict, visible without the legend
         ax.stairs(density, edges, color=s.style["color"], alpha=0.25, fill=True, lw=0)
     mean = scalar(s, "order", "q6_local_mean")
     if mean is not None and np.isfinite(mean[0]):
-        ax.plot([mean[0]], [0.97], s.style["marker"], color=s.style["color"], ms=6,
-                transform=ax.get_xaxis_transform(), clip_on=False)
-    peak = float(np.max(density))
-    return f"$q_6$ density peak {peak:.0f} (clipped)" if top is not None and peak > top else None
+        ax.plot([mean[0]], [(1.0 + MEAN_STRIP) / 2], s.style["marker"], color=s.style["color"],
+                ms=6, transform=ax.get_xaxis_transform(), clip_on=False)
+    return highest
 
 
-def q6_references(ax, first):
-    """fcc's q6, the verdict's threshold and the MRJ range of the mean local q6."""
-    label = (lambda text: text) if first else (lambda text: "_nolegend_")
-    ax.axvspan(*MRJ_Q6, color="0.5", alpha=0.18, lw=0,
-               label=label(fr"MRJ ($N \geq 200$): mean local $q_6$ {MRJ_Q6[0]}-{MRJ_Q6[1]}"))
-    ax.axvline(Q6_ORDERED, color="tab:red", ls="-.", lw=1.1,
-               label=label(fr"ordered: mean local $q_6 \geq {Q6_ORDERED}$"))
-    ax.axvline(FCC_Q6, color="k", ls="--", lw=1.1, label=label(fr"fcc: $q_6 = {FCC_Q6}$"))
+def q6_references(ax):
+    """fcc's q6 (a particle's: over the whole axes), and in the strip of the means above the
+    densities (MEAN_STRIP) the MRJ range of the mean local q6 and the verdict's threshold on it:
+    a range of means drawn over a distribution would read as a range of the distribution."""
+    ax.axhline(ax.get_ylim()[1] * MEAN_STRIP, color="0.3", lw=0.6)
+    ax.text(0.01, (1.0 + MEAN_STRIP) / 2, "mean", transform=ax.transAxes, fontsize=7,
+            va="center", ha="left", color="0.3")
+    ax.axvspan(*MRJ_Q6, ymin=MEAN_STRIP, color="0.5", alpha=0.3, lw=0,
+               label=fr"MRJ ($N \geq 200$): mean local $q_6$ {MRJ_Q6[0]}-{MRJ_Q6[1]}")
+    ax.axvline(Q6_ORDERED, ymin=MEAN_STRIP, color="tab:red", ls="-", lw=1.6,
+               label=fr"ordered: mean local $q_6 \geq {Q6_ORDERED}$")
+    ax.axvline(FCC_Q6, color="k", ls="--", lw=1.1, label=fr"fcc: $q_6 = {FCC_Q6}$")
 
 
 def q6_range(part):
@@ -171,7 +189,8 @@ def q6_range(part):
 
 def order(series):
     """g2(r) against r / w with the ideal-gas band and the cutoff, and the density of the local
-    q6 with fcc, the verdict's threshold and the MRJ range; p <= 1 | p >= 1."""
+    q6 with fcc, below a strip of the means with the verdict's threshold and the MRJ range;
+    p <= 1 | p >= 1. A peak beyond an axes' top is clipped and its height named at it."""
     series = with_group(series, "order")
     if not series:
         return None
@@ -183,22 +202,33 @@ def order(series):
         g2_ax.fill_between([], [], [], color="0.5", alpha=0.15, lw=0,
                            label=r"$1 \pm$ ideal-gas error per bin")
         g2_ax.plot([], [], ":", color="0.3", lw=1.1, label=r"cutoff $r_c$: first minimum")
-        clipped = {id(s): [draw_g2(g2_ax, s, top)] for s in part}
+        peaks = [(s, draw_g2(g2_ax, s, top)) for s in part]
+        name_peaks(g2_ax, [(s, x, y) for s, (x, y) in peaks if y > top], 0.98)
         g2_ax.set(xlim=(0.0, None), ylim=(0.0, top), xlabel=r"$r/\bar w$",
                   ylabel=r"$g_2(r)$", title=f"Pair correlation, {side}")
         if with_q6:
-            q6_ax, q6_axis_top = row[1], q6_top(part)
-            for s in part:
-                clipped[id(s)].append(draw_q6(q6_ax, s, q6_axis_top))
-            q6_references(q6_ax, first=True)
-            q6_ax.set(xlim=q6_range(part), ylim=(0.0, q6_axis_top), xlabel=r"local $q_6$",
-                      ylabel="probability density", title=f"Local $q_6$, {side}")
-        legend_ax = row[-1]
+            q6_part(row[1], part, side)
         for s in part:  # the series' entries, in its style, on the row's last axes
-            legend_ax.plot([], [], **line_style(s, 1),
-                           label=series_text(s, [c for c in clipped[id(s)] if c]))
+            row[-1].plot([], [], **line_style(s, 1), label=series_text(s))
     note(fig, order_note(series, with_q6))
     return fig
+
+
+def name_peaks(ax, clipped, y):
+    """Names each clipped (series, x, height) at its x below axes height y, stacked."""
+    for k, (s, x, height) in enumerate(clipped):
+        name_clipped(ax, s, x, height, y, k)
+
+
+def q6_part(ax, part, side):
+    """The side's q6 densities below the strip of the means (MEAN_STRIP of the axes' height)."""
+    top = q6_top(part)
+    highest = [(s, draw_q6(ax, s, top)) for s in part]
+    ax.set(xlim=q6_range(part), ylim=(0.0, top / MEAN_STRIP), xlabel=r"local $q_6$",
+           ylabel="probability density", title=f"Local $q_6$, {side}")
+    name_peaks(ax, [(s, x, y) for s, h in highest if h is not None for x, y in [h] if y > top],
+               MEAN_STRIP - 0.02)
+    q6_references(ax)
 
 
 def order_note(series, with_q6):
@@ -213,10 +243,11 @@ def order_note(series, with_q6):
         text += (". Right: density of the local q₆ of each particle with bonds shorter than r_c "
                  f"(bins of {Q6_BIN:g}"
                  + bands(series, "ensembles: every member's particles pooled")
-                 + "), the series' marker at the top its mean local q₆; dashed fcc "
-                 f"{FCC_Q6}, dash-dotted the verdict's threshold {Q6_ORDERED} (ordered: mean "
+                 + f"); dashed fcc's q₆ = {FCC_Q6}; an ordered series (ordered: mean "
                  f"local q₆ ≥ {Q6_ORDERED}, T ≥ {T_ORDERED} over 12 shells, P4 ≥ {P4_ORDERED}, "
                  f"solid-like fraction f_solid ≥ {SOLID_ORDERED} or largest crystal "
                  f"≥ {CLUSTER_ORDERED} N (ten Wolde-Frenkel, SANN neighbours); "
-                 "drawn filled), grey the MRJ range of the mean local q₆")
-    return text + ". Peaks beyond the axes are clipped: the legend names their height."
+                 "drawn filled). The strip above the densities is of means, not densities: each "
+                 "series' mean local q₆ (its marker), the MRJ range of the mean local q₆ (grey) "
+                 f"and the verdict's threshold on it, {Q6_ORDERED} (red)")
+    return text + ". A peak beyond the axes is clipped; its height is written beside it."

@@ -8,11 +8,12 @@ import matplotlib.pyplot as plt
 import matplotlib.ticker as ticker
 import numpy as np
 
-from .figures_series import (curve, grids_title, group_label, label_with_grid, line_style, pooled,
-                             scalar, sides)
+from .figures_series import (Skipped, curve, grids_title, group_label, label_with_grid,
+                             line_style, pooled, scalar, sides)
 
 QW = r"$Q\bar w$"
-FLOOR = 1e-30  # a band's lower edge on a log axis where mean - std <= 0 (drawn to the axis)
+SMALL_Q_SHELLS = 5  # a small-Q panel without a fit needs this many shells to show a trend
+PACKING_TIME = r"$t\mathcal{D}/\bar w^2$"
 AXIS_NOTE = "A = 2R, the extent along a body axis (tip to tip for p < 1, face to face for p > 1)"
 
 
@@ -39,30 +40,35 @@ def note(fig, text):
 
 
 def draw(ax, s, xyz, label, x_scale=1.0, y_scale=1.0, step=False, log_y=False):
-    """The series' curve (x, y, std) on `ax`, with its mean +- std band where std is given; the
-    line's gid is the series' label (whether or not the legend shows it)."""
+    """The series' curve (x, y, std) on `ax`, with its mean +- std band where std is given (on a
+    log axis, `log_y`, only where mean - std > 0: below, the band has no lower edge to draw and
+    would fall to the axis as a wall); the line's gid is the series' label (whether or not the
+    legend shows it)."""
     x, y, std = xyz
     x, y = np.asarray(x) * x_scale, np.asarray(y) * y_scale
     ax.plot(x, y, label=label, drawstyle="steps-post" if step else "default", gid=s.label,
             **line_style(s, len(x)))
     if std is not None:
         low, high = y - std * y_scale, y + std * y_scale
-        if log_y:
-            low = np.maximum(low, FLOOR)
-        ax.fill_between(x, low, high, color=s.style["color"], alpha=0.2, lw=0,
-                        step="post" if step else None)
+        ax.fill_between(x, low, high, where=low > 0 if log_y else None, color=s.style["color"],
+                        alpha=0.2, lw=0, step="post" if step else None)
 
 
-def draw_steps(ax, s, edges, density, std, label=None, floor=None):
+def draw_steps(ax, s, edges, density, std, label=None, log_y=False):
     """A density per bin as steps in the series' style (gid: its label), an ensemble's +- std as
-    a band between steps; with `floor` (a log axis), every step and band edge clipped to it."""
-    clip = (lambda y: np.maximum(y, floor)) if floor is not None else (lambda y: y)
+    a band between steps; on a log axis (`log_y`) an empty bin is a gap, not a drop to the
+    axis, and the band is drawn where density - std > 0 only (as draw's)."""
     style = line_style(s)
-    ax.stairs(clip(density), edges, color=style["color"], ls=style["ls"], lw=1.4, label=label,
-              gid=s.label)
+    density = np.asarray(density, dtype=float)
+    if log_y:
+        density = np.where(density > 0, density, np.nan)
+    ax.stairs(density, edges, color=style["color"], ls=style["ls"], lw=1.4, label=label,
+              gid=s.label, baseline=None if log_y else 0)
     if std is not None:
-        ax.stairs(clip(density + std), edges, baseline=clip(density - std), fill=True,
-                  color=style["color"], alpha=0.2, lw=0)
+        low, high = density - std, density + std
+        if log_y:
+            low, high = np.where(low > 0, low, np.nan), np.where(low > 0, high, np.nan)
+        ax.stairs(high, edges, baseline=low, fill=True, color=style["color"], alpha=0.2, lw=0)
 
 
 def bands(series, what="bands: ensemble mean ± std"):
@@ -218,6 +224,13 @@ def small_q(series, qmax=4.0):
     series = with_group(series, "spectral_density")
     if not series:
         return None
+    shown = [s for s in series if small_q_shown(s, qmax)]
+    if not shown:
+        most = max(small_q_shells(s, qmax) for s in series)
+        return Skipped(f"at Q w̄ ≤ {qmax:g} the inputs have at most {most} wave-vector shells and "
+                       f"no fit (fewer than {SMALL_Q_SHELLS} shells, nothing to see: the box's "
+                       "smallest Q is 2π/L; a larger N puts more shells below it)")
+    series = shown
     windows = sorted({round(f["hyperuniformity"]["q_fit_max_w"], 3) for s in series
                       for f in s.members("hyperuniformity")})
     fig, rows = side_rows(series)
@@ -230,6 +243,19 @@ def small_q(series, qmax=4.0):
         ax.set(xlabel=QW, ylabel=r"$\tilde\chi_V(Q)/\bar w^3$", title=f"Small $Q$, {side}")
     note(fig, small_q_note(series, windows))
     return fig
+
+
+def small_q_shells(s, qmax):
+    """The series' wave-vector shells at Q w <= qmax (its first member's)."""
+    return int(np.count_nonzero(np.asarray(s.first("spectral_density")["Q_w"]) <= qmax))
+
+
+def small_q_shown(s, qmax):
+    """True where the series has something to show at small Q: a fit (one input's, drawable;
+    an ensemble's pooled) or SMALL_Q_SHELLS shells at Q w <= qmax."""
+    fitted = (pooled(s, "hyperuniformity", "H") if s.averaged else
+              "hyperuniformity" in s.files[0] and fit_drawable(s.files[0]["hyperuniformity"]))
+    return fitted or small_q_shells(s, qmax) >= SMALL_Q_SHELLS
 
 
 def small_q_note(series, windows):
@@ -260,28 +286,32 @@ def log_axes(ax):
 
 def spreadability(series):
     """E(t) with each series' Debye medium (paper Fig. 16), and the local alpha with each
-    series' line alpha + c / t over its window and its limit alpha (paper Fig. 17's alpha)."""
+    series' line alpha + c / t over its window and its limit alpha (paper Fig. 17's alpha),
+    p <= 1 | p >= 1. Each axis has one time scaling: the packings' t D / w^2 below, the Debye
+    media's t D / a^2 on the top axis of E(t) (the same numbers, as in the paper's Fig. 16)."""
     series = with_group(series, "spreadability")
     if not series:
         return None
-    fig, axes = new_figure(1, 2, width=8.0, height=3.6, sharex=True)
-    top, bottom = axes[:, 0]
-    for s in series:
-        draw(top, s, curve(s, "spreadability", "t", "excess"), group_label(s, "spreadability"),
-             log_y=True)
-        local_alpha(bottom, s)
-    for s in series:
-        debye(top, s, first=s is series[0])
-    cutoffs(series, (top, bottom))
-    top.set(xscale="log", yscale="log", ylim=(1e-8, 2),
-            ylabel=r"$\mathcal{S}(\infty)-\mathcal{S}(t)$")
-    bottom.set(xlabel=r"$t\mathcal{D}/\bar w^2$ (packings), $t\mathcal{D}/\hat a^2$ (Debye)",
-               ylabel=r"local $\alpha$", ylim=(-1.5, 3))
+    fig, rows = side_rows(series, 2, width=4.6, height=3.4)
+    for side, part, (left, right) in rows:
+        for s in part:
+            draw(left, s, curve(s, "spreadability", "t", "excess"), "_nolegend_", log_y=True)
+            debye(left, s, first=s is part[0])
+            local_alpha(right, s)
+        cutoffs(part, (left, right))
+        left.set(xscale="log", yscale="log", ylim=(1e-8, 2), xlabel=PACKING_TIME,
+                 ylabel=r"$\mathcal{S}(\infty)-\mathcal{S}(t)$",
+                 title=f"Excess spreadability, {side}")
+        left.secondary_xaxis("top").set_xlabel(r"$t\mathcal{D}/\hat a^2$ (Debye media, dashed)")
+        right.set(xscale="log", xlabel=PACKING_TIME, ylabel=r"local $\alpha$", ylim=(-1.5, 3),
+                  xlim=(1e-2, 8 * max(cutoff_time(s) for s in part)),
+                  title=f"Local exponent, {side}")
     note(fig, f"Excess spreadability{bands(series)}, and the Debye random medium at each "
-              "series' φ (dashed, same colour); below, the local α of each input "
-              "(thin), the line α + c/t fitted to it over the window (thick) and its "
-              "limit α past the window (dashed; band: the ensemble's std, or one input's "
-              "bootstrap error)")
+              "series' φ (dashed, same colour, on the top axis's time t D/â²); right, the local "
+              "α of each input (thin"
+              + bands(series, "ensembles: the members' mean ± std, taken here") + "), the line "
+              "α + c/t fitted to it over the window (thick) and its limit α past the window "
+              "(dashed; band: the ensemble's std, or one input's bootstrap error)")
     return fig
 
 
@@ -295,13 +325,15 @@ def debye(ax, s, first):
 
 
 def local_alpha(ax, s):
-    """Each member's local alpha (thin), the series' line alpha + c / t through it over the
-    window (thick) and its limit alpha from the window's end on (with its std over the ensemble,
-    or the input's bootstrap stderr, as a band; docs/hyperuniformity.md, "alpha")."""
-    for f in s.members("spreadability"):
-        g = f["spreadability"]
-        ax.plot(g["t"], g["local_alpha"], lw=0.7, alpha=0.5 if s.averaged else 0.9,
-                color=s.style["color"])
+    """The series' local alpha (one input's own, thin; an ensemble's mean +- std over its
+    members, taken here: the results keep no ensemble local alpha), its line alpha + c / t
+    through it over the window (thick) and its limit alpha from the window's end on (with its
+    std over the ensemble, or the input's bootstrap stderr, as a band; docs/hyperuniformity.md,
+    "alpha")."""
+    t, mean, std = members_local_alpha(s.members("spreadability"))
+    ax.plot(t, mean, lw=0.9, color=s.style["color"], ls=s.style["ls"])
+    if std is not None:
+        ax.fill_between(t, mean - std, mean + std, color=s.style["color"], alpha=0.15, lw=0)
     alpha = scalar(s, "spreadability", "alpha")
     slope = scalar(s, "spreadability", "alpha_slope")[0]
     t0, t1 = (scalar(s, "spreadability", k)[0] for k in ("t_fit_min", "t_fit_max"))
@@ -314,11 +346,26 @@ def local_alpha(ax, s):
                     alpha=0.25, lw=0)
 
 
+def members_local_alpha(files):
+    """(t, mean, std) of the members' local alpha read at the first member's times (log-linear
+    between each member's own; std None for one member)."""
+    t = np.asarray(files[0]["spreadability"]["t"])
+    rows = np.array([np.interp(np.log(t), np.log(f["spreadability"]["t"]),
+                               f["spreadability"]["local_alpha"]) for f in files])
+    if len(files) == 1:
+        return t, rows[0], None
+    return t, rows.mean(axis=0), rows.std(axis=0, ddof=1)
+
+
+def cutoff_time(s):
+    """The series' box cutoff time t_c: its inputs' median (t_c scales with each box's L / w)."""
+    return float(np.median([f["spreadability"]["t_cutoff"] for f in s.members("spreadability")]))
+
+
 def cutoffs(series, axes):
-    """Each series' box cutoff time t_c (its inputs' median: t_c scales with each box's L / w),
-    dotted in its colour."""
+    """Each series' box cutoff time t_c (cutoff_time), dotted in its colour."""
     for s in series:
-        t = float(np.median([f["spreadability"]["t_cutoff"] for f in s.members("spreadability")]))
+        t = cutoff_time(s)
         for i, ax in enumerate(axes):
             first = i == 0 and s is series[0]
             ax.axvline(t, color=s.style["color"], ls=":", lw=1,
@@ -349,5 +396,6 @@ def pore_size(series):
     note(fig, f"Pore-size distribution ({grids_title(series, 'pore_size')}): F(δ), the void "
               "fraction with pore size > δ (log axis), and its density P" + bands(
                   series, "ensembles: mean ± std over the members, F the results' own on their "
-                          "δ/w grid, P averaged here (the results keep no ensemble P)"))
+                          "δ/w grid, P averaged here (the results keep no ensemble P); on the log axis "
+                          "of F the band ends where mean − std reaches 0"))
     return fig

@@ -17,6 +17,12 @@ MARKERS = ["o", "^", "v", "D", "P", "X", "<", ">"]  # keyed to N ('s' is the pap
 LINESTYLES = ["-", "--", "-.", ":"]  # keyed to the results file, when several are drawn
 
 
+class Skipped(str):
+    """Why a figure the results call for is not drawn: what a figure function returns instead
+    of an empty or misleading figure, and what ``python3 -m sbpack.plot`` prints (issue 66
+    item 5: panels skipped with a message, not left empty or dropped silently)."""
+
+
 @dataclass
 class Series:
     """The inputs of one (p, N) in one results file: `files` (dicts), `ensemble` (dict or None)

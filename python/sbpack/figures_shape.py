@@ -11,7 +11,7 @@ import matplotlib.ticker as ticker
 import numpy as np
 
 from .figures_results import new_figure, note
-from .figures_series import grid_of
+from .figures_series import Skipped, grid_of
 
 BOX_OVER_AXIS = 8.0  # the form factors' box edge, in units of the major axis A = 2R
 
@@ -112,6 +112,14 @@ def slice_inputs(series, packing_path, most=4):
     return [found[p] for p in keys]
 
 
+def missing_packings(series):
+    """Why no packing is cut: the inputs' paths as sbanalyze was given them, not found from here."""
+    paths = [str(f["input"]) for s in series for f in s.files]
+    shown = ", ".join(paths[:3]) + (f" and {len(paths) - 3} more" if len(paths) > 3 else "")
+    return (f"no input's packing file is found from {os.getcwd()} ({shown}, as sbanalyze was "
+            "given them); run from where sbanalyze ran, or name one with --packing")
+
+
 def slice_grid(f, voxels):
     """The slice's grid: `voxels` if given, else the grid the results' pores analysis used for
     that input (its spectral density's otherwise, else 200), and where it comes from."""
@@ -125,11 +133,14 @@ def slice_grid(f, voxels):
 
 def packing_slice(series, packing_path=None, voxels=None, threads=1):
     """A plane of the voxelization of a packing per p (paper Fig. 2's packings, as a section),
-    the void coloured by pore size / w on one scale; None where no packing is found."""
+    the void coloured by pore size / w on one scale; None with --slice-voxels 0 or no input,
+    Skipped where no input's packing file is found."""
     from . import _sbpack
-    inputs = slice_inputs(series, packing_path)
-    if not inputs or voxels == 0:
+    if voxels == 0 or not series:
         return None
+    inputs = slice_inputs(series, packing_path)
+    if not inputs:
+        return Skipped(missing_packings(series))
     fig, axes = new_figure(len(inputs), width=4.2, height=4.2)
     maps = [slice_map(_sbpack.Packing.read(path), f, voxels, threads) for path, f in inputs]
     top = max(float(np.max(m[1])) for m in maps)

@@ -43,10 +43,14 @@ form_factor, packing_slice, the section under unjamming_motion) computed by the 
 engine (figures_shape, figures_forces). Two statistics
 are taken here: the mean +- std of an ensemble's F(delta) and P(delta), which the results do not
 keep, and the histogram of the per-particle local q6 (an ensemble's members pooled).
-make_figures() returns the finished figures (legends, layout); the command saves exactly those.
+draw_figures() returns the finished figures (legends, layout) and, for a figure the results call
+for that would be empty (no packing file to cut, too few wave vectors to fit), the reason it is
+not drawn; the command saves exactly those figures and prints the reasons. make_figures() returns
+the figures alone.
 """
 import argparse
 import os
+import sys
 
 import matplotlib
 
@@ -60,11 +64,11 @@ from . import figures_order as order_figures  # noqa: E402
 from . import figures_results as results_figures  # noqa: E402
 from . import figures_shape as shape_figures  # noqa: E402
 from . import figures_versus_p as versus  # noqa: E402
-from .figures_series import series_of  # noqa: E402
+from .figures_series import Skipped, series_of  # noqa: E402
 from .figures_versus_p import PANELS, paper_values  # noqa: E402  (the module's API)
 from .results import read_results  # noqa: E402
 
-__all__ = ["make_figures", "finish", "save", "main", "FIGURES", "PANELS", "paper_values"]
+__all__ = ["draw_figures", "make_figures", "Skipped", "finish", "save", "main", "FIGURES", "PANELS", "paper_values"]
 
 LEGEND_INSIDE = 3  # a legend of more entries stands beside its axes
 LEGEND_WIDTH = 2.6  # inches the figure grows by per legend beside the axes of one row
@@ -89,11 +93,11 @@ FIGURES = {
 }
 
 
-def make_figures(paths, packing_path=None, slice_voxels=None, form_factor_voxels=256,
+def draw_figures(paths, packing_path=None, slice_voxels=None, form_factor_voxels=256,
                  threads=None):
-    """name -> finished matplotlib Figure (legends placed, constrained layout) for every figure
-    the results at `paths` support; what ``python3 -m sbpack.plot`` saves. slice_voxels: the
-    slice's grid (None: the results' pore grid of that input; 0: no slice);
+    """name -> finished matplotlib Figure, or the Skipped reason it is not drawn, for every
+    figure the results at `paths` call for (a figure of an analysis they lack is absent).
+    slice_voxels: the slice's grid (None: the results' pore grid of that input; 0: no slice);
     form_factor_voxels: the form factors' grid (0: none); threads: of the engine's figures
     (None: every core)."""
     threads = threads or os.cpu_count() or 1
@@ -106,8 +110,18 @@ def make_figures(paths, packing_path=None, slice_voxels=None, form_factor_voxels
                                                            threads)
     figures = {name: fig for name, fig in figures.items() if fig is not None}
     for fig in figures.values():
-        finish(fig)
+        if not isinstance(fig, Skipped):
+            finish(fig)
     return figures
+
+
+def make_figures(paths, packing_path=None, slice_voxels=None, form_factor_voxels=256,
+                 threads=None):
+    """name -> finished matplotlib Figure (legends placed, constrained layout) for every figure
+    the results at `paths` support (draw_figures without the ones skipped)."""
+    return {name: fig for name, fig in draw_figures(paths, packing_path, slice_voxels,
+                                                    form_factor_voxels, threads).items()
+            if not isinstance(fig, Skipped)}
 
 
 def finish(fig):
@@ -129,12 +143,16 @@ def finish(fig):
 
 
 def save(figures, out):
-    """Each figure as out/NAME.png and out/NAME.pdf, as it is (make_figures finished it), its
+    """Each figure as out/NAME.png and out/NAME.pdf, as it is (draw_figures finished it), its
     caption (figures_results.note) in their metadata (PNG Description, PDF Subject) and, with
-    the others', in out/captions.md; closes them; returns the PNG paths."""
+    the others' and the reasons of those Skipped, in out/captions.md; closes them; returns the
+    PNG paths."""
     os.makedirs(out, exist_ok=True)
     written, captions = [], []
     for name, fig in figures.items():
+        if isinstance(fig, Skipped):
+            captions.append(f"## {name}.png: not drawn\n\n{fig}\n")
+            continue
         caption = getattr(fig, "sbpack_caption", "")
         fig.savefig(os.path.join(out, f"{name}.png"), dpi=130,
                     metadata={"Description": caption} if caption else None)
@@ -169,10 +187,13 @@ def main(argv=None):
                         help="threads of the slice and the form factors (default: every core)")
     args = parser.parse_args(argv)
     try:
-        figures = make_figures(args.results, args.packing, args.slice_voxels,
+        figures = draw_figures(args.results, args.packing, args.slice_voxels,
                                args.form_factor_voxels, args.threads)
     except (OSError, ValueError) as e:
         parser.exit(1, f"sbpack.plot: error: {e}\n")
+    for name, reason in figures.items():
+        if isinstance(reason, Skipped):
+            print(f"sbpack.plot: {name} not drawn: {reason}", file=sys.stderr)
     for path in save(figures, args.out):
         print(path)
 

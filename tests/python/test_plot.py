@@ -480,8 +480,9 @@ def test_versus_p_has_the_order_metrics(ensemble, ensemble_figures):
 
 def test_an_ordered_box_stands_out(sbanalyze, tmp_path):
     """The ordered N = 40 box beside MRJ: called ORDERED in the legend, its q6 filled and its
-    narrow spike clipped (the axis is the MRJ histogram's, and the legend names the height),
-    'ordered' beside its points against p."""
+    narrow spike cut at the top of the MRJ densities, its true height written beside it in its
+    own panel (as its g2 peak's in the g2 panel), the MRJ range and the verdict's threshold in
+    the strip of the means above the densities; 'ordered' beside its points against p."""
     out = tmp_path / "order.h5"
     assert run([sbanalyze, ORDERED, INPUTS[0], "--compute", "order", "--quiet", "--out",
                 str(out), "--threads", "1"]).returncode == 0
@@ -491,22 +492,86 @@ def test_an_ordered_box_stands_out(sbanalyze, tmp_path):
     series = figures_series.series_of([r])
     fig = figures_order.order(series)
     plot.finish(fig)
-    q6_axis = fig.axes[1]
+    g2_axis, q6_axis = fig.axes[:2]
     texts = {os.path.basename(str(f["input"])): next(
         t.get_text() for t in q6_axis.get_legend().get_texts()
         if os.path.basename(str(f["input"])) in t.get_text()) for f in r["files"]}
-    assert "ORDERED" in texts["ordered-p1.2-40.h5"] and "clipped" in texts["ordered-p1.2-40.h5"]
-    assert "ORDERED" not in texts["mrj-p1.5-1000.h5"]
-    spike = steps_of(q6_axis, ordered).get_data()[0].max()
+    assert "ORDERED" in texts["ordered-p1.2-40.h5"] and "ORDERED" not in texts["mrj-p1.5-1000.h5"]
+    spike = np.histogram(finite_q6([ordered]), np.linspace(0, 1, 101), density=True)[0].max()
     mrj_peak = steps_of(q6_axis, mrj).get_data()[0].max()
-    assert q6_axis.get_ylim()[1] == pytest.approx(figures_order.HEADROOM * mrj_peak)
-    assert q6_axis.get_ylim()[1] < spike
+    cut = figures_order.HEADROOM * mrj_peak
+    assert steps_of(q6_axis, ordered).get_data()[0].max() == pytest.approx(cut) and cut < spike
+    assert q6_axis.get_ylim()[1] == pytest.approx(cut / figures_order.MEAN_STRIP)
+    assert [t.get_text() for t in q6_axis.texts if t.get_text() != "mean"] == [f"{spike:.3g}"]
+    g2_peak = float(np.max(ordered["order"]["g2"]))
+    assert g2_peak > g2_axis.get_ylim()[1]
+    assert [t.get_text() for t in g2_axis.texts] == [f"{g2_peak:.3g}"]
+    assert g2_axis.texts[0].xy[0] == pytest.approx(
+        ordered["order"]["r_w"][int(np.argmax(ordered["order"]["g2"]))])
+    mrj_range = next(p for p in q6_axis.patches if "MRJ" in p.get_label())
+    y = mrj_range.get_path().vertices[:, 1]  # axes fraction in y
+    assert y.min() == pytest.approx(figures_order.MEAN_STRIP) and y.max() == pytest.approx(1.0)
     filled = [p for p in q6_axis.patches if isinstance(p, StepPatch) and p.get_fill()]
     assert len(filled) == 1 and filled[0].get_facecolor()[:3] == \
         steps_of(q6_axis, ordered).get_edgecolor()[:3]
     versus = figures_versus_p.versus_p(series)
     marks = [t for ax in versus.axes for t in ax.texts if t.get_text() == "ordered"]
     assert len(marks) == 4 and all(t.xy[0] == 1.2 for t in marks)  # Q6, q6, T, P4
+
+
+def test_spreadability_has_one_time_scaling_per_axis(ensemble, ensemble_figures):
+    """Issue 66 item 5: the packings' time t D / w^2 below both panels, the Debye media's
+    t D / a^2 on E(t)'s top axis; an ensemble's local alpha is its members' mean +- std (one
+    line per series, not one per member)."""
+    r = sbpack.read_results(ensemble)
+    fig = ensemble_figures["spreadability"]
+    left, right = fig.axes[:2]
+    assert left.get_xlabel() == right.get_xlabel() == figures_results.PACKING_TIME
+    assert [c.get_xlabel() for c in left.child_axes] == [
+        r"$t\mathcal{D}/\hat a^2$ (Debye media, dashed)"]
+    for e in r["ensembles"]:
+        members = [r["files"][int(m)]["spreadability"] for m in e["members"]]
+        mean = np.mean([m["local_alpha"] for m in members], axis=0)
+        colour = labelled(left)[f"p = {e['p']:g}, N = {e['n_particles']} (mean $\\pm$ std of 3)"]
+        drawn = [line for line in right.lines if line.get_color() == colour.get_color()
+                 and len(line.get_xdata()) == len(mean)]
+        assert len(drawn) == 1
+        assert np.allclose(drawn[0].get_ydata(), mean, rtol=1e-12, atol=1e-12, equal_nan=True)
+
+
+def test_log_bands_end_where_mean_minus_std_reaches_zero(ensemble_figures):
+    """Issue 66 item 5: on F(delta)'s log axis an ensemble's band is drawn where mean - std > 0
+    only; it does not fall to the axis as a wall."""
+    ax = ensemble_figures["pore_size"].axes[0]
+    lows = [path.vertices[:, 1] for c in ax.collections for path in c.get_paths()]
+    assert lows and min(float(v.min()) for v in lows) > 1e-12
+
+
+def test_an_empty_small_q_panel_is_skipped_with_its_reason(results):
+    """Too few wave-vector shells at small Q and no fit: no figure, a reason that says so."""
+    r = sbpack.read_results(results)
+    for f in r["files"]:
+        del f["hyperuniformity"]
+        keep = np.asarray(f["spectral_density"]["Q_w"]) > 3.0
+        f["spectral_density"]["Q_w"] = np.asarray(f["spectral_density"]["Q_w"])[keep]
+        f["spectral_density"]["chi"] = np.asarray(f["spectral_density"]["chi"])[keep]
+    skipped = figures_results.small_q(figures_series.series_of([r]))
+    assert isinstance(skipped, figures_series.Skipped)
+    assert "wave-vector shells and no fit" in skipped
+
+
+def test_a_slice_without_its_packing_is_skipped_with_its_reason(results, tmp_path):
+    """The inputs' packing files not found from here: the slice is not drawn, the command says
+    why and names the way out (--packing); captions.md lists it as not drawn."""
+    r = sbpack.read_results(results)
+    for f in r["files"]:
+        f["input"] = "moved-away/" + os.path.basename(str(f["input"]))
+    skipped = figures_shape.packing_slice(figures_series.series_of([r]), voxels=64)
+    assert isinstance(skipped, figures_series.Skipped)
+    assert "moved-away/mrj-p1.5-1000.h5" in skipped and "--packing" in skipped
+    plot.save({"packing_slice": skipped}, str(tmp_path))
+    assert "## packing_slice.png: not drawn" in (tmp_path / "captions.md").read_text()
+    assert not (tmp_path / "packing_slice.png").exists()
 
 
 def bars_of(ax, label):
@@ -619,7 +684,7 @@ def test_contact_types_of_an_ensemble_are_its_means(ensemble, ensemble_figures):
 
 def test_contact_forces_are_the_results(sbgen, sbanalyze, tmp_path):
     """Issue 62: the stored forces' P(f / <f>) is drawn from the results (an ensemble's mean and
-    band), beside e^-x, with <x^2> in the legend; results without stored forces (every input
+    band, an empty bin a gap on the log axis), beside e^-x, with <x^2> in the legend; results without stored forces (every input
     of data/) have no such figure (NAMES)."""
     paths = []
     for seed in (3, 4):
@@ -637,7 +702,9 @@ def test_contact_forces_are_the_results(sbgen, sbanalyze, tmp_path):
     steps = [p for p in ax.patches if p.get_gid() == r"p = 1.5, N = 64 (mean $\pm$ std of 2)"]
     assert len(steps) == 1
     heights = steps[0].get_data()[0]
-    assert np.allclose(heights, np.maximum(ensemble["force_density"], 1e-4))
+    density = np.asarray(ensemble["force_density"])
+    assert np.allclose(heights[density > 0], density[density > 0])
+    assert np.isnan(heights[density == 0]).all()  # an empty bin: a gap on the log axis
     legend = [t.get_text() for t in ax.get_legend().get_texts()]
     assert any(f"{ensemble['force_second_moment']:.3f}" in t for t in legend)
     assert any("e^{-x}" in t for t in legend)
