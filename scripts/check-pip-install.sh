@@ -13,5 +13,8 @@ echo "venv: $venv ($("$venv/bin/python" --version))"
 nice -n 10 "$venv/bin/pip" install --quiet .
 cd "$(mktemp -d)"
 "$venv/bin/python" -c "import sbpack; print(sbpack.__version__)"
+# The packings the module carries, read from here (README "Python": its block runs anywhere).
+"$venv/bin/python" -c "import sbpack; print(sbpack.data_files()); \
+print(sbpack.Packing.read(sbpack.data_file('mrj-p1.5-1000.h5')).phi)"
 "$venv/bin/sbgen" --help | head -1
 "$venv/bin/sbanalyze" --help | head -1
