@@ -7,7 +7,7 @@
 //     displaced uniformly within its cell (S(Q) ~ Q^2: alpha = 2);
 //   RSA: random sequential addition of 1500 unit spheres to phi = 0.3 (S(0) > 0: alpha = 0);
 // and, without noise, the Debye random medium's chi_V summed over the wave vectors of a box of
-// 200 a (alpha = 0), in the window from t = 10 a^2 / D to the box's t_c / 4.
+// 200 a (alpha = 0), in the window from t = 10 a^2 / D_diff to the box's t_c / 4.
 //
 //   bench_alpha_coverage [COUNT] [REPLICAS] [THREADS]      (default 20, 100 and 2)
 

@@ -200,14 +200,14 @@ STRUCTURE_NOTE = (
     "2 sqrt(sd_paper^2 + sd^2 / n), as for phi. Paper: data/mst-reference-values.csv (N = 5000 "
     "for p != 1, N = 1000 for spheres, final pressure 1e14). CPU s: sbgen's, from each "
     "packing's provenance.")
-TRANSPORT_HEADER = ("p", "w / D", "<delta> / w (1e-2)", "k / w^2 (1e-4)", "tau D / w^2 (1e-3)",
-                    "T1 D / w^2 (1e-3)", "alpha (ours)", "alpha (paper)", "a0 (1e-4 w^3, ours)",
+TRANSPORT_HEADER = ("p", "w / D", "<delta> / w (1e-2)", "k / w^2 (1e-4)", "tau D_diff / w^2 (1e-3)",
+                    "T1 D_diff / w^2 (1e-3)", "alpha (ours)", "alpha (paper)", "a0 (1e-4 w^3, ours)",
                     "a0 (paper)", "a1 (1e-3, ours)", "a1 (paper)", "H (1e-3, ours)", "H (paper)")
 TRANSPORT_NOTE = (
     "Mean +- sd over the ensemble's packings (the value alone for one packing); w / D of each "
     "packing on its own (as sbanalyze info prints it), averaged. Pore sizes and transport: "
     "{pores}; k, tau and T1 are the paper's bounds (Eqs. "
-    "17-20, diffusion-controlled: T1 D / w^2 = <delta^2> / w^2). alpha from the spreadability "
+    "17-20, diffusion-controlled: T1 D_diff / w^2 = <delta^2> / w^2). alpha from the spreadability "
     "(mean +- sd of the packings' alphas); a0, a1, H from one fit of chi_V = a0 + a1 Q^alpha "
     "through every packing's wave vectors at the ensemble's pooled alpha, +- its least-squares "
     "standard error (docs/hyperuniformity.md, \"Ensembles\"). The paper prints no table of "

@@ -20,7 +20,7 @@ namespace sbpack {
 struct DiscreteSpectrum {
     std::string source;         ///< "voxel", "exact" or "exact+voxel"
     double boxLength = 0.0;     ///< L
-    double meanWidth = 0.0;     ///< w, the unit of Q (Q w) and of t (t D / w^2)
+    double meanWidth = 0.0;     ///< w, the unit of Q (Q w) and of t (t D_diff / w^2)
     double phi = 0.0;           ///< normalises E: phi_voxel for voxel data, N v1 / V otherwise
     double cutoffQ = 0.0;       ///< every wave vector with |Q| < cutoffQ is included (1 / length)
     double missingWeight = 0.0; ///< (1/(phi V)) sum of chi_V over the wave vectors left out

@@ -89,7 +89,7 @@ HyperuniformityResult Hyperuniformity::compute(std::span<const DiscreteSpectrum>
     fillCurves(r, curve, phi);
     if (parameters_.window && parameters_.window->tMax > r.cutoffTime)
         throw std::domain_error(
-            "alpha window: --alpha-window ends at t D / w^2 = " +
+            "alpha window: --alpha-window ends at t D_diff / w^2 = " +
             std::to_string(parameters_.window->tMax) + ", past the box's cutoff time " +
             std::to_string(r.cutoffTime) +
             " (beyond it E(t) is the smallest wave vectors' decay, not the packing's): end it "

@@ -18,7 +18,7 @@
 namespace sbpack {
 
 struct HyperuniformityParameters {
-    /// Times t D / w^2, log-spaced from tMin to tMax, pointsPerDecade per decade.
+    /// Times t D_diff / w^2, log-spaced from tMin to tMax, pointsPerDecade per decade.
     double tMin = 1e-3, tMax = 1e4;
     int pointsPerDecade = 20;
     /// The fit of chi_V over 0 < Q w <= fitQmaxW (the paper's 1.4).
@@ -26,7 +26,7 @@ struct HyperuniformityParameters {
     /// Bootstrap replicas of alpha (0: none).
     int replicas = 200;
     std::uint64_t seed = 1;
-    /// The alpha window, t D / w^2; unset: found (findExponentWindow).
+    /// The alpha window, t D_diff / w^2; unset: found (findExponentWindow).
     std::optional<ExponentWindow> window;
     /// The hyper stage's spectrum: chi_V exact (ExactSpectralDensity, no voxels) at Q w <= this,
     /// where the fit and alpha read it, the voxel grid's beyond; 0: the voxel grid's alone.
@@ -41,12 +41,12 @@ struct SpectralPeak {
 
 struct HyperuniformityResult {
     HyperuniformityParameters parameters;
-    std::vector<double> t;             ///< t D / w^2
+    std::vector<double> t;             ///< t D_diff / w^2
     std::vector<double> excess;        ///< E(t) = S(inf) - S(t)
     std::vector<double> localExponent; ///< nu = d ln E / d ln t
     std::vector<double> localAlpha;    ///< -3 - 2 nu
     std::vector<double> truncation;    ///< bound on what the omitted wave vectors add to E(t)
-    std::vector<double> debyeExcess;   ///< Debye medium of the same phi at t D / a^2 = t
+    std::vector<double> debyeExcess;   ///< Debye medium of the same phi at t D_diff / a^2 = t
     double cutoffTime = 0.0;           ///< t_c D / w^2
     ExponentWindow window;
     ExponentEstimate alpha;

@@ -2,10 +2,11 @@
 // The excess spreadability of periodic boxes as an exact lattice sum (paper Eq. 21,
 // eq:FT_spread, docs/design.md §5): with int d^3Q / (2 pi)^3 -> (1 / V) sum_Q on the box's wave
 // vectors,
-//   E(t) = S(inf) - S(t) = (1 / (phi V)) sum_{Q != 0} chi_V(Q) exp(-Q^2 D t),
-// exp(-Q^2 D t) being the Fourier transform of the diffusion kernel (4 pi D t)^{-3/2}
-// exp(-r^2 / (4 D t)). Time in units of w^2 / D (w the mean width): t below means t D / w^2 and
-// Q^2 D t = (Q w)^2 t. Its logarithmic derivative needs no finite differences:
+//   E(t) = S(inf) - S(t) = (1 / (phi V)) sum_{Q != 0} chi_V(Q) exp(-Q^2 D_diff t),
+// exp(-Q^2 D_diff t) being the Fourier transform of the diffusion kernel (4 pi D_diff t)^{-3/2}
+// exp(-r^2 / (4 D_diff t)). Time in units of w^2 / D_diff (w the mean width): t below means t
+// D_diff / w^2 and Q^2 D_diff t = (Q w)^2 t. Its logarithmic derivative needs no finite
+// differences:
 //   nu(t) = d ln E / d ln t = -t <(Q w)^2>_t, weights chi_V(Q) exp(-(Q w)^2 t),
 //   d nu / d ln t = nu + t^2 Var_t((Q w)^2).
 // Several boxes (an ensemble) pool as the mean of their E(t).

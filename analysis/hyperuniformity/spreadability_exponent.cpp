@@ -92,7 +92,7 @@ ExponentWindow findExponentWindow(const SpreadabilityCurve& curve, double peakQw
     const ExponentWindow w{kPeakDecay / (peakQw * peakQw), curve.cutoffTime() / kCutoffFraction};
     if (!(std::log10(w.tMax / w.tMin) >= kMinWindowDecades))
         throw std::domain_error(
-            "alpha window: the long-time regime from t D / w^2 = " + std::to_string(w.tMin) +
+            "alpha window: the long-time regime from t D_diff / w^2 = " + std::to_string(w.tMin) +
             " (the chi_V peak has decayed) to " + std::to_string(w.tMax) +
             " (a quarter of the box's cutoff time) is shorter than " +
             std::to_string(kMinWindowDecades) +

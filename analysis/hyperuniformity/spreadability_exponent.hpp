@@ -10,7 +10,7 @@
 // lattices, alpha = 2) and +0.25 (RSA, alpha = 0), the extrapolation by -0.09 and +0.07, within
 // its uncertainty, a Poisson bootstrap over the wave vectors (each one's chi_V is a random
 // variable around its mean): bench/RESULTS.md, "alpha on fixtures with known exponents". Times
-// are t D / w^2.
+// are t D_diff / w^2.
 //
 // The window the code finds: it starts when the peak of chi_V has decayed away,
 // t_1 = kPeakDecay / (Q_peak w)^2 (the microscopic transient: the wave vectors near the peak

@@ -212,14 +212,15 @@ constexpr std::array kHyperuniformityRows{
               "hyper: fit chi_V = a0 + a1 Q^alpha over 0 < Q w <= X (default {}, as the paper)",
               [](Settings& s, Text o, Text v) { s.hyperuniformity.fitQmaxW = parsePositive(o, v); },
               [](const Settings& d) { return number(d.hyperuniformity.fitQmaxW); }},
-    OptionRow{"alpha-window", "T1,T2",
-              "hyper: alpha from E(t) over t D / w^2 in [T1, T2] (default: from the chi_V peak's\n"
-              "decay, 10 / (Q_peak w)^2, to a quarter of the box's cutoff time)",
-              [](Settings& s, Text o, Text v) { s.hyperuniformity.window = parseTimes(o, v); },
-              [](const Settings& d) {
-                  const auto& w = d.hyperuniformity.window;
-                  return w ? number(w->tMin) + ',' + number(w->tMax) : std::string();
-              }},
+    OptionRow{
+        "alpha-window", "T1,T2",
+        "hyper: alpha from E(t) over t D_diff / w^2 in [T1, T2] (default: from the chi_V peak's\n"
+        "decay, 10 / (Q_peak w)^2, to a quarter of the box's cutoff time)",
+        [](Settings& s, Text o, Text v) { s.hyperuniformity.window = parseTimes(o, v); },
+        [](const Settings& d) {
+            const auto& w = d.hyperuniformity.window;
+            return w ? number(w->tMin) + ',' + number(w->tMax) : std::string();
+        }},
     OptionRow{
         "bootstrap", "R",
         "hyper: bootstrap replicas over the wave vectors for alpha's error (default {};\n"
@@ -240,7 +241,7 @@ constexpr std::array kHyperuniformityRows{
         },
         [](const Settings& d) { return std::to_string(d.variance.windows); }},
     OptionRow{"spread-times", "T1,T2",
-              "hyper: E(t) at t D / w^2 from T1 to T2, 20 a decade (default {})",
+              "hyper: E(t) at t D_diff / w^2 from T1 to T2, 20 a decade (default {})",
               [](Settings& s, Text o, Text v) {
                   const ExponentWindow w = parseTimes(o, v);
                   s.hyperuniformity.tMin = w.tMin;
@@ -334,8 +335,9 @@ constexpr std::array kOutputRows{
               "mean and standard deviation; names and units in docs/results-schema.md",
               [](Settings& s, Text, Text v) { s.output = v; }},
     OptionRow{"json", "FILE|-",
-              "short JSON summary (the attributes, each curve's peak); - for standard output\n"
-              "(at least one of --out and --json is required)",
+              "short JSON summary (the attributes, each curve's peak); - for standard output;\n"
+              "a device or FIFO (/dev/null, a named pipe) is written in place (at least one of\n"
+              "--out and --json is required)",
               [](Settings& s, Text, Text v) { s.json = v; }},
     OptionRow{"vdb", "DIR",
               "export each voxelization as DIR/<input stem>.vdb, a float fog volume \"density\"\n"

@@ -109,7 +109,8 @@ void checkOutputs(const RunSettings& settings) {
         throw std::invalid_argument("nothing to write: give --out RESULTS.h5 and/or --json FILE");
     std::vector<fs::path> outputs;
     if (!settings.output.empty()) outputs.push_back(settings.output);
-    if (!settings.json.empty() && settings.json != "-") outputs.push_back(settings.json);
+    if (!settings.json.empty() && settings.json != "-" && !isStreamDevice(settings.json))
+        outputs.push_back(settings.json);
     for (std::size_t i = 0; i < outputs.size(); ++i) {
         checkWritable(outputs[i]);
         if (i == 1 && sameDestination(outputs[1], outputs[0]))
@@ -265,14 +266,19 @@ std::vector<EnsembleResults> ensemblesOf(const std::vector<FileResults>& files,
     return ensembles;
 }
 
-/// The JSON summary to standard output now, or to a temporary of `settings.json`, returned.
+/// The JSON summary to standard output or a stream device (/dev/null, a FIFO) now, or to a
+/// temporary of `settings.json`, returned.
 std::unique_ptr<AtomicOutput> writeJson(const RunSettings& settings, const RunResults& results,
                                         std::ostream& out) {
     if (settings.json == "-") writeJsonSummary(out, results, settings);
     if (settings.json.empty() || settings.json == "-") return nullptr;
-    auto file = std::make_unique<AtomicOutput>(settings.json);
     std::ostringstream json;
     writeJsonSummary(json, results, settings);
+    if (isStreamDevice(settings.json)) {
+        writeToStreamDevice(settings.json, json.str());
+        return nullptr;
+    }
+    auto file = std::make_unique<AtomicOutput>(settings.json);
     file->write(json.str());
     return file;
 }

@@ -15,7 +15,8 @@ namespace sbpack::schema {
 
 inline constexpr std::string_view kFormat = "sbpack.results";
 inline constexpr std::string_view kSummaryFormat = "sbpack.summary";
-/// 3: the transport times reduced by w^2 / D named as the other reduced fields (renamedFields).
+/// 3: the transport times reduced by w^2 / D_diff named as the other reduced fields
+/// (renamedFields).
 inline constexpr std::int64_t kFormatVersion = 4;
 
 enum class Kind { Attribute, Dataset };
@@ -48,8 +49,8 @@ struct Field {
     Type type;
     /// "1" dimensionless, "length" (the packing's), "1/length", "length^2", "length^3", "time"
     /// (length^2 / diffusion_coefficient), "length^2/time", "D" (the major axis 2 semi_axis),
-    /// "s" (wall clock), "bytes", "w^3" and "w^2/D" (in units of the mean width w and the
-    /// diffusion coefficient D); "" for strings.
+    /// "s" (wall clock), "bytes", "w^3" and "w^2/D_diff" (in units of the mean width w and the
+    /// diffusion coefficient D_diff); "" for strings.
     std::string_view units;
     std::string_view description;
     Reduce reduce = Reduce::None;
@@ -119,7 +120,7 @@ const Field* findField(const Group& group, std::string_view name);
 /// (the analyses compute in units of D, pipeline/file_analysis.hpp) into the packing's own
 /// units: lengthUnit^k for "length^k", 1 / lengthUnit for "1/length", lengthUnit^2 for "time"
 /// (length^2 / diffusion_coefficient, which is given in the packing's units), 1 for every
-/// dimensionless or reduced unit ("1", "D", "w^3", "w^2/D", "s", ...). std::logic_error for a
+/// dimensionless or reduced unit ("1", "D", "w^3", "w^2/D_diff", "s", ...). std::logic_error for a
 /// unit that names "length" or "time" in another way (a new unit must be declared here).
 double unitFactor(std::string_view units, double lengthUnit);
 

@@ -43,8 +43,8 @@ attribute `NAME_units`. Units: `1` dimensionless; `length` the packing's length 
 `time` the unit of the transport times (`length^2 / diffusion_coefficient`); `length^2/time`;
 `s` wall-clock seconds; `bytes`; `deg` angles in degrees and `1/deg` densities per degree; `rad`
 (small) rotations in radians; in
-units of the mean width `w` (`mean_width`) and the diffusion coefficient `D`: `w^3`,
-`w^(3+alpha)`, `w^2/D`.
+units of the mean width `w` (`mean_width`) and the diffusion coefficient `D_diff`: `w^3`,
+`w^(3+alpha)`, `w^2/D_diff`.
 
 A dataset is one-dimensional (`n` values) unless its type says `n x 3`: then it has one row of
 three values per particle (a displacement or rotation vector), as OVITO and h5py read vectors.
@@ -54,10 +54,10 @@ three values per particle (a displacement or rotation vector), as OVITO and h5py
 One convention throughout: snake_case names of the quantity, the paper's symbol where it has one
 (`Q`, `S`, `F`, `P`, `H`, `a0`, `alpha`, `t`). A field reduced by the mean width ends in the power
 of `w` it is reduced by: `_w` (lengths over w, and wave numbers times w: `Q_w`, `q_peak_w`),
-`_w2` (areas over w^2, and times in units of w^2 / D), `_w3` (`number_density_w3`); its
+`_w2` (areas over w^2, and times in units of w^2 / D_diff), `_w3` (`number_density_w3`); its
 unreduced form, where the group has one, is the plain name (`mean`, `mean_w`; `permeability`,
 `permeability_w2`). The groups that exist only reduced (`spreadability`, `hyperuniformity`)
-keep the paper's symbols, their units in the table (`t` in `w^2/D`, `a0` in `w^3`). Suffixes of
+keep the paper's symbols, their units in the table (`t` in `w^2/D_diff`, `a0` in `w^3`). Suffixes of
 statistics and costs: `_std` the ensemble's sample standard deviation, `_stderr` a standard error
 within one file, `_s` wall-clock seconds, `_bytes` memory.
 )";

@@ -19,8 +19,8 @@ double zeta2Interpolation(double p, double phi);
 double formationFactor(double phi, double zeta2);
 
 struct TransportParameters {
-    /// D of the diffusing species (length^2 / time) for tau and T1; the scaled forms tau D / w^2
-    /// and T1 D / w^2 do not depend on it.
+    /// D of the diffusing species (length^2 / time) for tau and T1; the scaled forms tau D_diff /
+    /// w^2 and T1 D_diff / w^2 do not depend on it.
     double diffusionCoefficient = 1.0;
 };
 
@@ -40,11 +40,11 @@ struct TransportResult {
     double runtimeSeconds = 0.0;
 
     double permeabilityOverWidth2() const { return permeability / (meanWidth * meanWidth); }
-    /// tau D / w^2 (paper Fig. 14).
+    /// tau D_diff / w^2 (paper Fig. 14).
     double meanSurvivalTimeOverWidth2() const {
         return meanSurvivalTime * parameters.diffusionCoefficient / (meanWidth * meanWidth);
     }
-    /// T1 D / w^2 (paper Fig. 14).
+    /// T1 D_diff / w^2 (paper Fig. 14).
     double principalRelaxationTimeOverWidth2() const {
         return principalRelaxationTime * parameters.diffusionCoefficient / (meanWidth * meanWidth);
     }

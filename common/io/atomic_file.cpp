@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <fstream>
 #include <string>
 #include <string_view>
 #include <sys/file.h>
@@ -132,6 +133,20 @@ void checkWritable(const fs::path& file) {
                               "': it is not a regular file (a device, FIFO or socket), which the "
                               "write through a temporary and a rename would replace; name a "
                               "regular file");
+}
+
+bool isStreamDevice(const fs::path& file) {
+    std::error_code ec;
+    const fs::file_status status = fs::status(file, ec);
+    return fs::is_character_file(status) || fs::is_fifo(status);
+}
+
+void writeToStreamDevice(const fs::path& file, std::string_view text) {
+    std::ofstream out(file, std::ios::binary);
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    out.flush();
+    if (!out)
+        throw OutputPathError("cannot write '" + file.string() + "': " + std::strerror(errno));
 }
 
 void checkNotInput(const fs::path& output, const fs::path& input, const std::string& what) {

@@ -21,6 +21,15 @@ class OutputPathError : public std::runtime_error {
 /// before any work starts.
 void checkWritable(const std::filesystem::path& file);
 
+/// True where `file` exists and is a character device or a FIFO (/dev/null, /dev/stdout, a named
+/// pipe): a stream, written in place, which a temporary and a rename would replace. For the small
+/// text outputs that a reader may want to discard or pipe (sbanalyze --json), not for files.
+bool isStreamDevice(const std::filesystem::path& file);
+
+/// Writes `text` to the stream device `file` in place (isStreamDevice); OutputPathError naming
+/// it where the open or the write fails.
+void writeToStreamDevice(const std::filesystem::path& file, std::string_view text);
+
 /// Throws OutputPathError when `output` names the same file as `input` (by device and inode,
 /// so through links and other spellings too); `what` says which input, e.g. "--resume".
 void checkNotInput(const std::filesystem::path& output, const std::filesystem::path& input,

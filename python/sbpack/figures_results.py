@@ -287,8 +287,8 @@ def log_axes(ax):
 def spreadability(series):
     """E(t) with each series' Debye medium (paper Fig. 16), and the local alpha with each
     series' line alpha + c / t over its window and its limit alpha (paper Fig. 17's alpha),
-    p <= 1 | p >= 1. Each axis has one time scaling: the packings' t D / w^2 below, the Debye
-    media's t D / a^2 on the top axis of E(t) (the same numbers, as in the paper's Fig. 16)."""
+    p <= 1 | p >= 1. Each axis has one time scaling: the packings' t D_diff / w^2 below, the Debye
+    media's t D_diff / a^2 on the top axis of E(t) (the same numbers, as in the paper's Fig. 16)."""
     series = with_group(series, "spreadability")
     if not series:
         return None

@@ -90,7 +90,7 @@ TEST(Debye, ClosedFormMatchesQuadratureAndIsNormalised) {
 }
 
 TEST(Debye, NoAlphaWindowInABoxOfTwentyA) {
-    // A box of 20 a: t_c / 4 = (20 / 2 pi)^2 / 4 = 2.5 a^2 / D, before the tail (the weight
+    // A box of 20 a: t_c / 4 = (20 / 2 pi)^2 / 4 = 2.5 a^2 / D_diff, before the tail (the weight
     // Q^2 chi_V peaks at Q a = 1, whose transient lasts to t = 10).
     const double phi = 0.3, a = 1.0, box = 20.0;
     const DiscreteSpectrum s = testing::debyeBoxSpectrum(phi, a, box, 60);

@@ -23,6 +23,7 @@
 #include <string>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <thread>
 #include <unistd.h>
 
 namespace sbpack {
@@ -914,6 +915,26 @@ TEST_F(AtomicOutputTest, RefusesSpecialFilesAndItsOwnInput) {
     expectError<OutputPathError>([&] { checkNotInput(file("link.h5"), file("in.h5"), "convert"); },
                                  {"link.h5", "is also the input"});
     EXPECT_NO_THROW(checkNotInput(file("new.h5"), file("in.h5"), "convert"));
+}
+
+TEST_F(AtomicOutputTest, StreamDevicesAreWrittenInPlace) { // issue 66 item 6: --json /dev/null
+    EXPECT_TRUE(isStreamDevice("/dev/null"));
+    std::ofstream(file("plain.json")) << "{}";
+    EXPECT_FALSE(isStreamDevice(file("plain.json")));
+    EXPECT_FALSE(isStreamDevice(file("absent.json")));
+    EXPECT_NO_THROW(writeToStreamDevice("/dev/null", "{\"phi\": 0.64}"));
+    ASSERT_EQ(::mkfifo(file("pipe.json").c_str(), 0600), 0);
+    EXPECT_TRUE(isStreamDevice(file("pipe.json")));
+    std::string received;
+    std::thread reader([&] {
+        std::ifstream in(file("pipe.json"));
+        std::getline(in, received);
+    });
+    writeToStreamDevice(file("pipe.json"), "{\"phi\": 0.64}\n");
+    reader.join();
+    EXPECT_EQ(received, "{\"phi\": 0.64}");
+    expectError<OutputPathError>([&] { writeToStreamDevice(file("missing") / "pipe.json", "{}"); },
+                                 {"pipe.json"});
 }
 
 TEST_F(AtomicOutputTest, CheckWritableRejectsMissingDirectoryAndDirectoryTarget) {

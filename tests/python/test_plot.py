@@ -520,8 +520,8 @@ def test_an_ordered_box_stands_out(sbanalyze, tmp_path):
 
 
 def test_spreadability_has_one_time_scaling_per_axis(ensemble, ensemble_figures):
-    """Issue 66 item 5: the packings' time t D / w^2 below both panels, the Debye media's
-    t D / a^2 on E(t)'s top axis; an ensemble's local alpha is its members' mean +- std (one
+    """Issue 66 item 5: the packings' time t D_diff / w^2 below both panels, the Debye media's
+    t D_diff / a^2 on E(t)'s top axis; an ensemble's local alpha is its members' mean +- std (one
     line per series, not one per member)."""
     r = sbpack.read_results(ensemble)
     fig = ensemble_figures["spreadability"]

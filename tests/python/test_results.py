@@ -54,8 +54,8 @@ def test_a_file_of_today(transport_results):
     r = sbpack.read_results(transport_results)
     assert r["format_version"] == sbpack.results.FORMAT_VERSION == 4
     transport = r["files"][0]["transport"]
-    assert transport["units"]["mean_survival_time_w2"] == "w^2/D"
-    # tau D / w^2 from its own columns (Eq. 19 over the mean width squared)
+    assert transport["units"]["mean_survival_time_w2"] == "w^2/D_diff"
+    # tau D_diff / w^2 from its own columns (Eq. 19 over the mean width squared)
     w = r["files"][0]["mean_width"]
     assert transport["mean_survival_time_w2"] == pytest.approx(
         transport["mean_survival_time"] * transport["diffusion_coefficient"] / w**2, rel=1e-14)

@@ -41,14 +41,14 @@ bool runHyperuniformity(FileContext& context, schema::Record& record) {
     }
     context.progress().stageDone(
         "hyperuniformity", clock.seconds(),
-        fmt::format("alpha = {} +- {} (window ends: {} .. {}; window mean {}; t D / w^2 in [{}, "
-                    "{}], {}), H = {} +- {} (a0 = {} w^3, chi_peak = {} w^3 at Q w = {})",
-                    describe(h.alpha.alpha, 3), describe(h.alpha.standardError, 2),
-                    describe(h.alpha.endLow, 3), describe(h.alpha.endHigh, 3),
-                    describe(h.alpha.windowMean, 3), describe(h.window.tMin, 3),
-                    describe(h.window.tMax, 3), spectrum.source, describe(h.h, 3),
-                    describe(h.fit.a0Error / h.peak.chi, 2), describe(h.fit.a0, 3),
-                    describe(h.peak.chi, 4), describe(h.peak.qw, 3)));
+        fmt::format(
+            "alpha = {} +- {} (window ends: {} .. {}; window mean {}; t D_diff / w^2 in [{}, "
+            "{}], {}), H = {} +- {} (a0 = {} w^3, chi_peak = {} w^3 at Q w = {})",
+            describe(h.alpha.alpha, 3), describe(h.alpha.standardError, 2),
+            describe(h.alpha.endLow, 3), describe(h.alpha.endHigh, 3),
+            describe(h.alpha.windowMean, 3), describe(h.window.tMin, 3), describe(h.window.tMax, 3),
+            spectrum.source, describe(h.h, 3), describe(h.fit.a0Error / h.peak.chi, 2),
+            describe(h.fit.a0, 3), describe(h.peak.chi, 4), describe(h.peak.qw, 3)));
     const HyperuniformityFigures figures{std::move(h), spectrum.source, spectrum.phi,
                                          context.settings().hyperuniformity.chiExactQw,
                                          clock.seconds()};
