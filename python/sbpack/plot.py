@@ -56,6 +56,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
 
 from . import figures_contacts as contact_figures  # noqa: E402
 from . import figures_forces as force_figures  # noqa: E402
@@ -72,6 +73,8 @@ __all__ = ["draw_figures", "make_figures", "Skipped", "finish", "save", "main", 
 
 LEGEND_INSIDE = 3  # a legend of more entries stands beside its axes
 LEGEND_WIDTH = 2.6  # inches the figure grows by per legend beside the axes of one row
+CORNERS = ["upper right", "upper left", "lower right", "lower left", "center right",
+           "center left", "upper center", "lower center"]  # a legend inside, in this preference
 
 # name -> figure function of the series (None where the results do not support it)
 FIGURES = {
@@ -125,21 +128,52 @@ def make_figures(paths, packing_path=None, slice_voxels=None, form_factor_voxels
 
 
 def finish(fig):
-    """Every axes' legend: inside up to LEGEND_INSIDE entries, else beside the axes on the
-    right, where it hides no data, the figure widened by LEGEND_WIDTH per such legend in a row
-    (constrained layout makes the room)."""
+    """Every axes' legend: inside, where one of up to LEGEND_INSIDE entries fits at a corner or
+    side without covering data (place_inside), else beside the axes on the right, where it hides
+    no data, the figure widened by LEGEND_WIDTH per such legend in a row (constrained layout
+    makes the room)."""
     beside = {}
     for ax in fig.axes:
         entries = len(ax.get_legend_handles_labels()[0])
-        if entries > LEGEND_INSIDE:
-            ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
-            spec = getattr(ax, "get_subplotspec", lambda: None)()
-            row = spec.rowspan.start if spec is not None else 0
-            beside[row] = beside.get(row, 0) + 1
-        elif entries:
-            ax.legend(fontsize=6.5)
+        if not entries or (entries <= LEGEND_INSIDE and place_inside(fig, ax)):
+            continue
+        ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+        spec = getattr(ax, "get_subplotspec", lambda: None)()
+        row = spec.rowspan.start if spec is not None else 0
+        beside[row] = beside.get(row, 0) + 1
     if beside:
         fig.set_figwidth(fig.get_figwidth() + LEGEND_WIDTH * max(beside.values()))
+
+
+def place_inside(fig, ax):
+    """The axes' legend inside it at the first place of CORNERS where it covers no drawn data
+    (drawn_points); False, and no legend, where it covers some everywhere. matplotlib's 'best'
+    counts a line's vertices only and would lay the legend over a steep segment between two."""
+    fig.canvas.draw()  # the layout that the figure is saved with: the axes' final boxes
+    renderer = fig.canvas.get_renderer()
+    data = drawn_points(ax)
+    for loc in CORNERS:
+        legend = ax.legend(fontsize=6.5, loc=loc)
+        if not len(data) or legend.get_window_extent(renderer).count_contains(data) == 0:
+            return True
+    legend.remove()
+    return False
+
+
+def drawn_points(ax, spacing=1.5):
+    """The axes' data lines and patch outlines as display points, every `spacing` pixels along
+    each segment between two vertices."""
+    paths = [line.get_transform().transform(line.get_xydata()) for line in ax.lines
+             if len(line.get_xydata()) >= 2]
+    paths += [p.get_transform().transform(p.get_path().vertices) for p in ax.patches]
+    points = []
+    for xy in paths:
+        xy = xy[np.all(np.isfinite(xy), axis=1)]
+        for a, b in zip(xy[:-1], xy[1:]):
+            n = int(min(np.hypot(*(b - a)) / spacing, 4000)) + 1
+            t = np.linspace(0.0, 1.0, n, endpoint=False)[:, None]
+            points.append(a * (1 - t) + b * t)
+    return np.concatenate(points) if points else np.empty((0, 2))
 
 
 def save(figures, out):

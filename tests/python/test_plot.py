@@ -142,6 +142,22 @@ def test_every_figure_has_its_legends(ensemble_figures, figures):
                 assert ax.get_legend() is not None, fig.axes[0].get_title()
 
 
+def test_no_legend_covers_data(ensemble_figures, figures):
+    """Issue 66 item 5: a legend inside its axes covers none of the drawn lines and outlines
+    (sampled every 1.5 pixels, plot.drawn_points); one that would is placed beside the axes."""
+    inside = 0
+    for name, fig in list(ensemble_figures.items()) + list(figures.items()):
+        fig.canvas.draw()
+        for ax in fig.axes:
+            legend = ax.get_legend()
+            box = legend.get_window_extent() if legend is not None else None
+            if box is None or not ax.get_window_extent().contains(box.x0 + 1, box.y0 + 1):
+                continue  # none, or beside the axes
+            inside += 1
+            assert box.count_contains(plot.drawn_points(ax)) == 0, (name, ax.get_title())
+    assert inside >= 5
+
+
 def test_ensemble_is_one_line_and_one_band_per_series(ensemble, ensemble_figures):
     """Two p x three inputs: one line per (p, N), the ensemble's mean, in a band of +- std;
     colour keyed to p (spheres black), marker to N."""
