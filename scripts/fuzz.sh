@@ -2,7 +2,9 @@
 # Fuzzes the readers with libFuzzer under ASan + UBSan for SECONDS each (default 600), every
 # target from its seed corpus (docs/reliability.md, "Fuzzing and sanitizers"):
 #   fuzz_packing_reader     readPacking (HDF5) and readTextPacking (seeds: data/)
-#   fuzz_packing_file       readPackingFile, the reader picked by the name (seeds: data/)
+#   fuzz_packing_file       readPackingFile, the reader picked by the name (seeds: data/ and
+#                           tests/fuzz/seeds/packing_file/: GSD, LAMMPS and XYZ files padded to
+#                           the size that names them as their format)
 #   fuzz_checkpoint_reader  sbgen --resume: readPacking, readCheckpoint, the resume constructor
 #                           (seeds: tests/fuzz/seeds/checkpoint/)
 #   fuzz_option_number      parseNumber, parseInteger (seeds: tests/fuzz/seeds/option_number/)
@@ -34,7 +36,8 @@ export TMPDIR=$scratch
 
 seed() {
     case $1 in
-        fuzz_packing_reader | fuzz_packing_file) cp -n data/*.h5 data/*.txt "$2"/ ;;
+        fuzz_packing_reader) cp -n data/*.h5 data/*.txt "$2"/ ;;
+        fuzz_packing_file) cp -n data/*.h5 data/*.txt tests/fuzz/seeds/packing_file/* "$2"/ ;;
         fuzz_checkpoint_reader) cp -n tests/fuzz/seeds/checkpoint/*.h5 "$2"/ ;;
         fuzz_option_number) cp -n tests/fuzz/seeds/option_number/* "$2"/ ;;
     esac

@@ -5,6 +5,7 @@ an ensemble's pointwise mean +- std; and the local volume-fraction variance sigm
 route as points with their error bars, which a Poisson-like medium holds flat at large R and a
 hyperuniform one bends down. Every value drawn is the results'; an ensemble's variance curves are
 averaged here over the radii its members share."""
+import matplotlib.ticker as ticker
 import numpy as np
 
 from .figures_results import draw_steps, new_figure, with_group
@@ -78,6 +79,8 @@ def volume_fraction_variance(series):
     ax.plot(guide, y0 * r0 / guide, "k--", lw=0.9, label=r"$\propto R^{-4}$")
     ax.set_xscale("log")
     ax.set_yscale("log")
+    ax.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
+    ax.xaxis.set_minor_formatter(ticker.FormatStrFormatter("%g"))
     ax.set_xlabel(r"window radius $R / w$")
     ax.set_ylabel(r"$\sigma_V^2(R)\,(R / w)^3$")
     ax.set_title("Local volume-fraction variance: spectral route (lines), sampled (points)",
