@@ -49,6 +49,18 @@ std::filesystem::path interruptCheckpointPath(const sbpack::GeneratorOptions& o)
     return path.replace_extension(".checkpoint.h5");
 }
 
+/// A resumed run's new finish (--pressure-finish, --finish-speed), its refusal named by option.
+void resumeFinish(sbpack::JammingProtocol& protocol, double pressure, double speed) {
+    try {
+        protocol.setFinish(pressure, speed);
+    } catch (const sbpack::ProtocolParameterError& e) {
+        throw std::invalid_argument(
+            std::string("option ") +
+            (e.parameter() == "finish_speed" ? "--finish-speed" : "--pressure-finish") + ": " +
+            e.problem());
+    }
+}
+
 /// The protocol of the options, or of the file resumed (with a new --pressure-final or
 /// --cost-limit); its warnings printed.
 sbpack::JammingProtocol startProtocol(const sbpack::GeneratorOptions& o,
@@ -66,6 +78,9 @@ sbpack::JammingProtocol startProtocol(const sbpack::GeneratorOptions& o,
     } catch (const sbpack::ProtocolParameterError& e) {
         throw std::invalid_argument("option --cost-limit: " + e.problem());
     }
+    if (o.resume && (o.pressureFinish || o.finishSpeed))
+        resumeFinish(protocol, o.pressureFinish.value_or(protocol.parameters().pressureFinish),
+                     o.finishSpeed.value_or(protocol.parameters().finishSpeed));
     for (const std::string& warning : sbpack::protocolWarnings(protocol.parameters()))
         std::cerr << "sbgen: warning: " << warning << '\n';
     return protocol;

@@ -24,6 +24,7 @@ In the DTS sphere code's units (dR/dt at <|v|^2> = 1) that rate is gamma / (2 sq
 
 usage: sbgen --out FILE.h5 [options]
        sbgen --resume CHECKPOINT.h5 --out FILE.h5 [--pressure-final P] [--cost-limit K]
+             [--pressure-finish P] [--finish-speed X]
              [--checkpoint FILE.h5])";
 
 constexpr const char* kFooter =
@@ -165,6 +166,23 @@ void GeneratorCommandLine::addFileOptions() {
             "so a run stopped there goes on with a larger K")
         ->type_name("K");
     app_.add_option_function<std::string>(
+            "--pressure-finish",
+            [&o](const std::string& v) {
+                o.pressureFinish = o.protocol.pressureFinish = parseNumber("--pressure-finish", v);
+            },
+            "from this reduced pressure on, grow --finish-speed times faster than the slow\n"
+            "rate (default 0: no finish, the paper's protocol; docs/design.md §3,\n"
+            "\"Finish\"); --resume accepts it")
+        ->type_name("P");
+    app_.add_option_function<std::string>(
+            "--finish-speed",
+            [&o](const std::string& v) {
+                o.finishSpeed = o.protocol.finishSpeed = parseNumber("--finish-speed", v);
+            },
+            "the finish's rate over the slow rate, in [1, 1000] (default 1); --resume\n"
+            "accepts it")
+        ->type_name("X");
+    app_.add_option_function<std::string>(
             "--out", [&o](const std::string& v) { o.out = v; },
             "the packing (sbpack.packing format: docs/design.md §4), written atomically")
         ->type_name("FILE.h5");
@@ -201,6 +219,8 @@ void validateAsOptions(const ProtocolParameters& protocol) {
         {"pressure_final", "--pressure-final"},
         {"collisions_per_window", "--window"},
         {"cost_limit", "--cost-limit"},
+        {"pressure_finish", "--pressure-finish"},
+        {"finish_speed", "--finish-speed"},
         {"force_windows", "--force-windows"}};
     try {
         protocol.validate();
@@ -216,9 +236,11 @@ void finish(GeneratorOptions& o, const std::set<std::string>& protocolOptions) {
     if (o.out.empty()) throw std::invalid_argument("option --out: an output file is required");
     if (o.resume) {
         if (!protocolOptions.empty())
-            throw std::invalid_argument("option " + *protocolOptions.begin() +
-                                        ": the protocol comes from the --resume file and cannot "
-                                        "change (only --pressure-final and --cost-limit can)");
+            throw std::invalid_argument(
+                "option " + *protocolOptions.begin() +
+                ": the protocol comes from the --resume file and cannot "
+                "change (only --pressure-final, --cost-limit, --pressure-finish and "
+                "--finish-speed can)");
     } else {
         validateAsOptions(o.protocol);
     }

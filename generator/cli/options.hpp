@@ -18,6 +18,8 @@ struct GeneratorOptions {
     std::optional<std::filesystem::path> resume;
     std::optional<double> pressureFinal; ///< given explicitly (may change on resume)
     std::optional<double> costLimit;     ///< given explicitly (may change on resume)
+    /// --pressure-finish and --finish-speed, given explicitly (may change on resume).
+    std::optional<double> pressureFinish, finishSpeed;
     bool quiet = false;
     bool help = false;
     bool version = false;

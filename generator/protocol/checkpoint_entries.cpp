@@ -71,6 +71,16 @@ Entry rate(std::string key, std::optional<double> ProtocolParameters::*member,
             }};
 }
 
+/// An entry of the finish (issue 64), optional and written only by a run that has one: the
+/// files of the paper's protocol stay as they were.
+Entry finish(Entry e) {
+    e.write = [write = e.write](const CheckpointFields& f) -> std::optional<ProvenanceValue> {
+        if (f.parameters.pressureFinish == 0.0) return std::nullopt;
+        return write(f);
+    };
+    return e;
+}
+
 /// The phase, range-checked (a phase beyond Done would never end).
 Entry phase() {
     return {Group::resumeState,
@@ -121,6 +131,11 @@ std::vector<Entry> parameterEntries() {
             P, "pressure_switch", [](auto& f) -> auto& { return f.parameters.pressureSwitch; }),
         field<double>(
             P, "pressure_final", [](auto& f) -> auto& { return f.parameters.pressureFinal; }),
+        finish(field<double>(
+            P, "pressure_finish", [](auto& f) -> auto& { return f.parameters.pressureFinish; },
+            true)),
+        finish(field<double>(
+            P, "finish_speed", [](auto& f) -> auto& { return f.parameters.finishSpeed; }, true)),
         field<double>(
             P, "collisions_per_window",
             [](auto& f) -> auto& { return f.parameters.collisionsPerWindow; }),

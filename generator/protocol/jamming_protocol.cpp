@@ -126,6 +126,15 @@ void ProtocolParameters::validate() const {
     require(speed == 1.0 || !gammaSlow, "speed",
             "scales the default slow rate, which gamma_slow (--gamma-slow) replaces: give one");
     require(positiveFinite(pressureSwitch), "pressure_switch", "must be positive and finite");
+    require(pressureFinish == 0.0 ||
+                (positiveFinite(pressureFinish) && pressureFinish >= pressureSwitch &&
+                 pressureFinish < pressureFinal),
+            "pressure_finish",
+            "must be 0 (no finish) or in [the switch pressure, the final pressure)");
+    require(std::isfinite(finishSpeed) && finishSpeed >= 1.0 && finishSpeed <= 1e3, "finish_speed",
+            "must be in [1, 1000] (times the slow rate past pressure_finish)");
+    require(finishSpeed == 1.0 || pressureFinish > 0.0, "finish_speed",
+            "needs pressure_finish (--pressure-finish), the pressure it starts at");
     require(positiveFinite(pressureFinal), "pressure_final", "must be positive and finite");
     require(pressureFinal > pressureSwitch, "pressure_final",
             "must be larger than the switch pressure");
@@ -171,6 +180,18 @@ void JammingProtocol::setPressureFinal(double pressure) {
     parameters_ = changed;
     if (status_.phase == Phase::Done && status_.reducedPressure < pressure)
         status_.phase = Phase::Slow;
+}
+
+void JammingProtocol::setFinish(double pressure, double speed) {
+    ProtocolParameters changed = parameters_;
+    changed.pressureFinish = pressure;
+    changed.finishSpeed = speed;
+    changed.validate();
+    parameters_ = changed;
+}
+
+bool JammingProtocol::finishing(double sustained) const {
+    return parameters_.pressureFinish > 0.0 && sustained >= parameters_.pressureFinish;
 }
 
 void JammingProtocol::setCostLimit(double limit) {
@@ -278,6 +299,8 @@ double JammingProtocol::finishWindow(double virial, double duration, bool record
                 status_.phase = Phase::Slow;
                 engine.setGrowthRate(parameters_.slowGrowthRate());
             }
+            if (status_.phase == Phase::Slow && finishing(sustained))
+                engine.setGrowthRate(parameters_.finishGrowthRate());
         },
         engine_);
     ++status_.windows;

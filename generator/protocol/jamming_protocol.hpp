@@ -62,6 +62,11 @@ struct ProtocolParameters {
     double speed = 1.0;
     double pressureSwitch = 1e6;
     double pressureFinal = 1e12;
+    /// The finish (issue 64, docs/design.md §3, "Finish"): from this reduced pressure on, the
+    /// slow phase grows finishSpeed times faster (finishGrowthRate); 0: no finish, the slow
+    /// rate to the end (the paper's protocol).
+    double pressureFinish = 0.0;
+    double finishSpeed = 1.0;
     double collisionsPerWindow = 10.0; ///< per particle, between thermostat rescalings
     /// The run stops, written as not jammed and resumable, once its collisions exceed costLimit
     /// times the expected ones (expectedCost, docs/design.md §3, "Cost limit"); 0: no limit.
@@ -86,6 +91,9 @@ struct ProtocolParameters {
     /// (paperSlowRate: the rate that reproduces its Z, whose superball Z keeps rising as the slow
     /// phase slows; bench/RESULTS.md, "Fidelity", E11).
     double slowGrowthRate() const;
+
+    /// The rate of the finish: finishSpeed times slowGrowthRate().
+    double finishGrowthRate() const { return finishSpeed * slowGrowthRate(); }
 
     /// The collisions after which the run stops (costLimit times the expected ones); 0: none.
     std::uint64_t collisionLimit() const;
@@ -159,10 +167,12 @@ class JammingProtocol {
              const StopRequest& stop = processStopRequest());
 
     const ProtocolParameters& parameters() const { return parameters_; }
-    /// Only the final pressure and the cost limit may change on resume (e.g. to continue from
-    /// 1e12 to 1e14, or a run stopped at its cost limit).
+    /// Only the final pressure, the cost limit and the finish may change on resume (e.g. to
+    /// continue from 1e12 to 1e14, a run stopped at its cost limit, or a run past a pressure
+    /// with a faster finish from there: issue 64's measurement).
     void setPressureFinal(double pressure);
     void setCostLimit(double limit);
+    void setFinish(double pressure, double speed);
     const ProtocolStatus& status() const { return status_; }
 
     /// The synchronised state as a packing whose provenance holds every parameter and the exact
@@ -186,6 +196,8 @@ class JammingProtocol {
     /// window's impulses into forceWindows_ when `recorded`; returns the sustained pressure (the
     /// lower of this window's and the last one's).
     double finishWindow(double virial, double duration, bool recorded);
+    /// True where the finish has begun: pressureFinish set and reached by `sustained`.
+    bool finishing(double sustained) const;
     /// Whether the next window's impulses are recorded for the contact forces.
     bool recordsForces() const;
     /// The neighbour-list skin for the current packing fraction (neighbourSkin), for the next

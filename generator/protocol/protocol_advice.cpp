@@ -75,12 +75,18 @@ double collisionRate(double p) {
 }
 
 ExpectedCost expectedCost(const ProtocolParameters& parameters) {
-    const double decades = std::max(
-        0.0, std::log10(parameters.pressureFinal / std::max(1.0, parameters.pressureSwitch)));
+    // The slow phase's decades of pressure, those of the finish (issue 64) at its own rate.
+    const auto decadesTo = [&](double pressure) {
+        return std::max(0.0, std::log10(pressure / std::max(1.0, parameters.pressureSwitch)));
+    };
+    const double total = decadesTo(parameters.pressureFinal);
+    const double slow =
+        parameters.pressureFinish > 0.0 ? decadesTo(parameters.pressureFinish) : total;
     const double perDecade = rotating(parameters.p) ? kSlowCollisionsTimesRateSuperballs
                                                     : kSlowCollisionsTimesRateSpheres;
-    const double perParticle =
-        kFastPhaseCollisions + perDecade * decades / parameters.slowGrowthRate();
+    const double perParticle = kFastPhaseCollisions +
+                               perDecade * slow / parameters.slowGrowthRate() +
+                               perDecade * (total - slow) / parameters.finishGrowthRate();
     const double collisions = perParticle * parameters.particles;
     return {collisions, collisions / collisionRate(parameters.p)};
 }

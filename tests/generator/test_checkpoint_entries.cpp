@@ -12,7 +12,8 @@
 namespace sbpack {
 namespace {
 
-/// A checkpoint of a short superball run (the rotating engine: predictor counters included).
+/// A checkpoint of a short superball run (the rotating engine: predictor counters included) with
+/// a finish (its entries are written only where there is one).
 Packing shortSuperballCheckpoint() {
     ProtocolParameters p;
     p.particles = 27;
@@ -21,6 +22,8 @@ Packing shortSuperballCheckpoint() {
     p.gammaSlow = 0.01;
     p.pressureSwitch = 1e2;
     p.pressureFinal = 1e4;
+    p.pressureFinish = 1e3;
+    p.finishSpeed = 2.0;
     JammingProtocol run(p);
     run.run([](const ProtocolStatus&) {});
     return run.checkpoint();
@@ -61,6 +64,8 @@ TEST(CheckpointEntries, AMissingRequiredEntryIsRefusedByNameAndAMissingOptionalO
         if (!k.read) continue;
         Packing edited = written;
         groupOf(edited, k.group).erase(k.key);
+        if (k.key == "pressure_finish") // a finish speed without its pressure is refused
+            groupOf(edited, k.group).erase("finish_speed");
         const std::string message = refusal(edited);
         if (k.optional) {
             EXPECT_EQ(message, "") << k.key;

@@ -107,6 +107,16 @@ TEST(JammingProtocol, RejectsBadParametersNamingTheParameter) {
             p.gammaSlow = 1e-3;
         },
         "speed");
+    expectBad([](auto& p) { p.pressureFinish = 1e5; }, "pressure_finish");  // below the switch
+    expectBad([](auto& p) { p.pressureFinish = 1e12; }, "pressure_finish"); // at the final
+    expectBad([](auto& p) { p.pressureFinish = NAN; }, "pressure_finish");
+    expectBad([](auto& p) { p.finishSpeed = 10.0; }, "finish_speed"); // no pressure_finish
+    expectBad(
+        [](auto& p) {
+            p.pressureFinish = 1e8;
+            p.finishSpeed = 0.5;
+        },
+        "finish_speed");
 }
 
 TEST(JammingProtocol, SameSeedGivesIdenticalPacking) {
@@ -435,6 +445,65 @@ TEST(JammingProtocol, TheSpeedKnobScalesTheDefaultSlowRateForEveryP) {
     ProtocolParameters spheres;
     spheres.speed = 10.0;
     EXPECT_EQ(spheres.slowGrowthRate(), 1e-3); // the demo's --speed 10 is its old --gamma-slow 1e-3
+}
+
+// Issue 64: the finish grows finishSpeed times faster than the slow rate from pressureFinish on
+// (the engine's rate checked after every window), costs fewer collisions than the slow rate to
+// the end, is written with the packing (and only by a run that has one) and may be given to a
+// finished run that continues, as sbgen --resume takes it.
+TEST(JammingProtocol, TheFinishGrowsFasterFromItsPressureOn) {
+    ProtocolParameters parameters = smallRun(7);
+    parameters.pressureFinish = 1e5;
+    parameters.finishSpeed = 10.0;
+    JammingProtocol protocol(parameters);
+    bool finished = false;
+    ASSERT_TRUE(protocol.run([&](const ProtocolStatus& s) {
+        const double rate = std::get<double>(protocol.checkpoint().resumeState.at("growth_rate"));
+        if (rate == 0.1 && !finished) { // the finish begins where this window reached 1e5
+            finished = true;
+            EXPECT_GE(s.reducedPressure, 1e5);
+        }
+        EXPECT_EQ(rate, s.phase == Phase::Fast ? 0.05 : finished ? 0.1 : 0.01) << s.windows;
+    }));
+    EXPECT_TRUE(finished);
+    JammingProtocol paper(smallRun(7));
+    ASSERT_TRUE(paper.run([](const ProtocolStatus&) {}));
+    EXPECT_LT(protocol.status().collisions, paper.status().collisions);
+    EXPECT_GE(protocol.status().reducedPressure, 1e7);
+    const Packing out = protocol.checkpoint();
+    EXPECT_EQ(std::get<double>(out.provenance.at("pressure_finish")), 1e5);
+    EXPECT_EQ(std::get<double>(out.provenance.at("finish_speed")), 10.0);
+    EXPECT_EQ(paper.checkpoint().provenance.count("pressure_finish"), 0u);
+    EXPECT_EQ(paper.checkpoint().provenance.count("finish_speed"), 0u);
+    JammingProtocol resumed = resumedThroughAFile(out, "sbgen-test-finish.h5");
+    EXPECT_EQ(resumed.parameters().pressureFinish, 1e5);
+    EXPECT_EQ(resumed.parameters().finishSpeed, 10.0);
+
+    // A run of the paper's protocol stopped at 1e5 and continued with the finish from there.
+    ProtocolParameters early = smallRun(7);
+    early.pressureFinal = 1e5;
+    JammingProtocol first(early);
+    ASSERT_TRUE(first.run([](const ProtocolStatus&) {}));
+    JammingProtocol more(first.checkpoint(), "memory");
+    more.setPressureFinal(1e7);
+    EXPECT_THROW(more.setFinish(1e8, 10.0), ProtocolParameterError); // past the final pressure
+    more.setFinish(1e5, 10.0);
+    ASSERT_TRUE(more.run([](const ProtocolStatus&) {}));
+    EXPECT_EQ(std::get<double>(more.checkpoint().resumeState.at("growth_rate")), 0.1);
+    EXPECT_LT(more.status().collisions, paper.status().collisions);
+}
+
+// The expected cost counts the finish's decades at its own rate.
+TEST(JammingProtocol, TheExpectedCostOfAFinishCountsItsDecadesAtItsRate) {
+    ProtocolParameters paper, finish;
+    finish.pressureFinish = 1e8; // 2 of the 6 slow decades at the slow rate, 4 at 100 times it
+    finish.finishSpeed = 100.0;
+    ProtocolParameters fastOnly = paper;
+    fastOnly.pressureFinal = std::nextafter(paper.pressureSwitch, INFINITY);
+    const double fast = expectedCost(fastOnly).collisions;
+    const double slow = expectedCost(paper).collisions - fast;
+    EXPECT_NEAR(expectedCost(finish).collisions - fast, slow * (2.0 + 4.0 / 100.0) / 6.0,
+                1e-9 * slow);
 }
 
 // A checkpoint whose engine state was tampered with is refused, naming it (issue 20, defect 7).
