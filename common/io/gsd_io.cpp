@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <fstream>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -294,6 +295,9 @@ void writeGsd(const Packing& packing, const fs::path& file) {
     validatePacking(packing, file.string());
     AtomicOutput output(file);
     const std::string temporary = output.temporaryPath().string();
+    // Made here first, so that it gets the permissions of every other sbpack output (0666 less
+    // the umask); gsd would create it 0660 (group-writable, not readable by others).
+    std::ofstream(output.temporaryPath()).close();
     gsd_handle handle{};
     check(gsd_create_and_open(&handle, temporary.c_str(), "sbpack", "hoomd", gsd_make_version(1, 4),
                               GSD_OPEN_APPEND, 0),

@@ -69,6 +69,16 @@ TEST(GsdIo, SbpacksFileRoundTripsBitForBit) {
     }
 }
 
+TEST(GsdIo, TheFileHasThePermissionsOfEveryOtherOutput) {
+    // The reference library creates its files 0660; an sbpack GSD is made as the text format
+    // is (0666 less the umask), so that others may read it where they may read the rest.
+    const Packing packing = superballs(1.5);
+    writeGsd(packing, scratch("mode.gsd"));
+    writePackingFile(packing, scratch("mode.txt"));
+    EXPECT_EQ(fs::status(scratch("mode.gsd")).permissions(),
+              fs::status(scratch("mode.txt")).permissions());
+}
+
 TEST(GsdIo, TheSchemasChunksAreThePackingInSinglePrecision) {
     const Packing packing = superballs(10.0);
     const fs::path file = scratch("schema.gsd");
