@@ -29,7 +29,17 @@ expect "is not a regular file" "$sbanalyze" fifo.h5 --json -
 expect "is not a regular file" "$sbanalyze" convert fifo.h5 out.txt
 expect "is not a regular file" "$sbgen" --resume fifo.h5 --out x.h5
 # Special outputs: refused, left as they were.
-expect "not a regular file" "$sbanalyze" good.h5 --compute contacts --json fifo.h5
+# The JSON summary is written into a FIFO (or device) in place, at once refused where no process
+# reads the FIFO (never a wait), and read whole where one does (issue 66 item 6).
+expect "a FIFO that no process is reading" "$sbanalyze" good.h5 --compute contacts --json fifo.h5
+cat fifo.h5 > from-fifo.json & reader=$!
+sleep 0.5 # the reader has the FIFO open before sbanalyze writes (a second at least before it does)
+if ! timeout 20 "$sbanalyze" good.h5 --compute contacts --json fifo.h5 >/dev/null 2>&1; then
+    echo "FAIL: --json into a read FIFO"; failures=$((failures + 1))
+    kill "$reader" 2>/dev/null # still waiting for a writer
+fi
+wait "$reader"
+grep -q '"z_mean"' from-fifo.json || { echo "FAIL: the FIFO's JSON: $(head -c 200 from-fifo.json)"; failures=$((failures + 1)); }
 expect "not a regular file" "$sbanalyze" convert good.h5 fifo.h5
 expect "not a regular file" "$sbgen" --n 10 --out fifo.h5
 [[ -p fifo.h5 ]] || { echo "FAIL: the FIFO was replaced"; failures=$((failures + 1)); }

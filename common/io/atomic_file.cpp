@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
-#include <fstream>
 #include <string>
 #include <string_view>
 #include <sys/file.h>
@@ -142,11 +141,25 @@ bool isStreamDevice(const fs::path& file) {
 }
 
 void writeToStreamDevice(const fs::path& file, std::string_view text) {
-    std::ofstream out(file, std::ios::binary);
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.flush();
-    if (!out)
-        throw OutputPathError("cannot write '" + file.string() + "': " + std::strerror(errno));
+    // Non-blocking open: a FIFO that no process reads fails at once (ENXIO) instead of waiting
+    // for a reader that may never come; the writes then block as usual.
+    const int fd = ::open(file.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC);
+    if (fd < 0)
+        throw OutputPathError("cannot write '" + file.string() + "': " +
+                              (errno == ENXIO ? std::string("a FIFO that no process is reading")
+                                              : std::string(std::strerror(errno))));
+    const bool blocking = ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK) == 0;
+    std::size_t done = 0;
+    while (blocking && done < text.size()) {
+        const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        done += static_cast<std::size_t>(n);
+    }
+    const int error = done == text.size() ? 0 : errno;
+    ::close(fd);
+    if (error != 0 || done != text.size())
+        throw OutputPathError("cannot write '" + file.string() + "': " + std::strerror(error));
 }
 
 void checkNotInput(const fs::path& output, const fs::path& input, const std::string& what) {

@@ -27,7 +27,8 @@ void checkWritable(const std::filesystem::path& file);
 bool isStreamDevice(const std::filesystem::path& file);
 
 /// Writes `text` to the stream device `file` in place (isStreamDevice); OutputPathError naming
-/// it where the open or the write fails.
+/// it where the open or the write fails, at once for a FIFO that no process reads (never a
+/// wait for a reader).
 void writeToStreamDevice(const std::filesystem::path& file, std::string_view text);
 
 /// Throws OutputPathError when `output` names the same file as `input` (by device and inode,

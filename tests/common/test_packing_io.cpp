@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -23,7 +24,6 @@
 #include <string>
 #include <sys/stat.h>
 #include <sys/wait.h>
-#include <thread>
 #include <unistd.h>
 
 namespace sbpack {
@@ -925,14 +925,18 @@ TEST_F(AtomicOutputTest, StreamDevicesAreWrittenInPlace) { // issue 66 item 6: -
     EXPECT_NO_THROW(writeToStreamDevice("/dev/null", "{\"phi\": 0.64}"));
     ASSERT_EQ(::mkfifo(file("pipe.json").c_str(), 0600), 0);
     EXPECT_TRUE(isStreamDevice(file("pipe.json")));
-    std::string received;
-    std::thread reader([&] {
-        std::ifstream in(file("pipe.json"));
-        std::getline(in, received);
-    });
+    // No process reads it: refused at once, not a wait for a reader.
+    expectError<OutputPathError>([&] { writeToStreamDevice(file("pipe.json"), "{}"); },
+                                 {"pipe.json", "a FIFO that no process is reading"});
+    const int reader = ::open(file("pipe.json").c_str(), O_RDONLY | O_NONBLOCK);
+    ASSERT_GE(reader, 0);
     writeToStreamDevice(file("pipe.json"), "{\"phi\": 0.64}\n");
-    reader.join();
-    EXPECT_EQ(received, "{\"phi\": 0.64}");
+    std::string received(64, '\0');
+    const ssize_t n = ::read(reader, received.data(), received.size());
+    ::close(reader);
+    ASSERT_GT(n, 0);
+    received.resize(static_cast<std::size_t>(n));
+    EXPECT_EQ(received, "{\"phi\": 0.64}\n");
     expectError<OutputPathError>([&] { writeToStreamDevice(file("missing") / "pipe.json", "{}"); },
                                  {"pipe.json"});
 }
