@@ -7,13 +7,16 @@
 # included), so the table compares whole runs. bench/finish_schedule_summary.py then compares
 # each finish with the default run of the same seed: phi, Z, phi_R, the particles whose contact
 # count or rattler status differs, the largest displacement between the two packings, and the
-# CPU time. Packings already made are kept; jobs run two at a time.
-#   bench/finish_schedule.sh [BUILD] [WORK] [N] [P_LIST] [SEEDS] [P_STARS] [SPEEDS]
-#   defaults: build /tmp/sbpack-finish 1000 "1 1.5" "1 2" "1e8 1e10" "10 100"
+# CPU time. With REFINE (a pressure), each finish is also made returning to the slow rate at
+# REFINE (the finish to REFINE, then --resume --finish-speed 1 to 1e12; named ...-xX-slow-REFINE).
+# Packings already made are kept; jobs run two at a time.
+#   bench/finish_schedule.sh [BUILD] [WORK] [N] [P_LIST] [SEEDS] [P_STARS] [SPEEDS] [REFINE]
+#   defaults: build /tmp/sbpack-finish 1000 "1 1.5" "1 2" "1e8 1e10" "10 100" (no REFINE)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${1:-$root/build} work=${2:-/tmp/sbpack-finish} n=${3:-1000}
 plist=${4:-"1 1.5"} seeds=${5:-"1 2"} stars=${6:-"1e8 1e10"} speeds=${7:-"10 100"}
+refine=${8:-}
 sbgen=$build/generator/sbgen
 mkdir -p "$work"
 export SBGEN=$sbgen WORK=$work N=$n STARS=$stars
@@ -49,5 +52,24 @@ done | xargs -r -P 2 -L 1 bash -c '
     out=$WORK/p$0-s$1-finish-$2-x$3.h5
     "$SBGEN" --resume "$WORK/p$0-s$1-default-$2.h5" --pressure-final 1e12 --pressure-finish "$2" \
         --finish-speed "$3" --quiet --out "$out" 2> "$out.log" || [ $? -eq 3 ]'
+summary_speeds=$speeds
+if [ -n "$refine" ]; then
+    for p in $plist; do
+        for s in $seeds; do
+            for star in $stars; do
+                for x in $speeds; do
+                    [ -f "$work/p$p-s$s-finish-$star-x$x-slow-$refine.h5" ] || echo "$p $s $star $x"
+                done
+            done
+        done
+    done | REFINE=$refine xargs -r -P 2 -L 1 bash -c '
+        part=$WORK/p$0-s$1-finish-$2-x$3-to-$REFINE.h5 out=$WORK/p$0-s$1-finish-$2-x$3-slow-$REFINE.h5
+        "$SBGEN" --resume "$WORK/p$0-s$1-default-$2.h5" --pressure-final "$REFINE" \
+            --pressure-finish "$2" --finish-speed "$3" --quiet --out "$part" 2> "$part.log" ||
+            [ $? -eq 3 ]
+        "$SBGEN" --resume "$part" --pressure-final 1e12 --finish-speed 1 --quiet --out "$out" \
+            2> "$out.log" || [ $? -eq 3 ]'
+    for x in $speeds; do summary_speeds="$summary_speeds $x-slow-$refine"; done
+fi
 PYTHONPATH=$build/python /usr/bin/python3 "$root/bench/finish_schedule_summary.py" "$work" \
-    "$plist" "$seeds" "$stars" "$speeds"
+    "$plist" "$seeds" "$stars" "$summary_speeds"

@@ -86,6 +86,18 @@ class GeneratorCommandLine {
                 help)
             ->type_name(placeholder);
     }
+    /// A number that a resumed run may change: kept as given (`given`, applied to the resumed
+    /// protocol) and as the new run's parameter (`parameter`).
+    void resumable(const char* name, const char* placeholder, std::optional<double>& given,
+                   double& parameter, const char* help) {
+        app_.add_option_function<std::string>(
+                name,
+                [name, &given, &parameter](const std::string& v) {
+                    given = parameter = parseNumber(name, v);
+                },
+                help)
+            ->type_name(placeholder);
+    }
     void addProtocolOptions();
     void addFileOptions();
 
@@ -147,41 +159,21 @@ void GeneratorCommandLine::addProtocolOptions() {
 
 void GeneratorCommandLine::addFileOptions() {
     GeneratorOptions& o = options_;
-    app_.add_option_function<std::string>(
-            "--pressure-final",
-            [&o](const std::string& v) {
-                o.pressureFinal = o.protocol.pressureFinal = parseNumber("--pressure-final", v);
-            },
-            "reduced pressure at which the packing is jammed (default 1e12); --resume\n"
-            "accepts it")
-        ->type_name("P");
-    app_.add_option_function<std::string>(
-            "--cost-limit",
-            [&o](const std::string& v) {
-                o.costLimit = o.protocol.costLimit = parseNumber("--cost-limit", v);
-            },
-            "stop, written as not jammed (exit 3), after K times the expected collisions\n"
-            "(the cost sbgen expects from measured runs, docs/design.md §3; default 40,\n"
-            "2.6 times the most a run that jammed took; 0: no limit); --resume accepts it,\n"
-            "so a run stopped there goes on with a larger K")
-        ->type_name("K");
-    app_.add_option_function<std::string>(
-            "--pressure-finish",
-            [&o](const std::string& v) {
-                o.pressureFinish = o.protocol.pressureFinish = parseNumber("--pressure-finish", v);
-            },
-            "from this reduced pressure on, grow --finish-speed times faster than the slow\n"
-            "rate (default 0: no finish, the paper's protocol; docs/design.md §3,\n"
-            "\"Finish\"); --resume accepts it")
-        ->type_name("P");
-    app_.add_option_function<std::string>(
-            "--finish-speed",
-            [&o](const std::string& v) {
-                o.finishSpeed = o.protocol.finishSpeed = parseNumber("--finish-speed", v);
-            },
-            "the finish's rate over the slow rate, in [1, 1000] (default 1); --resume\n"
-            "accepts it")
-        ->type_name("X");
+    resumable("--pressure-final", "P", o.pressureFinal, o.protocol.pressureFinal,
+              "reduced pressure at which the packing is jammed (default 1e12); --resume\n"
+              "accepts it");
+    resumable("--cost-limit", "K", o.costLimit, o.protocol.costLimit,
+              "stop, written as not jammed (exit 3), after K times the expected collisions\n"
+              "(the cost sbgen expects from measured runs, docs/design.md §3; default 40,\n"
+              "2.6 times the most a run that jammed took; 0: no limit); --resume accepts it,\n"
+              "so a run stopped there goes on with a larger K");
+    resumable("--pressure-finish", "P", o.pressureFinish, o.protocol.pressureFinish,
+              "from this reduced pressure on, grow --finish-speed times faster than the slow\n"
+              "rate (default 0: no finish, the paper's protocol; docs/design.md §3,\n"
+              "\"Finish\"); --resume accepts it");
+    resumable("--finish-speed", "X", o.finishSpeed, o.protocol.finishSpeed,
+              "the finish's rate over the slow rate, in [1, 1000] (default 1); --resume\n"
+              "accepts it");
     app_.add_option_function<std::string>(
             "--out", [&o](const std::string& v) { o.out = v; },
             "the packing (sbpack.packing format: docs/design.md §4), written atomically")
