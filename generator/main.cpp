@@ -49,38 +49,28 @@ std::filesystem::path interruptCheckpointPath(const sbpack::GeneratorOptions& o)
     return path.replace_extension(".checkpoint.h5");
 }
 
-/// A resumed run's new finish (--pressure-finish, --finish-speed), its refusal named by option.
-void resumeFinish(sbpack::JammingProtocol& protocol, double pressure, double speed) {
+/// A resumed run's changes (--pressure-final, --cost-limit, --pressure-finish, --finish-speed),
+/// each refusal named by its option.
+void applyResumeOptions(sbpack::JammingProtocol& protocol, const sbpack::GeneratorOptions& o) {
     try {
-        protocol.setFinish(pressure, speed);
+        if (o.pressureFinal) protocol.setPressureFinal(*o.pressureFinal);
+        if (o.costLimit) protocol.setCostLimit(*o.costLimit);
+        if (o.pressureFinish || o.finishSpeed)
+            protocol.setFinish(o.pressureFinish.value_or(protocol.parameters().pressureFinish),
+                               o.finishSpeed.value_or(protocol.parameters().finishSpeed));
     } catch (const sbpack::ProtocolParameterError& e) {
-        throw std::invalid_argument(
-            std::string("option ") +
-            (e.parameter() == "finish_speed" ? "--finish-speed" : "--pressure-finish") + ": " +
-            e.problem());
+        throw sbpack::optionError(e);
     }
 }
 
-/// The protocol of the options, or of the file resumed (with a new --pressure-final or
-/// --cost-limit); its warnings printed.
+/// The protocol of the options, or of the file resumed (with the changes a resume may make);
+/// its warnings printed.
 sbpack::JammingProtocol startProtocol(const sbpack::GeneratorOptions& o,
                                       const sbpack::PlacementWatch& placed) {
     sbpack::JammingProtocol protocol =
         o.resume ? sbpack::JammingProtocol(sbpack::readPacking(*o.resume), o.resume->string())
                  : sbpack::JammingProtocol(o.protocol, placed);
-    try {
-        if (o.resume && o.pressureFinal) protocol.setPressureFinal(*o.pressureFinal);
-    } catch (const sbpack::ProtocolParameterError& e) {
-        throw std::invalid_argument("option --pressure-final: " + e.problem());
-    }
-    try {
-        if (o.resume && o.costLimit) protocol.setCostLimit(*o.costLimit);
-    } catch (const sbpack::ProtocolParameterError& e) {
-        throw std::invalid_argument("option --cost-limit: " + e.problem());
-    }
-    if (o.resume && (o.pressureFinish || o.finishSpeed))
-        resumeFinish(protocol, o.pressureFinish.value_or(protocol.parameters().pressureFinish),
-                     o.finishSpeed.value_or(protocol.parameters().finishSpeed));
+    if (o.resume) applyResumeOptions(protocol, o);
     for (const std::string& warning : sbpack::protocolWarnings(protocol.parameters()))
         std::cerr << "sbgen: warning: " << warning << '\n';
     return protocol;

@@ -19,8 +19,8 @@ double zeta2Interpolation(double p, double phi);
 double formationFactor(double phi, double zeta2);
 
 struct TransportParameters {
-    /// D of the diffusing species (length^2 / time) for tau and T1; the scaled forms tau D_diff /
-    /// w^2 and T1 D_diff / w^2 do not depend on it.
+    /// D_diff of the diffusing species (length^2 / time) for tau and T1; the scaled forms tau
+    /// D_diff / w^2 and T1 D_diff / w^2 do not depend on it.
     double diffusionCoefficient = 1.0;
 };
 
@@ -28,15 +28,16 @@ struct TransportParameters {
 struct TransportResult {
     TransportParameters parameters;
     double p = 0.0;
-    double phi = 0.0;              ///< packing fraction N v1 / L^3 (solid fraction)
-    double meanWidth = 0.0;        ///< w
-    double meanPoreSize = 0.0;     ///< <delta> of the pore-size result used
-    double secondMoment = 0.0;     ///< <delta^2>
-    double zeta2 = 0.0;            ///< Sec. V A interpolation
-    double formationFactor = 0.0;  ///< Eq. 18
-    double permeability = 0.0;     ///< k ~ <delta^2> / F (Eq. 17), length^2
-    double meanSurvivalTime = 0.0; ///< tau <= <delta>^2 / D (Eq. 19, kappa -> inf), an upper bound
-    double principalRelaxationTime = 0.0; ///< T1 <= <delta^2> / D (Eq. 20, kappa -> inf)
+    double phi = 0.0;             ///< packing fraction N v1 / L^3 (solid fraction)
+    double meanWidth = 0.0;       ///< w
+    double meanPoreSize = 0.0;    ///< <delta> of the pore-size result used
+    double secondMoment = 0.0;    ///< <delta^2>
+    double zeta2 = 0.0;           ///< Sec. V A interpolation
+    double formationFactor = 0.0; ///< Eq. 18
+    double permeability = 0.0;    ///< k ~ <delta^2> / F (Eq. 17), length^2
+    double meanSurvivalTime =
+        0.0; ///< tau <= <delta>^2 / D_diff (Eq. 19, kappa -> inf), an upper bound
+    double principalRelaxationTime = 0.0; ///< T1 <= <delta^2> / D_diff (Eq. 20, kappa -> inf)
     double runtimeSeconds = 0.0;
 
     double permeabilityOverWidth2() const { return permeability / (meanWidth * meanWidth); }

@@ -200,26 +200,10 @@ void GeneratorCommandLine::addFileOptions() {
 
 /// The protocol's validation, its parameters named by their options.
 void validateAsOptions(const ProtocolParameters& protocol) {
-    static const std::map<std::string, std::string> kOption = {
-        {"n_particles", "--n"},
-        {"p", "--p"},
-        {"phi_init", "--phi-init"},
-        {"gamma_fast", "--gamma-fast"},
-        {"gamma_slow", "--gamma-slow"},
-        {"speed", "--speed"},
-        {"pressure_switch", "--pressure-switch"},
-        {"pressure_final", "--pressure-final"},
-        {"collisions_per_window", "--window"},
-        {"cost_limit", "--cost-limit"},
-        {"pressure_finish", "--pressure-finish"},
-        {"finish_speed", "--finish-speed"},
-        {"force_windows", "--force-windows"}};
     try {
         protocol.validate();
     } catch (const ProtocolParameterError& e) {
-        const auto it = kOption.find(e.parameter());
-        throw std::invalid_argument("option " + (it == kOption.end() ? e.parameter() : it->second) +
-                                    ": " + e.problem());
+        throw optionError(e);
     }
 }
 
@@ -251,6 +235,26 @@ void finish(GeneratorOptions& o, const std::set<std::string>& protocolOptions) {
 std::string generatorUsage() {
     GeneratorCommandLine commandLine;
     return commandLine.app().help();
+}
+
+std::invalid_argument optionError(const ProtocolParameterError& e) {
+    static const std::map<std::string, std::string> kOption = {
+        {"n_particles", "--n"},
+        {"p", "--p"},
+        {"phi_init", "--phi-init"},
+        {"gamma_fast", "--gamma-fast"},
+        {"gamma_slow", "--gamma-slow"},
+        {"speed", "--speed"},
+        {"pressure_switch", "--pressure-switch"},
+        {"pressure_final", "--pressure-final"},
+        {"collisions_per_window", "--window"},
+        {"cost_limit", "--cost-limit"},
+        {"pressure_finish", "--pressure-finish"},
+        {"finish_speed", "--finish-speed"},
+        {"force_windows", "--force-windows"}};
+    const auto it = kOption.find(e.parameter());
+    return std::invalid_argument("option " + (it == kOption.end() ? e.parameter() : it->second) +
+                                 ": " + e.problem());
 }
 
 GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args) {

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,10 @@ struct GeneratorOptions {
 
 /// The --help text.
 std::string generatorUsage();
+
+/// A protocol parameter's refusal as its option's: "option --pressure-final: must be ..." (the
+/// parameter's own name where no option sets it).
+std::invalid_argument optionError(const ProtocolParameterError& e);
 
 /// Throws std::invalid_argument naming the option and the problem.
 GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args);

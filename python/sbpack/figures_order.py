@@ -82,14 +82,6 @@ def series_text(s):
     return head + "".join("\n" + line for line in lines if line)
 
 
-def name_clipped(ax, s, x, height, y, k):
-    """Names a peak of the series clipped at the axes' top where it is: its height, in the
-    series' colour, at abscissa x, the k-th such name of the axes stacked below axes height y
-    (issue 66 item 5: the height in the panel that clips it, not in another's legend)."""
-    ax.annotate(f"{height:.3g}", xy=(x, y - 0.07 * k), xycoords=ax.get_xaxis_transform(),
-                xytext=(3, 0), textcoords="offset points", ha="left", va="top", fontsize=7,
-                color=s.style["color"], clip_on=True)
-
 def g2_top(part):
     """The g2 axis's top: G2_TOP, or higher where the structure beyond a cutoff (the second
     shell and on) reaches it; the main peaks above it are clipped."""
@@ -144,9 +136,8 @@ def q6_bins():
 
 def draw_q6(ax, s, top):
     """The density of the series' local q6 (pooled over an ensemble's members) as steps, cut at
-    `top` (the strip of the means starts there), its
-    mean local q6 marked in the strip of the means (MEAN_STRIP); (q6, density) of its highest
-    bin, or None."""
+    `top` (the strip of the means starts there), its mean local q6 marked in the strip of the
+    means (MEAN_STRIP); (q6, density) of its highest bin, or None."""
     values = q6_values(s)
     if values is None or not len(values):
         return None
@@ -203,7 +194,7 @@ def order(series):
                            label=r"$1 \pm$ ideal-gas error per bin")
         g2_ax.plot([], [], ":", color="0.3", lw=1.1, label=r"cutoff $r_c$: first minimum")
         peaks = [(s, draw_g2(g2_ax, s, top)) for s in part]
-        name_peaks(g2_ax, [(s, x, y) for s, (x, y) in peaks if y > top], 0.98)
+        name_peaks(g2_ax, [(s, *h) for s, h in peaks if h[1] > top], 0.98)
         g2_ax.set(xlim=(0.0, None), ylim=(0.0, top), xlabel=r"$r/\bar w$",
                   ylabel=r"$g_2(r)$", title=f"Pair correlation, {side}")
         if with_q6:
@@ -215,9 +206,13 @@ def order(series):
 
 
 def name_peaks(ax, clipped, y):
-    """Names each clipped (series, x, height) at its x below axes height y, stacked."""
+    """Names each peak clipped at the axes' top where it is: (series, x, height) its height, in
+    the series' colour, at abscissa x, the names stacked down from axes height y (issue 66 item
+    5: the height in the panel that clips it, not in another's legend)."""
     for k, (s, x, height) in enumerate(clipped):
-        name_clipped(ax, s, x, height, y, k)
+        ax.annotate(f"{height:.3g}", xy=(x, y - 0.07 * k), xycoords=ax.get_xaxis_transform(),
+                    xytext=(3, 0), textcoords="offset points", ha="left", va="top", fontsize=7,
+                    color=s.style["color"], clip_on=True)
 
 
 def q6_part(ax, part, side):
@@ -226,7 +221,7 @@ def q6_part(ax, part, side):
     highest = [(s, draw_q6(ax, s, top)) for s in part]
     ax.set(xlim=q6_range(part), ylim=(0.0, top / MEAN_STRIP), xlabel=r"local $q_6$",
            ylabel="probability density", title=f"Local $q_6$, {side}")
-    name_peaks(ax, [(s, x, y) for s, h in highest if h is not None for x, y in [h] if y > top],
+    name_peaks(ax, [(s, *h) for s, h in highest if h is not None and h[1] > top],
                MEAN_STRIP - 0.02)
     q6_references(ax)
 

@@ -166,14 +166,15 @@ def drawn_points(ax, spacing=1.5):
     paths = [line.get_transform().transform(line.get_xydata()) for line in ax.lines
              if len(line.get_xydata()) >= 2]
     paths += [p.get_transform().transform(p.get_path().vertices) for p in ax.patches]
-    points = []
+    points = [np.empty((0, 2))]
     for xy in paths:
         xy = xy[np.all(np.isfinite(xy), axis=1)]
-        for a, b in zip(xy[:-1], xy[1:]):
-            n = int(min(np.hypot(*(b - a)) / spacing, 4000)) + 1
-            t = np.linspace(0.0, 1.0, n, endpoint=False)[:, None]
-            points.append(a * (1 - t) + b * t)
-    return np.concatenate(points) if points else np.empty((0, 2))
+        step = np.diff(xy, axis=0)  # each segment sampled at n points, t = k / n, k < n
+        n = np.minimum(np.hypot(step[:, 0], step[:, 1]) / spacing, 4000).astype(int) + 1
+        segment = np.repeat(np.arange(len(step)), n)
+        t = (np.arange(n.sum()) - np.repeat(np.cumsum(n) - n, n)) / np.repeat(n, n)
+        points.append(xy[segment] + step[segment] * t[:, None])
+    return np.concatenate(points)
 
 
 def save(figures, out):
