@@ -40,29 +40,20 @@ chain() {
 export -f chain
 for p in $plist; do for s in $seeds; do echo "$p $s"; done; done |
     xargs -r -P 2 -L 1 bash -c 'chain "$0" "$1"'
-for p in $plist; do
-    for s in $seeds; do
-        for star in $stars; do
-            for x in $speeds; do
-                [ -f "$work/p$p-s$s-finish-$star-x$x.h5" ] || echo "$p $s $star $x"
-            done
-        done
-    done
-done | xargs -r -P 2 -L 1 bash -c '
+# "p seed P* X" of each finish whose output WORK/p<p>-s<seed>-finish-<P*>-x<X><SUFFIX>.h5 is missing.
+missing() {
+    local p s star x
+    for p in $plist; do for s in $seeds; do for star in $stars; do for x in $speeds; do
+        [ -f "$work/p$p-s$s-finish-$star-x$x$1.h5" ] || echo "$p $s $star $x"
+    done; done; done; done
+}
+missing "" | xargs -r -P 2 -L 1 bash -c '
     out=$WORK/p$0-s$1-finish-$2-x$3.h5
     "$SBGEN" --resume "$WORK/p$0-s$1-default-$2.h5" --pressure-final 1e12 --pressure-finish "$2" \
         --finish-speed "$3" --quiet --out "$out" 2> "$out.log" || [ $? -eq 3 ]'
 summary_speeds=$speeds
 if [ -n "$refine" ]; then
-    for p in $plist; do
-        for s in $seeds; do
-            for star in $stars; do
-                for x in $speeds; do
-                    [ -f "$work/p$p-s$s-finish-$star-x$x-slow-$refine.h5" ] || echo "$p $s $star $x"
-                done
-            done
-        done
-    done | REFINE=$refine xargs -r -P 2 -L 1 bash -c '
+    missing "-slow-$refine" | REFINE=$refine xargs -r -P 2 -L 1 bash -c '
         part=$WORK/p$0-s$1-finish-$2-x$3-to-$REFINE.h5 out=$WORK/p$0-s$1-finish-$2-x$3-slow-$REFINE.h5
         "$SBGEN" --resume "$WORK/p$0-s$1-default-$2.h5" --pressure-final "$REFINE" \
             --pressure-finish "$2" --finish-speed "$3" --quiet --out "$part" 2> "$part.log" ||
