@@ -20,7 +20,13 @@ category reached, those left undecided, whether every contact opens (no self-str
 alternative), the backbone, its contacts and the Maxwell deficit (the floppy modes where every
 contact opens).
 
-usage: reproduction_table.py RESULTS.h5 REFERENCE.csv"""
+Table 1 holds the ensembles whose p the paper tabulates; the others (issue 68, "Beyond the
+paper's range") go to Table 1b: phi, Z and phi_R with the acceptance's checks (overlapping pairs
+by sbanalyze's own exact signed distance, jammed by sbgen's check, ordered by sbanalyze's
+verdict), the CPU time per packing, and, where SECOND.csv (data/jst2010-reference-values.csv)
+states a value for that p, Jiao, Stillinger & Torquato 2010's Z and P4 beside ours.
+
+usage: reproduction_table.py RESULTS.h5 REFERENCE.csv [SECOND.csv]"""
 import csv
 import math
 import os
@@ -52,16 +58,22 @@ def attr(group, name, key):
     return float(a.get(key, math.nan)), float(a.get(key + "_std", math.nan))
 
 
-def cpu_seconds(results, group):
-    """sbgen's CPU seconds of the ensemble's packings that can still be read: (mean, max)."""
-    times = []
+def provenance_values(results, group, key):
+    """sbgen's provenance attribute key of the ensemble's packings that can still be read."""
+    values = []
     for member in group["members"][:]:
         path = results["files"][str(member)].attrs["input"]
         path = path.decode() if isinstance(path, bytes) else path
         if os.path.exists(path):
             with h5py.File(path) as f:
-                if "provenance" in f and "cpu_time_s" in f["provenance"].attrs:
-                    times.append(float(f["provenance"].attrs["cpu_time_s"]))
+                if "provenance" in f and key in f["provenance"].attrs:
+                    values.append(float(f["provenance"].attrs[key]))
+    return values
+
+
+def cpu_seconds(results, group):
+    """sbgen's CPU seconds of the ensemble's packings that can still be read: (mean, max)."""
+    times = provenance_values(results, group, "cpu_time_s")
     return (sum(times) / len(times), max(times)) if times else (math.nan, math.nan)
 
 
@@ -87,6 +99,59 @@ def structure_row(results, group, paper):
             f"{mark(ok_z)} | {pm((r, r_sd), 1, 2, n)} | {pr:.2f} +- {pr_sd:.2f} | {mark(ok_r)} | "
             f"{mark(ok_r_both)} | "
             f"{cpu_mean:.0f} / {cpu_max:.0f} |")
+
+
+def second_rows(path):
+    """Jiao, Stillinger & Torquato 2010's stated values: quantity -> (p_min, p_max, low, high)."""
+    if not path:
+        return {}
+    with open(path) as f:
+        rows = csv.DictReader(line for line in f if not line.startswith("#"))
+        return {r["quantity"]: tuple(float(r[k]) for k in ("p_min", "p_max", "low", "high"))
+                for r in rows}
+
+
+def second_value(second, quantity, p):
+    """'8.15' or '0.03-0.21' where the second reference states quantity at p, else '-'."""
+    if quantity not in second:
+        return "-"
+    p_min, p_max, low, high = second[quantity]
+    if not p_min <= p <= p_max:
+        return "-"
+    return f"{low:g}" if low == high else f"{low:g}-{high:g}"
+
+
+def member_sum(results, group, subgroup, key):
+    """The sum of files/<member>/subgroup's attribute key over the ensemble, or None."""
+    values = [results["files"][str(m)][subgroup].attrs[key] for m in group["members"][:]
+              if subgroup in results["files"][str(m)]]
+    return int(sum(values)) if values else None
+
+
+def median(values):
+    ordered = sorted(values)
+    middle = len(ordered) // 2
+    return (ordered[middle] if len(ordered) % 2 else
+            (ordered[middle - 1] + ordered[middle]) / 2) if ordered else math.nan
+
+
+def beyond_row(results, group, second):
+    n = int(group.attrs["n_files"])
+    p = float(group.attrs["p"])
+    overlaps = member_sum(results, group, "contacts", "overlapping_pairs")
+    jammed = provenance_values(results, group, "jammed")
+    ordered = (f"{ordered_count(results, group)} of {n}"
+               if any("order" in results["files"][str(m)] for m in group["members"][:]) else "-")
+    times = provenance_values(results, group, "cpu_time_s")
+    return (f"| {p:g} | {int(group.attrs['n_particles'])} | {n} | "
+            f"{pm((float(group.attrs['phi']), float(group.attrs['phi_std'])), 1, 4, n)} | "
+            f"{pm(attr(group, 'contacts', 'z_mean'), 1, 3, n)} | "
+            f"{second_value(second, 'Z', p)} | "
+            f"{pm(attr(group, 'contacts', 'rattler_fraction'), 100, 2, n)} | "
+            f"{pm(attr(group, 'order', 'P4'), 1, 3, n)} | {second_value(second, 'P4', p)} | "
+            f"{'-' if overlaps is None else overlaps} | "
+            f"{int(sum(jammed))} of {len(jammed)} | {ordered} | "
+            f"{median(times):.0f} / {max(times, default=math.nan):.0f} |")
 
 
 def width_over_axis(results, group):
@@ -274,6 +339,20 @@ JAMMING_NOTE = (
     "packings. The paper tests no category.")
 
 
+BEYOND_HEADER = ("p", "N", "n", "phi", "Z", "Z (JST 2010)", "phi_R %", "P4", "P4 (JST 2010)",
+                 "overlapping pairs", "jammed (sbgen)", "ordered", "sbgen CPU s (median / max)")
+BEYOND_NOTE = (
+    "Ensembles at p the paper does not tabulate (issue 68): mean +- sd over the packings; Z and "
+    "phi_R over the contact network at gaps < 1e-10 D, as for the paper's range; P4 the cubatic "
+    "order of the axes. Overlapping pairs: summed over the ensemble, by sbanalyze's exact signed "
+    "distance (independent of sbgen's predictor); jammed: sbgen's jam check, from each packing's "
+    "provenance; ordered: sbanalyze's verdict (docs/order-metrics.md). JST 2010: Jiao, "
+    "Stillinger & Torquato, PRE 81, 041304 (data/jst2010-reference-values.csv), the values its "
+    "text states for 0.85 <= p <= 3 (its phi and Z are curves only): Z's plateau 8.15 from "
+    "p = 1.4, and P4 between 0.03 and 0.21, growing with |p - 1|; a deforming box and fast "
+    "growth, N not stated.")
+
+
 def jamming_row(group):
     n = int(group.attrs["n_files"])
     p = float(group.attrs["p"])
@@ -317,12 +396,21 @@ def print_table(header, rows, note):
     print("\n" + note)
 
 
-def main(results_path, reference):
+def main(results_path, reference, second_path=None):
     paper = paper_rows(reference)
+    second = second_rows(second_path)
     with h5py.File(results_path) as results:
         groups = sorted(results["ensembles"].values(), key=lambda g: float(g.attrs["p"]))
-        print_table(STRUCTURE_HEADER, [structure_row(results, g, paper) for g in groups],
-                    STRUCTURE_NOTE)
+        tabulated = [round(float(g.attrs["p"]), 4) in paper for g in groups]
+        inside = [g for g, t in zip(groups, tabulated) if t]
+        beyond = [g for g, t in zip(groups, tabulated) if not t]
+        if inside:
+            print_table(STRUCTURE_HEADER, [structure_row(results, g, paper) for g in inside],
+                        STRUCTURE_NOTE)
+        if beyond:
+            print("\n" if inside else "", end="")
+            print_table(BEYOND_HEADER, [beyond_row(results, g, second) for g in beyond],
+                        BEYOND_NOTE)
         if any("order" in g for g in groups):
             print()
             print_table(ORDER_HEADER, [order_row(results, g) for g in groups], ORDER_NOTE)
@@ -344,6 +432,6 @@ def main(results_path, reference):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) != 3:
+    if len(sys.argv) not in (3, 4):
         sys.exit(__doc__)
     main(*sys.argv[1:])

@@ -2,7 +2,9 @@
 15, 17), with order results Q6, the mean local q6, T and P4 (docs/order-metrics.md; not in the
 paper), and phi against the mean width over the major axis (paper Fig. 6), each series' mean +-
 std (or its one input's value) coloured by p, marked by N, beside the paper's values
-(data/mst-reference-values.csv) where it tabulates them."""
+(data/mst-reference-values.csv) where it tabulates them, and the values that Jiao, Stillinger &
+Torquato 2010 state in their text (data/jst2010-reference-values.csv: Z's plateau, P4's range)
+over the p they state them for."""
 import csv
 import os
 
@@ -15,6 +17,10 @@ from .figures_series import pooled, scalar
 
 REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "mst-reference-values.csv")
 PAPER = "paper (Maher et al.)"
+SECOND_REFERENCE = os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "jst2010-reference-values.csv")
+SECOND = "Jiao et al. 2010 (text)"
+SECOND_QUANTITY = {"z_mean": "Z", "P4": "P4"}  # a results value -> its row in SECOND_REFERENCE
 
 # (results group, value, axis label, the paper's column (None: not tabulated, NO_TABLE says
 # why), its scale to the value's units)
@@ -59,6 +65,28 @@ def paper_values(path=REFERENCE):
         pairs = [(float(r["p"]), float(r[column])) for r in rows if r[column]]
         table[column] = tuple(np.array(v) for v in zip(*pairs))
     return table
+
+
+def second_values(path=SECOND_REFERENCE):
+    """Jiao et al. 2010's stated values: quantity -> (p_min, p_max, low, high)."""
+    with open(path) as f:
+        rows = csv.DictReader(line for line in f if not line.startswith("#"))
+        return {r["quantity"]: tuple(float(r[k]) for k in ("p_min", "p_max", "low", "high"))
+                for r in rows}
+
+
+def second_markers(ax, second, name):
+    """Jiao et al. 2010's value of results value name over its p range: a dashed line (one
+    value) or a hatched band (a range); returns the range's p ends, [] where none."""
+    if SECOND_QUANTITY.get(name) not in second:
+        return []
+    p_min, p_max, low, high = second[SECOND_QUANTITY[name]]
+    if low == high:
+        ax.plot([p_min, p_max], [low, low], "--", color="k", lw=1.2, label=SECOND, zorder=1.4)
+    else:
+        ax.fill_between([p_min, p_max], low, high, facecolor="none", edgecolor="0.5",
+                        hatch="///", lw=0.0, label=SECOND, zorder=0.5)
+    return [p_min, p_max]
 
 
 def points(series, group, name):
@@ -130,7 +158,7 @@ def versus_p(series):
     panels = panels_with_data(series) if several_p(series) else []
     if not panels:
         return None
-    paper = paper_values()
+    paper, second = paper_values(), second_values()
     rows, columns = (len(panels) + 3) // 4, min(4, len(panels))
     fig, axes = new_figure(columns, rows, width=3.9, height=3.3)
     for ax, (group, name, ylabel, column, scale) in zip(axes.ravel(), panels):
@@ -138,20 +166,26 @@ def versus_p(series):
             draw_points(ax, rows_n, label=n_label(rows_n, group, name))
             if group == "order":
                 mark_ordered(ax, rows_n)
-        ps = [s.p for s in series]
         if column is not None:
             paper_markers(ax, paper, column, scale)
-            ps += list(paper[column][0])
         else:
             ax.set_title(NO_TABLE_VALUE.get(name, NO_TABLE.get(group, "")), fontsize=8)
-        p_axis(ax, ps)
+        second_markers(ax, second, name)
         ax.set(xlabel=r"$p$", ylabel=ylabel)
+    ps = [s.p for s in series] + [p for panel in panels if panel[3] is not None
+                                  for p in paper[panel[3]][0]]
+    ps += [p for panel in panels if SECOND_QUANTITY.get(panel[1]) in second
+           for p in second[SECOND_QUANTITY[panel[1]]][:2]]
+    for ax in axes.ravel()[:len(panels)]:
+        p_axis(ax, ps)
     for ax in axes.ravel()[len(panels):]:
         ax.set_axis_off()
     note(fig, "Against the superball exponent p (every quantity dimensionless): points coloured "
               "by p as in the other figures, marked by N, error bars the ensemble's std (H: the "
               "standard error of its one fit through every input), grey lines joining three "
-              "points or more on one side of p = 1; squares: the paper (Maher et al.)"
+              "points or more on one side of p = 1; squares: the paper (Maher et al.); dashed line "
+              "and hatched band: the Z plateau and the P4 range Jiao, Stillinger & Torquato 2010 "
+              "state in their text for the p they span"
               + ("; the order metrics (cutoff bonds: shorter than the first minimum of g₂) are "
                  "not in the paper, and Q₆ and T depend on N (compare one N)"
                  if any(p[0] == "order" for p in panels) else ""))
@@ -169,12 +203,23 @@ def mark_ordered(ax, rows):
                         fontsize=7, color=s.style["color"])
 
 
+P_TICKS = (0.5, 0.6, 0.7, 0.8, 0.9, 1, 1.5, 2, 3, 5, 10, 20, 50, 100, 200, 500, 1000)
+
+
 def p_axis(ax, ps):
-    """A log p axis where p spans more than a factor 3, labelled in plain numbers."""
-    if max(ps) / min(ps) > 3.0:
+    """One p axis for every panel of a figure: over all of ps (the results' p and the references'
+    drawn), log where p spans more than a factor 3, labelled in plain numbers at P_TICKS."""
+    low, high = min(ps), max(ps)
+    if high / low > 3.0:
         ax.set_xscale("log")
+        ax.set_xlim(low / 1.08, high * 1.08)
+        ax.xaxis.set_major_locator(ticker.FixedLocator([t for t in P_TICKS if low <= t <= high]
+                                                       or [low, high]))
         ax.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
         ax.xaxis.set_minor_formatter(ticker.NullFormatter())
+    else:
+        margin = 0.05 * (high - low) or 0.05 * high
+        ax.set_xlim(low - margin, high + margin)
 
 
 def phi_vs_width(series):

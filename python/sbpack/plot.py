@@ -55,6 +55,7 @@ import sys
 import matplotlib
 
 matplotlib.use("Agg")
+import matplotlib.collections  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
@@ -131,18 +132,26 @@ def finish(fig):
     """Every axes' legend: inside, where one of up to LEGEND_INSIDE entries fits at a corner or
     side without covering data (place_inside), else beside the axes on the right, where it hides
     no data, the figure widened by LEGEND_WIDTH per such legend in a row (constrained layout
-    makes the room)."""
-    beside = {}
-    for ax in fig.axes:
-        entries = len(ax.get_legend_handles_labels()[0])
-        if not entries or (entries <= LEGEND_INSIDE and place_inside(fig, ax)):
-            continue
-        ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
-        spec = getattr(ax, "get_subplotspec", lambda: None)()
-        row = spec.rowspan.start if spec is not None else 0
-        beside[row] = beside.get(row, 0) + 1
-    if beside:
-        fig.set_figwidth(fig.get_figwidth() + LEGEND_WIDTH * max(beside.values()))
+    makes the room). Widening moves every axes, so the legends inside are placed again at the
+    final width until no more go beside."""
+    width, outside = fig.get_figwidth(), set()
+    while True:
+        beside = {}
+        for ax in fig.axes:
+            entries = len(ax.get_legend_handles_labels()[0])
+            if not entries or (ax not in outside and entries <= LEGEND_INSIDE
+                               and place_inside(fig, ax)):
+                continue
+            ax.legend(fontsize=6, loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                      borderaxespad=0.0)
+            outside.add(ax)
+            spec = getattr(ax, "get_subplotspec", lambda: None)()
+            row = spec.rowspan.start if spec is not None else 0
+            beside[row] = beside.get(row, 0) + 1
+        final = width + LEGEND_WIDTH * max(beside.values(), default=0)
+        if final == fig.get_figwidth():
+            return
+        fig.set_figwidth(final)
 
 
 def place_inside(fig, ax):
@@ -161,12 +170,20 @@ def place_inside(fig, ax):
 
 
 def drawn_points(ax, spacing=1.5):
-    """The axes' data lines and patch outlines as display points, every `spacing` pixels along
-    each segment between two vertices."""
+    """The axes' data as display points: lines, patch outlines and collections' paths (error
+    bars, bands) every `spacing` pixels along each segment between two vertices, and lone
+    markers and scattered points where they are drawn."""
     paths = [line.get_transform().transform(line.get_xydata()) for line in ax.lines
              if len(line.get_xydata()) >= 2]
     paths += [p.get_transform().transform(p.get_path().vertices) for p in ax.patches]
     points = [np.empty((0, 2))]
+    points += [line.get_transform().transform(line.get_xydata()) for line in ax.lines
+               if len(line.get_xydata()) == 1 and line.get_marker() not in (None, "", "None")]
+    for c in ax.collections:
+        if isinstance(c, matplotlib.collections.PathCollection):  # scatter: markers at offsets
+            points.append(c.get_offset_transform().transform(c.get_offsets()))
+        else:  # error bars (LineCollection), bands (fill_between's PolyCollection)
+            paths += [c.get_transform().transform(p.vertices) for p in c.get_paths()]
     for xy in paths:
         xy = xy[np.all(np.isfinite(xy), axis=1)]
         step = np.diff(xy, axis=0)  # each segment sampled at n points, t = k / n, k < n
