@@ -109,8 +109,9 @@ void CommandLine::addSubcommands() {
         "--jamming", infoJamming_,
         "also test the jamming categories (first order, and second where collective\n"
         "is undecided), as --compute jamming (docs/jamming.md), with the options below");
-    for (std::string_view name : {"jamming-categories", "jamming-tolerance", "jamming-max-step",
-                                  "jamming-contacts", "jamming-second-order", "jamming-relax"})
+    for (std::string_view name :
+         {"jamming-categories", "jamming-tolerance", "jamming-max-step", "jamming-contacts",
+          "jamming-unjam-distance", "jamming-second-order", "jamming-relax"})
         addOption(*info_, infoSettings_, findOption(name), defaults);
     info_->add_option(
         "FILE", infoFiles_,

@@ -40,6 +40,26 @@ std::pair<double, std::string> networkTolerance(const Packing& packing,
     return {contacts.tolerance, "--tolerance (no reduced pressure)"};
 }
 
+/// Donev et al. 2004's network for the finite-gap test (docs/jamming.md §4.1): the backbone of
+/// the jam check's network (its rattlers removed), with every pair of it within
+/// --jamming-tolerance (default kFiniteGapTolerance) and its gap.
+RigidityNetwork neighbourNetwork(const Packing& packing, const JammingSettings& settings,
+                                 const ContactParameters& contacts, PackingJamming& out) {
+    JammingSettings jamCheck = settings;
+    jamCheck.tolerance.reset();
+    const double held = networkTolerance(packing, jamCheck, contacts).first;
+    const ContactResult rattlers =
+        ContactNetwork({held, contacts.rattlerThreshold}).compute(packing);
+    out.tolerance = settings.tolerance.value_or(kFiniteGapTolerance);
+    out.toleranceFrom =
+        fmt::format("{}: every pair with its gap, the rattlers at {:g} D",
+                    settings.tolerance ? "--jamming-tolerance" : "Donev et al.'s", held);
+    ContactResult neighbours =
+        ContactNetwork({out.tolerance, contacts.rattlerThreshold, true}).compute(packing);
+    neighbours.rattler = rattlers.rattler;
+    return backboneNetwork(packing, neighbours);
+}
+
 } // namespace
 
 std::string_view jammingCategoryName(JammingCategory category) {
@@ -246,6 +266,8 @@ PackingJamming testJammingCategories(const Packing& packing, const JammingSettin
         out.relaxation = findJammingPoint(packing, settings.relaxation, observer.relaxing);
     if (out.relaxation && out.relaxation->found) {
         std::tie(backbone, forces) = relaxedNetwork(*out.relaxation, contacts, out);
+    } else if (settings.test.useGaps && settings.test.unjammingDistance > 0.0) {
+        backbone = neighbourNetwork(packing, settings, contacts, out);
     } else {
         std::tie(out.tolerance, out.toleranceFrom) = networkTolerance(packing, settings, contacts);
         const ContactResult network =

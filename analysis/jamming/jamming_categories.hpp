@@ -17,8 +17,13 @@
 
 namespace sbpack {
 
+/// The finite-gap test's network where --jamming-tolerance is not given: every pair within
+/// 0.25 D, the lower end of Donev et al. 2004's 0.25-0.5 D (docs/jamming.md §4.1).
+inline constexpr double kFiniteGapTolerance = 0.25;
+
 /// The jamming analysis's parameters (--jamming-categories, --jamming-tolerance,
-/// --jamming-max-step, --jamming-contacts), its defaults written here once.
+/// --jamming-max-step, --jamming-contacts, --jamming-unjam-distance), its defaults written here
+/// once.
 struct JammingSettings {
     /// The categories tested, in ascending order. All three by default: the analysis answers
     /// "which category?", and an opt-in analysis (not in --compute all) may take the minutes that
@@ -27,7 +32,7 @@ struct JammingSettings {
                                             JammingCategory::Strict};
     /// The network's contact tolerance in units of D; unset: the jam check's,
     /// max(1e-10, 100 / P) D at the file's reduced pressure P (docs/jamming.md §2), or the contact
-    /// analysis's --tolerance where the file has none.
+    /// analysis's --tolerance where the file has none; the finite-gap test's: kFiniteGapTolerance.
     std::optional<double> tolerance;
     /// maxStep (Delta, units of D) and useGaps (ideal contacts, as Donev et al. 2004, or gaps);
     /// their defaults are the jamming test's own (docs/jamming.md §3-4).

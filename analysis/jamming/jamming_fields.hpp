@@ -198,7 +198,7 @@ template <class T> Optional secondOrderValue(const R& r, T (*value)(const Second
     return Value(value(*r.secondOrder));
 }
 
-inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>, 27>{{
+inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>, 28>{{
     {{"verdict", A, S, "",
       "first-order verdict: jammed (no motion), unjammed (a particle certainly freed; for "
       "spheres any motion) or undecided (p != 1: only motions that curvature may block, for the "
@@ -283,6 +283,12 @@ inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>,
       "up to --jamming-max-step",
       Mean},
      member<&R::largestOpening>},
+    {{"largest_displacement", A, F, "D",
+      "the largest displacement of a particle (or of the box's images, eps L) by the opening "
+      "or the flex found; with --jamming-unjam-distance, the finite-gap test's measure "
+      "(docs/jamming.md §4.1)",
+      Mean},
+     member<&R::largestDisplacement>},
     {{"opens_every_contact", A, I, "1",
       "1 where the opening opens every contact: the rigidity matrix has full column rank, no "
       "self-stress exists and, by Gordan's alternative, the network is not jammed (the motions "

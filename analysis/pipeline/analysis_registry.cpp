@@ -55,9 +55,10 @@ constexpr std::array<Options, 5> kHyperuniformityOptions{
     "chi-exact-qmax", "fit-qmax", "alpha-window", "bootstrap", "spread-times"};
 // The network's rattlers by --rattler-threshold, and its tolerance --tolerance where the file
 // has no reduced pressure (docs/jamming.md §2).
-constexpr std::array<Options, 8> kJammingOptions{
-    "jamming-categories",   "jamming-tolerance", "jamming-max-step", "jamming-contacts",
-    "jamming-second-order", "jamming-relax",     "tolerance",        "rattler-threshold"};
+constexpr std::array<Options, 9> kJammingOptions{
+    "jamming-categories",     "jamming-tolerance",    "jamming-max-step", "jamming-contacts",
+    "jamming-unjam-distance", "jamming-second-order", "jamming-relax",    "tolerance",
+    "rattler-threshold"};
 
 // One row per analysis (docs/architecture.md, "Add an analysis"): its results groups are
 // declared beside its result, its stage in pipeline/stages/.

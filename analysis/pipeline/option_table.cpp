@@ -283,6 +283,15 @@ constexpr std::array kJammingRows{
             s.jamming.test.useGaps = isSecondOf(o, v, "ideal", "gaps");
         },
         [](const Settings& d) { return std::string(d.jamming.test.useGaps ? "gaps" : "ideal"); }},
+    OptionRow{"jamming-unjam-distance", "X",
+              "jamming: with --jamming-contacts gaps, a motion unjams only where it moves a\n"
+              "particle by more than X D: Donev et al. 2004's finite-gap test (about 1, with\n"
+              "--jamming-max-step 10 and --jamming-tolerance 0.25; docs/jamming.md §4.1);\n"
+              "default {}: any motion",
+              [](Settings& s, Text o, Text v) {
+                  s.jamming.test.unjammingDistance = parsePositive(o, v, true);
+              },
+              [](const Settings& d) { return number(d.jamming.test.unjammingDistance); }},
     OptionRow{"jamming-second-order", "on|off",
               "jamming: the second-order stress test where collective jamming is undecided at\n"
               "first order (default {}; about 80 s at N = 1000, p = 1.5; docs/jamming.md §6)",

@@ -108,11 +108,14 @@ std::string describeOverlaps(const ContactResult& contacts, double diameter) {
 }
 
 ContactNetwork::ContactNetwork(ContactParameters parameters) : parameters_(parameters) {
-    if (!(parameters_.tolerance >= 0.0 &&
-          parameters_.tolerance <= ContactParameters::kMaxTolerance))
-        throw std::invalid_argument(fmt::format(
-            "contact network: tolerance {:g} must be in [0, {:g}] (a gap in units of D)",
-            parameters_.tolerance, ContactParameters::kMaxTolerance));
+    const double largest = parameters_.neighbours ? ContactParameters::kMaxNeighbourTolerance
+                                                  : ContactParameters::kMaxTolerance;
+    if (!(parameters_.tolerance >= 0.0 && parameters_.tolerance <= largest))
+        throw std::invalid_argument(
+            fmt::format("contact network: tolerance {:g} must be in [0, {:g}] (a gap in units of "
+                        "D{})",
+                        parameters_.tolerance, largest,
+                        parameters_.neighbours ? "; the jamming finite-gap test's pairs" : ""));
     if (parameters_.rattlerThreshold < 1)
         throw std::invalid_argument("contact network: rattler threshold " +
                                     std::to_string(parameters_.rattlerThreshold) +

@@ -17,6 +17,11 @@ struct ContactParameters {
     static constexpr double kMaxTolerance = 0.1;
     /// Particles with fewer contacts than this among the non-rattlers are rattlers: d + 1 = 4.
     int rattlerThreshold = 4;
+    /// True: a network of potential contacts, every pair within tolerance D with its gap, up to
+    /// kMaxNeighbourTolerance (Donev et al. 2004's 0.25-0.5 D: the jamming finite-gap test,
+    /// docs/jamming.md §4.1); its Z and rattlers count all those pairs.
+    bool neighbours = false;
+    static constexpr double kMaxNeighbourTolerance = 0.5;
 };
 
 struct ContactResult {
@@ -47,8 +52,8 @@ std::string describeOverlaps(const ContactResult& contacts, double diameter);
 /// Compute object: validates its parameters at construction, compute() returns a result.
 class ContactNetwork {
   public:
-    /// Throws std::invalid_argument unless tolerance is in [0, kMaxTolerance] and
-    /// rattlerThreshold >= 1.
+    /// Throws std::invalid_argument unless tolerance is in [0, kMaxTolerance] (neighbours: [0,
+    /// kMaxNeighbourTolerance]) and rattlerThreshold >= 1.
     explicit ContactNetwork(ContactParameters parameters);
 
     /// Signed distances of all pairs whose centres are closer than 2 circumradius + tolerance D,

@@ -16,6 +16,18 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
+/// Donev et al. 2004's finite-gap test (JammingParameters::unjammingDistance).
+bool finiteGaps(const JammingParameters& parameters) {
+    return parameters.useGaps && parameters.unjammingDistance > 0.0;
+}
+
+/// A particle moves when by more than this (units of D): the motion tolerance, or in the
+/// finite-gap test the unjamming distance.
+double movingThreshold(const JammingParameters& parameters) {
+    return finiteGaps(parameters) ? parameters.unjammingDistance
+                                  : parameters.motionTolerance * parameters.maxStep;
+}
+
 /// The rows of a program (units of Delta, x = dq / Delta): A^T, and for Strict the trace
 /// eps_xx + eps_yy + eps_zz last.
 Eigen::SparseMatrix<double> constraintRows(const Eigen::SparseMatrix<double>& a,
@@ -74,14 +86,21 @@ void makeOpening(LinearProgram& program, const Eigen::SparseMatrix<double>& a,
     }
 }
 
-/// The flex program: maximise c . x for a random c, A^T x = 0.
-void makeFlex(LinearProgram& program, const Eigen::SparseMatrix<double>& a, std::uint64_t seed) {
-    Random random(seed);
+/// The flex program: maximise sign c . x for a random c, A^T x = 0; in the finite-gap test
+/// Donev et al.'s random load over the gaps' polytope, A^T x >= -g / Delta.
+void makeFlex(LinearProgram& program, const Eigen::SparseMatrix<double>& a,
+              const RigidityNetwork& network, JammingCategory category,
+              const JammingParameters& parameters, double sign) {
+    Random random(parameters.seed);
     program.objective.resize(a.rows());
     for (Eigen::Index k = 0; k < a.rows(); ++k)
-        program.objective[k] = 2.0 * random.uniform() - 1.0;
-    program.rowLower.head(a.cols()).setZero();
-    program.rowUpper.head(a.cols()).setZero();
+        program.objective[k] = sign * (2.0 * random.uniform() - 1.0);
+    for (int gap = 0; gap < a.cols(); ++gap) {
+        const bool load = finiteGaps(parameters);
+        program.rowLower[gap] =
+            load ? -network.contacts[contactOf(gap, category)].gap / parameters.maxStep : 0.0;
+        program.rowUpper[gap] = load ? kInfinity : 0.0;
+    }
 }
 
 /// eps from its components eps_xx, eps_yy, eps_zz, eps_yz, eps_xz, eps_xy.
@@ -97,7 +116,7 @@ UnjammingMotion motionOf(const Eigen::VectorXd& x, const Eigen::SparseMatrix<dou
                          const RigidityNetwork& network, const DegreesOfFreedom& dof,
                          const JammingParameters& parameters) {
     const Eigen::VectorXd dq = parameters.maxStep * x;
-    const double threshold = parameters.motionTolerance * parameters.maxStep;
+    const double threshold = movingThreshold(parameters);
     UnjammingMotion motion;
     motion.displacement.assign(network.packingSize, Vector3d::Zero());
     if (dof.rotations) motion.rotation.assign(network.packingSize, Vector3d::Zero());
@@ -116,11 +135,20 @@ UnjammingMotion motionOf(const Eigen::VectorXd& x, const Eigen::SparseMatrix<dou
     return motion;
 }
 
-/// Whether a flex moves a particle, or the box's images by eps L, by more than the tolerance.
+/// The largest displacement of a particle, or of the box's images (eps L), by a motion (D).
+double largestDisplacement(const UnjammingMotion& motion, const RigidityNetwork& network) {
+    double largest = motion.strain.cwiseAbs().maxCoeff() * network.boxLength;
+    for (const Vector3d& d : motion.displacement)
+        largest = std::max(largest, d.lpNorm<Eigen::Infinity>());
+    return largest;
+}
+
+/// Whether a motion moves a particle, or the box's images by eps L, by more than the moving
+/// threshold (the tolerance, or the finite-gap test's unjamming distance).
 bool moves(const UnjammingMotion& motion, const RigidityNetwork& network,
            const JammingParameters& parameters) {
     const double boxMotion = motion.strain.cwiseAbs().maxCoeff() * network.boxLength;
-    return !motion.moving.empty() || boxMotion > parameters.motionTolerance * parameters.maxStep;
+    return !motion.moving.empty() || boxMotion > movingThreshold(parameters);
 }
 
 /// The two ends of column `gap` of A: the particle whose test it is first (Local: the other end
@@ -176,13 +204,16 @@ std::vector<int> openedParticles(const UnjammingMotion& opening, const RigidityN
     return freed;
 }
 
-/// The particles an opening certainly frees and, for spheres, those a flex moves (sorted).
+/// The particles an opening certainly frees and, for spheres, those a flex moves (sorted); in
+/// the finite-gap test those either motion moves by more than the unjamming distance.
 std::vector<int> freedParticles(const JammingResult& result, const RigidityNetwork& network) {
     const double threshold = result.parameters.motionTolerance * result.parameters.maxStep;
+    const bool finite = finiteGaps(result.parameters);
     std::vector<int> freed;
     if (result.opening)
-        freed = openedParticles(*result.opening, network, result.category, threshold);
-    if (result.flex && !network.rotations)
+        freed = finite ? result.opening->moving
+                       : openedParticles(*result.opening, network, result.category, threshold);
+    if (result.flex && (finite || !network.rotations))
         freed.insert(freed.end(), result.flex->moving.begin(), result.flex->moving.end());
     std::sort(freed.begin(), freed.end());
     freed.erase(std::unique(freed.begin(), freed.end()), freed.end());
@@ -191,10 +222,11 @@ std::vector<int> freedParticles(const JammingResult& result, const RigidityNetwo
 
 /// Unjammed where a particle is certainly freed, or for spheres by any motion (a sphere packing
 /// is jammed iff first-order rigid); undecided where only motions that second order can block
-/// remain (p != 1).
+/// remain (p != 1). The finite-gap test keeps only motions of the unjamming distance.
 FirstOrderVerdict verdictOf(const JammingResult& result, bool rotations) {
     if (!result.freed.empty()) return FirstOrderVerdict::Unjammed;
-    if (!result.opening && !result.flex) return FirstOrderVerdict::Jammed;
+    if ((!result.opening && !result.flex) || finiteGaps(result.parameters))
+        return FirstOrderVerdict::Jammed;
     return rotations ? FirstOrderVerdict::Undecided : FirstOrderVerdict::Unjammed;
 }
 
@@ -210,7 +242,8 @@ void gordanShortcut(JammingResult& result, const Eigen::SparseMatrix<double>& a,
     const double threshold = parameters.motionTolerance * parameters.maxStep;
     if (motions->opening.size() > 0) {
         UnjammingMotion opening = motionOf(motions->opening, a, network, dof, parameters);
-        if (opening.gapChange.size() > 0 && opening.gapChange.minCoeff() > threshold) {
+        if (opening.gapChange.size() > 0 && opening.gapChange.minCoeff() > threshold &&
+            moves(opening, network, parameters)) {
             result.largestOpening = opening.gapChange.maxCoeff();
             result.opensEveryContact = true;
             result.opening = std::move(opening);
@@ -233,16 +266,20 @@ void runPrograms(JammingResult& result, const Eigen::SparseMatrix<double>& a,
     const LinearProgramMethod method =
         local ? LinearProgramMethod::DualSimplex : LinearProgramMethod::Barrier;
     LinearProgram program = boundedProgram(a, dof, network.boxLength, local ? -1 : 0);
+    const bool finite = finiteGaps(parameters);
     if (!result.opensEveryContact) {
         makeOpening(program, a, network, category, parameters);
         UnjammingMotion opening =
             motionOf(maximise(program, method, parameters.solver), a, network, dof, parameters);
         result.largestOpening = opening.gapChange.size() > 0 ? opening.gapChange.maxCoeff() : 0.0;
-        if (result.largestOpening > parameters.motionTolerance * parameters.maxStep)
+        if (finite ? moves(opening, network, parameters)
+                   : result.largestOpening > parameters.motionTolerance * parameters.maxStep)
             result.opening = std::move(opening);
     }
-    if (!result.flex) {
-        makeFlex(program, a, parameters.seed);
+    // Donev et al.'s random load in both directions (finite-gap test); else one random flex.
+    for (const double sign : {1.0, -1.0}) {
+        if (result.flex || (sign < 0.0 && !finite)) break;
+        makeFlex(program, a, network, category, parameters, sign);
         UnjammingMotion flex =
             motionOf(maximise(program, method, parameters.solver), a, network, dof, parameters);
         if (moves(flex, network, parameters)) result.flex = std::move(flex);
@@ -260,6 +297,13 @@ JammingTest::JammingTest(JammingParameters parameters) : parameters_(parameters)
     if (!(tolerance > 0.0 && tolerance < 1.0))
         throw std::invalid_argument("jamming test: motion tolerance " + std::to_string(tolerance) +
                                     " must lie in (0, 1)");
+    const double distance = parameters_.unjammingDistance;
+    if (!(distance >= 0.0 && distance <= parameters_.maxStep) ||
+        (distance > 0.0 && !parameters_.useGaps))
+        throw std::invalid_argument("jamming test: unjamming distance " + std::to_string(distance) +
+                                    " (--jamming-unjam-distance) must lie in [0, the maximum "
+                                    "step] and needs the contacts' gaps (--jamming-contacts "
+                                    "gaps)");
     const LinearProgramTolerances& solver = parameters_.solver;
     if (!(solver.feasibility > 0.0 && solver.feasibility <= 1e-2 * tolerance &&
           solver.optimality > 0.0 && solver.optimality <= 1e-2 * tolerance))
@@ -289,6 +333,10 @@ JammingResult JammingTest::compute(const RigidityNetwork& network, JammingCatego
         runPrograms(result, a, network, category, dof, parameters_);
     result.freed = freedParticles(result, network);
     result.verdict = verdictOf(result, network.rotations);
+    for (const auto* motion : {&result.opening, &result.flex})
+        if (*motion)
+            result.largestDisplacement =
+                std::max(result.largestDisplacement, largestDisplacement(**motion, network));
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (category == JammingCategory::Collective && result.verdict == FirstOrderVerdict::Undecided &&

@@ -30,6 +30,13 @@ struct JammingParameters {
     /// A contact opens, or a particle moves, when by more than this times Delta: far above CLP's
     /// feasibility tolerance, far below a real motion's O(Delta) (docs/jamming.md §4).
     double motionTolerance = 1e-6;
+    /// Units of D; with useGaps, > 0 makes the finite-gap test of Donev et al. 2004 (their
+    /// Delta R_unjam ~ D, with Delta ~ 10 D and the network of every pair within 0.25-0.5 D;
+    /// docs/jamming.md §4.1): a motion unjams only where it moves a particle, or the box's
+    /// images, by at least this much; the flex program becomes their random load over the gaps'
+    /// polytope (c and -c), and there is no Undecided: jammed or unjammed, for any p. 0: any
+    /// motion above the tolerance unjams.
+    double unjammingDistance = 0.0;
     std::uint64_t seed = 1; ///< of the flex program's random objective
     /// Collective and Strict: the motions by Gordan's alternative where A has full column rank
     /// (jamming/gordan_motion.hpp); false: the programs always (bench/bench_jamming's baseline).
@@ -79,6 +86,9 @@ struct JammingResult {
     /// flexes must exist (the Maxwell count; isostatic: 0).
     int isostaticDeficit = 0;
     int contacts = 0;
+    /// The largest displacement of a particle (or of the box's images, eps L) by the opening or
+    /// the flex, units of D: the finite-gap test's measure (docs/jamming.md §4.1).
+    double largestDisplacement = 0.0;
     double seconds = 0.0; ///< wall time of the matrix and both programs (the second order apart)
     JammingParameters parameters;
     /// Collective, first order Undecided, parameters.secondOrder.enabled: the stress test.
@@ -94,8 +104,9 @@ struct JammingResult {
 class JammingTest {
   public:
     /// Throws std::invalid_argument unless maxStep > 0 is finite, motionTolerance lies in
-    /// (0, 1), the solver's tolerances are positive and at most 1e-2 motionTolerance and the
-    /// second order's are valid (SecondOrderTest).
+    /// (0, 1), unjammingDistance lies in [0, maxStep] and is 0 without useGaps, the solver's
+    /// tolerances are positive and at most 1e-2 motionTolerance and the second order's are
+    /// valid (SecondOrderTest).
     explicit JammingTest(JammingParameters parameters);
 
     /// The category's first-order verdict on `network` (backboneNetwork), and for Collective

@@ -334,6 +334,79 @@ TEST(JammingCategories, GapsAllowMotionsOnlyOfTheirOwnSize) {
     EXPECT_LT(cage.largestOpening, 2.0e-10 + 1e-15);
 }
 
+/// Donev et al. 2004's finite-gap test: every pair within `tolerance` D with its gap, Delta
+/// = 10 D, unjammed only by a motion of a particle by more than 1 D (docs/jamming.md §4.1).
+JammingParameters finiteGapTest() {
+    JammingParameters parameters;
+    parameters.useGaps = true;
+    parameters.maxStep = 10.0;
+    parameters.unjammingDistance = 1.0;
+    return parameters;
+}
+
+TEST(FiniteGapTest, SimpleCubicRowsSlideByMoreThanADiameter) {
+    // At 0.25 D only the 6 touching neighbours are in the network (the next at sqrt 2 D):
+    // nothing stops a row sliding along itself, by Delta, far beyond 1 D.
+    const Packing packing = simpleCubic(4);
+    const RigidityNetwork network = networkOf(packing, {0.25, 4, true});
+    ASSERT_EQ(network.contacts.size(), 3u * packing.size());
+    EXPECT_EQ(test(network, JammingCategory::Local, finiteGapTest()).verdict,
+              FirstOrderVerdict::Jammed);
+    for (const JammingCategory category : {JammingCategory::Collective, JammingCategory::Strict}) {
+        const JammingResult result = test(network, category, finiteGapTest());
+        EXPECT_EQ(result.verdict, FirstOrderVerdict::Unjammed) << static_cast<int>(category);
+        EXPECT_GT(result.largestDisplacement, 1.0);
+        EXPECT_GE(result.freed.size(), 4u); // at least a row
+    }
+}
+
+TEST(FiniteGapTest, FaceCentredCubicAndItsNextNeighboursAreStrictlyJammed) {
+    // At 0.5 D the network holds the 12 touching neighbours and the 6 at sqrt 2 D (gap 0.41 D):
+    // the polytope bounds every motion by the gaps, far below 1 D.
+    const RigidityNetwork network =
+        networkOf(readTextPacking(kData + "/fcc-spheres.txt"), {0.5, 4, true});
+    ASSERT_EQ(network.contacts.size(), 9u * 108u);
+    for (const JammingCategory category :
+         {JammingCategory::Local, JammingCategory::Collective, JammingCategory::Strict}) {
+        const JammingResult result = test(network, category, finiteGapTest());
+        EXPECT_EQ(result.verdict, FirstOrderVerdict::Jammed) << static_cast<int>(category);
+        EXPECT_LT(result.largestDisplacement, 1.0);
+        EXPECT_TRUE(result.freed.empty());
+    }
+}
+
+TEST(FiniteGapTest, AnFccSphereMovesWithinItsRhombicDodecahedralCage) {
+    // fcc spheres with every nearest gap g: one sphere alone may move within the polytope
+    // |n_k . d| <= g of its 12 neighbours, a rhombic dodecahedron whose vertices lie at
+    // max-norm g sqrt 2 (on the axes) and g sqrt 2 / 2 (on the diagonals). A random load ends
+    // at a vertex: unjammed at an unjamming distance of g / 2, jammed at 2 g.
+    const double g = 1e-3, a = std::sqrt(2.0) * (1.0 + g);
+    const Packing packing = sphereLattice(
+        a, 3, {Vector3d::Zero(), {0.5, 0.5, 0.0}, {0.5, 0.0, 0.5}, {0.0, 0.5, 0.5}});
+    const RigidityNetwork network = networkOf(packing, {2e-3, 4});
+    ASSERT_EQ(network.contacts.size(), 6u * packing.size());
+    JammingParameters parameters = finiteGapTest();
+    parameters.unjammingDistance = 0.5 * g;
+    const JammingResult loose = test(network, JammingCategory::Local, parameters);
+    EXPECT_EQ(loose.verdict, FirstOrderVerdict::Unjammed);
+    EXPECT_EQ(loose.freed.size(), packing.size());
+    EXPECT_GE(loose.largestDisplacement, 0.5 * std::sqrt(2.0) * g * (1.0 - 1e-6));
+    EXPECT_LE(loose.largestDisplacement, std::sqrt(2.0) * g * (1.0 + 1e-6));
+    parameters.unjammingDistance = 2.0 * g;
+    EXPECT_EQ(test(network, JammingCategory::Local, parameters).verdict,
+              FirstOrderVerdict::Jammed);
+}
+
+TEST(FiniteGapTest, RefusesADistanceWithoutGapsOrBeyondTheStep) {
+    JammingParameters parameters = finiteGapTest();
+    EXPECT_NO_THROW(JammingTest{parameters});
+    parameters.unjammingDistance = 20.0; // beyond Delta = 10: no motion could reach it
+    EXPECT_THROW(JammingTest{parameters}, std::invalid_argument);
+    parameters.unjammingDistance = 1.0;
+    parameters.useGaps = false;
+    EXPECT_THROW(JammingTest{parameters}, std::invalid_argument);
+}
+
 TEST(JammingCategories, AlignedSuperballLatticeRotatesAtFirstOrderOnly) {
     // p = 1.5 face to face: the normals pass through the centres, so every rotation is a flex;
     // whether it is blocked is a question of curvature (second order).
