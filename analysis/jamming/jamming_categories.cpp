@@ -267,6 +267,12 @@ PackingJamming testJammingCategories(const Packing& packing, const JammingSettin
     if (out.relaxation && out.relaxation->found) {
         std::tie(backbone, forces) = relaxedNetwork(*out.relaxation, contacts, out);
     } else if (settings.test.useGaps && settings.test.unjammingDistance > 0.0) {
+        if (!packing.shape().isSphere())
+            throw std::invalid_argument(fmt::format(
+                "jamming: --jamming-unjam-distance is Donev et al.'s finite-gap test of sphere "
+                "packings; at p = {:g} it would linearise rotations of up to radians, and "
+                "unjams every superball packing (docs/jamming.md §4.1)",
+                packing.p));
         backbone = neighbourNetwork(packing, settings, contacts, out);
     } else {
         std::tie(out.tolerance, out.toleranceFrom) = networkTolerance(packing, settings, contacts);

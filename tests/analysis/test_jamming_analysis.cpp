@@ -6,6 +6,7 @@
 #include "io/hdf5_handles.hpp"
 #include "io/packing_io.hpp"
 #include "io/text_io.hpp"
+#include "jamming/jamming_categories.hpp"
 #include "jamming/jamming_fields.hpp"
 #include "pipeline/analysis_registry.hpp"
 #include "pipeline/run.hpp"
@@ -87,6 +88,36 @@ TEST(JammingAnalysis, SimpleCubicSpheresAreLocallyButNotCollectivelyJammed) {
               (std::vector<hsize_t>{3, 3}));
     EXPECT_EQ(datasetShape(dir / "r.h5", "files/0/jamming_strict", "freed").size(), 1u);
     EXPECT_FALSE(collective.has("flex_rotation"));
+}
+
+// Donev et al.'s finite-gap test (docs/jamming.md §4.1) end to end: the simple cubic rows slide
+// by more than 1 D within every pair's gap at 0.25 D (the 6 touching neighbours only); the
+// network's source is named; superballs are refused with the reason.
+TEST(JammingAnalysis, FiniteGapTestSlidesTheSimpleCubicRowsAndRefusesSuperballs) {
+    const TempDir dir("sbpack-test-jamming-finite-gap");
+    writePacking(simpleCubicSpheres(), dir / "sc.h5");
+    const RunResults results = runJamming({dir / "sc.h5"}, dir / "r.h5",
+                                          {"--jamming-contacts", "gaps", "--jamming-max-step", "10",
+                                           "--jamming-unjam-distance", "1"});
+    const FileResults& file = results.files.at(0);
+    EXPECT_EQ(file.group("jamming")->text("category"), "local");
+    EXPECT_EQ(file.group("jamming")->integer("contacts"), 192);
+    EXPECT_NE(file.group("jamming")->text("tolerance_from").find("Donev"), std::string::npos);
+    const schema::Record& collective = *file.group("jamming_collective");
+    EXPECT_EQ(collective.text("verdict"), "unjammed");
+    EXPECT_GT(collective.number("largest_displacement"), 1.0);
+    JammingSettings settings;
+    settings.test.useGaps = true;
+    settings.test.maxStep = 10.0;
+    settings.test.unjammingDistance = 1.0;
+    try {
+        testJammingCategories(readTextPacking(kData + "/sc-lattice-p1.5.txt"), settings, {}, {});
+        ADD_FAILURE() << "superballs were not refused";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("finite-gap test of sphere packings"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(JammingAnalysis, FaceCentredCubicSpheresAreStrictlyJammed) {
