@@ -206,6 +206,16 @@ def mark_ordered(ax, rows):
 P_TICKS = (0.5, 0.6, 0.7, 0.8, 0.9, 1, 1.5, 2, 3, 5, 10, 20, 50, 100, 200, 500, 1000)
 
 
+def spaced_ticks(low, high, ratio=1.2):
+    """P_TICKS within [low, high], 1 first, then outwards, each kept only at a factor `ratio`
+    or more from those kept (labels that do not run into each other on a log axis)."""
+    kept = [1.0] if low <= 1.0 <= high else []
+    for t in sorted((t for t in P_TICKS if low <= t <= high), key=lambda t: abs(np.log(t))):
+        if all(max(t, k) / min(t, k) >= ratio for k in kept):
+            kept.append(t)
+    return sorted(kept) or [low, high]
+
+
 def p_axis(ax, ps):
     """One p axis for every panel of a figure: over all of ps (the results' p and the references'
     drawn), log where p spans more than a factor 3, labelled in plain numbers at P_TICKS."""
@@ -213,8 +223,7 @@ def p_axis(ax, ps):
     if high / low > 3.0:
         ax.set_xscale("log")
         ax.set_xlim(low / 1.08, high * 1.08)
-        ax.xaxis.set_major_locator(ticker.FixedLocator([t for t in P_TICKS if low <= t <= high]
-                                                       or [low, high]))
+        ax.xaxis.set_major_locator(ticker.FixedLocator(spaced_ticks(low, high)))
         ax.xaxis.set_major_formatter(ticker.FormatStrFormatter("%g"))
         ax.xaxis.set_minor_formatter(ticker.NullFormatter())
     else:
