@@ -381,8 +381,8 @@ TEST(FiniteGapTest, AnFccSphereMovesWithinItsRhombicDodecahedralCage) {
     // max-norm g sqrt 2 (on the axes) and g sqrt 2 / 2 (on the diagonals). A random load ends
     // at a vertex: unjammed at an unjamming distance of g / 2, jammed at 2 g.
     const double g = 1e-3, a = std::sqrt(2.0) * (1.0 + g);
-    const Packing packing = sphereLattice(
-        a, 3, {Vector3d::Zero(), {0.5, 0.5, 0.0}, {0.5, 0.0, 0.5}, {0.0, 0.5, 0.5}});
+    const Packing packing =
+        sphereLattice(a, 3, {Vector3d::Zero(), {0.5, 0.5, 0.0}, {0.5, 0.0, 0.5}, {0.0, 0.5, 0.5}});
     const RigidityNetwork network = networkOf(packing, {2e-3, 4});
     ASSERT_EQ(network.contacts.size(), 6u * packing.size());
     JammingParameters parameters = finiteGapTest();
@@ -393,8 +393,7 @@ TEST(FiniteGapTest, AnFccSphereMovesWithinItsRhombicDodecahedralCage) {
     EXPECT_GE(loose.largestDisplacement, 0.5 * std::sqrt(2.0) * g * (1.0 - 1e-6));
     EXPECT_LE(loose.largestDisplacement, std::sqrt(2.0) * g * (1.0 + 1e-6));
     parameters.unjammingDistance = 2.0 * g;
-    EXPECT_EQ(test(network, JammingCategory::Local, parameters).verdict,
-              FirstOrderVerdict::Jammed);
+    EXPECT_EQ(test(network, JammingCategory::Local, parameters).verdict, FirstOrderVerdict::Jammed);
 }
 
 TEST(FiniteGapTest, RefusesADistanceWithoutGapsOrBeyondTheStep) {
