@@ -30,7 +30,7 @@ n=1000 count=5 jobs=$(nproc) work=$root/build/reproduce table="" compute=contact
 section=""
 build=$root/build
 plist="0.85 0.9 0.95 0.975 1 1.025 1.05 1.1 1.2 1.3 1.4 1.5"
-usage() { sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
     case $1 in
         --n) n=$2; shift 2 ;;

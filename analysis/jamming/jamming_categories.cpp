@@ -259,6 +259,17 @@ PackingJamming testJammingCategories(const Packing& packing, const JammingSettin
     const auto start = std::chrono::steady_clock::now();
     const JammingTest test(settings.test); // refuses bad parameters before any work
     if (settings.relax) validate(settings.relaxation);
+    const bool finiteGap = settings.test.useGaps && settings.test.unjammingDistance > 0.0;
+    if (finiteGap && !packing.shape().isSphere())
+        throw std::invalid_argument(
+            fmt::format("jamming: --jamming-unjam-distance is Donev et al.'s finite-gap test of "
+                        "sphere packings; at p = {:g} it would linearise rotations of up to "
+                        "radians, and unjams every superball packing (docs/jamming.md §4.1)",
+                        packing.p));
+    if (finiteGap && settings.relax)
+        throw std::invalid_argument(
+            "jamming: --jamming-unjam-distance tests the packing as given, with its gaps; "
+            "--jamming-relax tests the nearest jammed packing, without gaps: give one");
     PackingJamming out;
     RigidityNetwork backbone;
     std::optional<Eigen::VectorXd> forces;
@@ -266,13 +277,7 @@ PackingJamming testJammingCategories(const Packing& packing, const JammingSettin
         out.relaxation = findJammingPoint(packing, settings.relaxation, observer.relaxing);
     if (out.relaxation && out.relaxation->found) {
         std::tie(backbone, forces) = relaxedNetwork(*out.relaxation, contacts, out);
-    } else if (settings.test.useGaps && settings.test.unjammingDistance > 0.0) {
-        if (!packing.shape().isSphere())
-            throw std::invalid_argument(fmt::format(
-                "jamming: --jamming-unjam-distance is Donev et al.'s finite-gap test of sphere "
-                "packings; at p = {:g} it would linearise rotations of up to radians, and "
-                "unjams every superball packing (docs/jamming.md §4.1)",
-                packing.p));
+    } else if (finiteGap) {
         backbone = neighbourNetwork(packing, settings, contacts, out);
     } else {
         std::tie(out.tolerance, out.toleranceFrom) = networkTolerance(packing, settings, contacts);

@@ -284,9 +284,9 @@ inline constexpr schema::FieldTable kCategoryTable{std::array<schema::Column<R>,
       Mean},
      member<&R::largestOpening>},
     {{"largest_displacement", A, F, "D",
-      "the largest displacement of a particle (or of the box's images, eps L) by the opening "
-      "or the flex found; with --jamming-unjam-distance, the finite-gap test's measure "
-      "(docs/jamming.md §4.1)",
+      "the largest displacement of a particle (or of the box's images, eps L) by any solution "
+      "of the programs, kept as a motion or not; with --jamming-unjam-distance, how near the "
+      "finite-gap test came to it (docs/jamming.md §4.1)",
       Mean},
      member<&R::largestDisplacement>},
     {{"opens_every_contact", A, I, "1",

@@ -17,9 +17,9 @@ struct ContactParameters {
     static constexpr double kMaxTolerance = 0.1;
     /// Particles with fewer contacts than this among the non-rattlers are rattlers: d + 1 = 4.
     int rattlerThreshold = 4;
-    /// True: a network of potential contacts, every pair within tolerance D with its gap, up to
-    /// kMaxNeighbourTolerance (Donev et al. 2004's 0.25-0.5 D: the jamming finite-gap test,
-    /// docs/jamming.md §4.1); its Z and rattlers count all those pairs.
+    /// True: allows a tolerance up to kMaxNeighbourTolerance, for a network of potential
+    /// contacts (Donev et al. 2004's pairs within 0.25-0.5 D: the jamming finite-gap test,
+    /// docs/jamming.md §4.1); its Z and rattlers then count all those pairs.
     bool neighbours = false;
     static constexpr double kMaxNeighbourTolerance = 0.5;
 };

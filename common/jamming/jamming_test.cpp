@@ -124,9 +124,10 @@ UnjammingMotion motionOf(const Eigen::VectorXd& x, const Eigen::SparseMatrix<dou
         const int particle = network.backbone[b];
         motion.displacement[particle] = dq.segment<3>(dof.translation(b));
         double largest = motion.displacement[particle].lpNorm<Eigen::Infinity>();
-        if (dof.rotations) {
+        if (dof.rotations) { // radians: not a distance of the finite-gap test's (spheres)
             motion.rotation[particle] = dq.segment<3>(dof.rotation(b));
-            largest = std::max(largest, motion.rotation[particle].lpNorm<Eigen::Infinity>());
+            if (!finiteGaps(parameters))
+                largest = std::max(largest, motion.rotation[particle].lpNorm<Eigen::Infinity>());
         }
         if (largest > threshold) motion.moving.push_back(particle);
     }
@@ -135,9 +136,14 @@ UnjammingMotion motionOf(const Eigen::VectorXd& x, const Eigen::SparseMatrix<dou
     return motion;
 }
 
-/// The largest displacement of a particle, or of the box's images (eps L), by a motion (D).
+/// How far a motion moves the box's images, eps L (D).
+double boxMotion(const UnjammingMotion& motion, const RigidityNetwork& network) {
+    return motion.strain.cwiseAbs().maxCoeff() * network.boxLength;
+}
+
+/// The largest displacement of a particle, or of the box's images, by a motion (D).
 double largestDisplacement(const UnjammingMotion& motion, const RigidityNetwork& network) {
-    double largest = motion.strain.cwiseAbs().maxCoeff() * network.boxLength;
+    double largest = boxMotion(motion, network);
     for (const Vector3d& d : motion.displacement)
         largest = std::max(largest, d.lpNorm<Eigen::Infinity>());
     return largest;
@@ -147,8 +153,15 @@ double largestDisplacement(const UnjammingMotion& motion, const RigidityNetwork&
 /// threshold (the tolerance, or the finite-gap test's unjamming distance).
 bool moves(const UnjammingMotion& motion, const RigidityNetwork& network,
            const JammingParameters& parameters) {
-    const double boxMotion = motion.strain.cwiseAbs().maxCoeff() * network.boxLength;
-    return !motion.moving.empty() || boxMotion > movingThreshold(parameters);
+    return !motion.moving.empty() || boxMotion(motion, network) > movingThreshold(parameters);
+}
+
+/// Records a solution's largest displacement in the result, whether it is kept or not.
+const UnjammingMotion& measured(const UnjammingMotion& motion, const RigidityNetwork& network,
+                                JammingResult& result) {
+    result.largestDisplacement =
+        std::max(result.largestDisplacement, largestDisplacement(motion, network));
+    return motion;
 }
 
 /// The two ends of column `gap` of A: the particle whose test it is first (Local: the other end
@@ -222,11 +235,14 @@ std::vector<int> freedParticles(const JammingResult& result, const RigidityNetwo
 
 /// Unjammed where a particle is certainly freed, or for spheres by any motion (a sphere packing
 /// is jammed iff first-order rigid); undecided where only motions that second order can block
-/// remain (p != 1). The finite-gap test keeps only motions of the unjamming distance.
+/// remain (p != 1). The finite-gap test keeps only motions of the unjamming distance, of a
+/// particle or of the box's images: any one kept unjams.
 FirstOrderVerdict verdictOf(const JammingResult& result, bool rotations) {
     if (!result.freed.empty()) return FirstOrderVerdict::Unjammed;
-    if ((!result.opening && !result.flex) || finiteGaps(result.parameters))
-        return FirstOrderVerdict::Jammed;
+    const bool motion = result.opening || result.flex;
+    if (finiteGaps(result.parameters))
+        return motion ? FirstOrderVerdict::Unjammed : FirstOrderVerdict::Jammed;
+    if (!motion) return FirstOrderVerdict::Jammed;
     return rotations ? FirstOrderVerdict::Undecided : FirstOrderVerdict::Unjammed;
 }
 
@@ -243,7 +259,7 @@ void gordanShortcut(JammingResult& result, const Eigen::SparseMatrix<double>& a,
     if (motions->opening.size() > 0) {
         UnjammingMotion opening = motionOf(motions->opening, a, network, dof, parameters);
         if (opening.gapChange.size() > 0 && opening.gapChange.minCoeff() > threshold &&
-            moves(opening, network, parameters)) {
+            moves(measured(opening, network, result), network, parameters)) {
             result.largestOpening = opening.gapChange.maxCoeff();
             result.opensEveryContact = true;
             result.opening = std::move(opening);
@@ -252,7 +268,7 @@ void gordanShortcut(JammingResult& result, const Eigen::SparseMatrix<double>& a,
     if (motions->flex.size() > 0) {
         UnjammingMotion flex = motionOf(motions->flex, a, network, dof, parameters);
         if (flex.gapChange.lpNorm<Eigen::Infinity>() <= parameters.solver.feasibility &&
-            moves(flex, network, parameters))
+            moves(measured(flex, network, result), network, parameters))
             result.flex = std::move(flex);
     }
 }
@@ -272,7 +288,7 @@ void runPrograms(JammingResult& result, const Eigen::SparseMatrix<double>& a,
         UnjammingMotion opening =
             motionOf(maximise(program, method, parameters.solver), a, network, dof, parameters);
         result.largestOpening = opening.gapChange.size() > 0 ? opening.gapChange.maxCoeff() : 0.0;
-        if (finite ? moves(opening, network, parameters)
+        if (finite ? moves(measured(opening, network, result), network, parameters)
                    : result.largestOpening > parameters.motionTolerance * parameters.maxStep)
             result.opening = std::move(opening);
     }
@@ -282,7 +298,8 @@ void runPrograms(JammingResult& result, const Eigen::SparseMatrix<double>& a,
         makeFlex(program, a, network, category, parameters, sign);
         UnjammingMotion flex =
             motionOf(maximise(program, method, parameters.solver), a, network, dof, parameters);
-        if (moves(flex, network, parameters)) result.flex = std::move(flex);
+        if (moves(measured(flex, network, result), network, parameters))
+            result.flex = std::move(flex);
     }
 }
 
@@ -333,10 +350,6 @@ JammingResult JammingTest::compute(const RigidityNetwork& network, JammingCatego
         runPrograms(result, a, network, category, dof, parameters_);
     result.freed = freedParticles(result, network);
     result.verdict = verdictOf(result, network.rotations);
-    for (const auto* motion : {&result.opening, &result.flex})
-        if (*motion)
-            result.largestDisplacement =
-                std::max(result.largestDisplacement, largestDisplacement(**motion, network));
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (category == JammingCategory::Collective && result.verdict == FirstOrderVerdict::Undecided &&

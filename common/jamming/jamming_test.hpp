@@ -32,10 +32,11 @@ struct JammingParameters {
     double motionTolerance = 1e-6;
     /// Units of D; with useGaps, > 0 makes the finite-gap test of Donev et al. 2004 (their
     /// Delta R_unjam ~ D, with Delta ~ 10 D and the network of every pair within 0.25-0.5 D;
-    /// docs/jamming.md §4.1): a motion unjams only where it moves a particle, or the box's
-    /// images, by at least this much; the flex program becomes their random load over the gaps'
-    /// polytope (c and -c), and there is no Undecided: jammed or unjammed, for any p. 0: any
-    /// motion above the tolerance unjams.
+    /// docs/jamming.md §4.1), a test of sphere packings (rotations, in radians, are not
+    /// measured by it; the analysis refuses p != 1): a motion unjams only where it moves a
+    /// particle, or the box's images, by more than this; the flex program becomes their random
+    /// load over the gaps' polytope (c and -c), and there is no Undecided. 0: any motion above
+    /// the tolerance unjams.
     double unjammingDistance = 0.0;
     std::uint64_t seed = 1; ///< of the flex program's random objective
     /// Collective and Strict: the motions by Gordan's alternative where A has full column rank
@@ -86,8 +87,9 @@ struct JammingResult {
     /// flexes must exist (the Maxwell count; isostatic: 0).
     int isostaticDeficit = 0;
     int contacts = 0;
-    /// The largest displacement of a particle (or of the box's images, eps L) by the opening or
-    /// the flex, units of D: the finite-gap test's measure (docs/jamming.md §4.1).
+    /// The largest displacement of a particle (or of the box's images, eps L) by any solution
+    /// of the programs or the shortcut, kept as a motion or not, units of D: how near the
+    /// finite-gap test came to its unjamming distance (docs/jamming.md §4.1).
     double largestDisplacement = 0.0;
     double seconds = 0.0; ///< wall time of the matrix and both programs (the second order apart)
     JammingParameters parameters;

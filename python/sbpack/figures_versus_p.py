@@ -75,18 +75,20 @@ def second_values(path=SECOND_REFERENCE):
                 for r in rows}
 
 
-def second_markers(ax, second, name):
-    """Jiao et al. 2010's value of results value name over its p range: a dashed line (one
-    value) or a hatched band (a range); returns the range's p ends, [] where none."""
+def second_markers(ax, second, name, ps):
+    """Jiao et al. 2010's value of results value name over its p range clipped to the results'
+    ps: a dashed line (one value) or a hatched band (a range); nothing where they do not meet."""
     if SECOND_QUANTITY.get(name) not in second:
-        return []
+        return
     p_min, p_max, low, high = second[SECOND_QUANTITY[name]]
+    p_min, p_max = max(p_min, min(ps)), min(p_max, max(ps))
+    if p_min >= p_max:
+        return
     if low == high:
         ax.plot([p_min, p_max], [low, low], "--", color="k", lw=1.2, label=SECOND, zorder=1.4)
     else:
         ax.fill_between([p_min, p_max], low, high, facecolor="none", edgecolor="0.5",
                         hatch="///", lw=0.0, label=SECOND, zorder=0.5)
-    return [p_min, p_max]
 
 
 def points(series, group, name):
@@ -170,12 +172,10 @@ def versus_p(series):
             paper_markers(ax, paper, column, scale)
         else:
             ax.set_title(NO_TABLE_VALUE.get(name, NO_TABLE.get(group, "")), fontsize=8)
-        second_markers(ax, second, name)
+        second_markers(ax, second, name, [s.p for s in series])
         ax.set(xlabel=r"$p$", ylabel=ylabel)
     ps = [s.p for s in series] + [p for panel in panels if panel[3] is not None
                                   for p in paper[panel[3]][0]]
-    ps += [p for panel in panels if SECOND_QUANTITY.get(panel[1]) in second
-           for p in second[SECOND_QUANTITY[panel[1]]][:2]]
     for ax in axes.ravel()[:len(panels)]:
         p_axis(ax, ps)
     for ax in axes.ravel()[len(panels):]:

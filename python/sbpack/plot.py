@@ -136,6 +136,7 @@ def finish(fig):
     final width until no more go beside."""
     width, outside = fig.get_figwidth(), set()
     while True:
+        before = len(outside)
         beside = {}
         for ax in fig.axes:
             entries = len(ax.get_legend_handles_labels()[0])
@@ -149,8 +150,8 @@ def finish(fig):
             row = spec.rowspan.start if spec is not None else 0
             beside[row] = beside.get(row, 0) + 1
         final = width + LEGEND_WIDTH * max(beside.values(), default=0)
-        if final == fig.get_figwidth():
-            return
+        if final == fig.get_figwidth() and len(outside) == before:
+            return  # the layout the legends inside were placed on is the final one
         fig.set_figwidth(final)
 
 

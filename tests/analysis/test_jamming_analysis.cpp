@@ -118,6 +118,13 @@ TEST(JammingAnalysis, FiniteGapTestSlidesTheSimpleCubicRowsAndRefusesSuperballs)
                   std::string::npos)
             << e.what();
     }
+    settings.relax = true; // the nearest jammed packing has no gaps to test: refused at once
+    try {
+        testJammingCategories(simpleCubicSpheres(), settings, {}, {});
+        ADD_FAILURE() << "--jamming-relax with the finite-gap test was not refused";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("give one"), std::string::npos) << e.what();
+    }
 }
 
 TEST(JammingAnalysis, FaceCentredCubicSpheresAreStrictlyJammed) {

@@ -393,7 +393,12 @@ TEST(FiniteGapTest, AnFccSphereMovesWithinItsRhombicDodecahedralCage) {
     EXPECT_GE(loose.largestDisplacement, 0.5 * std::sqrt(2.0) * g * (1.0 - 1e-6));
     EXPECT_LE(loose.largestDisplacement, std::sqrt(2.0) * g * (1.0 + 1e-6));
     parameters.unjammingDistance = 2.0 * g;
-    EXPECT_EQ(test(network, JammingCategory::Local, parameters).verdict, FirstOrderVerdict::Jammed);
+    // Jammed at 2 g, and the solutions it measured still end at the cage's vertices.
+    const JammingResult caged = test(network, JammingCategory::Local, parameters);
+    EXPECT_EQ(caged.verdict, FirstOrderVerdict::Jammed);
+    EXPECT_TRUE(caged.freed.empty());
+    EXPECT_GE(caged.largestDisplacement, 0.5 * std::sqrt(2.0) * g * (1.0 - 1e-6));
+    EXPECT_LE(caged.largestDisplacement, std::sqrt(2.0) * g * (1.0 + 1e-6));
 }
 
 TEST(FiniteGapTest, RefusesADistanceWithoutGapsOrBeyondTheStep) {
