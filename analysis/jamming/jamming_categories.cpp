@@ -26,11 +26,10 @@ std::string_view adverb(JammingCategory category) {
                                                      : "strictly";
 }
 
-/// The network's tolerance and where it comes from (docs/jamming.md §2).
-std::pair<double, std::string> networkTolerance(const Packing& packing,
-                                                const JammingSettings& settings,
-                                                const ContactParameters& contacts) {
-    if (settings.tolerance) return {*settings.tolerance, "--jamming-tolerance"};
+/// The jam check's tolerance at the file's reduced pressure, or --tolerance where it has none,
+/// and where it comes from (docs/jamming.md §2).
+std::pair<double, std::string> jamCheckTolerance(const Packing& packing,
+                                                 const ContactParameters& contacts) {
     if (packing.reducedPressure && *packing.reducedPressure > 0.0) {
         const JamCheckParameters jam;
         const double p = *packing.reducedPressure;
@@ -40,14 +39,20 @@ std::pair<double, std::string> networkTolerance(const Packing& packing,
     return {contacts.tolerance, "--tolerance (no reduced pressure)"};
 }
 
+/// The network's tolerance and where it comes from: --jamming-tolerance, else the jam check's.
+std::pair<double, std::string> networkTolerance(const Packing& packing,
+                                                const JammingSettings& settings,
+                                                const ContactParameters& contacts) {
+    if (settings.tolerance) return {*settings.tolerance, "--jamming-tolerance"};
+    return jamCheckTolerance(packing, contacts);
+}
+
 /// Donev et al. 2004's network for the finite-gap test (docs/jamming.md §4.1): the backbone of
 /// the jam check's network (its rattlers removed), with every pair of it within
 /// --jamming-tolerance (default kFiniteGapTolerance) and its gap.
 RigidityNetwork neighbourNetwork(const Packing& packing, const JammingSettings& settings,
                                  const ContactParameters& contacts, PackingJamming& out) {
-    JammingSettings jamCheck = settings;
-    jamCheck.tolerance.reset();
-    const double held = networkTolerance(packing, jamCheck, contacts).first;
+    const double held = jamCheckTolerance(packing, contacts).first;
     const ContactResult rattlers =
         ContactNetwork({held, contacts.rattlerThreshold}).compute(packing);
     out.tolerance = settings.tolerance.value_or(kFiniteGapTolerance);
@@ -259,7 +264,7 @@ PackingJamming testJammingCategories(const Packing& packing, const JammingSettin
     const auto start = std::chrono::steady_clock::now();
     const JammingTest test(settings.test); // refuses bad parameters before any work
     if (settings.relax) validate(settings.relaxation);
-    const bool finiteGap = settings.test.useGaps && settings.test.unjammingDistance > 0.0;
+    const bool finiteGap = settings.test.finiteGaps();
     if (finiteGap && !packing.shape().isSphere())
         throw std::invalid_argument(
             fmt::format("jamming: --jamming-unjam-distance is Donev et al.'s finite-gap test of "

@@ -16,16 +16,11 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-/// Donev et al. 2004's finite-gap test (JammingParameters::unjammingDistance).
-bool finiteGaps(const JammingParameters& parameters) {
-    return parameters.useGaps && parameters.unjammingDistance > 0.0;
-}
-
 /// A particle moves when by more than this (units of D): the motion tolerance, or in the
 /// finite-gap test the unjamming distance.
 double movingThreshold(const JammingParameters& parameters) {
-    return finiteGaps(parameters) ? parameters.unjammingDistance
-                                  : parameters.motionTolerance * parameters.maxStep;
+    return parameters.finiteGaps() ? parameters.unjammingDistance
+                                   : parameters.motionTolerance * parameters.maxStep;
 }
 
 /// The rows of a program (units of Delta, x = dq / Delta): A^T, and for Strict the trace
@@ -74,14 +69,20 @@ int contactOf(int gap, JammingCategory category) {
     return category == JammingCategory::Local ? gap / 2 : gap;
 }
 
+/// How far column `gap`'s contact may close in units of Delta: -g / Delta with the gaps, else 0.
+double closingBound(int gap, const RigidityNetwork& network, JammingCategory category,
+                    const JammingParameters& parameters) {
+    return parameters.useGaps ? -network.contacts[contactOf(gap, category)].gap / parameters.maxStep
+                              : 0.0;
+}
+
 /// The opening program (Donev et al. 2004): maximise sum_c ds_c, ds_c >= -g_c / Delta.
 void makeOpening(LinearProgram& program, const Eigen::SparseMatrix<double>& a,
                  const RigidityNetwork& network, JammingCategory category,
                  const JammingParameters& parameters) {
     program.objective = a * Eigen::VectorXd::Ones(a.cols());
     for (int gap = 0; gap < a.cols(); ++gap) {
-        const double g = network.contacts[contactOf(gap, category)].gap;
-        program.rowLower[gap] = parameters.useGaps ? -g / parameters.maxStep : 0.0;
+        program.rowLower[gap] = closingBound(gap, network, category, parameters);
         program.rowUpper[gap] = kInfinity;
     }
 }
@@ -95,10 +96,9 @@ void makeFlex(LinearProgram& program, const Eigen::SparseMatrix<double>& a,
     program.objective.resize(a.rows());
     for (Eigen::Index k = 0; k < a.rows(); ++k)
         program.objective[k] = sign * (2.0 * random.uniform() - 1.0);
+    const bool load = parameters.finiteGaps();
     for (int gap = 0; gap < a.cols(); ++gap) {
-        const bool load = finiteGaps(parameters);
-        program.rowLower[gap] =
-            load ? -network.contacts[contactOf(gap, category)].gap / parameters.maxStep : 0.0;
+        program.rowLower[gap] = load ? closingBound(gap, network, category, parameters) : 0.0;
         program.rowUpper[gap] = load ? kInfinity : 0.0;
     }
 }
@@ -126,7 +126,7 @@ UnjammingMotion motionOf(const Eigen::VectorXd& x, const Eigen::SparseMatrix<dou
         double largest = motion.displacement[particle].lpNorm<Eigen::Infinity>();
         if (dof.rotations) { // radians: not a distance of the finite-gap test's (spheres)
             motion.rotation[particle] = dq.segment<3>(dof.rotation(b));
-            if (!finiteGaps(parameters))
+            if (!parameters.finiteGaps())
                 largest = std::max(largest, motion.rotation[particle].lpNorm<Eigen::Infinity>());
         }
         if (largest > threshold) motion.moving.push_back(particle);
@@ -221,7 +221,7 @@ std::vector<int> openedParticles(const UnjammingMotion& opening, const RigidityN
 /// the finite-gap test those either motion moves by more than the unjamming distance.
 std::vector<int> freedParticles(const JammingResult& result, const RigidityNetwork& network) {
     const double threshold = result.parameters.motionTolerance * result.parameters.maxStep;
-    const bool finite = finiteGaps(result.parameters);
+    const bool finite = result.parameters.finiteGaps();
     std::vector<int> freed;
     if (result.opening)
         freed = finite ? result.opening->moving
@@ -240,7 +240,7 @@ std::vector<int> freedParticles(const JammingResult& result, const RigidityNetwo
 FirstOrderVerdict verdictOf(const JammingResult& result, bool rotations) {
     if (!result.freed.empty()) return FirstOrderVerdict::Unjammed;
     const bool motion = result.opening || result.flex;
-    if (finiteGaps(result.parameters))
+    if (result.parameters.finiteGaps())
         return motion ? FirstOrderVerdict::Unjammed : FirstOrderVerdict::Jammed;
     if (!motion) return FirstOrderVerdict::Jammed;
     return rotations ? FirstOrderVerdict::Undecided : FirstOrderVerdict::Unjammed;
@@ -282,7 +282,7 @@ void runPrograms(JammingResult& result, const Eigen::SparseMatrix<double>& a,
     const LinearProgramMethod method =
         local ? LinearProgramMethod::DualSimplex : LinearProgramMethod::Barrier;
     LinearProgram program = boundedProgram(a, dof, network.boxLength, local ? -1 : 0);
-    const bool finite = finiteGaps(parameters);
+    const bool finite = parameters.finiteGaps();
     if (!result.opensEveryContact) {
         makeOpening(program, a, network, category, parameters);
         UnjammingMotion opening =

@@ -38,6 +38,8 @@ struct JammingParameters {
     /// load over the gaps' polytope (c and -c), and there is no Undecided. 0: any motion above
     /// the tolerance unjams.
     double unjammingDistance = 0.0;
+    /// Whether these parameters make Donev et al.'s finite-gap test (unjammingDistance).
+    bool finiteGaps() const { return useGaps && unjammingDistance > 0.0; }
     std::uint64_t seed = 1; ///< of the flex program's random objective
     /// Collective and Strict: the motions by Gordan's alternative where A has full column rank
     /// (jamming/gordan_motion.hpp); false: the programs always (bench/bench_jamming's baseline).
