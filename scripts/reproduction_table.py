@@ -30,6 +30,7 @@ usage: reproduction_table.py RESULTS.h5 REFERENCE.csv [SECOND.csv]"""
 import csv
 import math
 import os
+import statistics
 import sys
 
 import h5py
@@ -58,22 +59,25 @@ def attr(group, name, key):
     return float(a.get(key, math.nan)), float(a.get(key + "_std", math.nan))
 
 
-def provenance_values(results, group, key):
-    """sbgen's provenance attribute key of the ensemble's packings that can still be read."""
-    values = []
+def provenance_values(results, group, *keys):
+    """key -> sbgen's provenance attribute key of the ensemble's packings that can still be
+    read, each packing opened once."""
+    values = {key: [] for key in keys}
     for member in group["members"][:]:
         path = results["files"][str(member)].attrs["input"]
         path = path.decode() if isinstance(path, bytes) else path
         if os.path.exists(path):
             with h5py.File(path) as f:
-                if "provenance" in f and key in f["provenance"].attrs:
-                    values.append(float(f["provenance"].attrs[key]))
+                attrs = f["provenance"].attrs if "provenance" in f else {}
+                for key in keys:
+                    if key in attrs:
+                        values[key].append(float(attrs[key]))
     return values
 
 
 def cpu_seconds(results, group):
     """sbgen's CPU seconds of the ensemble's packings that can still be read: (mean, max)."""
-    times = provenance_values(results, group, "cpu_time_s")
+    times = provenance_values(results, group, "cpu_time_s")["cpu_time_s"]
     return (sum(times) / len(times), max(times)) if times else (math.nan, math.nan)
 
 
@@ -128,21 +132,14 @@ def member_sum(results, group, subgroup, key):
     return int(sum(values)) if values else None
 
 
-def median(values):
-    ordered = sorted(values)
-    middle = len(ordered) // 2
-    return (ordered[middle] if len(ordered) % 2 else
-            (ordered[middle - 1] + ordered[middle]) / 2) if ordered else math.nan
-
-
 def beyond_row(results, group, second):
     n = int(group.attrs["n_files"])
     p = float(group.attrs["p"])
     overlaps = member_sum(results, group, "contacts", "overlapping_pairs")
-    jammed = provenance_values(results, group, "jammed")
+    provenance = provenance_values(results, group, "jammed", "cpu_time_s")
+    jammed, times = provenance["jammed"], provenance["cpu_time_s"]
     ordered = (f"{ordered_count(results, group)} of {n}"
                if any("order" in results["files"][str(m)] for m in group["members"][:]) else "-")
-    times = provenance_values(results, group, "cpu_time_s")
     return (f"| {p:g} | {int(group.attrs['n_particles'])} | {n} | "
             f"{pm((float(group.attrs['phi']), float(group.attrs['phi_std'])), 1, 4, n)} | "
             f"{pm(attr(group, 'contacts', 'z_mean'), 1, 3, n)} | "
@@ -151,7 +148,8 @@ def beyond_row(results, group, second):
             f"{pm(attr(group, 'order', 'P4'), 1, 3, n)} | {second_value(second, 'P4', p)} | "
             f"{'-' if overlaps is None else overlaps} | "
             f"{int(sum(jammed))} of {len(jammed)} | {ordered} | "
-            f"{median(times):.0f} / {max(times, default=math.nan):.0f} |")
+            f"{statistics.median(times) if times else math.nan:.0f} / "
+            f"{max(times, default=math.nan):.0f} |")
 
 
 def width_over_axis(results, group):
