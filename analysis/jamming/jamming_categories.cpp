@@ -171,8 +171,9 @@ std::string PackingJamming::relaxationSummary() const {
                            j.unjammedShell, j.unconverged, j.minimisations);
     return fmt::format(
         "relaxed to the nearest jammed packing: jamming shell in ({:.3g}, {:.3g}] D, "
-        "particles moved <= {:.3g} D, turned <= {:.3g} rad",
-        j.unjammedShell, j.jammedShell, j.largestDisplacement, j.largestRotation);
+        "particles moved <= {:.3g} D, turned <= {:.3g} rad{}",
+        j.unjammedShell, j.jammedShell, j.largestDisplacement, j.largestRotation,
+        j.boxStrain > 0.0 ? fmt::format(", the box strained by <= {:.3g}", j.boxStrain) : "");
 }
 
 std::string PackingJamming::verdict() const {
@@ -236,16 +237,16 @@ std::optional<Eigen::VectorXd> storedForces(const Packing& packing,
 
 namespace {
 
-/// The relaxed packing's network at its jamming shell and the relaxation's forces on it,
-/// f_c = shell - s_c (docs/jamming.md §6.7).
+/// The relaxed packing's network at its jamming shell, in its cell, and the relaxation's forces
+/// on it, f_c = shell - s_c (docs/jamming.md §6.7-6.8).
 std::pair<RigidityNetwork, Eigen::VectorXd>
 relaxedNetwork(const JammingPoint& point, const ContactParameters& contacts, PackingJamming& out) {
     // Just above the shell: every pair the relaxation loaded, none it did not (rounding apart).
     out.tolerance = point.jammedShell * (1.0 + 1e-6);
     out.toleranceFrom = "the relaxation's jamming shell";
     const ContactResult network =
-        ContactNetwork({out.tolerance, contacts.rattlerThreshold}).compute(point.relaxed.packing);
-    RigidityNetwork backbone = backboneNetwork(point.relaxed.packing, network);
+        relaxedContacts(point.relaxed, out.tolerance, contacts.rattlerThreshold);
+    RigidityNetwork backbone = backboneNetwork(point.relaxed.packing, network, point.relaxed.cell);
     Eigen::VectorXd forces(static_cast<Eigen::Index>(backbone.contacts.size()));
     Eigen::Index k = 0;
     for (std::size_t c = 0; c < network.contacts.size(); ++c) {

@@ -34,7 +34,7 @@ template <class T> Optional relaxationValue(const P& p, T (*value)(const Jamming
     return Value(value(*p.relaxation));
 }
 
-inline constexpr schema::FieldTable kTable{std::array<schema::Column<P>, 25>{{
+inline constexpr schema::FieldTable kTable{std::array<schema::Column<P>, 26>{{
     {{"category", A, S, "",
       "the highest category tested that is jammed, at first order or (collective) at second: "
       "strict, collective, "
@@ -98,6 +98,13 @@ inline constexpr schema::FieldTable kTable{std::array<schema::Column<P>, 25>{{
      +[](const P& p, const Scales&) -> Optional {
          return relaxationValue<double>(p, [](const JammingPoint& j) { return j.largestRotation; });
      }},
+    {{"relaxation_box_strain", A, F, "1",
+      "--jamming-relax box: the largest entry of F - I, the relaxed cell's edges over L less "
+      "the cube's (det F = 1; 0 where the box keeps its shape: docs/jamming.md §6.8)",
+      Mean, true},
+     +[](const P& p, const Scales&) -> Optional {
+         return relaxationValue<double>(p, [](const JammingPoint& j) { return j.boxStrain; });
+     }},
     {{"relaxation_path_overlap", A, F, "D",
       "--jamming-relax: the deepest overlap of the particles themselves on the way from the "
       "given packing to the relaxed one (0: a motion of hard particles)",
@@ -138,7 +145,8 @@ inline constexpr schema::FieldTable kTable{std::array<schema::Column<P>, 25>{{
       D,
       F,
       "D",
-      "--jamming-relax: each particle's displacement from the given packing to the relaxed one",
+      "--jamming-relax: each particle's displacement from the given packing to the relaxed one "
+      "(box: less the cell's affine part)",
       No,
       true,
       {},

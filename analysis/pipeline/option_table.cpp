@@ -301,13 +301,24 @@ constexpr std::array kJammingRows{
               [](const Settings& d) {
                   return std::string(d.jamming.test.secondOrder.enabled ? "on" : "off");
               }},
-    OptionRow{"jamming-relax", "on|off",
+    OptionRow{"jamming-relax", "off|on|box",
               "jamming: test the nearest jammed packing instead (default {}): the particles\n"
               "inflated by a shell whose overlap energy is minimised, the smallest shell that\n"
               "stays jammed bracketed to 5 %, its network with the exact forces of the minimum\n"
-              "(about 20 s at N = 100, p = 1.5; docs/jamming.md §6.7)",
-              [](Settings& s, Text o, Text v) { s.jamming.relax = isSecondOf(o, v, "off", "on"); },
-              [](const Settings& d) { return std::string(d.jamming.relax ? "on" : "off"); }},
+              "(about 20 s at N = 100, p = 1.5; docs/jamming.md §6.7); box: the box's shape\n"
+              "relaxes too, at its volume, so that the strict test has an isotropic stress (§6.8)",
+              [](Settings& s, Text o, Text v) {
+                  if (v != "off" && v != "on" && v != "box")
+                      throw std::invalid_argument(
+                          fmt::format("option {}: '{}' is not off, on or box", o, v));
+                  s.jamming.relax = v != "off";
+                  s.jamming.relaxation.deformBox = v == "box";
+              },
+              [](const Settings& d) {
+                  return std::string(!d.jamming.relax                 ? "off"
+                                     : d.jamming.relaxation.deformBox ? "box"
+                                                                      : "on");
+              }},
 };
 
 // FFTW (docs/design.md, "FFT planning").

@@ -81,8 +81,8 @@ void checkAgainstSpheres(const SphereBounds& bounds, double s, double centreDist
                                  " violates the inradius/circumradius bounds");
 }
 
-/// The rattlers (fewer than `threshold` contacts, removed iteratively), their fraction and the
-/// mean contact number Z of the particles that remain.
+} // namespace
+
 void removeRattlers(ContactResult& result, int threshold) {
     const int count = static_cast<int>(result.counts.size());
     result.rattler = findRattlers(count, result.contacts, result.counts, threshold);
@@ -95,8 +95,6 @@ void removeRattlers(ContactResult& result, int threshold) {
         remaining > 0 ? 2.0 * static_cast<double>(contactsAmongRemaining) / remaining : 0.0;
     result.rattlerFraction = count > 0 ? static_cast<double>(rattlers) / count : 0.0;
 }
-
-} // namespace
 
 std::string describeOverlaps(const ContactResult& contacts, double diameter) {
     if (contacts.overlappingPairs == 0) return "";

@@ -45,6 +45,12 @@ struct ContactResult {
     ContactParameters parameters;
 };
 
+/// The rattlers of `result`'s contacts and counts (fewer than `threshold` contacts among the
+/// particles that remain, removed iteratively: docs/design.md §3), their fraction and Z: what
+/// ContactNetwork::compute does last, for a network found otherwise (the nearest jammed
+/// packing's, jamming/soft_relaxation.hpp).
+void removeRattlers(ContactResult& result, int threshold);
+
 /// "3 overlapping pair(s), the worst (4, 17) by 0.012 D" (depth in units of `diameter`), or ""
 /// when none overlaps: the one wording of sbanalyze's warning, info's and sbgen's refusal.
 std::string describeOverlaps(const ContactResult& contacts, double diameter);

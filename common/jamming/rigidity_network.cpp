@@ -22,7 +22,8 @@ void checkSizes(const Packing& packing, const ContactResult& network) {
 
 } // namespace
 
-RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& network) {
+RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& network,
+                                const Matrix3d& cell) {
     checkSizes(packing, network);
     const double diameter = packing.shape().diameter();
     const Superball shape(packing.p, 0.5); // units of D
@@ -30,6 +31,7 @@ RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& net
     result.packingSize = static_cast<int>(packing.size());
     result.rotations = !packing.shape().isSphere();
     result.boxLength = packing.boxLength / diameter;
+    const Matrix3d cellInverse = cell.inverse();
     std::vector<int> backboneIndex(packing.size(), -1);
     for (int k = 0; k < result.packingSize; ++k)
         if (!network.rattler[k]) {
@@ -40,7 +42,9 @@ RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& net
         const auto [i, j] = network.contacts[c];
         if (network.rattler[i] || network.rattler[j]) continue;
         const Vector3d inBox = (packing.positions[j] - packing.positions[i]) / diameter;
-        const Vector3d separation = minimumImage(inBox, result.boxLength);
+        const Vector3d reference = cellInverse * inBox; // in the cubic lattice
+        const Vector3d separation =
+            inBox + cell * (minimumImage(reference, result.boxLength) - reference);
         const double gap = network.gaps[c]; // already / D
         const ContactCurvature curvature = contactCurvature(
             shape, packing.orientations[i].toRotationMatrix(),

@@ -18,8 +18,8 @@ struct RigidContact {
     Vector3d normal = Vector3d::Zero(); ///< n, unit, from i to j
     Vector3d leverI = Vector3d::Zero(); ///< rho_i = x - r_i
     Vector3d leverJ = Vector3d::Zero(); ///< rho_j = x - r_j
-    /// The lattice vector the minimum image adds, r_ij - (r_j - r_i) with r in the box: 0 for
-    /// a contact inside the box.
+    /// The lattice vector the minimum image adds, r_ij - (r_j - r_i) with r in the box (F L m
+    /// in a deformed cell): 0 for a contact inside the box.
     Vector3d boxShift = Vector3d::Zero();
     double gap = 0.0; ///< g_c >= 0: overlaps count as touching
     /// The surfaces' curvature tensors at the contact point (jamming/gap_hessian.hpp), i's along
@@ -40,7 +40,11 @@ struct RigidityNetwork {
 /// units of D, with the lever arms to the closest points of contactCurvature (jamming/gap_hessian:
 /// each support point trusted where its surface is the more curved) and the curvatures. Negative
 /// gaps (overlaps within the contact tolerance) become 0: a first-order motion cannot undo an
-/// overlap. Throws std::invalid_argument if the network's sizes do not match the packing's.
-RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& network);
+/// overlap. `cell`: the periodic cell's edges over L as columns, the identity for the packing's
+/// cubic box; a volume-preserving F where the box deformed (the nearest jammed packing,
+/// jamming/soft_relaxation.hpp), its images at r + F L m and the box shifts F L m. Throws
+/// std::invalid_argument if the network's sizes do not match the packing's.
+RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& network,
+                                const Matrix3d& cell = Matrix3d::Identity());
 
 } // namespace sbpack

@@ -9,11 +9,16 @@
 // the inflated packing is jammed, and f is a self-stress of its network. The jamming point
 // delta_J, the smallest shell at which the minimum keeps E > 0, is bracketed by bisection, each
 // minimisation from the last unjammed minimum; the particles keep their size, so the relaxed
-// packing at delta > delta_J has gaps in [0, delta) where f_c < delta.
+// packing at delta > delta_J has gaps in [0, delta) where f_c < delta. With deformBox the box's
+// shape relaxes too, at its volume (docs/jamming.md §6.8): the minimum's stress is then
+// isotropic, and the strict test (a volume-nonincreasing strain of the box) has a packing that
+// can pass it.
 
+#include "contacts/contact_network.hpp"
 #include "packing/packing.hpp"
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace sbpack {
@@ -43,7 +48,21 @@ struct RelaxationParameters {
     /// The pairs within delta + this (units of D) are the candidates, found again after a particle
     /// has moved by a quarter of it.
     double candidateMargin = 1e-2;
+    /// The box's shape is an unknown too: five traceless strains, the cell F L with det F = 1
+    /// (docs/jamming.md §6.8). At the minimum the contact stress is then isotropic.
+    bool deformBox = false;
 };
+
+/// The five traceless strains of a deformable box, dq's last entries: eps = s0 (e_x e_x - e_z
+/// e_z) + s1 (e_y e_y - e_z e_z) + s2 (e_y e_z + e_z e_y) + s3 (e_x e_z + e_z e_x) + s4 (e_x e_y +
+/// e_y e_x).
+using BoxStrain = Eigen::Matrix<double, 5, 1>;
+inline constexpr int kBoxStrains = 5;
+
+/// The cell after the strain step `strain` (docs/jamming.md §6.8): (I + eps) F, rescaled to det
+/// 1, so that the volume stays exact whatever the steps (eps is traceless only to first order of
+/// the volume).
+Matrix3d strainedCell(const Matrix3d& cell, const BoxStrain& strain);
 
 enum class SoftVerdict {
     Jammed,   ///< a minimum with E > 0: the forces balance (balanceResidual)
@@ -55,7 +74,10 @@ enum class SoftVerdict {
 struct SoftMinimum {
     double shell = 0.0;
     SoftVerdict verdict = SoftVerdict::Unconverged;
-    Packing packing;              ///< the relaxed particles, the size and box of the input
+    Packing packing; ///< the relaxed particles, the size and box of the input
+    /// The periodic cell's edges over L as columns (images at r + F L m, det F = 1): the
+    /// identity unless the box deforms (RelaxationParameters::deformBox).
+    Matrix3d cell = Matrix3d::Identity();
     int contacts = 0;             ///< pairs with s_c < delta (forces > 0)
     double meanForce = 0.0;       ///< mean f_c over them, units of D
     double balanceResidual = 0.0; ///< |grad E|_inf / meanForce (0 without contacts)
@@ -72,8 +94,11 @@ struct JammingPoint {
     double unjammedShell = 0.0; ///< the largest shell found unjammed (0: jammed at the smallest)
     double jammedShell = 0.0;   ///< the smallest found jammed (delta_J lies between); 0: none
     SoftMinimum relaxed; ///< the minimum at jammedShell (where not found: the last one tried)
-    std::vector<Vector3d> displacement; ///< relaxed - given, minimum image, units of D
+    /// relaxed - given, minimum image, units of D; in a deformed cell the displacement less the
+    /// cell's affine part (F^-1 r_relaxed - r_given), which boxStrain reports.
+    std::vector<Vector3d> displacement;
     double largestDisplacement = 0.0;
+    double boxStrain = 0.0; ///< the largest |F - I| entry of the relaxed cell (0: box kept)
     double largestRotation = 0.0;
     double deepestOverlap = 0.0; ///< the largest SoftMinimum::deepestOverlap on the way
     int minimisations = 0;
@@ -85,13 +110,20 @@ struct JammingPoint {
 
 /// E at `shell` (units of D) with its gradient and Hessian, in the packing's length units and
 /// the unknowns' layout of jamming/rigidity_matrix.hpp (3 translations per particle, then 3
-/// rotations for p != 1): what every step uses, for tests.
+/// rotations for p != 1, then the five strains where `cell` is given: the box deforms from that
+/// cell): what every step uses, for tests.
 struct OverlapEnergyTerms {
     double energy = 0.0;
     Eigen::VectorXd gradient;
     Eigen::MatrixXd hessian;
 };
-OverlapEnergyTerms overlapEnergy(const Packing& packing, double shell);
+OverlapEnergyTerms overlapEnergy(const Packing& packing, double shell,
+                                 const std::optional<Matrix3d>& cell = std::nullopt);
+
+/// The network of a relaxed packing in its cell: every pair with a signed distance below
+/// `tolerance` D (its gap / D, normal, contact point), the rattlers by `rattlerThreshold`
+/// (removeRattlers). For a cubic cell the pairs ContactNetwork finds at that tolerance.
+ContactResult relaxedContacts(const SoftMinimum& minimum, double tolerance, int rattlerThreshold);
 
 /// Throws std::invalid_argument for parameters out of range (shells in (0, 0.1], smallest <=
 /// largest, bracket in (0, 1), tolerances in (0, 1), iterations >= 1).
@@ -100,10 +132,12 @@ void validate(const RelaxationParameters& parameters);
 /// Called before every step (it may throw to stop the relaxation: an interrupt).
 using RelaxationPoll = std::function<void()>;
 
-/// E minimised at `shell` from `packing`.
+/// E minimised at `shell` from `packing` in `cell` (its edges over L as columns; deformBox:
+/// the cell's start).
 SoftMinimum minimiseOverlapEnergy(const Packing& packing, double shell,
                                   const RelaxationParameters& parameters,
-                                  const RelaxationPoll& poll = {});
+                                  const RelaxationPoll& poll = {},
+                                  const Matrix3d& cell = Matrix3d::Identity());
 
 /// delta_J bracketed from `packing`: shells 10^k smallestShell until jammed, then bisection;
 /// each minimisation starts from the last unjammed minimum (the given packing at first), so that

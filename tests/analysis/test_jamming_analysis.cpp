@@ -169,6 +169,24 @@ TEST(JammingAnalysis, RelaxedFaceCentredCubicWithGapsIsStrictlyJammedAtItsShell)
     EXPECT_EQ(plain.files.at(0).group("jamming"), nullptr); // every particle a rattler: skipped
 }
 
+// sbgen's 100 spheres (docs/jamming.md §6.8): relaxed in their cubic box they are collectively
+// but not strictly jammed (their stress keeps a shear part, which a shear at the volume undoes);
+// relaxed with the box free, at a larger shell and a strained cell, strictly.
+TEST(JammingAnalysis, SbgensSpheresAreStrictlyJammedOnlyWhereTheRelaxationDeformsTheBox) {
+    const TempDir dir("sbpack-test-jamming-relax-box");
+    const std::string packing = kData + "/mrj-spheres-100.h5";
+    const RunResults held = runJamming({packing}, dir / "held.h5", {"--jamming-relax", "on"});
+    const schema::Record& fixed = *held.files.at(0).group("jamming");
+    EXPECT_EQ(fixed.text("category"), "collective");
+    EXPECT_EQ(fixed.number("relaxation_box_strain"), 0.0);
+    const RunResults free = runJamming({packing}, dir / "free.h5", {"--jamming-relax", "box"});
+    const schema::Record& box = *free.files.at(0).group("jamming");
+    EXPECT_EQ(box.integer("relaxed"), 1);
+    EXPECT_EQ(box.text("category"), "strict");
+    EXPECT_GT(box.number("relaxation_box_strain"), 1e-4);
+    EXPECT_GT(box.number("relaxation_shell_unjammed"), fixed.number("relaxation_shell_jammed"));
+}
+
 // p = 1.5: the rotations are degrees of freedom, every category is undecided at first order
 // (docs/jamming.md, "Known answers": the aligned simple-cubic superballs rotate), and the flex's
 // rotation is in the file as n x 3 radians.
