@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The nearest jammed packing of sbgen's packings (issue 62; docs/jamming.md §6.7): N packings per
-# p on sbgen's defaults, each analysed for its jamming categories as given and with
-# --jamming-relax on; a markdown table of both (bench/jamming_relax_summary.py). Resumable: files
-# already written are kept.
+# p on sbgen's defaults, each analysed for its jamming categories as given, with --jamming-relax on
+# and with the box free (--jamming-relax box, §6.8); a markdown table of the three
+# (bench/jamming_relax_summary.py). Resumable: files already written are kept.
 # usage: bench/jamming_relax.sh [BUILD_DIR] [WORK_DIR] [N] [SEEDS] [P VALUES]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -15,8 +15,8 @@ for p in $exponents; do
         [ -f "$work/$name.h5" ] || "$build/generator/sbgen" --p "$p" --n "$n" --seed "$seed" \
             --quiet --out "$work/$name.h5" 2> "$work/$name.log" || true
         [ -f "$work/$name.h5" ] || continue
-        for mode in given relaxed; do
-            relax=off; [ $mode = relaxed ] && relax=on
+        for mode in given relaxed box; do
+            relax=off; [ $mode = relaxed ] && relax=on; [ $mode = box ] && relax=box
             [ -f "$work/$mode-$name.h5" ] || "$build/analysis/sbanalyze" "$work/$name.h5" \
                 --compute contacts,jamming --jamming-relax $relax --threads 1 \
                 --out "$work/$mode-$name.h5" 2> "$work/$mode-$name.log"

@@ -108,6 +108,12 @@ std::string_view firstOrderVerdictName(FirstOrderVerdict verdict) {
                                                     : "undecided";
 }
 
+std::string_view softVerdictName(SoftVerdict verdict) {
+    return verdict == SoftVerdict::Jammed     ? "jammed"
+           : verdict == SoftVerdict::Unjammed ? "unjammed"
+                                              : "unconverged";
+}
+
 std::string_view secondOrderVerdictName(SecondOrderVerdict verdict) {
     return verdict == SecondOrderVerdict::Jammed         ? "jammed"
            : verdict == SecondOrderVerdict::NotJammed    ? "not jammed"
@@ -280,7 +286,8 @@ PackingJamming testJammingCategories(const Packing& packing, const JammingSettin
     RigidityNetwork backbone;
     std::optional<Eigen::VectorXd> forces;
     if (settings.relax)
-        out.relaxation = findJammingPoint(packing, settings.relaxation, observer.relaxing);
+        out.relaxation =
+            findJammingPoint(packing, settings.relaxation, observer.relaxing, observer.minimised);
     if (out.relaxation && out.relaxation->found) {
         std::tie(backbone, forces) = relaxedNetwork(*out.relaxation, contacts, out);
     } else if (finiteGap) {

@@ -52,6 +52,8 @@ std::vector<JammingCategory> parseJammingCategories(std::string_view option, std
 std::string jammingCategoryNames(const std::vector<JammingCategory>& categories);
 /// "jammed", "unjammed", "undecided".
 std::string_view firstOrderVerdictName(FirstOrderVerdict verdict);
+/// "jammed", "unjammed", "unconverged": a relaxation's minimisation (docs/jamming.md §6.7).
+std::string_view softVerdictName(SoftVerdict verdict);
 /// "jammed", "not jammed", "no self-stress", "singular curvature" (docs/jamming.md §6).
 std::string_view secondOrderVerdictName(SecondOrderVerdict verdict);
 /// One line of a category's test: "undecided; second order: no self-stress (2041 floppy modes)".
@@ -99,6 +101,8 @@ struct JammingObserver {
     std::function<void(const JammingResult&)> after;
     /// Before every step of the relaxation (--jamming-relax): it may throw, as `before`.
     RelaxationPoll relaxing;
+    /// After each of its minimisations, with it (a progress line).
+    RelaxationReport minimised;
 };
 
 /// Tests `settings.categories` on `packing`'s backbone; the network's rattlers by `contacts`

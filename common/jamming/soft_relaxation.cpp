@@ -375,6 +375,7 @@ SoftMinimum minimiseOverlapEnergy(const Packing& packing, double shell,
                                   const RelaxationParameters& parameters,
                                   const RelaxationPoll& poll, const Matrix3d& cell) {
     validate(parameters);
+    const auto start = std::chrono::steady_clock::now();
     const double diameter = packing.shape().diameter();
     OverlapEnergy energy(packing, shell, parameters.candidateMargin, parameters.deformBox);
     SoftMinimum out;
@@ -410,6 +411,7 @@ SoftMinimum minimiseOverlapEnergy(const Packing& packing, double shell,
     out.contacts = terms.contacts;
     out.meanForce = terms.meanForce() / diameter;
     out.balanceResidual = terms.contacts > 0 ? terms.imbalance / terms.meanForce() : 0.0;
+    out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return out;
 }
 
@@ -436,7 +438,7 @@ void measureMotion(const Packing& given, JammingPoint& point) {
 } // namespace
 
 JammingPoint findJammingPoint(const Packing& packing, const RelaxationParameters& parameters,
-                              const RelaxationPoll& poll) {
+                              const RelaxationPoll& poll, const RelaxationReport& report) {
     validate(parameters);
     const auto start = std::chrono::steady_clock::now();
     JammingPoint point;
@@ -450,6 +452,7 @@ JammingPoint findJammingPoint(const Packing& packing, const RelaxationParameters
     const auto attempt = [&](double shell) {
         SoftMinimum minimum = minimiseOverlapEnergy(base, shell, parameters, poll, baseCell);
         ++point.minimisations;
+        if (report) report(minimum);
         if (minimum.verdict == SoftVerdict::Jammed) {
             point.relaxed = std::move(minimum);
             return true;

@@ -82,6 +82,7 @@ struct SoftMinimum {
     double meanForce = 0.0;       ///< mean f_c over them, units of D
     double balanceResidual = 0.0; ///< |grad E|_inf / meanForce (0 without contacts)
     int iterations = 0;
+    double seconds = 0.0; ///< wall-clock time of the minimisation
     /// The deepest overlap of the particles themselves (s_c < 0, units of D) on the way, the
     /// start included; 0 where every step kept them apart: then the path is a motion of the hard
     /// particles (in steps of at most 1e-2 D).
@@ -131,6 +132,8 @@ void validate(const RelaxationParameters& parameters);
 
 /// Called before every step (it may throw to stop the relaxation: an interrupt).
 using RelaxationPoll = std::function<void()>;
+/// Called after each minimisation of the bracketing, with it (a progress line).
+using RelaxationReport = std::function<void(const SoftMinimum&)>;
 
 /// E minimised at `shell` from `packing` in `cell` (its edges over L as columns; deformBox:
 /// the cell's start).
@@ -143,6 +146,6 @@ SoftMinimum minimiseOverlapEnergy(const Packing& packing, double shell,
 /// each minimisation starts from the last unjammed minimum (the given packing at first), so that
 /// the shells compress it step by step. Jammed only where a minimisation converges to E > 0.
 JammingPoint findJammingPoint(const Packing& packing, const RelaxationParameters& parameters,
-                              const RelaxationPoll& poll = {});
+                              const RelaxationPoll& poll = {}, const RelaxationReport& report = {});
 
 } // namespace sbpack

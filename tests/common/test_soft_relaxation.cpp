@@ -301,6 +301,21 @@ TEST(SoftRelaxation, WithTheBoxFreeTheRelaxedStressIsIsotropic) {
     EXPECT_NEAR(point.relaxed.cell.determinant(), 1.0, 1e-12);
     EXPECT_LT(anisotropy(contactVirial(point)), 1e-6);
     EXPECT_GT(anisotropy(contactVirial(fixed)), 1e-2);
+    // The network in the strained cell against every pair and all 27 images (spheres: gap =
+    // |d| - D), which no candidate search can miss.
+    const Packing& relaxed = point.relaxed.packing;
+    const Matrix3d& cell = point.relaxed.cell;
+    const double diameter = relaxed.shape().diameter(), below = point.jammedShell * 1.000001;
+    std::size_t touching = 0;
+    for (std::size_t i = 0; i < relaxed.size(); ++i)
+        for (std::size_t j = i + 1; j < relaxed.size(); ++j)
+            for (int m = 0; m < 27; ++m) {
+                const Vector3d image(m % 3 - 1, m / 3 % 3 - 1, m / 9 - 1);
+                const Vector3d d =
+                    relaxed.positions[j] - relaxed.positions[i] + cell * image * relaxed.boxLength;
+                touching += d.norm() - diameter < below * diameter ? 1 : 0;
+            }
+    EXPECT_EQ(touching, relaxedContacts(point.relaxed, below, 4).contacts.size());
 }
 
 TEST(SoftRelaxation, RejectsParametersOutOfRange) {

@@ -42,7 +42,13 @@ bool runJamming(FileContext& context, schema::Record& record) {
             progress.stageDone("jamming " + std::string(jammingCategoryName(r.category)), r.seconds,
                                categoryDetail(r));
         },
-        [&] { progress.checkInterrupt(); }};
+        [&] { progress.checkInterrupt(); },
+        [&](const SoftMinimum& m) {
+            progress.stageDone(fmt::format("jamming relaxation at {:.3g} D", m.shell), m.seconds,
+                               fmt::format("{} after {} steps, {} contacts, mean force {:.3g} D",
+                                           softVerdictName(m.verdict), m.iterations, m.contacts,
+                                           m.meanForce));
+        }};
     const PackingJamming jamming = testJammingCategories(
         context.packing(), context.settings().jamming, context.settings().contacts, observer);
     if (jamming.tests.empty()) {
