@@ -20,16 +20,18 @@ def text(value):
 
 
 def box_columns(work, name):
-    """The category, jamming shell, box strain and seconds with the box free; blank without."""
+    """The category, jamming shell, motion, box strain and seconds with the box free; blank
+    without."""
     box = attributes(os.path.join(work, f"box-{name}.h5"), "jamming")
     if not box:
-        return " | | | |"
+        return " | | | | |"
     if not box["relaxed"]:
-        return " | no jammed minimum up to {:.3g} D | | | {:.0f} |".format(
+        return " | no jammed minimum up to {:.3g} D | | | | {:.0f} |".format(
             box["relaxation_shell_unjammed"], box["relaxation_runtime_s"])
-    return " | {} | {:.3g}-{:.3g} | {:.3g} | {:.0f} |".format(
+    return " | {} | {:.3g}-{:.3g} | {:.3g} | {:.3g} | {:.0f} |".format(
         text(box["category"]), box["relaxation_shell_unjammed"], box["relaxation_shell_jammed"],
-        box["relaxation_box_strain"], box["relaxation_runtime_s"])
+        box["relaxation_displacement_max"], box["relaxation_box_strain"],
+        box["relaxation_runtime_s"])
 
 
 def row(work, name):
@@ -61,8 +63,8 @@ def relaxed_columns(work, name):
 def main(work):
     print("| packing | as given | relaxed | jamming shell (D) | moved (D) | turned (rad) | "
           "contacts | second order | floppy modes | stiffness | balance | s | box free | "
-          "its shell (D) | box strain | s |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+          "its shell (D) | moved (D) | box strain | s |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     names = sorted(re.sub(r"^relaxed-|\.h5$", "", os.path.basename(p))
                    for p in glob.glob(os.path.join(work, "relaxed-*.h5")))
     names.sort(key=lambda n: (float(n.split("-")[0][1:]), n))

@@ -42,9 +42,8 @@ RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& net
         const auto [i, j] = network.contacts[c];
         if (network.rattler[i] || network.rattler[j]) continue;
         const Vector3d inBox = (packing.positions[j] - packing.positions[i]) / diameter;
-        const Vector3d reference = cellInverse * inBox; // in the cubic lattice
         const Vector3d separation =
-            inBox + cell * (minimumImage(reference, result.boxLength) - reference);
+            inBox + cell * minimumImageShift(cellInverse * inBox, result.boxLength);
         const double gap = network.gaps[c]; // already / D
         const ContactCurvature curvature = contactCurvature(
             shape, packing.orientations[i].toRotationMatrix(),

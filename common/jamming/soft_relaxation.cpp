@@ -51,9 +51,8 @@ struct PairImage {
 };
 PairImage pairImage(const State& state, const Matrix3d& cellInverse, int i, int j) {
     const Vector3d inBox = state.packing.positions[j] - state.packing.positions[i];
-    const Vector3d reference = cellInverse * inBox;
     const Vector3d shift =
-        state.cell * (minimumImage(reference, state.packing.boxLength) - reference);
+        state.cell * minimumImageShift(cellInverse * inBox, state.packing.boxLength);
     return {inBox + shift, shift};
 }
 

@@ -109,6 +109,15 @@ inline Vector3d minimumImage(Vector3d d, double boxLength) {
     return d;
 }
 
+/// The lattice vector L m that minimumImage adds to d: minimumImage(d) = d + it, exactly where
+/// d's components are of the box's size (for a cell F, images at F L m: jamming/soft_relaxation).
+inline Vector3d minimumImageShift(const Vector3d& d, double boxLength) {
+    Vector3d shift;
+    for (int k = 0; k < 3; ++k)
+        shift[k] = -boxLength * std::nearbyint(d[k] / boxLength);
+    return shift;
+}
+
 /// Wraps a position into [0, L).
 inline Vector3d wrapIntoBox(Vector3d r, double boxLength) {
     for (int k = 0; k < 3; ++k) {
