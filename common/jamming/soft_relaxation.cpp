@@ -56,6 +56,22 @@ PairImage pairImage(const State& state, const Matrix3d& cellInverse, int i, int 
     return {inBox + shift, shift};
 }
 
+/// The pairs of `state` within `range` D (ContactNetwork with `rattlerThreshold`), found in the
+/// cubic reference frame F^-1 r, the range widened by what F can shorten a separation: a superset
+/// of the pairs within `range` in the cell.
+ContactResult referencePairs(const State& state, double range, int rattlerThreshold) {
+    const Matrix3d cellInverse = state.cell.inverse();
+    Packing reference = state.packing;
+    for (Vector3d& r : reference.positions)
+        r = wrapIntoBox(cellInverse * r, state.packing.boxLength);
+    const Superball shape = state.packing.shape();
+    const double distortion = (cellInverse - Matrix3d::Identity()).norm() *
+                              (2.0 * shape.circumradius() / shape.diameter() + range);
+    return ContactNetwork(
+               {std::min(range + distortion, ContactParameters::kMaxTolerance), rattlerThreshold})
+        .compute(reference);
+}
+
 /// What one evaluation of E gives.
 struct EnergyTerms {
     double energy = 0.0;
@@ -134,18 +150,10 @@ class OverlapEnergy {
         return largest + (state.cell - builtCell_).norm() * std::sqrt(3.0) * boxLength_;
     }
 
-    /// The pairs within the shell and the margin, found in the cubic reference lattice (F^-1 r),
-    /// the range widened by what the cell's distortion can shorten a separation.
+    /// The pairs within the shell and the margin (referencePairs).
     void findCandidates(const State& state) {
-        const Matrix3d cellInverse = state.cell.inverse();
-        Packing reference = state.packing;
-        for (Vector3d& r : reference.positions)
-            r = wrapIntoBox(cellInverse * r, state.packing.boxLength);
-        const double distortion =
-            (cellInverse - Matrix3d::Identity()).norm() * (2.0 * shape_.circumradius() + margin_);
-        const double range = std::min((shell_ + margin_ + distortion) / shape_.diameter(),
-                                      ContactParameters::kMaxTolerance);
-        const ContactResult pairs = ContactNetwork({range, 1}).compute(reference);
+        const ContactResult pairs =
+            referencePairs(state, (shell_ + margin_) / shape_.diameter(), 1);
         candidates_ = pairs.contacts;
         normals_ = pairs.normals;
         built_ = state.packing.positions;
@@ -328,14 +336,7 @@ ContactResult relaxedContacts(const SoftMinimum& minimum, double tolerance, int 
     const double diameter = packing.shape().diameter();
     const State state{packing, minimum.cell};
     const Matrix3d cellInverse = state.cell.inverse();
-    Packing reference = packing;
-    for (Vector3d& r : reference.positions)
-        r = wrapIntoBox(cellInverse * r, packing.boxLength);
-    const double distortion = (cellInverse - Matrix3d::Identity()).norm() *
-                              (2.0 * packing.shape().circumradius() / diameter + tolerance);
-    const ContactResult candidates =
-        ContactNetwork({std::min(tolerance + distortion, ContactParameters::kMaxTolerance), 1})
-            .compute(reference);
+    const ContactResult candidates = referencePairs(state, tolerance, 1);
     ContactResult result;
     result.parameters = {tolerance, rattlerThreshold};
     result.counts.assign(packing.size(), 0);
