@@ -43,7 +43,7 @@ RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& net
         if (network.rattler[i] || network.rattler[j]) continue;
         const Vector3d inBox = (packing.positions[j] - packing.positions[i]) / diameter;
         const Vector3d separation =
-            inBox + cell * minimumImageShift(cellInverse * inBox, result.boxLength);
+            inBox + cellImageShift(inBox, cell, cellInverse, result.boxLength);
         const double gap = network.gaps[c]; // already / D
         const ContactCurvature curvature = contactCurvature(
             shape, packing.orientations[i].toRotationMatrix(),

@@ -9,10 +9,12 @@
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -51,25 +53,30 @@ struct PairImage {
 };
 PairImage pairImage(const State& state, const Matrix3d& cellInverse, int i, int j) {
     const Vector3d inBox = state.packing.positions[j] - state.packing.positions[i];
-    const Vector3d shift =
-        state.cell * minimumImageShift(cellInverse * inBox, state.packing.boxLength);
+    const Vector3d shift = cellImageShift(inBox, state.cell, cellInverse, state.packing.boxLength);
     return {inBox + shift, shift};
 }
 
 /// The pairs of `state` within `range` D (ContactNetwork with `rattlerThreshold`), found in the
 /// cubic reference frame F^-1 r, the range widened by what F can shorten a separation: a superset
 /// of the pairs within `range` in the cell.
-ContactResult referencePairs(const State& state, double range, int rattlerThreshold) {
+/// `state`'s packing in the cubic reference frame: F^-1 r, wrapped into the cube.
+Packing referencePacking(const State& state) {
     const Matrix3d cellInverse = state.cell.inverse();
     Packing reference = state.packing;
     for (Vector3d& r : reference.positions)
         r = wrapIntoBox(cellInverse * r, state.packing.boxLength);
+    return reference;
+}
+
+ContactResult referencePairs(const State& state, double range, int rattlerThreshold) {
+    const Matrix3d cellInverse = state.cell.inverse();
     const Superball shape = state.packing.shape();
     const double distortion = (cellInverse - Matrix3d::Identity()).norm() *
                               (2.0 * shape.circumradius() / shape.diameter() + range);
     return ContactNetwork(
                {std::min(range + distortion, ContactParameters::kMaxTolerance), rattlerThreshold})
-        .compute(reference);
+        .compute(referencePacking(state));
 }
 
 /// What one evaluation of E gives.
@@ -179,6 +186,18 @@ constexpr int kPairUnknowns = 12 + kBoxStrains;
 using PairVector = Eigen::Matrix<double, kPairUnknowns, 1>;
 using PairMatrix = Eigen::Matrix<double, kPairUnknowns, kPairUnknowns>;
 
+/// tr(e_k e_l) of the five strains, computed once: every strained pair's Hessian takes it.
+const Eigen::Matrix<double, kBoxStrains, kBoxStrains>& strainTraces() {
+    static const Eigen::Matrix<double, kBoxStrains, kBoxStrains> traces = [] {
+        Eigen::Matrix<double, kBoxStrains, kBoxStrains> t;
+        for (int k = 0; k < kBoxStrains; ++k)
+            for (int l = 0; l < kBoxStrains; ++l)
+                t(k, l) = (strainBasis(k) * strainBasis(l)).trace();
+        return t;
+    }();
+    return traces;
+}
+
 /// The gap's gradient and Hessian in (dr_i, dtheta_i, dr_j, dtheta_j) extended to the strains
 /// (docs/jamming.md §6.8): a strain eps moves j's image by eps (F L m), as a translation of j
 /// would, so its entries are W^T of j's translation entries, W = [e_k F L m]; the rescaling to
@@ -194,10 +213,8 @@ void extendToStrains(const Vector3d& shift, const Vector3d& normal, double force
     second.topRightCorner<12, kBoxStrains>() = gap * lift;
     second.bottomLeftCorner<kBoxStrains, 12>() = lift.transpose() * gap;
     second.bottomRightCorner<kBoxStrains, kBoxStrains>() = lift.transpose() * gap * lift;
-    for (int k = 0; k < kBoxStrains; ++k)
-        for (int l = 0; l < kBoxStrains; ++l)
-            second(12 + k, 12 + l) -=
-                force * normal.dot(shift) * (strainBasis(k) * strainBasis(l)).trace() / 3.0;
+    second.bottomRightCorner<kBoxStrains, kBoxStrains>() -=
+        force * normal.dot(shift) / 3.0 * strainTraces();
 }
 
 void OverlapEnergy::addPair(const State& state, const Matrix3d& cellInverse, std::size_t k,
@@ -230,16 +247,18 @@ void OverlapEnergy::addPair(const State& state, const Matrix3d& cellInverse, std
     const bool strained = deformBox_ && !image.shift.isZero();
     if (strained) extendToStrains(image.shift, pair.normal, force, column, second);
     // The unknowns of the pair's entries: i's and j's translations and rotations, the strains.
-    std::vector<std::pair<int, int>> active; // (entry, unknown)
+    std::array<std::pair<int, int>, kPairUnknowns> entries; // (entry, unknown), no allocation
+    int count = 0;
     for (int a = 0; a < 3; ++a) {
-        active.emplace_back(a, 3 * i + a);
-        active.emplace_back(6 + a, 3 * j + a);
+        entries[count++] = {a, 3 * i + a};
+        entries[count++] = {6 + a, 3 * j + a};
         if (!rotations_) continue;
-        active.emplace_back(3 + a, 3 * (particles_ + i) + a);
-        active.emplace_back(9 + a, 3 * (particles_ + j) + a);
+        entries[count++] = {3 + a, 3 * (particles_ + i) + a};
+        entries[count++] = {9 + a, 3 * (particles_ + j) + a};
     }
     for (int s = 0; strained && s < kBoxStrains; ++s)
-        active.emplace_back(12 + s, particleUnknowns() + s);
+        entries[count++] = {12 + s, particleUnknowns() + s};
+    const auto active = std::span(entries).first(static_cast<std::size_t>(count));
     terms.energy += 0.5 * force * force;
     terms.forceSum += force;
     ++terms.contacts;
@@ -307,9 +326,9 @@ SoftVerdict verdictOf(const EnergyTerms& terms, double shell, double diameter,
 
 /// `state`'s positions wrapped into its cell: F wrapIntoBox(F^-1 r).
 void wrapIntoCell(State& state) {
-    const Matrix3d cellInverse = state.cell.inverse();
+    state.packing.positions = referencePacking(state).positions;
     for (Vector3d& r : state.packing.positions)
-        r = state.cell * wrapIntoBox(cellInverse * r, state.packing.boxLength);
+        r = state.cell * r;
 }
 
 } // namespace

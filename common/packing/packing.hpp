@@ -102,20 +102,25 @@ class AnalysedPacking {
     std::optional<Packing> scaled_;
 };
 
-/// Minimum-image displacement in a cubic periodic box of edge L.
-inline Vector3d minimumImage(Vector3d d, double boxLength) {
-    for (int k = 0; k < 3; ++k)
-        d[k] -= boxLength * std::nearbyint(d[k] / boxLength);
-    return d;
-}
-
-/// The lattice vector L m that minimumImage adds to d: minimumImage(d) = d + it, exactly where
-/// d's components are of the box's size (for a cell F, images at F L m: jamming/soft_relaxation).
+/// The lattice vector L m that the minimum image in a cubic periodic box of edge L adds to d.
 inline Vector3d minimumImageShift(const Vector3d& d, double boxLength) {
     Vector3d shift;
     for (int k = 0; k < 3; ++k)
         shift[k] = -boxLength * std::nearbyint(d[k] / boxLength);
     return shift;
+}
+
+/// Minimum-image displacement in a cubic periodic box of edge L.
+inline Vector3d minimumImage(const Vector3d& d, double boxLength) {
+    return d + minimumImageShift(d, boxLength);
+}
+
+/// The lattice vector F L m that the minimum image in the cell F L (edges as columns, the
+/// cube's images mapped by F; jamming/soft_relaxation) adds to d: F times the cube's shift of
+/// F^-1 d. For F = I, bit for bit minimumImageShift.
+inline Vector3d cellImageShift(const Vector3d& d, const Eigen::Matrix3d& cell,
+                               const Eigen::Matrix3d& cellInverse, double boxLength) {
+    return cell * minimumImageShift(cellInverse * d, boxLength);
 }
 
 /// Wraps a position into [0, L).
