@@ -4,7 +4,9 @@
 #include "io/packing_io.hpp"
 
 #include <iomanip>
+#include <map>
 #include <ostream>
+#include <stdexcept>
 
 namespace sbpack {
 
@@ -20,7 +22,13 @@ PackingInfo packingInfo(const std::filesystem::path& file, const ContactParamete
     std::optional<JamCheck> jam;
     if (reduced.reducedPressure && *reduced.reducedPressure > 0.0)
         jam = checkJam(reduced, *reduced.reducedPressure);
-    OrderMetrics order = measureOrder(reduced, &contacts.contacts);
+    // Order metrics and jamming categories assume one size (docs/mixtures.md, "Not yet").
+    if (jamming && packing.isMixture())
+        throw std::invalid_argument("'" + file.string() +
+                                    "': --jamming: the jamming categories of a mixture are not "
+                                    "computed yet (docs/mixtures.md)");
+    OrderMetrics order =
+        packing.isMixture() ? OrderMetrics{} : measureOrder(reduced, &contacts.contacts);
     OrderVerdict verdict = orderVerdict(order);
     std::optional<PackingJamming> categories;
     if (jamming) categories = testJammingCategories(reduced, *jamming, parameters);
@@ -36,6 +44,10 @@ namespace {
 void printOrder(const PackingInfo& info, std::ostream& out) {
     const OrderMetrics& m = info.order;
     out << "  order                ";
+    if (info.packing.isMixture()) {
+        out << "not measured: a mixture (docs/mixtures.md)\n";
+        return;
+    }
     if (m.cutoffBonds) out << "mean local q6 = " << m.cutoffBonds->q6.meanLocalOrder << ", ";
     if (m.solidLike) out << "solid-like " << m.solidLike->solidFraction << ", ";
     if (m.translational)
@@ -47,6 +59,26 @@ void printOrder(const PackingInfo& info, std::ostream& out) {
     if (info.verdict.ordered)
         out << "  warning: this packing has ordered (" << info.verdict.reason
             << "): it is not MRJ, whatever the jam check says\n";
+}
+
+/// A mixture's sizes: each distinct semi-axis and how many particles have it (at most four
+/// listed, then the range).
+void printSizes(const Packing& packing, std::ostream& out) {
+    std::map<double, int> counts;
+    for (const double r : packing.semiAxes)
+        ++counts[r];
+    out << "  semi-axes        R_i = ";
+    if (counts.size() > 4) {
+        out << counts.begin()->first << " to " << counts.rbegin()->first << " (" << counts.size()
+            << " sizes)\n";
+        return;
+    }
+    const char* separator = "";
+    for (const auto& [r, count] : counts) {
+        out << separator << r << " (" << count << ")";
+        separator = ", ";
+    }
+    out << "  (a mixture)\n";
 }
 
 /// The jamming categories: the network, a line per category tested, the category reached.
@@ -78,8 +110,10 @@ void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info
         << "  particles          N = " << packing.size() << '\n'
         << "  exponent           p = " << packing.p << '\n'
         << "  box edge           L = " << packing.boxLength << '\n'
-        << "  semi-axis          R = " << packing.semiAxis << '\n'
-        << "  packing fraction phi = " << packing.packingFraction() << '\n'
+        << "  semi-axis          R = " << packing.semiAxis
+        << (packing.isMixture() ? "  (the largest)\n" : "\n");
+    if (packing.isMixture()) printSizes(packing, out);
+    out << "  packing fraction phi = " << packing.packingFraction() << '\n'
         << "  mean width         w = " << info.meanWidth
         << "  (w/D = " << info.meanWidth / (2.0 * packing.semiAxis) << ")\n";
     if (packing.reducedPressure)

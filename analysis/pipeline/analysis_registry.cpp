@@ -70,7 +70,8 @@ constexpr std::array<AnalysisInfo, 11> kRegistry{{
                     "particle",
      .run = stages::runContacts,
      .options = kContactOptions,
-     .pythonClass = "Contacts"},
+     .pythonClass = "Contacts",
+     .mixtures = true},
     {.analysis = Analysis::StructureFactor,
      .name = "sq",
      .groups = kStructureFactorGroups,
@@ -78,7 +79,8 @@ constexpr std::array<AnalysisInfo, 11> kRegistry{{
      .run = stages::runStructureFactor,
      .memory = stages::structureFactorMemory,
      .options = kStructureFactorOptions,
-     .pythonClass = "StructureFactor"},
+     .pythonClass = "StructureFactor",
+     .mixtures = true},
     {.analysis = Analysis::SpectralDensity,
      .name = "chi",
      .groups = kSpectralDensityGroups,
@@ -184,6 +186,12 @@ std::vector<const schema::Group*> collectGroups() {
 }
 
 } // namespace
+
+bool analysesMixtures(const AnalysisInfo& info) {
+    return info.mixtures && std::all_of(info.needs.begin(), info.needs.end(), [](Analysis need) {
+               return analysesMixtures(analysisInfo(need));
+           });
+}
 
 std::vector<std::string_view> analysisOptions(const AnalysisInfo& info) {
     std::vector<std::string_view> options(info.options.begin(), info.options.end());

@@ -67,7 +67,12 @@ FileResults analyzeFile(const Packing& packing, const std::filesystem::path& inp
     for (std::size_t i = 0; i < order.size(); ++i) {
         const AnalysisInfo& info = analysisInfo(order[i]);
         schema::Record record(info.group());
-        if (info.run(context, record)) results.groups.push_back(std::move(record));
+        if (packing.isMixture() && !analysesMixtures(info))
+            progress.warn(fmt::format("{}: not computed: it does not yet read a mixture's sizes "
+                                      "(docs/mixtures.md)",
+                                      info.name));
+        else if (info.run(context, record))
+            results.groups.push_back(std::move(record));
         for (schema::Record& extra : context.takeGroups())
             results.groups.push_back(std::move(extra));
         // Big intermediates (the spectral voxelization) go as soon as nothing needs them.

@@ -62,13 +62,22 @@ std::vector<bool> findRattlers(int count, const std::vector<std::pair<int, int>>
 }
 
 /// The exact bounds on a pair's signed distance from its centre distance r: r - 2 R_out <= s <=
-/// r - 2 R_in (below 2 R_in the pair certainly touches or overlaps), each widened by `slack`.
+/// r - 2 R_in (below 2 R_in the pair certainly touches or overlaps), each widened by `slack`;
+/// for a mixture's pair the two bodies' radii summed (`pairScale` = (R_i + R_j) / 2R).
 struct SphereBounds {
     double inradius, circumradius, slack;
-    explicit SphereBounds(const Superball& shape)
-        : inradius(shape.inradius()), circumradius(shape.circumradius()),
-          slack(boundSlack * shape.diameter()) {}
+    explicit SphereBounds(const Superball& shape, double pairScale = 1.0)
+        : inradius(shape.inradius() * pairScale), circumradius(shape.circumradius() * pairScale),
+          slack(boundSlack * shape.diameter() * pairScale) {}
 };
+
+/// Pair (i, j) of `packing`: A with i's shape, B scaled to j's (docs/mixtures.md).
+SuperballPair pairOf(const Packing& packing, const Superball& shape, int i, int j,
+                     const std::vector<Matrix3d>& rotations, const Vector3d& d) {
+    if (!packing.isMixture()) return {shape, rotations[i], rotations[j], d};
+    const double ri = packing.semiAxisOf(i), rj = packing.semiAxisOf(j);
+    return {Superball(packing.p, ri), rotations[i], rotations[j], d, rj / ri};
+}
 
 /// Throws unless s of pair (i, j) at this centre distance lies within the sphere bounds.
 void checkAgainstSpheres(const SphereBounds& bounds, double s, double centreDistance, int i,
@@ -156,19 +165,25 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
             packing.boxLength / diameter, range / diameter, 2.0 * range / diameter));
     const CellList cells(packing.positions, packing.boxLength, range);
     cells.forEachNeighbourPair([&](int i, int j, const Vector3d& d) {
+        // A mixture's pair: its own diameter R_i + R_j sizes the tolerance and the gap's unit.
+        const double scale =
+            packing.isMixture()
+                ? 0.5 * (packing.semiAxisOf(i) + packing.semiAxisOf(j)) / packing.semiAxis
+                : 1.0;
+        const double pairDiameter = diameter * scale, pairGap = contactGap * scale;
         const SignedDistanceResult pair =
-            signedDistance(SuperballPair{shape, rotations[i], rotations[j], d});
+            signedDistance(pairOf(packing, shape, i, j, rotations, d));
         const double s = pair.signedDistance;
-        checkAgainstSpheres(bounds, s, d.norm(), i, j);
+        checkAgainstSpheres(scale == 1.0 ? bounds : SphereBounds(shape, scale), s, d.norm(), i, j);
         result.pairIterations += pair.iterations;
         if (s < result.worstGap) {
             result.worstGap = s;
             result.worstPairA = i;
             result.worstPairB = j;
         }
-        if (s < -contactGap) ++result.overlappingPairs;
-        if (s < contactGap) { // paper Sec. III A
-            found.push_back({{i, j}, s / diameter, pair.normal, contactPoint(pair)});
+        if (s < -pairGap) ++result.overlappingPairs;
+        if (s < pairGap) { // paper Sec. III A
+            found.push_back({{i, j}, s / pairDiameter, pair.normal, contactPoint(pair)});
             ++result.counts[i];
             ++result.counts[j];
         }

@@ -11,7 +11,8 @@
 namespace sbpack {
 
 struct ContactParameters {
-    /// Two particles are in contact if their gap is below tolerance * D (paper Sec. III A).
+    /// Two particles are in contact if their gap is below tolerance * D (paper Sec. III A); a
+    /// mixture's pair below tolerance * (R_i + R_j), its own diameter (docs/mixtures.md).
     double tolerance = 1e-10;
     /// The largest tolerance accepted: a gap of a tenth of D is no contact (issue 65 item 7).
     static constexpr double kMaxTolerance = 0.1;
@@ -26,11 +27,11 @@ struct ContactParameters {
 
 struct ContactResult {
     std::vector<std::pair<int, int>> contacts; ///< pairs (i, j), i < j, sorted
-    std::vector<double> gaps;                  ///< signed distance / D of each contact, same order
-    std::vector<Vector3d> normals;             ///< unit contact normal, from i toward j, same order
-    std::vector<Vector3d> points;              ///< contactPoint, relative to r_i, same order
-    std::vector<int> counts;                   ///< per particle, all contacts (rattlers included)
-    std::vector<bool> rattler;                 ///< per particle
+    std::vector<double> gaps;      ///< signed distance / D (a mixture's: / (R_i + R_j)), same order
+    std::vector<Vector3d> normals; ///< unit contact normal, from i toward j, same order
+    std::vector<Vector3d> points;  ///< contactPoint, relative to r_i, same order
+    std::vector<int> counts;       ///< per particle, all contacts (rattlers included)
+    std::vector<bool> rattler;     ///< per particle
     /// Z: mean over the non-rattlers of their contacts with non-rattlers; 0 if all are rattlers.
     double meanContactNumber = 0.0;
     /// phi_R: fraction of the particles removed as rattlers.
@@ -40,7 +41,7 @@ struct ContactResult {
     double worstGap = 0.0;
     int worstPairA = -1;
     int worstPairB = -1;
-    int overlappingPairs = 0; ///< pairs with signed distance < -tolerance * D
+    int overlappingPairs = 0; ///< pairs with signed distance < -tolerance * D (pair's D)
     long pairIterations = 0;  ///< Newton iterations of all pair solves, to monitor stiffness
     ContactParameters parameters;
 };

@@ -53,7 +53,13 @@ Packing readPackingFile(const fs::path& file) {
 }
 
 void writePackingFile(const Packing& packing, const fs::path& file) {
-    switch (packingFormatOf(file)) {
+    const PackingFormat format = packingFormatOf(file);
+    // The other formats hold one size: a mixture written there would lose its sizes.
+    if (packing.isMixture() && format != PackingFormat::Hdf5)
+        throw std::invalid_argument("'" + file.string() +
+                                    "': a mixture (per-particle semi_axes) can be written only "
+                                    "as .h5 for now (docs/mixtures.md)");
+    switch (format) {
     case PackingFormat::Hdf5:
         return writePacking(packing, file);
     case PackingFormat::Text:

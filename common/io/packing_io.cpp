@@ -234,6 +234,7 @@ std::string fileContents(const Packing& packing, const std::string& name) {
     for (const Quaterniond& q : packing.orientations)
         quaternions.insert(quaternions.end(), {q.w(), q.x(), q.y(), q.z()});
     writeMatrixDataset(root, kOrientations, quaternions, 4);
+    if (packing.isMixture()) writeMatrixDataset(root, kSemiAxes, packing.semiAxes, 1);
     if (!packing.velocities.empty())
         writeMatrixDataset(root, kVelocities, flatten(packing.velocities), 3);
     if (!packing.angularVelocities.empty())
@@ -279,6 +280,7 @@ Packing readContents(hid_t root, const std::string& file) {
     packing.orientations.resize(rows);
     for (std::size_t i = 0; i < rows; ++i)
         packing.orientations[i] = Quaterniond(q[4 * i], q[4 * i + 1], q[4 * i + 2], q[4 * i + 3]);
+    if (hasLink(root, kSemiAxes)) packing.semiAxes = readMatrixDataset(root, kSemiAxes, rows, 1);
     if (hasLink(root, kVelocities))
         packing.velocities = unflatten(readMatrixDataset(root, kVelocities, rows, 3));
     if (hasLink(root, kAngularVelocities))

@@ -34,7 +34,8 @@ constexpr PackingEntry kEntries[] = {
      .kind = A,
      .type = F,
      .units = "length",
-     .description = "semi-axis R of every particle (major-axis length D = 2 R <= L)"},
+     .description = "semi-axis R of every particle (major-axis length D = 2 R <= L); of a "
+                    "mixture, the largest"},
     {.name = kParticles,
      .kind = A,
      .type = I,
@@ -45,7 +46,8 @@ constexpr PackingEntry kEntries[] = {
      .type = F,
      .units = "1",
      .description =
-         "packing fraction N v1 / L^3; a reader refuses one off by more than 1e-9 of it"},
+         "packing fraction N v1 / L^3 (of a mixture sum_i v_i / L^3); a reader refuses one "
+         "off by more than 1e-9 of it"},
     {.name = kReducedPressure,
      .kind = A,
      .type = F,
@@ -79,6 +81,17 @@ constexpr PackingEntry kEntries[] = {
                     "x_body; normalised on reading",
      .rows = "N",
      .columns = 4},
+    {.name = kSemiAxes,
+     .kind = D,
+     .type = F,
+     .units = "length",
+     .description =
+         "a mixture's semi-axis R_i of each particle (docs/mixtures.md), semi_axis their "
+         "largest; absent where every particle has semi_axis (a reader that does not "
+         "know it refuses the file: its phi is then not N v1 / L^3)",
+     .optional = true,
+     .rows = "N",
+     .columns = 1},
     {.name = kVelocities,
      .kind = D,
      .type = F,

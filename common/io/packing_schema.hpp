@@ -32,6 +32,7 @@ inline constexpr const char* kSeed = "seed";
 inline constexpr const char* kGeneratorVersion = "generator_version";
 inline constexpr const char* kPositions = "positions";
 inline constexpr const char* kOrientations = "orientations";
+inline constexpr const char* kSemiAxes = "semi_axes";
 inline constexpr const char* kVelocities = "velocities";
 inline constexpr const char* kAngularVelocities = "angular_velocities";
 inline constexpr const char* kProvenance = "provenance";

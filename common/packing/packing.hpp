@@ -45,10 +45,16 @@ struct ContactForces {
     double reducedPressure = 0.0;
 };
 
-/// Identical superballs in a cubic periodic box of edge L.
+/// Superballs of one exponent in a cubic periodic box of edge L: identical, or a mixture of
+/// sizes (docs/mixtures.md).
 struct Packing {
     double p = 1.0;
+    /// The semi-axis of every particle; of a mixture, the largest of semiAxes (what lengths that
+    /// must hold for every particle, such as neighbour cut-offs, are sized by).
     double semiAxis = 0.5;
+    /// A mixture's per-particle semi-axes (dataset `semi_axes`), N entries; empty where every
+    /// particle has semiAxis, as every packing of identical particles is stored.
+    std::vector<double> semiAxes;
     double boxLength = 1.0;
     std::vector<Vector3d> positions;         ///< in [0, L)
     std::vector<Quaterniond> orientations;   ///< unit (w, x, y, z), body to lab
@@ -69,8 +75,12 @@ struct Packing {
     std::optional<ContactForces> contactForces;
 
     std::size_t size() const { return positions.size(); }
+    /// The shape of every particle; of a mixture, the largest.
     Superball shape() const { return Superball(p, semiAxis); }
-    /// phi = N v1 / L^3.
+    bool isMixture() const { return !semiAxes.empty(); }
+    /// Particle i's semi-axis.
+    double semiAxisOf(std::size_t i) const { return semiAxes.empty() ? semiAxis : semiAxes[i]; }
+    /// phi = sum_i v_i / L^3 (N v1 / L^3 for identical particles).
     double packingFraction() const;
     /// The length unit the analyses compute in (docs/reliability.md, "Units"): the power of two
     /// u with 1 <= D / u < 2 (D = 2 R), so that lengths divided by it are exact and a packing

@@ -1,5 +1,6 @@
 #include "packing/validation.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -99,6 +100,27 @@ void checkOrientations(const Packing& packing, const std::string& source) {
     }
 }
 
+/// A mixture's semi-axes (docs/mixtures.md): one per particle, each finite and positive, the
+/// largest semiAxis itself.
+void checkSemiAxes(const Packing& packing, const std::string& source) {
+    if (packing.semiAxes.empty()) return;
+    if (packing.semiAxes.size() != packing.positions.size())
+        reject(source, "semi_axes has " + std::to_string(packing.semiAxes.size()) + " rows for " +
+                           std::to_string(packing.positions.size()) +
+                           " particles (count mismatch)");
+    double largest = 0.0;
+    for (std::size_t i = 0; i < packing.semiAxes.size(); ++i) {
+        const double r = packing.semiAxes[i];
+        if (!(r > 0.0 && std::isfinite(r)))
+            reject(source, "particle " + std::to_string(i) + " has semi-axis " + formatDouble(r) +
+                               " in semi_axes (must be finite and > 0)");
+        largest = std::max(largest, r);
+    }
+    if (largest != packing.semiAxis)
+        reject(source, "semi_axis = " + formatDouble(packing.semiAxis) +
+                           " is not the largest of semi_axes (" + formatDouble(largest) + ")");
+}
+
 } // namespace
 
 /// The lengths in [kShortestLength, kLongestLength] (sbgen --phi-init 1e-300 wrote L = 2.2e100).
@@ -120,6 +142,7 @@ void validatePacking(const Packing& packing, const std::string& source) {
     checkLengthRange(packing, source);
     const std::size_t n = packing.positions.size();
     if (n == 0) reject(source, "no particles");
+    checkSemiAxes(packing, source);
     // Finite sizes can still overflow or underflow the volume (semi_axis 1e300 or 1e-300).
     const double phi = packing.packingFraction();
     if (!(std::isfinite(phi) && phi > 0.0))

@@ -22,7 +22,8 @@ class MinkowskiSum {
 
     double support(const Vector3d& u) const {
         ++evaluations;
-        return shape().support(ra().transpose() * u) + shape().support(rb().transpose() * u);
+        return shape().support(ra().transpose() * u) +
+               sizeB() * shape().support(rb().transpose() * u);
     }
     /// grad H = s_A(u) + s_B(u): the sum of the support points.
     Vector3d supportPoint(const Vector3d& u) const {
@@ -33,14 +34,20 @@ class MinkowskiSum {
         return ra() * shape().supportPoint(ra().transpose() * u);
     }
     Vector3d supportPointB(const Vector3d& u) const {
-        return rb() * shape().supportPoint(rb().transpose() * u);
+        return sizeB() * (rb() * shape().supportPoint(rb().transpose() * u));
     }
     Matrix3d supportHessian(const Vector3d& u) const {
         return ra() * shape().supportHessian(ra().transpose() * u) * ra().transpose() +
-               rb() * shape().supportHessian(rb().transpose() * u) * rb().transpose();
+               sizeB() * (rb() * shape().supportHessian(rb().transpose() * u) * rb().transpose());
     }
+    /// The gauges of A and B at x (lab frame, relative to their centres).
+    double gaugeA(const Vector3d& x) const { return shape().gauge(ra().transpose() * x); }
+    double gaugeB(const Vector3d& x) const { return shape().gauge(rb().transpose() * x) / sizeB(); }
+    /// A's and B's semi-axes summed: the pair's contact distance of spheres, its diameter.
+    double pairDiameter() const { return shape().semiAxis() * (1.0 + sizeB()); }
 
     const Superball& shape() const { return pair_.shape; }
+    double sizeB() const { return pair_.sizeB; }
     const Matrix3d& ra() const { return pair_.rotationA; }
     const Matrix3d& rb() const { return pair_.rotationB; }
     const Vector3d& displacement() const { return pair_.displacement; }
@@ -188,11 +195,11 @@ void octahedronSignedDistance(const MinkowskiSum& k, SignedDistanceResult& resul
         consider(n.dot(d) < 0 ? -n : n);
     if (result.scaleFactor > 1.0) {
         std::vector<Vector3d> vertices;
-        const double r = k.shape().semiAxis();
+        const double r = k.shape().semiAxis(), rB = r * k.sizeB();
         for (int i = 0; i < 6; ++i)
             for (int j = 0; j < 6; ++j) {
                 const Vector3d a = k.ra().col(i % 3) * (i < 3 ? r : -r);
-                const Vector3d b = k.rb().col(j % 3) * (j < 3 ? r : -r);
+                const Vector3d b = k.rb().col(j % 3) * (j < 3 ? rB : -rB);
                 vertices.push_back(a + b);
             }
         for (std::size_t i = 0; i < vertices.size(); ++i) {
@@ -317,8 +324,8 @@ bool scaledBodiesMeet(const MinkowskiSum& k, const Vector3d& u, double mu,
                       const PairTolerances& tolerances) {
     const Vector3d& d = k.displacement();
     const double limit = mu * (1.0 + tolerances.certificateTolerance);
-    return k.shape().gauge(k.rb().transpose() * (mu * k.supportPointA(u) - d)) <= limit ||
-           k.shape().gauge(k.ra().transpose() * (d - mu * k.supportPointB(u))) <= limit;
+    return k.gaugeB(mu * k.supportPointA(u) - d) <= limit ||
+           k.gaugeA(d - mu * k.supportPointB(u)) <= limit;
 }
 
 /// Where Newton stalled on a kink: H minimised exactly over the square of half-width `radius`
@@ -438,7 +445,7 @@ void generalSignedDistance(const MinkowskiSum& k, const PairTolerances& toleranc
     // where a face's support point is ill-conditioned, the supporting planes of n have a common
     // perpendicular between the bodies.
     const Vector3d residual = d - k.supportPoint(n) - f * n;
-    const double size = k.shape().diameter();
+    const double size = k.pairDiameter();
     if (residual.norm() > tolerances.distanceCertificateTolerance * size &&
         supportPlaneMismatch(k.pair(), n, f, k.supportPointA(n), d - k.supportPointB(n)) >
             tolerances.mismatchTolerance * size) {
@@ -471,8 +478,9 @@ double supportPlaneMismatch(const SuperballPair& pair, const Vector3d& n, double
                             const Vector3d& contactA, const Vector3d& contactB) {
     const Vector3d& d = pair.displacement;
     const Vector3d belowB = contactB - f * n, aboveA = contactA + f * n - d;
-    const double gaugeA = std::max(1.0, pair.shape.gauge(pair.rotationA.transpose() * belowB));
-    const double gaugeB = std::max(1.0, pair.shape.gauge(pair.rotationB.transpose() * aboveA));
+    const MinkowskiSum k(pair);
+    const double gaugeA = std::max(1.0, k.gaugeA(belowB));
+    const double gaugeB = std::max(1.0, k.gaugeB(aboveA));
     return std::min((contactB - belowB / gaugeA).norm(), (contactA - d - aboveA / gaugeB).norm()) -
            f;
 }
@@ -514,8 +522,8 @@ ScaleFactorResult scaleFactor(const SuperballPair& pair, const Vector3d& warmNor
     const Vector3d& d = pair.displacement;
     const double distance = d.norm();
     if (distance == 0.0) return {0.0, Vector3d::UnitX(), 0, 0, 0};
-    if (pair.shape.isSphere()) return {distance / pair.shape.diameter(), d / distance, 0, 0, 0};
     const MinkowskiSum k(pair);
+    if (pair.shape.isSphere()) return {distance / k.pairDiameter(), d / distance, 0, 0, 0};
     if (pair.shape.isOctahedron()) return octahedronScaleFactor(k);
     return generalScaleFactor(k, warmNormal, tolerances);
 }
@@ -531,7 +539,7 @@ SignedDistanceResult signedDistance(const SuperballPair& pair, const Vector3d& w
     const MinkowskiSum k(pair);
     const Vector3d& d = pair.displacement;
     if (pair.shape.isSphere()) {
-        result.signedDistance = d.norm() - pair.shape.diameter();
+        result.signedDistance = d.norm() - k.pairDiameter();
     } else if (pair.shape.isOctahedron()) {
         octahedronSignedDistance(k, result);
     } else {

@@ -36,11 +36,14 @@ struct PairTolerances {
 };
 
 /// One pair: the two orientations (rotation body -> lab) and the displacement d = r_B - r_A.
+/// A is `shape`; B is `shape` scaled by sizeB (a mixture's pair, docs/mixtures.md: its support
+/// function sizeB h, support point sizeB x(n), gauge g / sizeB), identical where sizeB = 1.
 struct SuperballPair {
     Superball shape;
     Matrix3d rotationA;
     Matrix3d rotationB;
     Vector3d displacement;
+    double sizeB = 1.0; ///< B's semi-axis over A's
 };
 
 struct ScaleFactorResult {

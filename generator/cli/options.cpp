@@ -147,6 +147,15 @@ void GeneratorCommandLine::addProtocolOptions() {
         "--pressure-switch", "P", [&p](auto n, auto v) { p.pressureSwitch = parseNumber(n, v); },
         "reduced pressure at which growth slows (default 1e6)");
     protocol(
+        "--size-ratio", "R", [&p](auto n, auto v) { p.sizeRatio = parseNumber(n, v); },
+        "a binary mixture of spheres: the large ones' diameter over the small ones',\n"
+        "in [1, 10] (default 1: identical particles; docs/mixtures.md); all grow by\n"
+        "the same factor, as in the Lubachevsky-Stillinger code");
+    protocol(
+        "--large-fraction", "X", [&p](auto n, auto v) { p.largeFraction = parseNumber(n, v); },
+        "the mixture's number fraction of large particles (default 0.5), the first\n"
+        "round(X N) particles");
+    protocol(
         "--window", "W", [&p](auto n, auto v) { p.collisionsPerWindow = parseNumber(n, v); },
         "collisions per particle between thermostat rescalings and pressure\n"
         "estimates (default 10)");
@@ -251,7 +260,9 @@ std::invalid_argument optionError(const ProtocolParameterError& e) {
         {"cost_limit", "--cost-limit"},
         {"pressure_finish", "--pressure-finish"},
         {"finish_speed", "--finish-speed"},
-        {"force_windows", "--force-windows"}};
+        {"force_windows", "--force-windows"},
+        {"size_ratio", "--size-ratio"},
+        {"large_fraction", "--large-fraction"}};
     const auto it = kOption.find(e.parameter());
     return std::invalid_argument("option " + (it == kOption.end() ? e.parameter() : it->second) +
                                  ": " + e.problem());

@@ -67,16 +67,24 @@ struct RunReport {
 
 template <EngineShape Shape> class EventDrivenMd {
   public:
+    /// `sizes`: a mixture's diameters over the clock's D (docs/mixtures.md), each in (0, 1] and
+    /// one per particle; empty: identical bodies of diameter D.
     EventDrivenMd(Shape shape, double boxLength, std::vector<ParticleState> particles,
-                  GrowthClock clock, EngineParameters parameters = {})
+                  GrowthClock clock, std::vector<double> sizes = {},
+                  EngineParameters parameters = {})
         : shape_(shape), box_(boxLength), state_(std::move(particles)), clock_(clock),
-          parameters_(parameters), memories_(static_cast<int>(state_.size())),
-          collidedInRun_(state_.size(), 0) {}
+          sizes_(std::move(sizes)), parameters_(parameters),
+          memories_(static_cast<int>(state_.size())), collidedInRun_(state_.size(), 0) {
+        if (!sizes_.empty() && sizes_.size() != state_.size())
+            throw std::invalid_argument("event-driven engine: one size per particle");
+    }
 
     int size() const { return static_cast<int>(state_.size()); }
     double boxLength() const { return box_; }
     const GrowthClock& clock() const { return clock_; }
     double diameter() const { return clock_.diameter(); }
+    /// The mixture's diameters over diameter() (empty: identical bodies).
+    const std::vector<double>& sizes() const { return sizes_; }
     /// The synchronised particles (valid between runs).
     const std::vector<ParticleState>& particles() const { return state_; }
     const Shape& shape() const { return shape_; }
@@ -206,6 +214,11 @@ template <EngineShape Shape> class EventDrivenMd {
         m.relativeVelocity = state_[j].velocity - state_[i].velocity;
         m.diameter = clock_.diameter(t);
         m.growthRate = clock_.rate;
+        if (!sizes_.empty()) { // a mixture's pair: as spheres of its mean diameter
+            const double pairSize = 0.5 * (sizes_[i] + sizes_[j]);
+            m.diameter *= pairSize;
+            m.growthRate *= pairSize;
+        }
         shape_.orient(m, state_[i], t - time_[i], state_[j], t - time_[j]);
         if constexpr (kWitnessClock) {
             m.turnedI = turnedAt(i, t);
@@ -339,6 +352,7 @@ template <EngineShape Shape> class EventDrivenMd {
     double box_;
     std::vector<ParticleState> state_;
     GrowthClock clock_;
+    std::vector<double> sizes_;
     EngineParameters parameters_;
     NeighbourLists lists_;
     EventQueue queue_;

@@ -37,9 +37,10 @@ double boxLengthFor(int particles, double particleVolume, double phi) {
 }
 
 RandomPlacement randomPlacement(int particles, double p, double boxLength, Random& random,
-                                const PlacementWatch& watch) {
+                                const PlacementWatch& watch, const std::vector<double>& sizes) {
     const Superball body(p, 0.5);
     const double reach = 2.0 * body.circumradius(); // circumscribed spheres of diameter c
+    const auto size = [&](int k) { return sizes.empty() ? 1.0 : sizes[k]; };
     CellGrid cells(boxLength, reach, particles);
     RandomPlacement placement;
     placement.positions.reserve(particles);
@@ -55,20 +56,23 @@ RandomPlacement randomPlacement(int particles, double p, double boxLength, Rando
                          random.uniform() * boxLength);
         const Quaterniond q = body.isSphere() ? Quaterniond::Identity() : random.rotation();
         bool free = true;
+        const int next = static_cast<int>(placement.positions.size());
         cells.forEachNearby(cells.cellContaining(r), [&](int j) {
             if (!free) return;
             const Vector3d d = minimumImage(placement.positions[j] - r, boxLength);
-            if (d.squaredNorm() >= reach * reach) return;
+            const double pairSize = 0.5 * (size(next) + size(j)); // the pair's reach over c
+            if (d.squaredNorm() >= reach * reach * pairSize * pairSize) return;
             if (body.isSphere()) {
                 free = false;
                 return;
             }
-            const SuperballPair pair{body, q.toRotationMatrix(),
-                                     placement.orientations[j].toRotationMatrix(), d};
+            const SuperballPair pair{Superball(p, 0.5 * size(next)), q.toRotationMatrix(),
+                                     placement.orientations[j].toRotationMatrix(), d,
+                                     size(j) / size(next)};
             free = scaleFactor(pair).scaleFactor > 1.0;
         });
         if (!free) continue;
-        cells.insert(static_cast<int>(placement.positions.size()), cells.cellContaining(r));
+        cells.insert(next, cells.cellContaining(r));
         placement.positions.push_back(r);
         placement.orientations.push_back(q);
     }

@@ -33,12 +33,14 @@ struct PlacementStopped : std::runtime_error {
     PlacementStopped() : std::runtime_error("the random start was stopped") {}
 };
 
-/// Random sequential addition of non-overlapping superballs of exponent p and diameter 1: a
-/// trial is accepted when every nearby body is outside its circumscribed sphere or the pair's
-/// scale factor mu exceeds 1 (docs/design.md §2). Throws if it cannot place them within a generous
+/// Random sequential addition of non-overlapping superballs of exponent p and diameter 1 (a
+/// mixture's particle k of diameter sizes[k] <= 1, docs/mixtures.md; empty: all 1): a trial is
+/// accepted when every nearby body is outside its circumscribed sphere or the pair's scale
+/// factor mu exceeds 1 (docs/design.md §2). Throws if it cannot place them within a generous
 /// number of attempts, and PlacementStopped when `watch` returns false.
 RandomPlacement randomPlacement(int particles, double p, double boxLength, Random& random,
-                                const PlacementWatch& watch = {});
+                                const PlacementWatch& watch = {},
+                                const std::vector<double>& sizes = {});
 
 /// Gaussian velocities with the centre-of-mass motion removed, scaled to kT = 1 exactly.
 std::vector<Vector3d> maxwellVelocities(int particles, Random& random);

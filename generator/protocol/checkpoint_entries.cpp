@@ -81,6 +81,15 @@ Entry finish(Entry e) {
     return e;
 }
 
+/// An entry of a mixture (docs/mixtures.md), optional and written only by a mixture's run.
+Entry mixture(Entry e) {
+    e.write = [write = e.write](const CheckpointFields& f) -> std::optional<ProvenanceValue> {
+        if (f.parameters.sizeRatio == 1.0) return std::nullopt;
+        return write(f);
+    };
+    return e;
+}
+
 /// The phase, range-checked (a phase beyond Done would never end).
 Entry phase() {
     return {Group::resumeState,
@@ -136,6 +145,11 @@ std::vector<Entry> parameterEntries() {
             true)),
         finish(field<double>(
             P, "finish_speed", [](auto& f) -> auto& { return f.parameters.finishSpeed; }, true)),
+        mixture(field<double>(
+            P, "size_ratio", [](auto& f) -> auto& { return f.parameters.sizeRatio; }, true)),
+        mixture(field<double>(
+            P, "large_fraction", [](auto& f) -> auto& { return f.parameters.largeFraction; },
+            true)),
         field<double>(
             P, "collisions_per_window",
             [](auto& f) -> auto& { return f.parameters.collisionsPerWindow; }),
@@ -257,6 +271,11 @@ ProtocolParameters checkedParameters(ProtocolParameters parameters, const Packin
                                      const std::string& source) {
     parameters.particles = static_cast<int>(packing.size());
     parameters.p = packing.p;
+    if (packing.isMixture() && rotating(packing.p))
+        throw std::invalid_argument("'" + source +
+                                    "': a mixture of superballs (p != 1) cannot "
+                                    "be resumed: sbgen makes mixtures of spheres only "
+                                    "(docs/mixtures.md)");
     try {
         parameters.validate();
     } catch (const ProtocolParameterError& e) {

@@ -36,20 +36,43 @@ bool positiveFinite(double x) {
     return std::isfinite(x) && x > 0.0;
 }
 
-/// The engine for exponent p: the exact sphere engine at p = 1, the superball one otherwise.
+/// The engine for exponent p: the exact sphere engine at p = 1, the superball one otherwise;
+/// `sizes` a mixture's (EventDrivenMd).
 template <class Engine>
-Engine makeEngine(double p, double box, std::vector<ParticleState> state, GrowthClock clock) {
+Engine makeEngine(double p, double box, std::vector<ParticleState> state, GrowthClock clock,
+                  std::vector<double> sizes) {
     if (!rotating(p))
-        return EventDrivenMd<SphereShape>(SphereShape{}, box, std::move(state), clock);
-    return EventDrivenMd<SuperballShape>(SuperballShape(p), box, std::move(state), clock);
+        return EventDrivenMd<SphereShape>(SphereShape{}, box, std::move(state), clock,
+                                          std::move(sizes));
+    return EventDrivenMd<SuperballShape>(SuperballShape(p), box, std::move(state), clock,
+                                         std::move(sizes));
+}
+
+/// The mean of sizes^3 (1 where empty): a mixture's mean volume over the largest particle's.
+double meanCubedSize(const std::vector<double>& sizes) {
+    if (sizes.empty()) return 1.0;
+    double sum = 0.0;
+    for (const double s : sizes)
+        sum += s * s * s;
+    return sum / static_cast<double>(sizes.size());
+}
+
+/// A checkpoint's mixture sizes, each semi-axis over the largest (empty: identical particles).
+std::vector<double> sizesOf(const Packing& packing) {
+    std::vector<double> sizes;
+    for (const double r : packing.semiAxes)
+        sizes.push_back(r / packing.semiAxis);
+    return sizes;
 }
 
 template <class Engine>
 Engine freshEngine(const ProtocolParameters& parameters, const PlacementWatch& placed) {
     Random random(parameters.seed);
     const int n = parameters.particles;
-    const double box = boxLengthFor(n, Superball(parameters.p, 0.5).volume(), parameters.phiInit);
-    const RandomPlacement placement = randomPlacement(n, parameters.p, box, random, placed);
+    std::vector<double> sizes = parameters.relativeSizes();
+    const double box = boxLengthFor(n, Superball(parameters.p, 0.5).volume() * meanCubedSize(sizes),
+                                    parameters.phiInit);
+    const RandomPlacement placement = randomPlacement(n, parameters.p, box, random, placed, sizes);
     const std::vector<Vector3d> velocities = maxwellVelocities(n, random);
     std::vector<ParticleState> state(n);
     for (int i = 0; i < n; ++i)
@@ -61,7 +84,7 @@ Engine freshEngine(const ProtocolParameters& parameters, const PlacementWatch& p
             state[i].angularVelocity = spins[i];
     }
     return makeEngine<Engine>(parameters.p, box, std::move(state),
-                              GrowthClock{1.0, 0.0, parameters.fastGrowthRate()});
+                              GrowthClock{1.0, 0.0, parameters.fastGrowthRate()}, std::move(sizes));
 }
 
 /// The engine of a checkpoint's particles and pair records, refused without velocities or with
@@ -78,8 +101,8 @@ Engine resumedEngine(const Packing& packing, const std::string& source,
         state[i] = {packing.positions[i], packing.velocities[i], packing.orientations[i]};
         if (rotating(packing.p)) state[i].angularVelocity = packing.angularVelocities[i];
     }
-    Engine engine =
-        makeEngine<Engine>(packing.p, packing.boxLength, std::move(state), fields.clock);
+    Engine engine = makeEngine<Engine>(packing.p, packing.boxLength, std::move(state), fields.clock,
+                                       sizesOf(packing));
     if (auto* superballs = std::get_if<EventDrivenMd<SuperballShape>>(&engine))
         superballs->restorePairRecords(fields.pairRecords);
     return engine;
@@ -103,6 +126,14 @@ double ProtocolParameters::fastGrowthRate() const {
 
 double ProtocolParameters::slowGrowthRate() const {
     return gammaSlow.value_or(speed * (rotating(p) ? paperSlowRate(p) : 1e-4));
+}
+
+std::vector<double> ProtocolParameters::relativeSizes() const {
+    if (sizeRatio == 1.0) return {};
+    const auto large = static_cast<int>(std::lround(largeFraction * particles));
+    std::vector<double> sizes(particles, 1.0 / sizeRatio);
+    std::fill(sizes.begin(), sizes.begin() + large, 1.0);
+    return sizes;
 }
 
 std::uint64_t ProtocolParameters::collisionLimit() const {
@@ -146,6 +177,15 @@ void ProtocolParameters::validate() const {
             "must be in [0, 1e6] (times the expected collisions; 0: no limit)");
     require(forceWindows >= 0 && forceWindows <= 10'000, "force_windows",
             "must be in [0, 10000] (0: no contact forces)");
+    require(std::isfinite(sizeRatio) && sizeRatio >= 1.0 && sizeRatio <= 10.0, "size_ratio",
+            "must be in [1, 10] (the large particles' diameter over the small ones'; 1: "
+            "identical particles)");
+    const double large = std::round(largeFraction * particles);
+    require(sizeRatio == 1.0 || (large >= 1.0 && large < particles), "large_fraction",
+            "must leave at least one large and one small particle (a number fraction in (0, 1))");
+    require(sizeRatio == 1.0 || !rotating(p), "size_ratio",
+            "mixtures of superballs (p != 1) are not in sbgen yet: only spheres "
+            "(docs/mixtures.md)");
 }
 
 JammingProtocol::JammingProtocol(const ProtocolParameters& parameters, const PlacementWatch& placed)
@@ -336,7 +376,7 @@ void JammingProtocol::watchJam(std::uint64_t participants, double sustained) {
 double JammingProtocol::packingFraction() const {
     return std::visit(
         [&](const auto& engine) {
-            return parameters_.particles *
+            return parameters_.particles * meanCubedSize(engine.sizes()) *
                    Superball(parameters_.p, 0.5 * engine.diameter()).volume() /
                    std::pow(engine.boxLength(), 3);
         },
@@ -360,6 +400,8 @@ Packing JammingProtocol::checkpoint() const {
                                          EventDrivenMd<SuperballShape>>)
                 fields.pairRecords = engine.pairRecords();
             packing.semiAxis = 0.5 * engine.diameter();
+            for (const double size : engine.sizes())
+                packing.semiAxes.push_back(packing.semiAxis * size);
             packing.boxLength = engine.boxLength();
             for (const ParticleState& s : engine.particles()) {
                 packing.positions.push_back(s.position);

@@ -67,6 +67,11 @@ struct ProtocolParameters {
     /// rate to the end (the paper's protocol).
     double pressureFinish = 0.0;
     double finishSpeed = 1.0;
+    /// A binary mixture (docs/mixtures.md): the large particles' diameter over the small ones'
+    /// (1: identical particles) and the large ones' number fraction; every particle grows by the
+    /// same factor, as in the Lubachevsky-Stillinger code.
+    double sizeRatio = 1.0;
+    double largeFraction = 0.5;
     double collisionsPerWindow = 10.0; ///< per particle, between thermostat rescalings
     /// The run stops, written as not jammed and resumable, once its collisions exceed costLimit
     /// times the expected ones (expectedCost, docs/design.md §3, "Cost limit"); 0: no limit.
@@ -94,6 +99,11 @@ struct ProtocolParameters {
 
     /// The rate of the finish: finishSpeed times slowGrowthRate().
     double finishGrowthRate() const { return finishSpeed * slowGrowthRate(); }
+
+    /// Each particle's diameter over the largest (relativeSizes()[i] for particle i): the first
+    /// round(largeFraction N) particles large (1), the others 1 / sizeRatio; empty where the
+    /// particles are identical.
+    std::vector<double> relativeSizes() const;
 
     /// The collisions after which the run stops (costLimit times the expected ones); 0: none.
     std::uint64_t collisionLimit() const;

@@ -119,6 +119,16 @@ py::array_t<double> orientationsOf(const Packing& packing) {
     return readOnly(std::move(a));
 }
 
+/// Each particle's semi-axis R_i (a mixture's, docs/mixtures.md; semi_axis for every one of
+/// identical particles).
+py::array_t<double> semiAxesOf(const Packing& packing) {
+    py::array_t<double> a(static_cast<py::ssize_t>(packing.size()));
+    auto v = a.mutable_unchecked<1>();
+    for (py::ssize_t i = 0; i < v.shape(0); ++i)
+        v(i) = packing.semiAxisOf(static_cast<std::size_t>(i));
+    return readOnly(std::move(a));
+}
+
 py::dict provenanceOf(const Packing& packing) {
     py::dict d;
     for (const auto& entry : packing.provenance) // (clang 14 captures no structured bindings)
@@ -129,7 +139,9 @@ py::dict provenanceOf(const Packing& packing) {
 } // namespace
 
 void registerPacking(py::module_& m) {
-    py::class_<Packing>(m, "Packing", "Identical superballs in a cubic periodic box")
+    py::class_<Packing>(m, "Packing",
+                        "Superballs of one p in a cubic periodic box: identical, or a mixture of "
+                        "sizes")
         .def(py::init(&fromArrays), py::arg("positions"), py::arg("orientations"),
              py::arg("box_length"), py::kw_only(), py::arg("p"), py::arg("semi_axis"),
              py::arg("source") = "arrays",
@@ -148,9 +160,15 @@ void registerPacking(py::module_& m) {
         .def_readonly("box_length", &Packing::boxLength)
         .def_readonly("p", &Packing::p)
         .def_readonly("semi_axis", &Packing::semiAxis)
+        .def_property_readonly("semi_axes", &semiAxesOf,
+                               "N semi-axes R_i, a read-only copy: a mixture's sizes "
+                               "(docs/mixtures.md), semi_axis (their largest) repeated where the "
+                               "particles are identical")
+        .def_property_readonly("is_mixture", &Packing::isMixture,
+                               "whether it has per-particle sizes")
         .def_readonly("reduced_pressure", &Packing::reducedPressure)
         .def_readonly("seed", &Packing::seed)
-        .def_property_readonly("phi", &Packing::packingFraction, "N v1 / L^3")
+        .def_property_readonly("phi", &Packing::packingFraction, "sum_i v_i / L^3 (N v1 / L^3)")
         .def_property_readonly(
             "mean_width", [](const Packing& p) { return p.shape().meanWidth(); },
             "mean width w of one superball")

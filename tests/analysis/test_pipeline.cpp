@@ -23,6 +23,7 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 namespace sbpack {
@@ -463,6 +464,30 @@ TEST(Pipeline, OverlappingParticlesAreAnalysedWithAWarning) {
     runAnalyses(s, log, out);
     EXPECT_NE(log.str().find("overlapping pair(s), the worst (0, 1) by 0.75 D"), std::string::npos)
         << log.str();
+}
+
+// docs/mixtures.md: a mixture's run computes what reads its sizes and says what it skips.
+TEST(Pipeline, AMixtureGetsTheAnalysesThatReadItsSizesAndAWarningForTheRest) {
+    const TempDir dir("sbpack-test-pipeline-mixture");
+    Packing packing = testing::latticePacking(1.0, 4, 1.2, 0.05, 11);
+    for (std::size_t i = 0; i < packing.size(); ++i)
+        packing.semiAxes.push_back(i % 2 == 0 ? 0.5 : 0.4);
+    writePacking(packing, dir / "a.h5");
+    const RunSettings s = settingsFor({dir / "a.h5"}, dir / "r.h5");
+    std::ostringstream log, out;
+    const RunResults results = runAnalyses(s, log, out);
+    ASSERT_EQ(results.files.size(), 1u);
+    const FileResults& file = results.files[0];
+    ASSERT_NE(file.group("contacts"), nullptr);
+    ASSERT_NE(file.group("structure_factor"), nullptr);
+    for (const char* skipped : {"voxelization", "spectral_density", "pore_size", "order"})
+        EXPECT_EQ(file.group(skipped), nullptr) << skipped;
+    for (const char* name :
+         {"voxels: not computed", "chi: not computed", "transport: not computed"})
+        EXPECT_NE(log.str().find(name), std::string::npos) << name << "\n" << log.str();
+    // phi sums the particles' own volumes.
+    const double v = 4.0 / 3.0 * std::numbers::pi;
+    EXPECT_NEAR(file.root.number("phi"), 32 * v * (0.125 + 0.064) / std::pow(4 * 1.2, 3), 1e-12);
 }
 
 TEST(Pipeline, InterruptStopsAStageAtItsNextChunk) {

@@ -1,0 +1,140 @@
+// Mixtures (docs/mixtures.md): the packing model's volume sum, the file's semi_axes, the pair of
+// two sizes against closed forms, and the contact network's per-pair tolerance.
+
+#include "contacts/contact_network.hpp"
+#include "io/packing_formats.hpp"
+#include "io/packing_io.hpp"
+#include "packing/validation.hpp"
+#include "pair/pair_geometry.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <string>
+#include <unistd.h>
+
+namespace sbpack {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Four spheres of two sizes on a line along x, in a box of edge 10: pairs (0, 1) and (2, 3)
+/// at the gaps given (in units of their own R_i + R_j), the rest far apart.
+Packing fourSpheres(double gap01, double gap23) {
+    Packing packing;
+    packing.p = 1.0;
+    packing.boxLength = 10.0;
+    packing.semiAxes = {0.5, 0.35, 0.35, 0.35};
+    packing.semiAxis = 0.5;
+    const double d01 = (0.5 + 0.35) * (1.0 + gap01), d23 = 0.7 * (1.0 + gap23);
+    packing.positions = {Vector3d(1, 1, 1), Vector3d(1 + d01, 1, 1), Vector3d(5, 5, 5),
+                         Vector3d(5 + d23, 5, 5)};
+    packing.orientations.assign(4, Quaterniond::Identity());
+    return packing;
+}
+
+fs::path scratchFile(const std::string& name) {
+    return fs::temp_directory_path() / (name + "-" + std::to_string(::getpid()) + ".h5");
+}
+
+TEST(Mixtures, ThePackingFractionSumsTheParticlesVolumes) {
+    const Packing packing = fourSpheres(0.1, 0.1);
+    const double sum = 0.5 * 0.5 * 0.5 + 3 * 0.35 * 0.35 * 0.35;
+    EXPECT_NEAR(packing.packingFraction(), 4.0 / 3.0 * std::numbers::pi * sum / 1000.0, 1e-15);
+    Packing identical = packing;
+    identical.semiAxes.clear();
+    EXPECT_EQ(identical.packingFraction(), 4 * identical.shape().volume() / 1000.0);
+}
+
+TEST(Mixtures, TheFileKeepsEachParticlesSemiAxis) {
+    const Packing packing = fourSpheres(0.1, 0.2);
+    const fs::path file = scratchFile("mixture");
+    writePacking(packing, file);
+    const Packing read = readPacking(file);
+    EXPECT_EQ(read.semiAxes, packing.semiAxes);
+    EXPECT_EQ(read.semiAxis, 0.5);
+    EXPECT_DOUBLE_EQ(read.packingFraction(), packing.packingFraction());
+    // One size only in the other formats: refused rather than written without the sizes.
+    const fs::path text = fs::path(file).replace_extension(".txt");
+    EXPECT_THROW(writePackingFile(packing, text), std::invalid_argument);
+    EXPECT_FALSE(fs::exists(text));
+    fs::remove(file);
+}
+
+TEST(Mixtures, BadSemiAxesAreRefusedNamingTheProblem) {
+    const auto refusal = [](const Packing& packing) {
+        try {
+            validatePacking(packing, "mix.h5");
+        } catch (const InvalidPacking& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    Packing count = fourSpheres(0.1, 0.1);
+    count.semiAxes.pop_back();
+    EXPECT_NE(refusal(count).find("semi_axes has 3 rows for 4 particles"), std::string::npos);
+    Packing negative = fourSpheres(0.1, 0.1);
+    negative.semiAxes[2] = -0.35;
+    EXPECT_NE(refusal(negative).find("particle 2 has semi-axis -0.35"), std::string::npos);
+    Packing notLargest = fourSpheres(0.1, 0.1);
+    notLargest.semiAxis = 0.6;
+    EXPECT_NE(refusal(notLargest).find("is not the largest of semi_axes (0.5)"), std::string::npos);
+    EXPECT_EQ(refusal(fourSpheres(0.1, 0.1)), "");
+}
+
+TEST(Mixtures, TwoSpheresOfTwoSizesAreApartByTheSumOfTheirRadii) {
+    const Vector3d d(0.3, -0.8, 0.4);
+    const SuperballPair pair{Superball(1.0, 0.25), Matrix3d::Identity(), Matrix3d::Identity(), d,
+                             1.6};
+    EXPECT_DOUBLE_EQ(signedDistance(pair).signedDistance, d.norm() - 0.25 * 2.6);
+    EXPECT_DOUBLE_EQ(scaleFactor(pair).scaleFactor, d.norm() / (0.25 * 2.6));
+}
+
+/// With equal orientations B = sizeB A, so K = A + B = (1 + sizeB) A: mu = g_A(d) / (1 + sizeB).
+TEST(Mixtures, EqualOrientationsScaleTheSumOfTwoSizes) {
+    const Matrix3d rotation =
+        Eigen::AngleAxisd(0.7, Vector3d(1, 2, -0.5).normalized()).toRotationMatrix();
+    for (const double p : {0.7, 1.5, 3.0})
+        for (const double sizeB : {0.5, 1.0, 1.4}) {
+            const Superball shape(p, 0.5);
+            const Vector3d d(0.9, 0.35, -0.2);
+            const SuperballPair pair{shape, rotation, rotation, d, sizeB};
+            const double expected = shape.gauge(rotation.transpose() * d) / (1.0 + sizeB);
+            EXPECT_NEAR(scaleFactor(pair).scaleFactor, expected, 1e-12 * expected)
+                << "p " << p << " sizeB " << sizeB;
+        }
+}
+
+/// The pair of sizes (R_A, R_B) seen from B: the same signed distance (an independent solve).
+TEST(Mixtures, APairOfTwoSizesIsTheSameFromEitherBody) {
+    const Matrix3d ra = Eigen::AngleAxisd(0.4, Vector3d(0, 1, 1).normalized()).toRotationMatrix();
+    const Matrix3d rb = Eigen::AngleAxisd(1.1, Vector3d(1, 0, 2).normalized()).toRotationMatrix();
+    const Vector3d d(0.95, 0.4, 0.3);
+    for (const double p : {0.8, 1.5, 4.0}) {
+        const SuperballPair fromA{Superball(p, 0.5), ra, rb, d, 0.7};
+        const SuperballPair fromB{Superball(p, 0.35), rb, ra, -d, 0.5 / 0.35};
+        const SignedDistanceResult a = signedDistance(fromA), b = signedDistance(fromB);
+        EXPECT_NEAR(a.signedDistance, b.signedDistance, 1e-12) << "p " << p;
+        EXPECT_NEAR((a.normal + b.normal).norm(), 0.0, 1e-7) << "p " << p;
+    }
+}
+
+TEST(Mixtures, AContactIsWithinTheToleranceOfItsOwnPair) {
+    // Pair (0, 1) (R 0.5 and 0.35) apart by 0.5e-10 of its R_i + R_j: within 1e-10 of it. Pair
+    // (2, 3) (both 0.35) by 1.2e-10 of its own 0.7: no contact, though its gap, 0.84e-10, is
+    // within 1e-10 of the largest D = 1.
+    const ContactResult c = ContactNetwork({}).compute(fourSpheres(0.5e-10, 1.2e-10));
+    ASSERT_EQ(c.contacts.size(), 1U);
+    EXPECT_EQ(c.contacts[0], std::make_pair(0, 1));
+    EXPECT_NEAR(c.gaps[0], 0.5e-10, 1e-15);
+    const ContactResult overlap = ContactNetwork({}).compute(fourSpheres(0.5e-10, -2e-10));
+    EXPECT_EQ(overlap.overlappingPairs, 1);
+    EXPECT_NEAR(overlap.worstGap, -2e-10 * 0.7, 1e-15);
+}
+
+} // namespace
+} // namespace sbpack

@@ -1,0 +1,137 @@
+// sbgen's binary mixtures of spheres (docs/mixtures.md): the exact collision of two sizes, the
+// random start, and a protocol run that jams without overlap and resumes bit for bit.
+#include "contacts/contact_network.hpp"
+#include "engine/event_driven_md.hpp"
+#include "geometry/superball.hpp"
+#include "initial/random_start.hpp"
+#include "io/packing_io.hpp"
+#include "protocol/jamming_protocol.hpp"
+#include "shapes/sphere.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <optional>
+
+namespace sbpack {
+namespace {
+
+ProtocolParameters smallMixture(std::uint64_t seed) {
+    ProtocolParameters p;
+    p.particles = 80;
+    p.seed = seed;
+    p.gammaFast = 0.05;
+    p.gammaSlow = 0.01;
+    p.pressureSwitch = 1e3;
+    p.pressureFinal = 1e7;
+    p.sizeRatio = 1.4;
+    p.largeFraction = 0.25;
+    return p;
+}
+
+/// The smallest gap over all pairs (brute force, minimum image), over the pair's R_i + R_j.
+double smallestRelativeGap(const Packing& packing) {
+    double gap = INFINITY;
+    for (std::size_t i = 0; i < packing.size(); ++i)
+        for (std::size_t j = i + 1; j < packing.size(); ++j) {
+            const double contact = packing.semiAxisOf(i) + packing.semiAxisOf(j);
+            const Vector3d d =
+                minimumImage(packing.positions[j] - packing.positions[i], packing.boxLength);
+            gap = std::min(gap, (d.norm() - contact) / contact);
+        }
+    return gap;
+}
+
+TEST(Mixtures, TwoGrowingSpheresOfTwoSizesCollideAtTheSumOfTheirRadii) {
+    // D(t) = 1 + 0.5 t; sizes 1 and 0.5: contact at (D / 2)(1 + 0.5) = 0.75 D(t). The gap
+    // 3 - 0.75 closes at 1 + 0.75 * 0.5, so tau = 2.25 / 1.375.
+    std::vector<ParticleState> state = {{{2, 5, 5}, {0.5, 0, 0}}, {{5, 5, 5}, {-0.5, 0, 0}}};
+    EventDrivenMd<SphereShape> engine(SphereShape{}, 10.0, state, GrowthClock{1.0, 0.0, 0.5},
+                                      {1.0, 0.5});
+    const RunReport report = engine.run(1);
+    ASSERT_EQ(report.collisions, 1U);
+    const double tau = 2.25 / 1.375;
+    EXPECT_NEAR(report.duration, tau, 1e-14);
+    const Vector3d d = engine.particles()[1].position - engine.particles()[0].position;
+    EXPECT_NEAR(d.norm(), 0.75 * engine.diameter(), 1e-13);
+    // The surfaces' normal velocity -1 - 0.375 reversed: v_n' = 2 * 0.375 + 1 = 1.75.
+    EXPECT_NEAR(engine.particles()[1].velocity.x() - engine.particles()[0].velocity.x(), 1.75,
+                1e-14);
+}
+
+TEST(Mixtures, TheRandomStartPlacesEachPairAtItsOwnDistance) {
+    Random random(3);
+    const int n = 300;
+    std::vector<double> sizes(n, 1.0 / 1.4);
+    std::fill(sizes.begin(), sizes.begin() + n / 2, 1.0);
+    double volume = 0.0;
+    for (const double s : sizes)
+        volume += std::numbers::pi / 6.0 * s * s * s;
+    const double box = std::cbrt(volume / 0.3);
+    const RandomPlacement placement = randomPlacement(n, 1.0, box, random, {}, sizes);
+    Packing packing;
+    packing.boxLength = box;
+    packing.positions = placement.positions;
+    packing.orientations = placement.orientations;
+    packing.semiAxis = 0.5;
+    for (const double s : sizes)
+        packing.semiAxes.push_back(0.5 * s);
+    EXPECT_GT(smallestRelativeGap(packing), 0.0);
+    EXPECT_NEAR(packing.packingFraction(), 0.3, 1e-12);
+}
+
+TEST(Mixtures, ABinaryRunJamsWithoutOverlapAndKeepsItsSizes) {
+    JammingProtocol run(smallMixture(4));
+    ASSERT_TRUE(run.run([](const ProtocolStatus&) {}));
+    const Packing packing = run.checkpoint();
+    ASSERT_EQ(packing.semiAxes.size(), 80U);
+    EXPECT_EQ(std::count(packing.semiAxes.begin(), packing.semiAxes.end(), packing.semiAxis), 20);
+    for (std::size_t i = 20; i < 80; ++i)
+        EXPECT_NEAR(packing.semiAxes[i], packing.semiAxis / 1.4, 1e-15 * packing.semiAxis) << i;
+    EXPECT_GE(run.status().reducedPressure, 1e7);
+    // No overlap by the brute-force check, and the load-bearing gaps closed: at P = 1e7 a jammed
+    // network has its gaps near D / P.
+    EXPECT_GT(smallestRelativeGap(packing), -1e-12);
+    const ContactResult c = ContactNetwork({.tolerance = 1e-4}).compute(packing);
+    EXPECT_EQ(c.overlappingPairs, 0);
+    EXPECT_GT(c.meanContactNumber, 5.5);
+    EXPECT_NEAR(run.status().packingFraction, packing.packingFraction(), 1e-12);
+    EXPECT_EQ(std::get<double>(packing.provenance.at("size_ratio")), 1.4);
+}
+
+TEST(Mixtures, ABinaryRunResumesFromItsFileBitForBit) {
+    JammingProtocol uninterrupted(smallMixture(7));
+    std::optional<Packing> saved;
+    ASSERT_TRUE(uninterrupted.run([&](const ProtocolStatus& s) {
+        if (s.windows == 30) saved = uninterrupted.checkpoint();
+    }));
+    ASSERT_TRUE(saved.has_value());
+    const auto file = std::filesystem::temp_directory_path() / "sbgen-test-mixture-resume.h5";
+    writePacking(*saved, file);
+    JammingProtocol resumed(readPacking(file), file.string());
+    std::filesystem::remove(file);
+    ASSERT_TRUE(resumed.run([](const ProtocolStatus&) {}));
+    const Packing a = uninterrupted.checkpoint(), b = resumed.checkpoint();
+    EXPECT_EQ(a.semiAxes, b.semiAxes);
+    EXPECT_EQ(a.positions, b.positions);
+    EXPECT_EQ(*a.reducedPressure, *b.reducedPressure);
+}
+
+TEST(Mixtures, SuperballMixturesAndOneSizedMixturesAreRefused) {
+    ProtocolParameters superballs = smallMixture(1);
+    superballs.p = 1.5;
+    EXPECT_THROW(superballs.validate(), ProtocolParameterError);
+    ProtocolParameters allLarge = smallMixture(1);
+    allLarge.largeFraction = 1.0;
+    EXPECT_THROW(allLarge.validate(), ProtocolParameterError);
+    ProtocolParameters ratio = smallMixture(1);
+    ratio.sizeRatio = 0.7;
+    EXPECT_THROW(ratio.validate(), ProtocolParameterError);
+    EXPECT_NO_THROW(smallMixture(1).validate());
+}
+
+} // namespace
+} // namespace sbpack
