@@ -229,7 +229,8 @@ std::vector<std::vector<std::size_t>> ensembleMembers(std::span<const FileResult
     for (std::size_t i = 0; i < files.size(); ++i) {
         auto same = [&](const std::vector<std::size_t>& e) {
             return files[e.front()].p() == files[i].p() &&
-                   files[e.front()].particles() == files[i].particles();
+                   files[e.front()].particles() == files[i].particles() &&
+                   files[e.front()].sizeRatio == files[i].sizeRatio;
         };
         auto it = std::find_if(ensembles.begin(), ensembles.end(), same);
         if (it == ensembles.end())

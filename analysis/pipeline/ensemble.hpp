@@ -42,7 +42,8 @@ struct EnsembleResults {
     schema::Record* group(std::string_view name);
 };
 
-/// The files grouped by (p, N), each group in input order, groups in order of first appearance.
+/// The files grouped by (p, N and a mixture's size ratio), each group in input order, groups in
+/// order of first appearance.
 std::vector<std::vector<std::size_t>> ensembleMembers(std::span<const FileResults> files);
 
 /// Statistics over `members` of `files`. Throws std::invalid_argument, naming both inputs, if the

@@ -20,6 +20,9 @@ struct FileResults {
     std::filesystem::path input;
     schema::Record root{schema::fileGroup()};
     std::vector<schema::Record> groups;
+    /// A mixture's largest semi-axis over its smallest (docs/mixtures.md), 1 for identical
+    /// particles: inputs of other sizes form other ensembles (not written to the file).
+    double sizeRatio = 1.0;
 
     /// The group called `name` (e.g. "contacts"); nullptr if it was not written.
     const schema::Record* group(std::string_view name) const;

@@ -115,6 +115,7 @@ std::string encodeFiles(const IndexedFiles& files) {
         out.put(static_cast<std::uint64_t>(index));
         out.put(file.input.string());
         putRecord(out, file.root);
+        out.put(file.sizeRatio);
         out.put(static_cast<std::uint64_t>(file.groups.size()));
         for (const schema::Record& g : file.groups)
             putRecord(out, g);
@@ -130,6 +131,7 @@ IndexedFiles decodeFiles(const std::string& bytes) {
         file.input = in.text();
         if (!in.text().empty()) throw std::logic_error("results bytes: not a file record");
         file.root = getRecord(in, schema::fileGroup());
+        file.sizeRatio = in.get<double>();
         const auto groups = in.get<std::uint64_t>();
         for (std::uint64_t g = 0; g < groups; ++g) {
             const std::string name = in.text();

@@ -107,11 +107,13 @@ PlaneRows planeRows(std::int64_t rest) {
 
 /// The modes of plane n_x from its rows' sums, in the order (n_y, n_z, sign combination):
 /// rho(n_x, +-n_y, n_z) = A - i B, rho(n_x, +-n_y, -n_z) = A + i B.
-DensityModes planeModes(int nx, const PlaneRows& rows, const std::vector<double>& acc) {
+DensityModes planeModes(int nx, const PlaneRows& rows, const std::vector<double>& acc,
+                        bool amplitudes) {
     DensityModes out;
     auto emit = [&](int ny, int nz, double re, double im) {
         out.n.push_back({nx, ny, nz});
         out.intensity.push_back(re * re + im * im);
+        if (amplitudes) out.amplitude.emplace_back(re, im);
     };
     for (int ny = 0; ny + 1 < static_cast<int>(rows.offset.size()); ++ny) {
         const int zl = rows.length[ny];
@@ -133,7 +135,7 @@ DensityModes planeModes(int nx, const PlaneRows& rows, const std::vector<double>
 /// The modes of one plane n_x, in the order (n_y, n_z, sign combination).
 DensityModes plane(int nx, std::int64_t maxN2, std::int64_t particles, int kmax,
                    const PhaseTable& x, const PhaseTable& y, const PhaseTable& z,
-                   const Progress& progress) {
+                   const Progress& progress, bool amplitudes) {
     const std::int64_t stride = kmax + 1;
     const PlaneRows rows = planeRows(maxN2 - static_cast<std::int64_t>(nx) * nx);
     std::vector<double> acc(rows.offset.back(), 0.0);
@@ -147,13 +149,13 @@ DensityModes plane(int nx, std::int64_t maxN2, std::int64_t particles, int kmax,
                           a + 2 * zl, a + 3 * zl, a + 4 * zl, a + 5 * zl, a + 6 * zl, a + 7 * zl);
         }
     }
-    return planeModes(nx, rows, acc);
+    return planeModes(nx, rows, acc, amplitudes);
 }
 
 } // namespace
 
 DensityModes collectiveDensity(std::span<const Eigen::Vector3d> positions, double boxLength,
-                               std::int64_t maxN2, const Progress& progress) {
+                               std::int64_t maxN2, const Progress& progress, bool amplitudes) {
     if (!(boxLength > 0.0) || !std::isfinite(boxLength))
         throw std::invalid_argument("collective density: box length must be positive and finite");
     if (maxN2 < 1) throw std::invalid_argument("collective density: no wave vector (maxN2 < 1)");
@@ -165,11 +167,13 @@ DensityModes collectiveDensity(std::span<const Eigen::Vector3d> positions, doubl
     return orderedReduce(
         kmax + 1, DensityModes{},
         [&](std::int64_t nx) {
-            return plane(static_cast<int>(nx), maxN2, particles, kmax, x, y, z, progress);
+            return plane(static_cast<int>(nx), maxN2, particles, kmax, x, y, z, progress,
+                         amplitudes);
         },
         [](DensityModes& all, const DensityModes& p) {
             all.n.insert(all.n.end(), p.n.begin(), p.n.end());
             all.intensity.insert(all.intensity.end(), p.intensity.begin(), p.intensity.end());
+            all.amplitude.insert(all.amplitude.end(), p.amplitude.begin(), p.amplitude.end());
         },
         progress);
 }

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <complex>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -20,6 +21,8 @@ namespace sbpack {
 struct DensityModes {
     std::vector<std::array<int, 3>> n;
     std::vector<double> intensity;
+    /// rho(Q) itself, where asked for (the partial structure factors' cross terms); else empty.
+    std::vector<std::complex<double>> amplitude;
 
     std::size_t size() const { return n.size(); }
 };
@@ -41,8 +44,11 @@ PhaseTable phaseTable(std::span<const Eigen::Vector3d> positions, int axis, doub
 /// double precision. Separable: exp(-i Q.r) is the product of one factor per axis, tabulated per
 /// particle by recurrence; the four sign combinations (n_x, +-n_y, +-n_z) share their products.
 /// Parallel over n_x (the order of every sum is fixed, so the result does not depend on the
-/// number of threads). Throws std::invalid_argument unless L > 0 and maxN2 >= 1.
+/// number of threads). The modes come in an order that depends on maxN2 only, so that two sets of
+/// positions give the same n at the same index. `amplitudes`: keep rho(Q) too. Throws
+/// std::invalid_argument unless L > 0 and maxN2 >= 1.
 DensityModes collectiveDensity(std::span<const Eigen::Vector3d> positions, double boxLength,
-                               std::int64_t maxN2, const Progress& progress);
+                               std::int64_t maxN2, const Progress& progress,
+                               bool amplitudes = false);
 
 } // namespace sbpack

@@ -473,13 +473,21 @@ TEST(Pipeline, AMixtureGetsTheAnalysesThatReadItsSizesAndAWarningForTheRest) {
     for (std::size_t i = 0; i < packing.size(); ++i)
         packing.semiAxes.push_back(i % 2 == 0 ? 0.5 : 0.4);
     writePacking(packing, dir / "a.h5");
-    const RunSettings s = settingsFor({dir / "a.h5"}, dir / "r.h5");
+    Packing identical = packing;
+    identical.semiAxes.clear();
+    writePacking(identical, dir / "b.h5");
+    const RunSettings s = settingsFor({dir / "a.h5", dir / "b.h5"}, dir / "r.h5");
     std::ostringstream log, out;
     const RunResults results = runAnalyses(s, log, out);
-    ASSERT_EQ(results.files.size(), 1u);
+    ASSERT_EQ(results.files.size(), 2u);
+    EXPECT_EQ(results.ensembles.size(), 2u); // the mixture is not pooled with identical particles
     const FileResults& file = results.files[0];
     ASSERT_NE(file.group("contacts"), nullptr);
     ASSERT_NE(file.group("structure_factor"), nullptr);
+    const schema::Record& sq = *file.group("structure_factor");
+    EXPECT_EQ(sq.floats("S_AB").size(), sq.floats("S").size());
+    EXPECT_DOUBLE_EQ(sq.number("x_A"), 0.5);
+    EXPECT_FALSE(results.files[1].group("structure_factor")->has("S_AB"));
     for (const char* skipped : {"voxelization", "spectral_density", "pore_size", "order"})
         EXPECT_EQ(file.group(skipped), nullptr) << skipped;
     for (const char* name :

@@ -88,3 +88,69 @@ TEST(StructureFactor, ValidatesItsParameters) {
 
 } // namespace
 } // namespace sbpack
+
+namespace sbpack {
+namespace {
+
+/// CsCl: large particles (A) on a c^3 simple cubic lattice, small ones (B) on its cube centres.
+Packing caesiumChloride(int cells) {
+    Packing packing = testing::latticePacking(1.0, cells, 1.0, 0.0, 1, true, 0.1);
+    const std::size_t corners = packing.size();
+    packing.semiAxes.assign(corners, 0.5);
+    for (std::size_t i = 0; i < corners; ++i) {
+        packing.positions.push_back(
+            wrapIntoBox(packing.positions[i] + Vector3d::Constant(0.5), packing.boxLength));
+        packing.orientations.push_back(Quaterniond::Identity());
+        packing.semiAxes.push_back(0.3);
+    }
+    return packing;
+}
+
+// docs/mixtures.md: the partials of a known structure. On shell c (the vectors c (1, 0, 0) and
+// their images among the shell's others) each species' lattice has its Bragg peak, S_aa = N_a,
+// and the two are in antiphase, Re(rho_A rho_B*) = -N_A N_B: the bcc extinction, S = 0.
+TEST(StructureFactor, TheCaesiumChloridePartialsHaveTheirBraggPeaksAndCancelInTheTotal) {
+    const int cells = 4;
+    const Packing cscl = caesiumChloride(cells);
+    const double nA = 64.0;
+    const StructureFactorResult result =
+        StructureFactor({6.4 * 2.0 * std::numbers::pi * cscl.shape().meanWidth() / cscl.boxLength})
+            .compute(cscl, quiet);
+    ASSERT_TRUE(result.partials.has_value());
+    const PartialStructureFactors& s = *result.partials;
+    EXPECT_DOUBLE_EQ(s.fractionA, 0.5);
+    const std::size_t shell = cells - 1; // shell c, counted from 1
+    const double bragg = 6.0 / static_cast<double>(result.shells.count[shell]);
+    EXPECT_NEAR(s.aa[shell], nA * bragg, 1e-9 * nA);
+    EXPECT_NEAR(s.bb[shell], nA * bragg, 1e-9 * nA);
+    EXPECT_NEAR(s.ab[shell], -nA * bragg, 1e-9 * nA);
+    EXPECT_NEAR(result.shells.value[shell], 0.0, 1e-9 * nA);
+    EXPECT_NEAR(s.aa[0], 0.0, 1e-12 * nA); // no Bragg vector in shell 1
+}
+
+// The sum rule S = x_A S_AA + x_B S_BB + 2 sqrt(x_A x_B) S_AB on a disordered binary packing: the
+// total from one sum over all particles, the partials from each species' own.
+TEST(StructureFactor, ABinaryMixturesPartialsSumToTheTotal) {
+    Packing packing = testing::latticePacking(1.0, 5, 1.3, 0.3, 23);
+    std::mt19937_64 rng(5);
+    for (std::size_t i = 0; i < packing.size(); ++i)
+        packing.semiAxes.push_back(rng() % 3 == 0 ? 0.5 : 0.35);
+    const StructureFactorResult result = StructureFactor({20.0}).compute(packing, quiet);
+    ASSERT_TRUE(result.partials.has_value());
+    const PartialStructureFactors& s = *result.partials;
+    const double xA = s.fractionA, xB = 1.0 - xA;
+    EXPECT_GT(xA, 0.2);
+    EXPECT_LT(xA, 0.5);
+    for (std::size_t k = 0; k < result.shells.size(); ++k)
+        EXPECT_NEAR(xA * s.aa[k] + xB * s.bb[k] + 2.0 * std::sqrt(xA * xB) * s.ab[k],
+                    result.shells.value[k], 1e-10)
+            << "shell " << k + 1;
+    // Identical particles, and three sizes: no partials.
+    packing.semiAxes[0] = 0.4;
+    EXPECT_FALSE(StructureFactor({20.0}).compute(packing, quiet).partials.has_value());
+    packing.semiAxes.clear();
+    EXPECT_FALSE(StructureFactor({20.0}).compute(packing, quiet).partials.has_value());
+}
+
+} // namespace
+} // namespace sbpack
