@@ -18,12 +18,16 @@ using Matrix2d = Eigen::Matrix2d;
 /// H(u) = h_A(u) + h_B(u) and its derivatives in the lab frame (u need not be unit).
 class MinkowskiSum {
   public:
-    explicit MinkowskiSum(const SuperballPair& pair) : pair_(pair) {}
+    /// B's own shape: `shape` itself where sizeB = 1 (identical bodies, the same arithmetic).
+    explicit MinkowskiSum(const SuperballPair& pair)
+        : pair_(pair),
+          shapeB_(pair.sizeB == 1.0
+                      ? pair.shape
+                      : Superball(pair.shape.p(), pair.shape.semiAxis() * pair.sizeB)) {}
 
     double support(const Vector3d& u) const {
         ++evaluations;
-        return shape().support(ra().transpose() * u) +
-               sizeB() * shape().support(rb().transpose() * u);
+        return shape().support(ra().transpose() * u) + shapeB_.support(rb().transpose() * u);
     }
     /// grad H = s_A(u) + s_B(u): the sum of the support points.
     Vector3d supportPoint(const Vector3d& u) const {
@@ -34,20 +38,20 @@ class MinkowskiSum {
         return ra() * shape().supportPoint(ra().transpose() * u);
     }
     Vector3d supportPointB(const Vector3d& u) const {
-        return sizeB() * (rb() * shape().supportPoint(rb().transpose() * u));
+        return rb() * shapeB_.supportPoint(rb().transpose() * u);
     }
     Matrix3d supportHessian(const Vector3d& u) const {
         return ra() * shape().supportHessian(ra().transpose() * u) * ra().transpose() +
-               sizeB() * (rb() * shape().supportHessian(rb().transpose() * u) * rb().transpose());
+               rb() * shapeB_.supportHessian(rb().transpose() * u) * rb().transpose();
     }
     /// The gauges of A and B at x (lab frame, relative to their centres).
     double gaugeA(const Vector3d& x) const { return shape().gauge(ra().transpose() * x); }
-    double gaugeB(const Vector3d& x) const { return shape().gauge(rb().transpose() * x) / sizeB(); }
+    double gaugeB(const Vector3d& x) const { return shapeB_.gauge(rb().transpose() * x); }
     /// A's and B's semi-axes summed: the pair's contact distance of spheres, its diameter.
-    double pairDiameter() const { return shape().semiAxis() * (1.0 + sizeB()); }
+    double pairDiameter() const { return shape().semiAxis() + shapeB_.semiAxis(); }
 
     const Superball& shape() const { return pair_.shape; }
-    double sizeB() const { return pair_.sizeB; }
+    const Superball& shapeB() const { return shapeB_; }
     const Matrix3d& ra() const { return pair_.rotationA; }
     const Matrix3d& rb() const { return pair_.rotationB; }
     const Vector3d& displacement() const { return pair_.displacement; }
@@ -57,6 +61,7 @@ class MinkowskiSum {
 
   private:
     const SuperballPair& pair_;
+    Superball shapeB_;
 };
 
 /// A bracket [lo, hi] of the root of phi', phi'(lo) = dlo < 0 <= dhi = phi'(hi), refined by
@@ -195,7 +200,7 @@ void octahedronSignedDistance(const MinkowskiSum& k, SignedDistanceResult& resul
         consider(n.dot(d) < 0 ? -n : n);
     if (result.scaleFactor > 1.0) {
         std::vector<Vector3d> vertices;
-        const double r = k.shape().semiAxis(), rB = r * k.sizeB();
+        const double r = k.shape().semiAxis(), rB = k.shapeB().semiAxis();
         for (int i = 0; i < 6; ++i)
             for (int j = 0; j < 6; ++j) {
                 const Vector3d a = k.ra().col(i % 3) * (i < 3 ? r : -r);
