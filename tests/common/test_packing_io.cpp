@@ -227,6 +227,8 @@ TEST_F(PackingIo, TheWriterWritesTheDeclaredEntriesAndNoOthers) { // issue 45
     full.resumeState[packing_file::kPairRecords] = std::int64_t{1};
     full.pairRecords.assign(kPairRecordColumns, 0.5);
     full.contactForces = makeForces();
+    full.semiAxes.assign(full.size(), full.semiAxis); // a mixture's (docs/mixtures.md)
+    full.semiAxes.back() = 0.5 * full.semiAxis;
     writePacking(full, file("full.h5"));
     expectTheTableEntries(file("full.h5"), true);
     EXPECT_EQ(readPacking(file("full.h5")).pairRecords, full.pairRecords);

@@ -43,15 +43,33 @@ std::string refusal(const Packing& packing) {
     return "";
 }
 
+/// A checkpoint of a short binary sphere run (docs/mixtures.md: its entries are written only by a
+/// mixture's run).
+Packing shortMixtureCheckpoint() {
+    ProtocolParameters p;
+    p.particles = 40;
+    p.sizeRatio = 1.4;
+    p.gammaFast = 0.05;
+    p.pressureSwitch = 1e2;
+    p.pressureFinal = 1e3;
+    JammingProtocol run(p);
+    run.run([](const ProtocolStatus&) {});
+    return run.checkpoint();
+}
+
 TEST(CheckpointEntries, EveryKeyIsWrittenOnceAndResumesToTheSameEntries) {
-    const Packing written = shortSuperballCheckpoint();
+    const Packing written = shortSuperballCheckpoint(), mixture = shortMixtureCheckpoint();
+    const std::set<std::string> mixtureKeys = {"size_ratio", "large_fraction"};
     std::set<std::string> seen;
     for (const CheckpointKey& k : checkpointKeys()) {
         EXPECT_TRUE(seen.insert(k.group + "/" + k.key).second) << k.key << " declared twice";
-        Packing copy = written;
+        Packing copy = mixtureKeys.contains(k.key) ? mixture : written;
         EXPECT_EQ(groupOf(copy, k.group).count(k.key), 1u) << k.group << " " << k.key;
     }
-    EXPECT_EQ(seen.size(), written.provenance.size() + written.resumeState.size());
+    EXPECT_EQ(seen.size(),
+              written.provenance.size() + written.resumeState.size() + mixtureKeys.size());
+    const Packing mixtureAgain = JammingProtocol(mixture, "mixture.h5").checkpoint();
+    EXPECT_EQ(mixtureAgain.provenance, mixture.provenance);
     const Packing again = JammingProtocol(written, "written.h5").checkpoint();
     EXPECT_EQ(again.provenance, written.provenance);
     EXPECT_EQ(again.resumeState, written.resumeState);
