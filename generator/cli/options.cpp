@@ -156,6 +156,11 @@ void GeneratorCommandLine::addProtocolOptions() {
         "the mixture's number fraction of large particles (default 0.5), the first\n"
         "round(X N) particles");
     protocol(
+        "--polydispersity", "S", [&p](auto n, auto v) { p.polydispersity = parseNumber(n, v); },
+        "a polydisperse mixture of spheres: diameters uniformly distributed with\n"
+        "standard deviation S times their mean, S in [0, 0.3] (default 0: none), as the\n"
+        "N equally spaced quantiles, largest first (docs/mixtures.md)");
+    protocol(
         "--window", "W", [&p](auto n, auto v) { p.collisionsPerWindow = parseNumber(n, v); },
         "collisions per particle between thermostat rescalings and pressure\n"
         "estimates (default 10)");
@@ -262,7 +267,8 @@ std::invalid_argument optionError(const ProtocolParameterError& e) {
         {"finish_speed", "--finish-speed"},
         {"force_windows", "--force-windows"},
         {"size_ratio", "--size-ratio"},
-        {"large_fraction", "--large-fraction"}};
+        {"large_fraction", "--large-fraction"},
+        {"polydispersity", "--polydispersity"}};
     const auto it = kOption.find(e.parameter());
     return std::invalid_argument("option " + (it == kOption.end() ? e.parameter() : it->second) +
                                  ": " + e.problem());

@@ -84,7 +84,7 @@ Entry finish(Entry e) {
 /// An entry of a mixture (docs/mixtures.md), optional and written only by a mixture's run.
 Entry mixture(Entry e) {
     e.write = [write = e.write](const CheckpointFields& f) -> std::optional<ProvenanceValue> {
-        if (f.parameters.sizeRatio == 1.0) return std::nullopt;
+        if (!f.parameters.isMixture()) return std::nullopt;
         return write(f);
     };
     return e;
@@ -149,6 +149,9 @@ std::vector<Entry> parameterEntries() {
             P, "size_ratio", [](auto& f) -> auto& { return f.parameters.sizeRatio; }, true)),
         mixture(field<double>(
             P, "large_fraction", [](auto& f) -> auto& { return f.parameters.largeFraction; },
+            true)),
+        mixture(field<double>(
+            P, "polydispersity", [](auto& f) -> auto& { return f.parameters.polydispersity; },
             true)),
         field<double>(
             P, "collisions_per_window",

@@ -129,6 +129,13 @@ double ProtocolParameters::slowGrowthRate() const {
 }
 
 std::vector<double> ProtocolParameters::relativeSizes() const {
+    if (polydispersity != 0.0) { // uniform on [1 - a, 1 + a], a = sqrt(3) s: quantile k
+        const double a = std::sqrt(3.0) * polydispersity;
+        std::vector<double> sizes(particles);
+        for (int k = 0; k < particles; ++k)
+            sizes[k] = (1.0 + a - 2.0 * a * (k + 0.5) / particles) / (1.0 + a - a / particles);
+        return sizes; // sizes[0] = 1 exactly (x / x)
+    }
     if (sizeRatio == 1.0) return {};
     const auto large = static_cast<int>(std::lround(largeFraction * particles));
     std::vector<double> sizes(particles, 1.0 / sizeRatio);
@@ -183,7 +190,12 @@ void ProtocolParameters::validate() const {
     const double large = std::round(largeFraction * particles);
     require(sizeRatio == 1.0 || (large >= 1.0 && large < particles), "large_fraction",
             "must leave at least one large and one small particle (a number fraction in (0, 1))");
-    require(sizeRatio == 1.0 || !rotating(p), "size_ratio",
+    require(std::isfinite(polydispersity) && polydispersity >= 0.0 && polydispersity <= 0.3,
+            "polydispersity",
+            "must be in [0, 0.3] (the diameters' standard deviation over their mean)");
+    require(polydispersity == 0.0 || sizeRatio == 1.0, "polydispersity",
+            "cannot be given with size_ratio (--size-ratio): each makes a mixture");
+    require(!isMixture() || !rotating(p), sizeRatio != 1.0 ? "size_ratio" : "polydispersity",
             "mixtures of superballs (p != 1) are not in sbgen yet: only spheres "
             "(docs/mixtures.md)");
 }

@@ -72,6 +72,10 @@ struct ProtocolParameters {
     /// same factor, as in the Lubachevsky-Stillinger code.
     double sizeRatio = 1.0;
     double largeFraction = 0.5;
+    /// A polydisperse mixture (docs/mixtures.md): the diameters' standard deviation over their
+    /// mean, in [0, 0.3]; the diameters are the N equally spaced quantiles of the uniform
+    /// distribution of that mean and deviation (0: none; not with sizeRatio).
+    double polydispersity = 0.0;
     double collisionsPerWindow = 10.0; ///< per particle, between thermostat rescalings
     /// The run stops, written as not jammed and resumable, once its collisions exceed costLimit
     /// times the expected ones (expectedCost, docs/design.md §3, "Cost limit"); 0: no limit.
@@ -100,10 +104,12 @@ struct ProtocolParameters {
     /// The rate of the finish: finishSpeed times slowGrowthRate().
     double finishGrowthRate() const { return finishSpeed * slowGrowthRate(); }
 
-    /// Each particle's diameter over the largest (relativeSizes()[i] for particle i): the first
-    /// round(largeFraction N) particles large (1), the others 1 / sizeRatio; empty where the
+    /// Each particle's diameter over the largest (relativeSizes()[i] for particle i): of a binary
+    /// mixture the first round(largeFraction N) particles large (1), the others 1 / sizeRatio; of
+    /// a polydisperse one the quantiles (polydispersity), largest first; empty where the
     /// particles are identical.
     std::vector<double> relativeSizes() const;
+    bool isMixture() const { return sizeRatio != 1.0 || polydispersity != 0.0; }
 
     /// The collisions after which the run stops (costLimit times the expected ones); 0: none.
     std::uint64_t collisionLimit() const;

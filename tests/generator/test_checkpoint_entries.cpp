@@ -59,7 +59,7 @@ Packing shortMixtureCheckpoint() {
 
 TEST(CheckpointEntries, EveryKeyIsWrittenOnceAndResumesToTheSameEntries) {
     const Packing written = shortSuperballCheckpoint(), mixture = shortMixtureCheckpoint();
-    const std::set<std::string> mixtureKeys = {"size_ratio", "large_fraction"};
+    const std::set<std::string> mixtureKeys = {"size_ratio", "large_fraction", "polydispersity"};
     std::set<std::string> seen;
     for (const CheckpointKey& k : checkpointKeys()) {
         EXPECT_TRUE(seen.insert(k.group + "/" + k.key).second) << k.key << " declared twice";

@@ -120,6 +120,31 @@ TEST(Mixtures, ABinaryRunResumesFromItsFileBitForBit) {
     EXPECT_EQ(*a.reducedPressure, *b.reducedPressure);
 }
 
+// docs/mixtures.md: the diameters are the quantiles of the uniform distribution of mean 1 (over
+// the largest: 1 / (1 + a - a / N), a = sqrt(3) s), so their mean and deviation are known exactly.
+TEST(Mixtures, APolydisperseRunHasTheDiametersOfItsDistributionAndJams) {
+    ProtocolParameters p = smallMixture(3);
+    p.sizeRatio = 1.0;
+    p.polydispersity = 0.15;
+    const std::vector<double> sizes = p.relativeSizes();
+    ASSERT_EQ(sizes.size(), 80U);
+    EXPECT_EQ(sizes.front(), 1.0);
+    const double n = 80.0, a = std::sqrt(3.0) * 0.15, largest = 1.0 + a - a / n;
+    double mean = 0.0, square = 0.0;
+    for (const double s : sizes) {
+        mean += s * largest / n;
+        square += s * s * largest * largest / n;
+    }
+    EXPECT_NEAR(mean, 1.0, 1e-14);
+    EXPECT_NEAR(std::sqrt(square - mean * mean), 0.15 * std::sqrt(1.0 - 1.0 / (n * n)), 1e-12);
+    JammingProtocol run(p);
+    ASSERT_TRUE(run.run([](const ProtocolStatus&) {}));
+    const Packing packing = run.checkpoint();
+    EXPECT_GT(smallestRelativeGap(packing), -1e-12);
+    EXPECT_EQ(std::get<double>(packing.provenance.at("polydispersity")), 0.15);
+    EXPECT_NEAR(packing.semiAxes.back() / packing.semiAxis, sizes.back(), 1e-15);
+}
+
 TEST(Mixtures, SuperballMixturesAndOneSizedMixturesAreRefused) {
     ProtocolParameters superballs = smallMixture(1);
     superballs.p = 1.5;
@@ -130,6 +155,13 @@ TEST(Mixtures, SuperballMixturesAndOneSizedMixturesAreRefused) {
     ProtocolParameters ratio = smallMixture(1);
     ratio.sizeRatio = 0.7;
     EXPECT_THROW(ratio.validate(), ProtocolParameterError);
+    ProtocolParameters both = smallMixture(1);
+    both.polydispersity = 0.1;
+    EXPECT_THROW(both.validate(), ProtocolParameterError);
+    ProtocolParameters wide = smallMixture(1);
+    wide.sizeRatio = 1.0;
+    wide.polydispersity = 0.4;
+    EXPECT_THROW(wide.validate(), ProtocolParameterError);
     EXPECT_NO_THROW(smallMixture(1).validate());
 }
 
