@@ -3,6 +3,7 @@
 // missing state is refused naming its group and key.
 #include "protocol/checkpoint_entries.hpp"
 #include "protocol/jamming_protocol.hpp"
+#include "small_runs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,18 +16,14 @@ namespace {
 /// A checkpoint of a short superball run (the rotating engine: predictor counters included) with
 /// a finish (its entries are written only where there is one).
 Packing shortSuperballCheckpoint() {
-    ProtocolParameters p;
+    ProtocolParameters p = testing::smallRun(1);
     p.particles = 27;
     p.p = 1.5;
-    p.gammaFast = 0.05;
-    p.gammaSlow = 0.01;
     p.pressureSwitch = 1e2;
     p.pressureFinal = 1e4;
     p.pressureFinish = 1e3;
     p.finishSpeed = 2.0;
-    JammingProtocol run(p);
-    run.run([](const ProtocolStatus&) {});
-    return run.checkpoint();
+    return testing::finishedCheckpoint(p);
 }
 
 std::map<std::string, ProvenanceValue>& groupOf(Packing& packing, const std::string& group) {
@@ -46,15 +43,12 @@ std::string refusal(const Packing& packing) {
 /// A checkpoint of a short binary sphere run (docs/mixtures.md: its entries are written only by a
 /// mixture's run).
 Packing shortMixtureCheckpoint() {
-    ProtocolParameters p;
+    ProtocolParameters p = testing::smallRun(1);
     p.particles = 40;
     p.sizeRatio = 1.4;
-    p.gammaFast = 0.05;
     p.pressureSwitch = 1e2;
     p.pressureFinal = 1e3;
-    JammingProtocol run(p);
-    run.run([](const ProtocolStatus&) {});
-    return run.checkpoint();
+    return testing::finishedCheckpoint(p);
 }
 
 TEST(CheckpointEntries, EveryKeyIsWrittenOnceAndResumesToTheSameEntries) {

@@ -5,6 +5,7 @@
 #include "protocol/jamming_protocol.hpp"
 #include "protocol/paper_rates.hpp"
 #include "protocol/protocol_advice.hpp"
+#include "small_runs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,16 +21,7 @@
 namespace sbpack {
 namespace {
 
-ProtocolParameters smallRun(std::uint64_t seed) {
-    ProtocolParameters p;
-    p.particles = 64;
-    p.seed = seed;
-    p.gammaFast = 0.05;
-    p.gammaSlow = 0.01;
-    p.pressureSwitch = 1e3;
-    p.pressureFinal = 1e7;
-    return p;
-}
+using testing::smallRun;
 
 /// A small superball run (p = 1.5, rotating engine).
 ProtocolParameters smallSuperballRun(std::uint64_t seed) {

@@ -7,6 +7,7 @@
 #include "io/packing_io.hpp"
 #include "protocol/jamming_protocol.hpp"
 #include "shapes/sphere.hpp"
+#include "small_runs.hpp"
 
 #include <gtest/gtest.h>
 
@@ -20,13 +21,8 @@ namespace sbpack {
 namespace {
 
 ProtocolParameters smallMixture(std::uint64_t seed) {
-    ProtocolParameters p;
+    ProtocolParameters p = testing::smallRun(seed);
     p.particles = 80;
-    p.seed = seed;
-    p.gammaFast = 0.05;
-    p.gammaSlow = 0.01;
-    p.pressureSwitch = 1e3;
-    p.pressureFinal = 1e7;
     p.sizeRatio = 1.4;
     p.largeFraction = 0.25;
     return p;
