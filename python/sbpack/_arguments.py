@@ -10,9 +10,10 @@ _PACKING_INIT = _sbpack.Packing.__init__
 _GENERATE = _sbpack.generate
 
 
-def __init__(self, positions, orientations, box_length, *, p, semi_axis, source="arrays"):
+def __init__(self, positions, orientations, box_length, *, p, semi_axis, semi_axes=None,
+             source="arrays"):
     _PACKING_INIT(self, positions, orientations, box_length, p=p, semi_axis=semi_axis,
-                  source=source)
+                  semi_axes=semi_axes, source=source)
 
 
 # The extension's own description (python/src/packing.cpp), without pybind11's signature line.

@@ -57,7 +57,8 @@ Array realArray(const py::object& object, const char* name, const std::string& s
 
 /// A packing from arrays, validated and canonicalised as the readers do (common/io).
 Packing fromArrays(const py::object& positionsObject, const py::object& orientationsObject,
-                   double boxLength, double p, double semiAxis, const std::string& source) {
+                   double boxLength, double p, double semiAxis, const py::object& semiAxesObject,
+                   const std::string& source) {
     checkNoNul(source, "source");
     const Array positions = realArray(positionsObject, "positions", source);
     const Array orientations = realArray(orientationsObject, "orientations", source);
@@ -73,6 +74,15 @@ Packing fromArrays(const py::object& positionsObject, const py::object& orientat
     for (py::ssize_t i = 0; i < n; ++i) {
         packing.positions.emplace_back(r(i, 0), r(i, 1), r(i, 2));
         packing.orientations.emplace_back(q(i, 0), q(i, 1), q(i, 2), q(i, 3));
+    }
+    if (!semiAxesObject.is_none()) { // a mixture's (docs/mixtures.md)
+        const Array semiAxes = realArray(semiAxesObject, "semi_axes", source);
+        if (semiAxes.ndim() != 1 || semiAxes.shape(0) != n)
+            throw py::value_error("'" + source + "': semi_axes must have shape (" +
+                                  std::to_string(n) + ",), one per particle");
+        const auto a = semiAxes.unchecked<1>();
+        for (py::ssize_t i = 0; i < n; ++i)
+            packing.semiAxes.push_back(a(i));
     }
     validatePacking(packing, source);
     canonicalizePacking(packing);
@@ -144,10 +154,11 @@ void registerPacking(py::module_& m) {
                         "sizes")
         .def(py::init(&fromArrays), py::arg("positions"), py::arg("orientations"),
              py::arg("box_length"), py::kw_only(), py::arg("p"), py::arg("semi_axis"),
-             py::arg("source") = "arrays",
+             py::arg("semi_axes") = py::none(), py::arg("source") = "arrays",
              "From N x 3 positions and N x 4 unit quaternions (w, x, y, z), the shape's p and "
              "semi_axis given by keyword (no default: a packing's grown size is its own, "
-             "docs/python.md); checked as the file readers check (ValueError with their "
+             "docs/python.md); a mixture's N semi_axes by keyword too, semi_axis their largest "
+             "(docs/mixtures.md); checked as the file readers check (ValueError with their "
              "message, naming `source`)")
         .def_static("read", &read, py::arg("path"), "Reads a .h5 (or .txt) packing file")
         .def("write", &write, py::arg("path"),

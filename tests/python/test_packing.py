@@ -155,3 +155,24 @@ def test_the_shape_is_never_a_silent_default():
         sbpack.Packing(p.positions, p.orientations, p.box_length, semi_axis=p.semi_axis)
     q = sbpack.Packing(p.positions, p.orientations, p.box_length, p=p.p, semi_axis=p.semi_axis)
     assert q.phi == p.phi
+
+
+def test_a_mixture_from_arrays_keeps_its_sizes_in_h5_only(tmp_path):
+    """docs/mixtures.md: semi_axes by keyword, phi the sum of the particles' own volumes, the
+    sizes kept by the packing file and refused by the formats of one size."""
+    positions = np.array([[0.5, 0.5, 0.5], [2.0, 2.0, 2.0], [3.5, 0.5, 2.0]])
+    orientations = np.tile([1.0, 0.0, 0.0, 0.0], (3, 1))
+    radii = np.array([0.5, 0.35, 0.35])
+    p = sbpack.Packing(positions, orientations, 5.0, p=1.0, semi_axis=0.5, semi_axes=radii)
+    assert p.is_mixture and np.array_equal(p.semi_axes, radii)
+    assert abs(p.phi - 4 / 3 * np.pi * np.sum(radii**3) / 125) < 1e-15
+    p.write(tmp_path / "mix.h5")
+    with h5py.File(tmp_path / "mix.h5") as f:
+        assert np.array_equal(f["semi_axes"][:, 0], radii) and f.attrs["semi_axis"] == 0.5
+    assert np.array_equal(sbpack.Packing.read(tmp_path / "mix.h5").semi_axes, radii)
+    with pytest.raises(ValueError, match="can be written only as .h5"):
+        p.write(tmp_path / "mix.gsd")
+    with pytest.raises(ValueError, match="not the largest of semi_axes"):
+        sbpack.Packing(positions, orientations, 5.0, p=1.0, semi_axis=0.4, semi_axes=radii)
+    identical = sbpack.Packing.read(P15)
+    assert not identical.is_mixture and np.all(identical.semi_axes == identical.semi_axis)
