@@ -79,6 +79,11 @@ std::string verdictOf(const JamCheck& check, const Packing& packing, double redu
             "not jammed: still compressing (at reduced pressure {:.3g} the load-bearing "
             "gaps, about {:.0f} / P D, exceed the largest contact gap {:.0e} D)",
             reducedPressure, parameters.gapsPerPressure, parameters.maxTolerance);
+    if (packing.isMixture()) // the limit's calibration, not a chain, is in question there
+        return "not jammed: " + network +
+               fmt::format(" (above {:.2f}, a limit calibrated on identical particles: a "
+                           "mixture's small particles rattle more, docs/mixtures.md)",
+                           parameters.maxRattlerFraction);
     if (check.chain) {
         const SpanningChain& c = *check.chain;
         return "not jammed: a chain of " + std::to_string(c.cycle.size()) +

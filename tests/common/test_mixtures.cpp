@@ -2,6 +2,7 @@
 // two sizes against closed forms, and the contact network's per-pair tolerance.
 
 #include "contacts/contact_network.hpp"
+#include "contacts/jam_check.hpp"
 #include "io/packing_formats.hpp"
 #include "io/packing_io.hpp"
 #include "packing/validation.hpp"
@@ -134,6 +135,24 @@ TEST(Mixtures, AContactIsWithinTheToleranceOfItsOwnPair) {
     const ContactResult overlap = ContactNetwork({}).compute(fourSpheres(0.5e-10, -2e-10));
     EXPECT_EQ(overlap.overlappingPairs, 1);
     EXPECT_NEAR(overlap.worstGap, -2e-10 * 0.7, 1e-15);
+}
+
+// Three spheres of two sizes in a row that wraps the box along x: every one a rattler, and a
+// wrapping chain. For a mixture the verdict names the rattler limit's calibration, not the
+// chain and the box's size (bench/RESULTS.md, "Binary spheres beside the bidisperse LS code").
+TEST(Mixtures, TheJamChecksVerdictOnAMixtureNamesTheRattlerLimit) {
+    Packing row;
+    row.p = 1.0;
+    row.boxLength = 2.4;
+    row.semiAxis = 0.5;
+    row.semiAxes = {0.5, 0.35, 0.35};
+    row.positions = {Vector3d(0.0, 1.2, 1.2), Vector3d(0.85, 1.2, 1.2), Vector3d(1.55, 1.2, 1.2)};
+    row.orientations.assign(3, Quaterniond::Identity());
+    const JamCheck check = checkJam(row, 1e12);
+    EXPECT_FALSE(check.jammed);
+    EXPECT_NE(check.verdict.find("calibrated on identical particles"), std::string::npos)
+        << check.verdict;
+    EXPECT_EQ(check.verdict.find("use more particles"), std::string::npos) << check.verdict;
 }
 
 } // namespace
