@@ -4,6 +4,7 @@
 // Q = 2 pi n / L with integer n; shell s >= 1 holds those with round(|n|) = s, so every shell is
 // 2 pi / L wide and the shells up to s_max hold exactly the n with |n| < s_max + 1/2.
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -18,6 +19,11 @@ struct ShellAverage {
 
     std::size_t size() const { return q.size(); }
 };
+
+/// |n|^2 of the wave vector Q = 2 pi n / L, exact in 64 bits.
+inline std::int64_t squaredIndex(const std::array<int, 3>& n) {
+    return std::int64_t{n[0]} * n[0] + std::int64_t{n[1]} * n[1] + std::int64_t{n[2]} * n[2];
+}
 
 /// Largest |n|^2 of the wave vectors of shells 1..maxShell: round(|n|) <= s iff |n|^2 <= s(s+1).
 inline std::int64_t maxSquaredIndex(int maxShell) {

@@ -19,13 +19,9 @@ namespace sbpack {
 
 namespace {
 
-std::int64_t squaredNorm(const std::array<int, 3>& n) {
-    return std::int64_t{n[0]} * n[0] + std::int64_t{n[1]} * n[1] + std::int64_t{n[2]} * n[2];
-}
-
 /// WaveVectorSpectrum's order: by |n|^2, then lexicographically.
 bool before(const std::array<int, 3>& a, const std::array<int, 3>& b) {
-    const std::int64_t a2 = squaredNorm(a), b2 = squaredNorm(b);
+    const std::int64_t a2 = squaredIndex(a), b2 = squaredIndex(b);
     return a2 != b2 ? a2 < b2 : a < b;
 }
 
@@ -98,7 +94,7 @@ std::vector<std::array<int, 3>> halfSpaceWaveVectors(std::int64_t maxN2) {
             for (int nz = -k; nz <= k; ++nz) {
                 const bool half = nx > 0 || (nx == 0 && (ny > 0 || (ny == 0 && nz > 0)));
                 const std::array<int, 3> n{nx, ny, nz};
-                if (half && squaredNorm(n) <= maxN2) modes.push_back(n);
+                if (half && squaredIndex(n) <= maxN2) modes.push_back(n);
             }
     std::sort(modes.begin(), modes.end(), before);
     return modes;
@@ -133,7 +129,7 @@ WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
     out.chi.reserve(order.size());
     for (const std::size_t i : order) {
         const double q = 2.0 * std::numbers::pi *
-                         std::sqrt(static_cast<double>(squaredNorm(modes.n[i]))) /
+                         std::sqrt(static_cast<double>(squaredIndex(modes.n[i]))) /
                          packing.boxLength;
         const double m = sphereFormFactor(q, packing.semiAxis);
         out.n.push_back(modes.n[i]);

@@ -27,10 +27,7 @@ struct WaveVectorSpectrum {
     std::vector<double> chi; ///< length^3
 
     std::size_t size() const { return n.size(); }
-    std::int64_t n2(std::size_t i) const {
-        return std::int64_t{n[i][0]} * n[i][0] + std::int64_t{n[i][1]} * n[i][1] +
-               std::int64_t{n[i][2]} * n[i][2];
-    }
+    std::int64_t n2(std::size_t i) const { return squaredIndex(n[i]); }
 };
 
 /// Every n of the half space with 1 <= |n|^2 <= maxN2, in WaveVectorSpectrum's order.

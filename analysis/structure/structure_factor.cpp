@@ -8,6 +8,7 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -31,16 +32,10 @@ namespace {
 /// The species of a binary mixture: true for the large particles (semi-axis the largest);
 /// empty unless the packing has exactly two sizes.
 std::vector<bool> binarySpecies(const Packing& packing) {
-    if (!packing.isMixture()) return {};
+    if (std::set<double>(packing.semiAxes.begin(), packing.semiAxes.end()).size() != 2) return {};
     std::vector<bool> large;
-    double small = packing.semiAxis;
-    for (const double r : packing.semiAxes) {
+    for (const double r : packing.semiAxes)
         large.push_back(r == packing.semiAxis);
-        if (r != packing.semiAxis) {
-            if (small != packing.semiAxis && r != small) return {}; // a third size
-            small = r;
-        }
-    }
     return large;
 }
 
@@ -58,10 +53,7 @@ PartialStructureFactors partialStructureFactors(const Packing& packing,
     ShellAccumulator aa(packing.boxLength, maxShell), bb(packing.boxLength, maxShell),
         ab(packing.boxLength, maxShell);
     for (std::size_t m = 0; m < ma.size(); ++m) {
-        const auto& k = ma.n[m];
-        const std::int64_t n2 = static_cast<std::int64_t>(k[0]) * k[0] +
-                                static_cast<std::int64_t>(k[1]) * k[1] +
-                                static_cast<std::int64_t>(k[2]) * k[2];
+        const std::int64_t n2 = squaredIndex(ma.n[m]);
         aa.add(n2, ma.intensity[m] / na, 2);
         bb.add(n2, mb.intensity[m] / nb, 2);
         ab.add(n2, (ma.amplitude[m] * std::conj(mb.amplitude[m])).real() / std::sqrt(na * nb), 2);
@@ -90,11 +82,8 @@ StructureFactorResult StructureFactor::compute(const Packing& packing,
     const auto n = static_cast<double>(packing.size());
     ShellAccumulator shells(packing.boxLength, result.maxShell);
     for (std::size_t m = 0; m < modes.size(); ++m) {
-        const auto& k = modes.n[m];
-        const std::int64_t n2 = static_cast<std::int64_t>(k[0]) * k[0] +
-                                static_cast<std::int64_t>(k[1]) * k[1] +
-                                static_cast<std::int64_t>(k[2]) * k[2];
-        shells.add(n2, modes.intensity[m] / n, 2); // S(Q) = S(-Q): n stands for +-n
+        shells.add(squaredIndex(modes.n[m]), modes.intensity[m] / n,
+                   2); // S(Q) = S(-Q): n stands for +-n
     }
     result.shells = shells.average();
     if (const std::vector<bool> species = binarySpecies(packing); !species.empty())

@@ -57,9 +57,6 @@ PairImage pairImage(const State& state, const Matrix3d& cellInverse, int i, int 
     return {inBox + shift, shift};
 }
 
-/// The pairs of `state` within `range` D (ContactNetwork with `rattlerThreshold`), found in the
-/// cubic reference frame F^-1 r, the range widened by what F can shorten a separation: a superset
-/// of the pairs within `range` in the cell.
 /// `state`'s packing in the cubic reference frame: F^-1 r, wrapped into the cube.
 Packing referencePacking(const State& state) {
     const Matrix3d cellInverse = state.cell.inverse();
@@ -69,6 +66,9 @@ Packing referencePacking(const State& state) {
     return reference;
 }
 
+/// The pairs of `state` within `range` D (ContactNetwork with `rattlerThreshold`), found in the
+/// cubic reference frame F^-1 r, the range widened by what F can shorten a separation: a superset
+/// of the pairs within `range` in the cell.
 ContactResult referencePairs(const State& state, double range, int rattlerThreshold) {
     const Matrix3d cellInverse = state.cell.inverse();
     const Superball shape = state.packing.shape();

@@ -1,17 +1,21 @@
 #include "packing/packing.hpp"
 
-#include <cmath>
-
 namespace sbpack {
 
-double Packing::packingFraction() const {
-    const double cube = boxLength * boxLength * boxLength;
-    if (semiAxes.empty()) return static_cast<double>(size()) * shape().volume() / cube;
-    // v_i = v1 (R_i / R)^3: one volume integral, scaled per particle.
+double meanCubedSize(const std::vector<double>& sizes, double unit) {
+    if (sizes.empty()) return 1.0;
     double sum = 0.0;
-    for (const double r : semiAxes)
-        sum += std::pow(r / semiAxis, 3);
-    return sum * shape().volume() / cube;
+    for (const double size : sizes) {
+        const double s = size / unit;
+        sum += s * s * s;
+    }
+    return sum / static_cast<double>(sizes.size());
+}
+
+double Packing::packingFraction() const {
+    // v_i = v1 (R_i / R)^3: one volume integral, scaled per particle.
+    return static_cast<double>(size()) * meanCubedSize(semiAxes, semiAxis) * shape().volume() /
+           (boxLength * boxLength * boxLength);
 }
 
 Packing inLengthUnit(const Packing& packing, double unit) {

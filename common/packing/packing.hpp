@@ -88,6 +88,10 @@ struct Packing {
     double analysisLengthUnit() const { return std::ldexp(1.0, std::ilogb(2.0 * semiAxis)); }
 };
 
+/// The mean of (s / unit)^3 over `sizes` (1 where empty: identical particles): a mixture's mean
+/// particle volume over that of size `unit` (Packing::packingFraction, sbgen's growing engine).
+double meanCubedSize(const std::vector<double>& sizes, double unit = 1.0);
+
 /// The particles of `packing` with every length divided by `unit` (a power of two: exact), so
 /// that a packing in any units is analysed at D ~ 1 and gives the same reduced results. The
 /// exponent, pressure, seed and contact forces (their points scaled) are kept; velocities,

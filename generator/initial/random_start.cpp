@@ -57,6 +57,7 @@ RandomPlacement randomPlacement(int particles, double p, double boxLength, Rando
         const Quaterniond q = body.isSphere() ? Quaterniond::Identity() : random.rotation();
         bool free = true;
         const int next = static_cast<int>(placement.positions.size());
+        const Superball trial = sizes.empty() ? body : Superball(p, 0.5 * size(next));
         cells.forEachNearby(cells.cellContaining(r), [&](int j) {
             if (!free) return;
             const Vector3d d = minimumImage(placement.positions[j] - r, boxLength);
@@ -66,7 +67,7 @@ RandomPlacement randomPlacement(int particles, double p, double boxLength, Rando
                 free = false;
                 return;
             }
-            const SuperballPair pair{Superball(p, 0.5 * size(next)), q.toRotationMatrix(),
+            const SuperballPair pair{trial, q.toRotationMatrix(),
                                      placement.orientations[j].toRotationMatrix(), d,
                                      size(j) / size(next)};
             free = scaleFactor(pair).scaleFactor > 1.0;

@@ -48,15 +48,6 @@ Engine makeEngine(double p, double box, std::vector<ParticleState> state, Growth
                                          std::move(sizes));
 }
 
-/// The mean of sizes^3 (1 where empty): a mixture's mean volume over the largest particle's.
-double meanCubedSize(const std::vector<double>& sizes) {
-    if (sizes.empty()) return 1.0;
-    double sum = 0.0;
-    for (const double s : sizes)
-        sum += s * s * s;
-    return sum / static_cast<double>(sizes.size());
-}
-
 /// A checkpoint's mixture sizes, each semi-axis over the largest (empty: identical particles).
 std::vector<double> sizesOf(const Packing& packing) {
     std::vector<double> sizes;
