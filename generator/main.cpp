@@ -185,7 +185,12 @@ int generate(const sbpack::GeneratorOptions& o) {
     if (jam.jammed) {
         // The jam check tests local jamming of translations only (docs/jamming.md §1); sbgen
         // links no LP solver, so the categories with rotations are sbanalyze's to test.
-        if (!o.quiet)
+        if (!o.quiet && packing.isMixture())
+            std::fprintf(stderr,
+                         "sbgen: %s; the jamming categories: sbanalyze info --jamming %s "
+                         "(docs/mixtures.md)\n",
+                         jam.verdict.c_str(), o.out.c_str());
+        else if (!o.quiet)
             std::fprintf(stderr,
                          "sbgen: jammed by the jam check (translations: %.1f %% of the particles "
                          "rattlers or free, at most %.0f %%); the jamming categories, rotations "

@@ -22,13 +22,7 @@ PackingInfo packingInfo(const std::filesystem::path& file, const ContactParamete
     std::optional<JamCheck> jam;
     if (reduced.reducedPressure && *reduced.reducedPressure > 0.0)
         jam = checkJam(reduced, *reduced.reducedPressure);
-    // Order metrics and jamming categories assume one size (docs/mixtures.md, "Not yet").
-    if (jamming && packing.isMixture())
-        throw std::invalid_argument("'" + file.string() +
-                                    "': --jamming: the jamming categories of a mixture are not "
-                                    "computed yet (docs/mixtures.md)");
-    OrderMetrics order =
-        packing.isMixture() ? OrderMetrics{} : measureOrder(reduced, &contacts.contacts);
+    OrderMetrics order = measureOrder(reduced, &contacts.contacts);
     OrderVerdict verdict = orderVerdict(order);
     std::optional<PackingJamming> categories;
     if (jamming) categories = testJammingCategories(reduced, *jamming, parameters);
@@ -44,10 +38,6 @@ namespace {
 void printOrder(const PackingInfo& info, std::ostream& out) {
     const OrderMetrics& m = info.order;
     out << "  order                ";
-    if (info.packing.isMixture()) {
-        out << "not measured: a mixture (docs/mixtures.md)\n";
-        return;
-    }
     if (m.cutoffBonds) out << "mean local q6 = " << m.cutoffBonds->q6.meanLocalOrder << ", ";
     if (m.solidLike) out << "solid-like " << m.solidLike->solidFraction << ", ";
     if (m.translational)

@@ -278,6 +278,10 @@ PackingJamming testJammingCategories(const Packing& packing, const JammingSettin
                         "sphere packings; at p = {:g} it would linearise rotations of up to "
                         "radians, and unjams every superball packing (docs/jamming.md §4.1)",
                         packing.p));
+    if (settings.relax && packing.isMixture())
+        throw std::invalid_argument("jamming: --jamming-relax reads one size; a mixture's "
+                                    "nearest jammed packing is not computed yet "
+                                    "(docs/mixtures.md)");
     if (finiteGap && settings.relax)
         throw std::invalid_argument(
             "jamming: --jamming-unjam-distance tests the packing as given, with its gaps; "

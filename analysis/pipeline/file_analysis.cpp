@@ -63,9 +63,7 @@ FileResults analyzeFile(const Packing& packing, const std::filesystem::path& inp
     warnAboutOverlaps(context.packing(), progress);
     if (settings.distribute == Distribution::Grids) context.distributeGrids(grids);
     FileResults results{input, fileRecord(packing, input, context), {}};
-    if (packing.isMixture())
-        results.sizeRatio =
-            packing.semiAxis / *std::min_element(packing.semiAxes.begin(), packing.semiAxes.end());
+    if (packing.isMixture()) results.sizeRatio = packing.semiAxis / packing.smallestSemiAxis();
     const std::vector<Analysis> order = runOrder(settings.analyses);
     for (std::size_t i = 0; i < order.size(); ++i) {
         const AnalysisInfo& info = analysisInfo(order[i]);

@@ -32,11 +32,14 @@ std::complex<double> phase(const PhaseTable& t, std::size_t row, int n) {
 }
 
 /// Everything the superball path needs per particle: the body-frame map u = B n (u = k R, k
-/// the body-frame wave vector of n: B = (2 pi R / L) R_j^T) and the three phase tables.
+/// the body-frame wave vector of n: B = (2 pi R / L) R_j^T) and the three phase tables. A
+/// mixture's particle j of size s_j = R_j / R has m(k; s_j R) = s_j^3 m(s_j k; R): B carries
+/// s_j and `cubedSize` s_j^3 (empty for identical particles).
 struct ParticleTables {
     std::vector<Eigen::Matrix3d> toBody;
     PhaseTable x, y, z;
     std::size_t stride;
+    std::vector<double> cubedSize;
 };
 
 ParticleTables particleTables(const Packing& packing, int kmax) {
@@ -44,11 +47,17 @@ ParticleTables particleTables(const Packing& packing, int kmax) {
                      phaseTable(packing.positions, 0, packing.boxLength, kmax),
                      phaseTable(packing.positions, 1, packing.boxLength, kmax),
                      phaseTable(packing.positions, 2, packing.boxLength, kmax),
-                     static_cast<std::size_t>(kmax) + 1};
+                     static_cast<std::size_t>(kmax) + 1,
+                     {}};
     const double scale = 2.0 * std::numbers::pi * packing.semiAxis / packing.boxLength;
     t.toBody.reserve(packing.size());
     for (const Quaterniond& q : packing.orientations)
         t.toBody.push_back(scale * q.normalized().toRotationMatrix().transpose());
+    for (std::size_t j = 0; j < packing.semiAxes.size(); ++j) {
+        const double size = packing.semiAxes[j] / packing.semiAxis;
+        t.toBody[j] *= size;
+        t.cubedSize.push_back(size * size * size);
+    }
     return t;
 }
 
@@ -73,6 +82,9 @@ void tileSums(const SuperballFormFactor& form, const ParticleTables& t,
             uz[lane] = -u.z() * u.z();
         }
         form.seriesTile(order, ux, uy, uz, value);
+        if (!t.cubedSize.empty())
+            for (double& v : value)
+                v *= t.cubedSize[j];
         const std::size_t row = j * t.stride;
         for (int lane = 0; lane < T && first + lane < modes.size(); ++lane) {
             const auto& m = modes[first + lane];
@@ -113,8 +125,9 @@ ShellAverage shellAverage(const WaveVectorSpectrum& spectrum, int maxShell) {
 
 WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
                                      const Progress& progress) {
-    if (!packing.shape().isSphere())
-        throw std::invalid_argument("exact spectral density: the particles are not spheres (p = " +
+    if (!packing.shape().isSphere() || packing.isMixture())
+        throw std::invalid_argument("exact spectral density: the particles are not identical "
+                                    "spheres (p = " +
                                     std::to_string(packing.p) + ")");
     if (maxN2 < 1) throw std::invalid_argument("exact spectral density: no wave vector");
     const DensityModes modes =
@@ -197,8 +210,11 @@ ExactSpectralDensityResult ExactSpectralDensity::compute(const Packing& packing,
         throw std::invalid_argument("exact spectral density: no wave vector with Q w <= qmax = " +
                                     fmt::format("{:g}", parameters_.maxQw) +
                                     "; the box's smallest is Q w = " + std::to_string(qMinW));
+    // Identical spheres by the collective density and one closed form; a mixture, spheres or
+    // not, by each particle's own form factor.
+    const bool series = !shape.isSphere() || packing.isMixture();
     const double reach = parameters_.maxQw / result.meanWidth * shape.circumradius();
-    if (!shape.isSphere() && reach > SuperballFormFactor::kSeriesLimit)
+    if (series && reach > SuperballFormFactor::kSeriesLimit)
         throw std::invalid_argument(
             "exact spectral density: qmax = " + fmt::format("{:g}", parameters_.maxQw) +
             " is beyond the form factor series' range for p = " + std::to_string(packing.p) +
@@ -206,8 +222,8 @@ ExactSpectralDensityResult ExactSpectralDensity::compute(const Packing& packing,
             std::to_string(SuperballFormFactor::kSeriesLimit * result.meanWidth /
                            shape.circumradius()) +
             ")");
-    result.modes = shape.isSphere() ? sphereWaveVectors(packing, result.maxN2, progress)
-                                    : superballWaveVectors(packing, result.maxN2, progress);
+    result.modes = series ? superballWaveVectors(packing, result.maxN2, progress)
+                          : sphereWaveVectors(packing, result.maxN2, progress);
     result.runtimeSeconds = clock.seconds();
     return result;
 }

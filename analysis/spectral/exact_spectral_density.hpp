@@ -38,13 +38,15 @@ std::vector<std::array<int, 3>> halfSpaceWaveVectors(std::int64_t maxN2);
 /// the spectrum does not reach that far.
 ShellAverage shellAverage(const WaveVectorSpectrum& spectrum, int maxShell);
 
-/// Spheres: |sum_j exp(-i Q.r_j)|^2 m_sphere(Q)^2 / V, 1 <= |n|^2 <= maxN2, by the collective
-/// density kernel. Throws std::invalid_argument unless the particles are spheres and maxN2 >= 1.
+/// Identical spheres: |sum_j exp(-i Q.r_j)|^2 m_sphere(Q)^2 / V, 1 <= |n|^2 <= maxN2, by the
+/// collective density kernel. Throws std::invalid_argument unless the particles are identical
+/// spheres and maxN2 >= 1.
 WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
                                      const Progress& progress);
 
 /// Any p: |sum_j m(R_j^T Q) exp(-i Q.r_j)|^2 / V, 1 <= |n|^2 <= maxN2, with the form factor's
-/// series (SuperballFormFactor, accurate to 1e-16 v1 at these Q). Parallel over tiles of wave
+/// series (SuperballFormFactor, accurate to 1e-16 v1 at these Q); a mixture's particle of size
+/// s_j = R_j / R with its own, s_j^3 m(s_j R_j^T Q) (docs/mixtures.md). Parallel over tiles of wave
 /// vectors, each summed over the particles in order (the result does not depend on the number
 /// of threads). Throws std::invalid_argument unless maxN2 >= 1 and |Q| R_c stays within the
 /// series' range.
@@ -75,7 +77,8 @@ class ExactSpectralDensity {
     /// Largest |n|^2 with Q w = 2 pi |n| w / L <= maxQw.
     static std::int64_t maxN2For(double maxQw, double boxLength, double meanWidth);
 
-    /// Spheres by sphereWaveVectors, other shapes by superballWaveVectors. Throws
+    /// Identical spheres by sphereWaveVectors, other shapes and mixtures by
+    /// superballWaveVectors. Throws
     /// std::invalid_argument if no wave vector of the box has Q w <= maxQw, or if maxQw is beyond
     /// the form factor's series range for this shape (both messages name maxQw).
     ExactSpectralDensityResult compute(const Packing& packing, const Progress& progress) const;

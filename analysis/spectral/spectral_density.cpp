@@ -154,7 +154,7 @@ void SpectralDensity::finish(const Packing& packing, ShellAverage shells, const 
                              SpectralDensityResult& result) const {
     const Stopwatch clock;
     result.shells = std::move(shells);
-    if (packing.shape().isSphere()) {
+    if (packing.shape().isSphere() && !packing.isMixture()) { // one closed form for all
         const Stopwatch exactClock;
         result.exactSphere = compareWithSpheres(packing, result.shells, result.maxShell, progress);
         result.exactSeconds = exactClock.seconds();

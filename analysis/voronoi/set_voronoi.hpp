@@ -19,8 +19,9 @@ namespace sbpack {
 struct LocalPhiMoments {
     std::int64_t count = 0;
     double mean = 0.0;
-    double sd = 0.0;           ///< sample standard deviation (n - 1)
-    double harmonicMean = 0.0; ///< count / sum 1 / phi_i: the global phi of their cells
+    double sd = 0.0; ///< sample standard deviation (n - 1)
+    /// count / sum 1 / phi_i: the global phi of their cells (of identical particles only)
+    double harmonicMean = 0.0;
     double min = 0.0;
     double max = 0.0;
 };
@@ -28,10 +29,11 @@ struct LocalPhiMoments {
 struct SetVoronoiResult {
     int voxels = 0;                  ///< M
     double voxelSize = 0.0;          ///< a = L / M
-    double particleVolume = 0.0;     ///< v1
+    double particleVolume = 0.0;     ///< v1 (of a mixture, the largest particle's)
     std::vector<double> cellVolumes; ///< v_cell(i), length^3, in particle order
-    std::vector<double> localPhi;    ///< phi_i = v1 / v_cell(i)
-    /// Each particle's solid voxels times a^3 over v1, minus 1: the voxel rounding of a particle
+    /// phi_i = v_i / v_cell(i), v_i = v1 (R_i / R)^3 the particle's own volume
+    std::vector<double> localPhi;
+    /// Each particle's solid voxels times a^3 over v_i, minus 1: the voxel rounding of a particle
     /// (the cell boundaries are placed to that rounding).
     std::vector<double> particleVoxelError;
     LocalPhiMoments all;

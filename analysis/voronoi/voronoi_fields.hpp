@@ -26,12 +26,13 @@ constexpr std::array<schema::Column<R>, 2> partColumns(std::string_view mean, st
 
 inline constexpr schema::FieldTable kTable{schema::joinColumns(
     std::array<schema::Column<R>, 5>{{
-        {{"local_phi_mean", A, F, "1", "mean local packing fraction phi_i = v1 / v_cell(i)", Mean},
+        {{"local_phi_mean", A, F, "1", "mean local packing fraction phi_i = v_i / v_cell(i)", Mean},
          member<&R::all, &L::mean>},
         {{"local_phi_sd", A, F, "1", "sample standard deviation of phi_i over the particles", Mean},
          member<&R::all, &L::sd>},
         {{"local_phi_harmonic_mean", A, F, "1",
-          "N / sum 1 / phi_i = N v1 / sum v_cell: the packing's phi (the cells tile the box)",
+          "N / sum 1 / phi_i: of identical particles N v1 / sum v_cell, the packing's phi (the "
+          "cells tile the box)",
           Mean},
          member<&R::all, &L::harmonicMean>},
         {{"local_phi_min", A, F, "1", "smallest phi_i", Mean}, member<&R::all, &L::min>},
@@ -43,7 +44,7 @@ inline constexpr schema::FieldTable kTable{schema::joinColumns(
                               "mean phi_i over the rattlers (where there are any)"),
     std::array<schema::Column<R>, 9>{{
         {{"voxel_error_rms", A, F, "1",
-          "rms over the particles of (solid voxels a^3 / v1 - 1): the voxel rounding of the "
+          "rms over the particles of (solid voxels a^3 / v_i - 1): the voxel rounding of the "
           "surfaces the cells are measured from (docs/local-structure.md §1)",
           Mean},
          member<&R::voxelErrorRms>},

@@ -114,7 +114,12 @@ struct BlockGeometry {
     int blocks;               ///< blocks along y and z
     int firstBlockX, blocksX; ///< the x-blocks the slab touches
 
+    /// A mixture's R_j / R (docs/mixtures.md); empty for identical particles.
+    std::vector<double> sizes;
+
     std::int64_t blockCount() const { return std::int64_t{blocksX} * blocks * blocks; }
+    /// Particle j's size over the largest.
+    double size(int j) const { return sizes.empty() ? 1.0 : sizes[j]; }
     /// Origin (voxel indices) of block b of the slab's blocks.
     std::array<int, 3> origin(std::int64_t b) const {
         const std::int64_t plane = std::int64_t{blocks} * blocks;
@@ -158,7 +163,8 @@ std::uint64_t rowWord(int z0, int z1, grid::IndexRange inner, int shift, const S
 /// of block (ox, oy, oz) it reaches, as rowBits. Per row one particle's solid voxels form an
 /// interval (the body is convex): the inscribed sphere's part is solid without a test, and the
 /// exact test runs from each end of the circumscribed sphere's part inwards up to the first solid
-/// voxel.
+/// voxel. A mixture's particle j has both spheres scaled by its size s_j, and toBody[j] carries
+/// 1 / s_j, so that the largest particle's test decides for it (bodyRotations).
 template <class Row>
 void forEachCandidateRow(int ox, int oy, int oz, std::span<const Candidate> candidates,
                          const std::vector<Eigen::Matrix3d>& toBody, const ContainmentTest& inside,
@@ -167,12 +173,13 @@ void forEachCandidateRow(int ox, int oy, int oz, std::span<const Candidate> cand
     const int firstX = std::max(g.x0, ox);
     const int lastY = std::min(g.m, oy + kBlock) - 1;
     const int lastZ = std::min(g.m, oz + kBlock) - 1;
-    const double rc2 = g.rc * g.rc, ri2 = g.ri * g.ri;
     for (const Candidate& candidate : candidates) {
         const Vector3d& c = candidate.centre;
         const Eigen::Matrix3d& rotation = toBody[candidate.particle];
-        const auto [x0, x1] = voxelRange(c.x(), g.rc, g.a, firstX, lastX);
-        const auto [y0, y1] = voxelRange(c.y(), g.rc, g.a, oy, lastY);
+        const double rc = g.rc * g.size(candidate.particle), ri = g.ri * g.size(candidate.particle);
+        const double rc2 = rc * rc, ri2 = ri * ri;
+        const auto [x0, x1] = voxelRange(c.x(), rc, g.a, firstX, lastX);
+        const auto [y0, y1] = voxelRange(c.y(), rc, g.a, oy, lastY);
         for (int x = x0; x <= x1; ++x) {
             const double dx = (x + 0.5) * g.a - c.x();
             for (int y = y0; y <= y1; ++y) {
@@ -338,8 +345,17 @@ double Voxelizer::reach(const Superball& shape) {
     return shape.circumradius() * (1.0 + kSphereMargin);
 }
 
+namespace {
+
+/// The narrowest width of the packing's particles: twice the smallest particle's inradius.
+double narrowestWidth(const Packing& packing) {
+    return 2.0 * Superball(packing.p, packing.smallestSemiAxis()).inradius();
+}
+
+} // namespace
+
 int Voxelizer::minimumVoxels(const Packing& packing) {
-    const double width = 2.0 * packing.shape().inradius();
+    const double width = narrowestWidth(packing);
     // A box of 1e100 widths (sbgen --phi-init 1e-300 wrote one) once gave "use M >= -2147483648".
     return static_cast<int>(
         std::min(std::ceil(kMinVoxelsAcross * packing.boxLength / width), kMaxVoxels + 1.0));
@@ -354,12 +370,12 @@ void Voxelizer::checkResolution(const Packing& packing, int voxels) {
                 << ") are larger than the box (L = " << packing.boxLength << ")";
         throw VoxelResolutionError(message.str());
     }
-    const double across = voxels * 2.0 * shape.inradius() / packing.boxLength;
+    const double across = voxels * narrowestWidth(packing) / packing.boxLength;
     if (across < kMinVoxelsAcross) {
         std::ostringstream message;
         message << std::setprecision(3) << "voxel grid: M = " << voxels << " puts " << across
                 << " voxels across the narrowest width of a particle (2 r_in = "
-                << 2.0 * shape.inradius() << " in L = " << packing.boxLength << "), fewer than "
+                << narrowestWidth(packing) << " in L = " << packing.boxLength << "), fewer than "
                 << kMinVoxelsAcross;
         if (minimumVoxels(packing) > kMaxVoxels)
             message << "; no grid can (M <= " << kMaxVoxels << "): the box is too large";
@@ -523,22 +539,29 @@ BlockGeometry blockGeometry(const Packing& packing, const VoxelizationParameters
     const int x0 = parameters.slabBegin, x1 = parameters.slabEnd;
     const int firstBlockX = x0 / kBlock;
     const Superball shape = packing.shape();
-    return {m,
-            packing.boxLength / m,
-            Voxelizer::reach(shape),
-            shape.inradius() * (1.0 - kSphereMargin),
-            x0,
-            x1,
-            blocks,
-            firstBlockX,
-            x1 > x0 ? (x1 - 1) / kBlock - firstBlockX + 1 : 0};
+    BlockGeometry g{m,
+                    packing.boxLength / m,
+                    Voxelizer::reach(shape),
+                    shape.inradius() * (1.0 - kSphereMargin),
+                    x0,
+                    x1,
+                    blocks,
+                    firstBlockX,
+                    x1 > x0 ? (x1 - 1) / kBlock - firstBlockX + 1 : 0,
+                    {}};
+    for (const double r : packing.semiAxes)
+        g.sizes.push_back(r / packing.semiAxis);
+    return g;
 }
 
-/// Lab-to-body rotations: x_body = R^T (x - r).
+/// Lab-to-body rotations: x_body = R^T (x - r); of a mixture, over the particle's size, x_body
+/// = R^T (x - r) / s_j, the point in the largest particle's frame (Superball is homogeneous).
 std::vector<Eigen::Matrix3d> bodyRotations(const Packing& packing) {
     std::vector<Eigen::Matrix3d> toBody(packing.size());
-    for (std::size_t j = 0; j < packing.size(); ++j)
+    for (std::size_t j = 0; j < packing.size(); ++j) {
         toBody[j] = packing.orientations[j].toRotationMatrix().transpose();
+        if (packing.isMixture()) toBody[j] *= packing.semiAxis / packing.semiAxes[j];
+    }
     return toBody;
 }
 
@@ -602,8 +625,8 @@ Voxelization Voxelizer::fromRowBits(std::span<const std::uint32_t> rows, const P
                                     " words are not the rows of a " + std::to_string(voxels) +
                                     "^3 grid");
     const int blocks = (voxels + kBlock - 1) / kBlock;
-    const BlockGeometry geometry{voxels, packing.boxLength / voxels, 0.0, 0.0, 0, voxels, blocks, 0,
-                                 blocks};
+    const BlockGeometry geometry{
+        voxels, packing.boxLength / voxels, 0.0, 0.0, 0, voxels, blocks, 0, blocks, {}};
     BlockMasks masks = blocksFromRowBits(rows, geometry);
     auto grid = std::make_unique<Voxelization::Grid>();
     std::int64_t solid = 0;

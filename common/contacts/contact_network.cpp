@@ -166,10 +166,7 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
     const CellList cells(packing.positions, packing.boxLength, range);
     cells.forEachNeighbourPair([&](int i, int j, const Vector3d& d) {
         // A mixture's pair: its own diameter R_i + R_j sizes the tolerance and the gap's unit.
-        const double scale =
-            packing.isMixture()
-                ? 0.5 * (packing.semiAxisOf(i) + packing.semiAxisOf(j)) / packing.semiAxis
-                : 1.0;
+        const double scale = packing.pairSize(i, j);
         const double pairDiameter = diameter * scale, pairGap = contactGap * scale;
         const SignedDistanceResult pair =
             signedDistance(pairOf(packing, shape, i, j, rotations, d));

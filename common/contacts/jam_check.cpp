@@ -49,7 +49,9 @@ std::vector<int> closedCycle(int a, int b, const std::vector<int>& parent) {
 /// tolerance can leave a load-bearing particle's contacts in one hemisphere, and in a network
 /// at the isostatic count removing it would cascade through the whole packing (MRJ spheres:
 /// 5 such particles in 5000, then all of them when iterated).
-double untrappedFraction(const ContactResult& contacts) {
+/// Also counts the backbone and its contacts into `check` (its untrapped non-rattlers: the
+/// return's second).
+std::pair<double, int> untrappedFraction(const ContactResult& contacts, JamCheck& check) {
     const int n = static_cast<int>(contacts.rattler.size());
     std::vector<std::vector<Vector3d>> normals(n);
     for (std::size_t k = 0; k < contacts.contacts.size(); ++k) {
@@ -57,11 +59,30 @@ double untrappedFraction(const ContactResult& contacts) {
         if (contacts.rattler[i] || contacts.rattler[j]) continue;
         normals[i].push_back(contacts.normals[k]);
         normals[j].push_back(-contacts.normals[k]);
+        ++check.backboneContacts;
     }
-    int removed = 0;
-    for (int i = 0; i < n; ++i)
-        if (contacts.rattler[i] || !isLocallyTrapped(normals[i])) ++removed;
-    return n > 0 ? static_cast<double>(removed) / n : 0.0;
+    int removed = 0, free = 0;
+    for (int i = 0; i < n; ++i) {
+        check.backbone += !contacts.rattler[i];
+        if (contacts.rattler[i]) {
+            ++removed;
+        } else if (!isLocallyTrapped(normals[i])) {
+            ++removed;
+            ++free;
+        }
+    }
+    return {n > 0 ? static_cast<double>(removed) / n : 0.0, free};
+}
+
+/// A mixture's second way to pass (docs/mixtures.md, "The jam check of a mixture"): its small
+/// particles can rattle in the cages of a jammed structure, so past the rattler limit the
+/// backbone is judged by the contacts a jammed one needs, 3 N' - 2 (a necessary condition for
+/// any shape: the particles' translations alone must be blocked), with at most the limit's
+/// fraction of all particles free among the non-rattlers.
+bool backboneHoldsItsCount(const JamCheck& check, int free, std::size_t particles,
+                           const JamCheckParameters& parameters) {
+    return check.backbone > 0 && check.backboneContacts >= 3 * check.backbone - 2 &&
+           free <= parameters.maxRattlerFraction * static_cast<double>(particles);
 }
 
 std::string verdictOf(const JamCheck& check, const Packing& packing, double reducedPressure,
@@ -73,17 +94,23 @@ std::string verdictOf(const JamCheck& check, const Packing& packing, double redu
         network += fmt::format(", {:.3f} with the particles not locally jammed (contacts in one "
                                "hemisphere)",
                                check.untrappedFraction);
+    if (check.jammed && packing.isMixture() && rattlers > parameters.maxRattlerFraction)
+        return fmt::format("jammed: the backbone of {} particles has {} contacts among them (at "
+                           "least 3 N' - 2 = {}); ",
+                           check.backbone, check.backboneContacts, 3 * check.backbone - 2) +
+               network;
     if (check.jammed) return "jammed: " + network;
     if (isCompressing(reducedPressure, parameters))
         return fmt::format(
             "not jammed: still compressing (at reduced pressure {:.3g} the load-bearing "
             "gaps, about {:.0f} / P D, exceed the largest contact gap {:.0e} D)",
             reducedPressure, parameters.gapsPerPressure, parameters.maxTolerance);
-    if (packing.isMixture()) // the limit's calibration, not a chain, is in question there
+    if (packing.isMixture()) // its rattlers, then its backbone's count (docs/mixtures.md)
         return "not jammed: " + network +
-               fmt::format(" (above {:.2f}, a limit calibrated on identical particles: a "
-                           "mixture's small particles rattle more, docs/mixtures.md)",
-                           parameters.maxRattlerFraction);
+               fmt::format(" (above {:.2f}), and the backbone of {} particles has {} contacts "
+                           "among them, a jammed one at least 3 N' - 2 = {}",
+                           parameters.maxRattlerFraction, check.backbone, check.backboneContacts,
+                           std::max(3 * check.backbone - 2, 1));
     if (check.chain) {
         const SpanningChain& c = *check.chain;
         return "not jammed: a chain of " + std::to_string(c.cycle.size()) +
@@ -168,8 +195,11 @@ JamCheck checkJam(const Packing& packing, double reducedPressure,
                                  parameters.minTolerance, parameters.maxTolerance);
     check.contacts =
         ContactNetwork({check.tolerance, parameters.rattlerThreshold}).compute(packing);
-    check.untrappedFraction = untrappedFraction(check.contacts);
-    check.jammed = check.untrappedFraction <= parameters.maxRattlerFraction;
+    const auto [untrapped, free] = untrappedFraction(check.contacts, check);
+    check.untrappedFraction = untrapped;
+    check.jammed =
+        untrapped <= parameters.maxRattlerFraction ||
+        (packing.isMixture() && backboneHoldsItsCount(check, free, packing.size(), parameters));
     if (!check.jammed && !isCompressing(reducedPressure, parameters))
         check.chain = findSpanningChain(packing, check.contacts.contacts);
     check.verdict = verdictOf(check, packing, reducedPressure, parameters);

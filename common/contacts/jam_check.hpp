@@ -20,7 +20,9 @@ struct JamCheckParameters {
     /// ... and at most maxTolerance: a gap of 1 % of D is no contact at any pressure (below
     /// P = 1e4 the check cannot call anything jammed that is not in contact to within that).
     double maxTolerance = 1e-2;
-    /// Jammed only if at most this fraction of the particles are rattlers or not locally jammed.
+    /// Jammed only if at most this fraction of the particles are rattlers or not locally jammed
+    /// (a mixture past it: if its backbone holds 3 N' - 2 contacts and at most this fraction is
+    /// free among the non-rattlers; docs/mixtures.md, "The jam check of a mixture").
     double maxRattlerFraction = 0.1;
     int rattlerThreshold = 4;
 };
@@ -39,6 +41,10 @@ struct JamCheck {
     /// The fraction of particles that are rattlers or not locally jammed (their contacts with
     /// the non-rattlers leave a free translation; see isLocallyTrapped).
     double untrappedFraction = 0.0;
+    /// The backbone (the non-rattlers) and its contacts: a jammed backbone of N' particles has
+    /// at least 3 N' - 2 (its translations, less the box's 3, and one self-stress).
+    int backbone = 0;
+    int backboneContacts = 0;
     /// Looked for only when not jammed: contacts that wrap around the box, carrying the pressure.
     std::optional<SpanningChain> chain;
     std::string verdict; ///< one line: why jammed or why not

@@ -49,15 +49,16 @@ Matrix3d surfaceCurvature(const Superball& shape, const Matrix3d& rotation,
 
 ContactCurvature contactCurvature(const Superball& shape, const Matrix3d& rotationA,
                                   const Matrix3d& rotationB, const Vector3d& displacement,
-                                  const Vector3d& normal, double gap) {
+                                  const Vector3d& normal, double gap, double sizeB) {
+    const Superball shapeB = sizeB == 1.0 ? shape : Superball(shape.p(), shape.semiAxis() * sizeB);
     ContactCurvature c;
     c.normal = normal;
     c.gap = gap;
     c.curvatureA = surfaceCurvature(shape, rotationA, normal);
-    c.curvatureB = surfaceCurvature(shape, rotationB, -normal);
+    c.curvatureB = surfaceCurvature(shapeB, rotationB, -normal);
     const Vector3d a = rotationA * shape.supportPoint(rotationA.transpose() * normal);
     const Vector3d b =
-        displacement - rotationB * shape.supportPoint(rotationB.transpose() * normal);
+        displacement - rotationB * shapeB.supportPoint(rotationB.transpose() * normal);
     const Eigen::Matrix<double, 3, 2> basis = tangentBasis(normal);
     const Matrix2d wA = basis.transpose() * c.curvatureA * basis;
     const Matrix2d wB = basis.transpose() * c.curvatureB * basis;

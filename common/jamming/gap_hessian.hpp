@@ -28,7 +28,8 @@ struct ContactCurvature {
     double gap = 0.0;                       ///< s (0 for an ideal contact)
 };
 
-/// The contact of a pair of the same `shape` (rotations body -> lab, d = r_B - r_A) at its normal
+/// The contact of a pair of A's `shape` and B's, that shape scaled by `sizeB` (B's semi-axis over
+/// A's, a mixture's pair: docs/mixtures.md), rotations body -> lab, d = r_B - r_A, at its normal
 /// n and signed distance `gap` (signedDistance): both curvatures, and the closest points from
 /// both support points, each trusted along the directions where its surface is the more curved
 /// (a support point slides across a flat face under rounding changes of n, p > 1):
@@ -37,7 +38,7 @@ struct ContactCurvature {
 /// own support point.
 ContactCurvature contactCurvature(const Superball& shape, const Matrix3d& rotationA,
                                   const Matrix3d& rotationB, const Vector3d& displacement,
-                                  const Vector3d& normal, double gap);
+                                  const Vector3d& normal, double gap, double sizeB = 1.0);
 
 /// The lever arm of A to the midpoint of the two closest points, x - r_A: the contact point of
 /// the rigidity matrix (docs/jamming.md §2; B's is this minus the displacement).

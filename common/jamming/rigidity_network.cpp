@@ -44,10 +44,12 @@ RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& net
         const Vector3d inBox = (packing.positions[j] - packing.positions[i]) / diameter;
         const Vector3d separation =
             inBox + cellImageShift(inBox, cell, cellInverse, result.boxLength);
-        const double gap = network.gaps[c]; // already / D
+        const double gap = network.gaps[c] * packing.pairSize(i, j); // a mixture's: over R_i + R_j
+        const double sizeA = packing.semiAxisOf(i) / packing.semiAxis;
         const ContactCurvature curvature = contactCurvature(
-            shape, packing.orientations[i].toRotationMatrix(),
-            packing.orientations[j].toRotationMatrix(), separation, network.normals[c], gap);
+            sizeA == 1.0 ? shape : Superball(packing.p, 0.5 * sizeA),
+            packing.orientations[i].toRotationMatrix(), packing.orientations[j].toRotationMatrix(),
+            separation, network.normals[c], gap, packing.semiAxisOf(j) / packing.semiAxisOf(i));
         const Vector3d point = midpointLever(curvature);
         result.contacts.push_back({backboneIndex[i], backboneIndex[j], network.normals[c], point,
                                    point - separation, separation - inBox, std::max(gap, 0.0),

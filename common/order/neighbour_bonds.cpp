@@ -100,7 +100,12 @@ NeighbourBonds distanceBonds(const Packing& packing, double cutoff) {
             0.5 * packing.boxLength / meanWidth, cutoff));
     NeighbourBonds result{packing.size(), {}, 0};
     forEachNeighbourPair(packing.positions, packing.boxLength, cutoff * meanWidth,
-                         [&](int i, int j, const Vector3d& d) { result.add(i, j, d); });
+                         [&](int i, int j, const Vector3d& d) {
+                             // A mixture's pair: within cutoff w sigma_ij (docs/mixtures.md).
+                             const double sigma = packing.pairSize(i, j);
+                             if (sigma == 1.0 || d.norm() < cutoff * meanWidth * sigma)
+                                 result.add(i, j, d);
+                         });
     return result;
 }
 

@@ -37,7 +37,8 @@ struct NeighbourBonds {
 NeighbourBonds contactBonds(const Packing& packing, const std::vector<std::pair<int, int>>& pairs);
 
 /// The bonds of all pairs whose centres are closer than `cutoff` mean widths w (e.g. the first
-/// minimum of g2: order/pair_correlation.hpp). Throws std::invalid_argument unless
+/// minimum of g2: order/pair_correlation.hpp); of a mixture, than cutoff w sigma_ij, the pair's
+/// own (Packing::pairSize), as g2 measures it. Throws std::invalid_argument unless
 /// 0 < cutoff w <= L / 2.
 NeighbourBonds distanceBonds(const Packing& packing, double cutoff);
 

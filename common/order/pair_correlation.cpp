@@ -33,6 +33,23 @@ std::vector<double> movingAverage(const std::vector<double>& values, int halfWid
     return smooth;
 }
 
+/// The mean of sigma_ij^3 over all ordered pairs (i, j), self pairs included, sigma_ij =
+/// Packing::pairSize: an ideal gas's pair count at reduced distance r is that of identical
+/// particles times it (docs/order-metrics.md §1, mixtures). 1 for identical particles. From the
+/// moments M_k = sum_i s_i^k: sum_ij ((s_i + s_j) / 2)^3 = (2 N M_3 + 6 M_1 M_2) / 8.
+double meanCubedPairSize(const Packing& packing) {
+    if (!packing.isMixture()) return 1.0;
+    double m1 = 0.0, m2 = 0.0, m3 = 0.0;
+    for (double r : packing.semiAxes) {
+        const double s = r / packing.semiAxis;
+        m1 += s;
+        m2 += s * s;
+        m3 += s * s * s;
+    }
+    const auto n = static_cast<double>(packing.size());
+    return (2.0 * n * m3 + 6.0 * m1 * m2) / (8.0 * n * n);
+}
+
 } // namespace
 
 PairCorrelation::PairCorrelation(PairCorrelationParameters parameters) : parameters_(parameters) {
@@ -60,15 +77,21 @@ PairCorrelationResult PairCorrelation::compute(const Packing& packing) const {
     const double rho = static_cast<double>(n) / std::pow(packing.boxLength, 3);
     result.numberDensity = rho * w * w * w;
     result.pairCount.assign(bins, 0);
+    // A mixture's pair counts at r_ij / sigma_ij; a pair of sigma_ij < 1 ends at r_max sigma_ij.
     forEachNeighbourPair(packing.positions, packing.boxLength, bins * dr,
-                         [&](int, int, const Vector3d& d) {
-                             const auto b = static_cast<int>(d.norm() / dr);
+                         [&](int i, int j, const Vector3d& d) {
+                             const double sigma = packing.pairSize(i, j);
+                             const double r = d.norm() / sigma;
+                             if (sigma < 1.0 && r >= bins * dr) return;
+                             const auto b = static_cast<int>(r / dr);
                              ++result.pairCount[std::min(b, bins - 1)]; // round-off at r_max
                          });
+    const double pairVolume = meanCubedPairSize(packing);
     for (int b = 0; b < bins; ++b) {
         const double shell =
             4.0 * std::numbers::pi / 3.0 * (std::pow((b + 1) * dr, 3) - std::pow(b * dr, 3));
-        const double idealPairs = 0.5 * static_cast<double>(n) * rho * shell; // Eq. 1.2
+        const double idealPairs =
+            0.5 * static_cast<double>(n) * rho * shell * pairVolume; // Eq. 1.2
         result.r.push_back((b + 0.5) * parameters_.binWidth);
         result.g2.push_back(static_cast<double>(result.pairCount[b]) / idealPairs); // Eq. 1.1
         result.idealGasError.push_back(1.0 / std::sqrt(idealPairs));

@@ -36,7 +36,9 @@ class PairCorrelation {
     /// Throws std::invalid_argument unless 0 < binWidth <= maxDistance < inf.
     explicit PairCorrelation(PairCorrelationParameters parameters);
 
-    /// Histogram of the minimum-image pair distances (cell list, O(N rho r_max^3)). Throws
+    /// Histogram of the minimum-image pair distances (cell list, O(N rho r_max^3)); of a
+    /// mixture, of the reduced distances r_ij / sigma_ij (sigma_ij = Packing::pairSize), over the
+    /// ideal gas's count at those (docs/order-metrics.md §1, "Mixtures"). Throws
     /// std::invalid_argument for fewer than 2 particles or when n dr w exceeds L / 2.
     PairCorrelationResult compute(const Packing& packing) const;
 

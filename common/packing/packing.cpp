@@ -1,5 +1,7 @@
 #include "packing/packing.hpp"
 
+#include <algorithm>
+
 namespace sbpack {
 
 double meanCubedSize(const std::vector<double>& sizes, double unit) {
@@ -10,6 +12,10 @@ double meanCubedSize(const std::vector<double>& sizes, double unit) {
         sum += s * s * s;
     }
     return sum / static_cast<double>(sizes.size());
+}
+
+double Packing::smallestSemiAxis() const {
+    return semiAxes.empty() ? semiAxis : *std::min_element(semiAxes.begin(), semiAxes.end());
 }
 
 double Packing::packingFraction() const {

@@ -80,6 +80,14 @@ struct Packing {
     bool isMixture() const { return !semiAxes.empty(); }
     /// Particle i's semi-axis.
     double semiAxisOf(std::size_t i) const { return semiAxes.empty() ? semiAxis : semiAxes[i]; }
+    /// The smallest particle's semi-axis (semiAxis for identical particles).
+    double smallestSemiAxis() const;
+    /// The pair's mean size over the largest, (R_i + R_j) / (2 R): the unit of a mixture's pair
+    /// lengths (contact tolerance, reduced distance of g2: docs/mixtures.md); 1 for identical
+    /// particles.
+    double pairSize(std::size_t i, std::size_t j) const {
+        return semiAxes.empty() ? 1.0 : 0.5 * (semiAxes[i] + semiAxes[j]) / semiAxis;
+    }
     /// phi = sum_i v_i / L^3 (N v1 / L^3 for identical particles).
     double packingFraction() const;
     /// The length unit the analyses compute in (docs/reliability.md, "Units"): the power of two

@@ -23,6 +23,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <numbers>
 #include <optional>
@@ -162,6 +163,37 @@ TEST(ExactSpectralDensity, SuperballPathOfSpheresEqualsTheSpherePath) {
     }
 }
 
+/// `packing` with five sizes, semi-axes 0.5 down to 0.38 (docs/mixtures.md).
+Packing polydisperse(Packing packing) {
+    for (std::size_t i = 0; i < packing.size(); ++i)
+        packing.semiAxes.push_back(0.5 - 0.03 * static_cast<double>(i % 5));
+    return packing;
+}
+
+// docs/mixtures.md: a mixture's chi_V sums each particle's own form factor. Against the direct
+// sum of the sphere's closed form m(Q; R_j) (the series path computes it from s_j^3 m(s_j Q R)).
+TEST(ExactSpectralDensity, EachParticleOfAMixtureScattersWithItsOwnFormFactor) {
+    const Packing spheres = polydisperse(testing::latticePacking(1.0, 3, 1.2, 0.1, 19));
+    ExactSpectralDensityParameters parameters;
+    parameters.maxQw = 6.0;
+    const ExactSpectralDensityResult exact =
+        ExactSpectralDensity(parameters).compute(spheres, quiet);
+    ASSERT_GT(exact.modes.size(), 50u);
+    EXPECT_DOUBLE_EQ(exact.phi, spheres.packingFraction());
+    const double l = spheres.boxLength, volume = l * l * l;
+    for (std::size_t i = 0; i < exact.modes.size(); i += 7) {
+        const auto& n = exact.modes.n[i];
+        const Vector3d q = 2.0 * kPi / l * Vector3d(n[0], n[1], n[2]);
+        std::complex<double> sum = 0.0;
+        for (std::size_t j = 0; j < spheres.size(); ++j)
+            sum += sphereFormFactor(q.norm(), spheres.semiAxes[j]) *
+                   std::exp(std::complex<double>(0.0, -q.dot(spheres.positions[j])));
+        EXPECT_NEAR(exact.modes.chi[i], std::norm(sum) / volume, 1e-12 * std::norm(sum) / volume)
+            << "n = " << n[0] << " " << n[1] << " " << n[2];
+    }
+    EXPECT_THROW(sphereWaveVectors(spheres, 10, quiet), std::invalid_argument);
+}
+
 TEST(ExactSpectralDensity, ShellsEndWhereNoWaveVectorLies) {
     // Shell 12 ends at |n|^2 = 12 * 13 = 156 = 4 * 39, not a sum of three squares: the largest
     // listed |n|^2 is 155, and the shell average must still be made.
@@ -172,10 +204,9 @@ TEST(ExactSpectralDensity, ShellsEndWhereNoWaveVectorLies) {
     EXPECT_THROW(shellAverage(a, 13), std::invalid_argument);
 }
 
-TEST(ExactSpectralDensity, VoxelsConvergeToIt) {
-    // chi at the smallest wave vectors, voxels against exact, for p = 1.5: the error falls
-    // as the grid is refined (M = 24 -> 48).
-    const Packing packing = testing::latticePacking(1.5, 3, 1.35, 0.05, 21);
+/// chi at the smallest wave vectors (|n| <= 2), voxels against exact: the worst error falls by
+/// more than half from M = 24 to 48.
+void expectVoxelsConverge(const Packing& packing) {
     const double w = packing.shape().meanWidth();
     ExactSpectralDensityParameters parameters;
     parameters.maxQw = 2.0 * kPi * w * 2.0 / packing.boxLength; // |n| <= 2
@@ -192,6 +223,15 @@ TEST(ExactSpectralDensity, VoxelsConvergeToIt) {
         error[m / 48] = worst;
     }
     EXPECT_LT(error[1], 0.5 * error[0]);
+}
+
+TEST(ExactSpectralDensity, VoxelsConvergeToIt) {
+    // chi at the smallest wave vectors, voxels against exact, for p = 1.5, identical and of five
+    // sizes (docs/mixtures.md): the error falls as the grid is refined (M = 24 -> 48).
+    for (const bool mixture : {false, true}) {
+        const Packing packing = testing::latticePacking(1.5, 3, 1.35, 0.05, 21);
+        expectVoxelsConverge(mixture ? polydisperse(packing) : packing);
+    }
 }
 
 /// alpha of an exact spectrum through the whole chain (the window found from the chi peak, or

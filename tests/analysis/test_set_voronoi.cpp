@@ -1,6 +1,6 @@
 // Set-Voronoi cells (analysis/voronoi, docs/local-structure.md §1): the lattices' analytic cells,
 // the tiling of the box, and for equal spheres the ordinary Voronoi cells of the centres counted
-// by brute force on the same grid.
+// by brute force on the same grid, and for spheres of two sizes the additively weighted cells.
 #include "voronoi/set_voronoi.hpp"
 
 #include "../common/order_lattices.hpp"
@@ -60,9 +60,10 @@ TEST(SetVoronoi, AlignedSuperballsOnASimpleCubicLatticeHaveCubicCells) {
     expectLatticeCells(lattice, lattice.shape().volume() / std::pow(1.05, 3), 37);
 }
 
-/// For equal spheres the set-Voronoi cell is the Voronoi cell of the centre: the voxels nearest
-/// to each centre (brute force, minimum image) on the same grid.
-std::vector<double> pointVoronoiVolumes(const Packing& packing, int m) {
+/// For spheres the set-Voronoi cell is the additively weighted Voronoi cell, the points nearer
+/// to the sphere's surface than to any other's, |x - r_n| - R_n: for equal spheres the Voronoi
+/// cell of the centre. The voxels of each (brute force, minimum image) on the same grid.
+std::vector<double> sphereVoronoiVolumes(const Packing& packing, int m) {
     const double a = packing.boxLength / m;
     std::vector<double> volumes(packing.size(), 0.0);
     for (int i = 0; i < m; ++i)
@@ -73,7 +74,8 @@ std::vector<double> pointVoronoiVolumes(const Packing& packing, int m) {
                 double best = 1e300;
                 for (std::size_t n = 0; n < packing.size(); ++n) {
                     const double d =
-                        minimumImage(x - packing.positions[n], packing.boxLength).squaredNorm();
+                        minimumImage(x - packing.positions[n], packing.boxLength).norm() -
+                        packing.semiAxisOf(n);
                     if (d < best) best = d, nearest = n;
                 }
                 volumes[nearest] += a * a * a;
@@ -81,12 +83,12 @@ std::vector<double> pointVoronoiVolumes(const Packing& packing, int m) {
     return volumes;
 }
 
-TEST(SetVoronoi, EqualSpheresHaveTheVoronoiCellsOfTheirCentres) {
-    const Packing rsa = testing::randomSequentialAddition(40, 0.3, 7);
+/// The cells of `spheres` converge to sphereVoronoiVolumes as M doubles.
+void expectSphereVoronoiCells(const Packing& rsa) {
     double previous = 1e300;
     for (int m : {24, 48}) {
         const SetVoronoiResult cells = SetVoronoi(m).compute(rsa, {}, quiet);
-        const std::vector<double> voronoi = pointVoronoiVolumes(rsa, m);
+        const std::vector<double> voronoi = sphereVoronoiVolumes(rsa, m);
         double squares = 0.0;
         for (std::size_t n = 0; n < rsa.size(); ++n)
             squares += std::pow(cells.cellVolumes[n] / voronoi[n] - 1.0, 2);
@@ -95,6 +97,25 @@ TEST(SetVoronoi, EqualSpheresHaveTheVoronoiCellsOfTheirCentres) {
         EXPECT_LT(rms, 0.7 * previous) << "M = " << m;
         previous = rms;
     }
+}
+
+TEST(SetVoronoi, EqualSpheresHaveTheVoronoiCellsOfTheirCentres) {
+    expectSphereVoronoiCells(testing::randomSequentialAddition(40, 0.3, 7));
+}
+
+// docs/mixtures.md: spheres of two sizes (every third of diameter 0.72) have the additively
+// weighted cells, the cells tile the box, and phi_i is each particle's own volume over its cell.
+TEST(SetVoronoi, SpheresOfTwoSizesHaveTheirAdditivelyWeightedCells) {
+    Packing rsa = testing::randomSequentialAddition(40, 0.3, 7);
+    for (std::size_t n = 0; n < rsa.size(); ++n)
+        rsa.semiAxes.push_back(n % 3 == 0 ? 0.36 : 0.5);
+    expectSphereVoronoiCells(rsa);
+    const SetVoronoiResult r = SetVoronoi(48).compute(rsa, {}, quiet);
+    EXPECT_LT(std::abs(r.tilingError), 1e-12);
+    for (std::size_t n = 0; n < rsa.size(); ++n)
+        EXPECT_NEAR(r.localPhi[n] * r.cellVolumes[n],
+                    4.0 / 3.0 * std::numbers::pi * std::pow(rsa.semiAxisOf(n), 3), 1e-12)
+            << n;
 }
 
 TEST(SetVoronoi, RattlersSplitTheMomentsAndTheHarmonicMeanIsPhi) {

@@ -1,7 +1,8 @@
 // First-order jamming categories (docs/jamming.md): the rigidity matrix against finite differences
 // of the exact pair distance, and the known answers of Torquato & Stillinger, J. Phys. Chem. B
 // 105, 11849 (2001) and Donev, Torquato, Stillinger & Connelly, J. Comput. Phys. 197, 139 (2004)
-// for sphere lattices; the MRJ sphere packing's answer is reported, not asserted.
+// for sphere lattices, and for two lattices of two sizes (docs/mixtures.md); the MRJ sphere
+// packing's answer is reported, not asserted.
 
 #include "contacts/contact_network.hpp"
 #include "contacts/jam_check.hpp"
@@ -549,6 +550,66 @@ TEST(JammingCategories, MrjSpheresAreLocallyJammedWhereTheJamChecksHemisphereTes
     EXPECT_EQ(untrapped.size(), 5u); // docs/design.md §3, "Jam check"
     EXPECT_EQ(local.freed, untrapped);
     EXPECT_LT(local.seconds, 30.0);
+}
+
+/// docs/mixtures.md: two kinds of sphere on `basis` (units of the lattice constant a) of cells^3
+/// cubic cells, semi-axis rA on the first basis point, rB on the others.
+Packing binaryLattice(double a, int cells, const std::vector<Vector3d>& basis, double rA,
+                      double rB) {
+    Packing packing = lattices::cubicCrystal(cells, a, basis, Vector3d::Zero());
+    packing.semiAxis = std::max(rA, rB);
+    for (std::size_t i = 0; i < packing.size(); ++i)
+        packing.semiAxes.push_back(i % basis.size() == 0 ? rA : rB);
+    return packing;
+}
+
+// Caesium chloride of two sizes whose unlike neighbours touch (a = 1.1, R_A = 0.5, R_B = a sqrt 3
+// / 2 - R_A) and like ones do not: the contact network of bcc, with its normals, so its answer:
+// locally but not collectively jammed. Read at one size, the small spheres' contacts are lost.
+TEST(JammingCategories, CaesiumChlorideOfTwoSizesIsAsBodyCentredCubic) {
+    const double a = 1.1, rB = a * std::sqrt(3.0) / 2.0 - 0.5;
+    const Packing packing = binaryLattice(a, 3, lattices::kBodyCentred, 0.5, rB);
+    const RigidityNetwork network = networkOf(packing);
+    EXPECT_EQ(network.contacts.size(), 4u * packing.size());
+    EXPECT_EQ(test(network, JammingCategory::Local).verdict, FirstOrderVerdict::Jammed);
+    EXPECT_EQ(test(network, JammingCategory::Collective).verdict, FirstOrderVerdict::Unjammed);
+    EXPECT_EQ(test(network, JammingCategory::Strict).verdict, FirstOrderVerdict::Unjammed);
+}
+
+/// Rock salt: fcc of unit spheres (a = sqrt 2) with spheres of semi-axis rB in its octahedral
+/// holes, which touch their 6 neighbours at rB = (sqrt 2 - 1) / 2.
+Packing rockSalt(double rB) {
+    const double a = std::sqrt(2.0);
+    std::vector<Vector3d> basis = lattices::kFaceCentred;
+    for (const Vector3d& b : lattices::kFaceCentred)
+        basis.push_back(b + Vector3d(0.5, 0.0, 0.0));
+    Packing packing = lattices::cubicCrystal(2, a, basis, Vector3d::Zero());
+    for (std::size_t i = 0; i < packing.size(); ++i)
+        packing.semiAxes.push_back(i % 8 < 4 ? 0.5 : rB);
+    return packing;
+}
+
+// Rock salt's small spheres in contact are strictly jammed with the fcc; 3 % smaller, they rattle
+// (half the particles) and the fcc backbone alone is strictly jammed: a jammed packing whose
+// rattler fraction is a property of the mixture, not of a packing still compressing.
+TEST(JammingCategories, RockSaltIsStrictlyJammedWithOrWithoutItsSmallSpheres) {
+    const double touching = (std::sqrt(2.0) - 1.0) / 2.0;
+    for (const double rB : {touching, 0.97 * touching}) {
+        const Packing packing = rockSalt(rB);
+        const ContactResult contacts = ContactNetwork({}).compute(packing);
+        const RigidityNetwork network = backboneNetwork(packing, contacts);
+        EXPECT_EQ(network.backbone.size(), rB == touching ? packing.size() : packing.size() / 2);
+        EXPECT_EQ(network.contacts.size(), (rB == touching ? 12u : 6u) * packing.size() / 2);
+        for (const JammingCategory category :
+             {JammingCategory::Local, JammingCategory::Collective, JammingCategory::Strict})
+            EXPECT_EQ(test(network, category).verdict, FirstOrderVerdict::Jammed)
+                << "R_B = " << rB << ", category " << static_cast<int>(category);
+        // The jam check of a mixture counts the backbone's contacts, not its rattlers: jammed
+        // at either size (a limit of 10 % rattlers would call the second not jammed).
+        const JamCheck check = checkJam(packing, 1e12);
+        EXPECT_TRUE(check.jammed) << check.verdict;
+        EXPECT_EQ(check.backboneContacts, static_cast<int>(network.contacts.size()));
+    }
 }
 
 } // namespace

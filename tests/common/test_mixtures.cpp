@@ -1,10 +1,14 @@
 // Mixtures (docs/mixtures.md): the packing model's volume sum, the file's semi_axes, the pair of
-// two sizes against closed forms, and the contact network's per-pair tolerance.
+// two sizes against closed forms, the contact network's per-pair tolerance, and the order
+// metrics at the pair's own size.
 
 #include "contacts/contact_network.hpp"
 #include "contacts/jam_check.hpp"
 #include "io/packing_formats.hpp"
 #include "io/packing_io.hpp"
+#include "order/order_metrics.hpp"
+#include "order/pair_correlation.hpp"
+#include "order_lattices.hpp"
 #include "packing/validation.hpp"
 #include "pair/pair_geometry.hpp"
 
@@ -138,9 +142,9 @@ TEST(Mixtures, AContactIsWithinTheToleranceOfItsOwnPair) {
 }
 
 // Three spheres of two sizes in a row that wraps the box along x: every one a rattler, and a
-// wrapping chain. For a mixture the verdict names the rattler limit's calibration, not the
-// chain and the box's size (bench/RESULTS.md, "Binary spheres beside the bidisperse LS code").
-TEST(Mixtures, TheJamChecksVerdictOnAMixtureNamesTheRattlerLimit) {
+// wrapping chain. A mixture's jam check judges its backbone's count, not its rattlers
+// (docs/mixtures.md, "The jam check of a mixture"): the verdict names the empty backbone.
+TEST(Mixtures, TheJamChecksVerdictOnAMixtureNamesItsBackbonesCount) {
     Packing row;
     row.p = 1.0;
     row.boxLength = 2.4;
@@ -150,9 +154,48 @@ TEST(Mixtures, TheJamChecksVerdictOnAMixtureNamesTheRattlerLimit) {
     row.orientations.assign(3, Quaterniond::Identity());
     const JamCheck check = checkJam(row, 1e12);
     EXPECT_FALSE(check.jammed);
-    EXPECT_NE(check.verdict.find("calibrated on identical particles"), std::string::npos)
+    EXPECT_EQ(check.backbone, 0);
+    EXPECT_NE(check.verdict.find("the backbone of 0 particles has 0 contacts"), std::string::npos)
         << check.verdict;
     EXPECT_EQ(check.verdict.find("use more particles"), std::string::npos) << check.verdict;
+}
+
+/// `packing` as a 50:50 mixture: particle i of size 0.5 (even i) or 0.5 / ratio (odd i).
+Packing asBinary(Packing packing, double ratio) {
+    packing.semiAxis = 0.5;
+    packing.semiAxes.clear();
+    for (std::size_t i = 0; i < packing.size(); ++i)
+        packing.semiAxes.push_back(i % 2 == 0 ? 0.5 : 0.5 / ratio);
+    return packing;
+}
+
+// docs/order-metrics.md §1, mixtures: an ideal gas's pairs at reduced distance r number
+// N rho V_shell(r) <sigma^3> / 2, so g2 of uncorrelated centres is 1 at every r. Without the
+// factor <sigma^3> (0.66 at ratio 1.4) the counts would be 1.5 times the normalisation.
+TEST(Mixtures, AnIdealGasOfTwoSizesHasAReducedG2OfOne) {
+    Random random(17);
+    std::vector<Vector3d> centres(4000);
+    for (Vector3d& r : centres)
+        r = 20.0 * Vector3d(random.uniform(), random.uniform(), random.uniform());
+    const Packing gas = asBinary(lattices::pointPacking(centres, 20.0), 1.4);
+    const PairCorrelationResult g = PairCorrelation({}).compute(gas);
+    double counted = 0.0, expected = 0.0; // the ideal count: 1 / (its relative error)^2
+    for (std::size_t b = 0; b < g.g2.size(); ++b) {
+        counted += static_cast<double>(g.pairCount[b]);
+        expected += 1.0 / (g.idealGasError[b] * g.idealGasError[b]);
+    }
+    EXPECT_NEAR(counted / expected, 1.0, 4.0 / std::sqrt(expected)); // Poisson: 0.3 %
+}
+
+// A substitutionally random fcc of two sizes (ratio 1.1): ordered by every metric, and its
+// cutoff bonds, at the reduced distance of the pair's own size, are the 12 nearest neighbours.
+TEST(Mixtures, ARandomAlloyOfTwoSizesOnAnFccLatticeIsOrdered) {
+    const Packing alloy = asBinary(
+        lattices::displaced(lattices::cubicCrystal(6, 1.3, lattices::kFaceCentred), 0.01, 5), 1.1);
+    const OrderMetrics m = measureOrder(alloy);
+    ASSERT_TRUE(m.cutoffBonds);
+    EXPECT_NEAR(m.cutoffBonds->q6.meanLocalOrder, 0.575, 0.02);
+    EXPECT_TRUE(orderVerdict(m).ordered);
 }
 
 } // namespace

@@ -1,10 +1,11 @@
 // sbgen's binary mixtures of spheres (docs/mixtures.md): the exact collision of two sizes, the
-// random start, and a protocol run that jams without overlap and resumes bit for bit.
+// random start, and a protocol run that jams without overlap, unordered, and resumes bit for bit.
 #include "contacts/contact_network.hpp"
 #include "engine/event_driven_md.hpp"
 #include "geometry/superball.hpp"
 #include "initial/random_start.hpp"
 #include "io/packing_io.hpp"
+#include "order/order_metrics.hpp"
 #include "protocol/jamming_protocol.hpp"
 #include "shapes/sphere.hpp"
 #include "small_runs.hpp"
@@ -96,6 +97,14 @@ TEST(Mixtures, ABinaryRunJamsWithoutOverlapAndKeepsItsSizes) {
     EXPECT_GT(c.meanContactNumber, 5.5);
     EXPECT_NEAR(run.status().packingFraction, packing.packingFraction(), 1e-12);
     EXPECT_EQ(std::get<double>(packing.provenance.at("size_ratio")), 1.4);
+    // docs/order-metrics.md §1: every pair's contact at r_ij / sigma_ij = 1 w, so the main peak
+    // of the reduced g2 is the bin [1, 1.02) (the small spheres' contacts at 0.71 w would be
+    // the highest without the pair's size), and the packing has not ordered.
+    const OrderMetrics order = measureOrder(packing);
+    const auto& g = order.pairCorrelation;
+    const auto peak = std::max_element(g.g2.begin(), g.g2.end()) - g.g2.begin();
+    EXPECT_NEAR(g.r[peak], 1.01, 1e-9);
+    EXPECT_FALSE(orderVerdict(order).ordered) << orderVerdict(order).reason;
 }
 
 TEST(Mixtures, ABinaryRunResumesFromItsFileBitForBit) {

@@ -85,7 +85,8 @@ bool runSpectralDensity(FileContext& context, schema::Record& record) {
         reportPlan(context.progress(), parameters.fft, s.voxels, s.planSeconds, s.planSource);
     }
 #ifdef SBPACK_WITH_CUDA
-    else if (context.settings().device.device == ComputeDevice::Cuda)
+    else if (context.settings().device.device == ComputeDevice::Cuda &&
+             !context.packing().isMixture()) // a mixture's voxels are the CPU's
         s = cudaSpectralDensity(context, parameters);
 #endif
     else
