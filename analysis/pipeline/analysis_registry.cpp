@@ -70,8 +70,7 @@ constexpr std::array<AnalysisInfo, 11> kRegistry{{
                     "particle",
      .run = stages::runContacts,
      .options = kContactOptions,
-     .pythonClass = "Contacts",
-     .mixtures = true},
+     .pythonClass = "Contacts"},
     {.analysis = Analysis::StructureFactor,
      .name = "sq",
      .groups = kStructureFactorGroups,
@@ -79,8 +78,7 @@ constexpr std::array<AnalysisInfo, 11> kRegistry{{
      .run = stages::runStructureFactor,
      .memory = stages::structureFactorMemory,
      .options = kStructureFactorOptions,
-     .pythonClass = "StructureFactor",
-     .mixtures = true},
+     .pythonClass = "StructureFactor"},
     {.analysis = Analysis::SpectralDensity,
      .name = "chi",
      .groups = kSpectralDensityGroups,
@@ -91,8 +89,7 @@ constexpr std::array<AnalysisInfo, 11> kRegistry{{
      .run = stages::runSpectralDensity,
      .memory = stages::spectralDensityMemory,
      .options = kSpectralOptions,
-     .pythonClass = "SpectralDensity",
-     .mixtures = true},
+     .pythonClass = "SpectralDensity"},
     {.analysis = Analysis::Voxels,
      .name = "voxels",
      .groups = kVoxelizationGroups,
@@ -102,8 +99,7 @@ constexpr std::array<AnalysisInfo, 11> kRegistry{{
      .run = stages::runVoxels,
      .memory = stages::voxelsMemory,
      .options = kVoxelOptions,
-     .pythonClass = "Voxelization",
-     .mixtures = true},
+     .pythonClass = "Voxelization"},
     {.analysis = Analysis::PoreSizes,
      .name = "pores",
      .groups = kPoreSizeGroups,
@@ -135,8 +131,7 @@ constexpr std::array<AnalysisInfo, 11> kRegistry{{
      .run = stages::runHyperuniformity,
      .finishEnsemble = stages::poolHyperuniformity,
      .options = kHyperuniformityOptions,
-     .pythonClass = "Hyperuniformity",
-     .mixtures = true},
+     .pythonClass = "Hyperuniformity"},
     {.analysis = Analysis::Order,
      .name = "order",
      .groups = kOrderGroups,
@@ -144,8 +139,7 @@ constexpr std::array<AnalysisInfo, 11> kRegistry{{
                     "translational order T, the cubatic P4 of the axes; warns when ordered",
      .needs = kOrderNeeds,
      .run = stages::runOrder,
-     .pythonClass = "Order",
-     .mixtures = true},
+     .pythonClass = "Order"},
     {.analysis = Analysis::Jamming,
      .name = "jamming",
      .groups = kJammingGroups,
@@ -155,8 +149,7 @@ constexpr std::array<AnalysisInfo, 11> kRegistry{{
      .finishEnsemble = stages::countJammingCategories,
      .options = kJammingOptions,
      .pythonClass = "Jamming",
-     .inAll = false,
-     .mixtures = true},
+     .inAll = false},
     {.analysis = Analysis::Voronoi,
      .name = "voronoi",
      .groups = kVoronoiGroups,
@@ -167,8 +160,7 @@ constexpr std::array<AnalysisInfo, 11> kRegistry{{
      .run = stages::runVoronoi,
      .memory = stages::voronoiMemory,
      .options = kVoxelOptions,
-     .pythonClass = "SetVoronoi",
-     .mixtures = true},
+     .pythonClass = "SetVoronoi"},
     {.analysis = Analysis::Variance,
      .name = "variance",
      .groups = kVarianceGroups,
@@ -180,8 +172,7 @@ constexpr std::array<AnalysisInfo, 11> kRegistry{{
      .memory = stages::varianceMemory,
      .finishEnsemble = stages::poolVariance,
      .options = kVarianceOptions,
-     .pythonClass = "VolumeFractionVariance",
-     .mixtures = true},
+     .pythonClass = "VolumeFractionVariance"},
 }};
 
 /// The results groups of the registry's rows, in order.
@@ -193,12 +184,6 @@ std::vector<const schema::Group*> collectGroups() {
 }
 
 } // namespace
-
-bool analysesMixtures(const AnalysisInfo& info) {
-    return info.mixtures && std::all_of(info.needs.begin(), info.needs.end(), [](Analysis need) {
-               return analysesMixtures(analysisInfo(need));
-           });
-}
 
 std::vector<std::string_view> analysisOptions(const AnalysisInfo& info) {
     std::vector<std::string_view> options(info.options.begin(), info.options.end());

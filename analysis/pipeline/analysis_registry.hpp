@@ -77,15 +77,9 @@ struct AnalysisInfo {
     /// Whether --compute all runs it; false: only when named (jamming, whose linear programs
     /// take minutes at N = 5000, more than every other analysis together; docs/jamming.md §3).
     bool inAll = true;
-    /// Whether it reads a mixture's per-particle sizes (docs/mixtures.md); a mixture's run
-    /// skips the others, and what needs them, with a warning that says so.
-    bool mixtures = false;
 
     const schema::Group& group() const { return *groups.front(); }
 };
-
-/// Whether `info` and, recursively, what it needs analyse mixtures (AnalysisInfo::mixtures).
-bool analysesMixtures(const AnalysisInfo& info);
 
 /// The options of `info` and of what it needs, recursively, each once, its own first.
 std::vector<std::string_view> analysisOptions(const AnalysisInfo& info);

@@ -64,16 +64,14 @@ FileResults analyzeFile(const Packing& packing, const std::filesystem::path& inp
     if (settings.distribute == Distribution::Grids) context.distributeGrids(grids);
     FileResults results{input, fileRecord(packing, input, context), {}};
     if (packing.isMixture()) results.sizeRatio = packing.semiAxis / packing.smallestSemiAxis();
+    if (packing.isMixture() && settings.device.device == ComputeDevice::Cuda)
+        progress.warn("--device cuda: a mixture's grids are computed on the CPU (the GPU "
+                      "voxeliser reads one size; docs/mixtures.md)");
     const std::vector<Analysis> order = runOrder(settings.analyses);
     for (std::size_t i = 0; i < order.size(); ++i) {
         const AnalysisInfo& info = analysisInfo(order[i]);
         schema::Record record(info.group());
-        if (packing.isMixture() && !analysesMixtures(info))
-            progress.warn(fmt::format("{}: not computed: it does not yet read a mixture's sizes "
-                                      "(docs/mixtures.md)",
-                                      info.name));
-        else if (info.run(context, record))
-            results.groups.push_back(std::move(record));
+        if (info.run(context, record)) results.groups.push_back(std::move(record));
         for (schema::Record& extra : context.takeGroups())
             results.groups.push_back(std::move(extra));
         // Big intermediates (the spectral voxelization) go as soon as nothing needs them.

@@ -184,9 +184,18 @@ ExactPoreSizes::ExactPoreSizes(const Packing& packing)
         positions_.push_back(wrapIntoBox(packing.positions[j], boxLength_));
         rotations_.push_back(packing.orientations[j].normalized().toRotationMatrix());
     }
+    for (const double r : packing.semiAxes)
+        sizes_.push_back(r / packing.semiAxis);
 }
 
 SurfaceDistance ExactPoreSizes::particleDistance(int particle, const Vector3d& d) const {
+    const double s = relativeSize(particle);
+    if (s == 1.0) return unitDistance(particle, d);
+    const SurfaceDistance unit = unitDistance(particle, d / s); // distances scale with the size
+    return {s * unit.lower, s * unit.upper};
+}
+
+SurfaceDistance ExactPoreSizes::unitDistance(int particle, const Vector3d& d) const {
     if (shape_.isSphere()) {
         const double distance = std::max(0.0, d.norm() - shape_.semiAxis());
         return {distance, distance};
@@ -225,7 +234,7 @@ int ExactPoreSizes::particleContaining(const Vector3d& x) const {
 
 SurfaceDistance ExactPoreSizes::poreSizeBounds(const Vector3d& x) const {
     struct Candidate {
-        double lower; ///< |d| - circumradius <= distance to this particle image
+        double lower; ///< |d| - s_j circumradius <= distance to this particle image
         int particle;
         Vector3d d; ///< x minus the image's centre
     };
@@ -242,10 +251,11 @@ SurfaceDistance ExactPoreSizes::poreSizeBounds(const Vector3d& x) const {
                     forEachInCell({home[0] + ox, home[1] + oy, home[2] + oz},
                                   [&](int j, const Vector3d& shift) {
                                       const Vector3d d = xw - (positions_[j] + shift);
-                                      const double centre = d.norm();
-                                      if (centre - circumradius_ >= bestUpper) return;
-                                      candidates.push_back({centre - circumradius_, j, d});
-                                      bestUpper = std::min(bestUpper, centre - inradius_);
+                                      const double centre = d.norm(), s = relativeSize(j);
+                                      const double lower = centre - circumradius_ * s;
+                                      if (lower >= bestUpper) return;
+                                      candidates.push_back({lower, j, d});
+                                      bestUpper = std::min(bestUpper, centre - inradius_ * s);
                                   });
                 }
         // Every image not yet visited has its centre at least s cells away.

@@ -39,7 +39,9 @@ struct SurfaceDistance {
 /// Exact pore sizes of a packing: distance from a point to the nearest particle surface, over
 /// all periodic images. Candidates come from a cell grid searched in shells of growing distance,
 /// bounded below by |x - r| - circumradius and above by |x - r| - inradius, so that only the
-/// particles that can be nearest are solved exactly.
+/// particles that can be nearest are solved exactly. A mixture's particle j of size s_j = R_j / R
+/// is the largest particle's shape scaled by s_j: its distances s_j times those of d / s_j
+/// (docs/mixtures.md).
 class ExactPoreSizes {
   public:
     /// Throws std::invalid_argument for an empty packing or mismatched positions and orientations.
@@ -55,9 +57,9 @@ class ExactPoreSizes {
     /// A lower bound on particleDistance(particle, d) from one support function:
     /// n.d - h(n) with n = d / |d| (docs/design.md §5), cheaper than the exact distance.
     double distanceLowerBound(int particle, const Vector3d& d) const {
-        const double centre = d.norm();
-        if (shape_.isSphere() || centre == 0.0) return centre - shape_.semiAxis();
-        return centre - shape_.support(rotations_[particle].transpose() * d / centre);
+        const double centre = d.norm(), s = relativeSize(particle);
+        if (shape_.isSphere() || centre == 0.0) return centre - s * shape_.semiAxis();
+        return centre - s * shape_.support(rotations_[particle].transpose() * d / centre);
     }
     /// A particle whose minimum image contains x (Superball::contains), or -1 if none does.
     int particleContaining(const Vector3d& x) const;
@@ -65,11 +67,12 @@ class ExactPoreSizes {
     /// from Superball::contains within rounding of the surface); no gauge well inside the
     /// inscribed sphere.
     bool inside(int particle, const Vector3d& d) const {
-        const double squared = d.squaredNorm();
-        if (shape_.isSphere()) return squared < shape_.semiAxis() * shape_.semiAxis();
-        if (squared < (1.0 - 1e-12) * inradius_ * inradius_) return true;
-        return gaugePower(shape_, rotations_[particle].transpose() * d) < 1.0;
+        const double s = relativeSize(particle);
+        if (s != 1.0) return insideUnit(particle, d / s);
+        return insideUnit(particle, d);
     }
+    /// Particle j's size over the largest (1 for identical particles).
+    double relativeSize(int j) const { return sizes_.empty() ? 1.0 : sizes_[j]; }
 
     double boxLength() const { return boxLength_; }
     double circumradius() const { return circumradius_; }
@@ -79,6 +82,14 @@ class ExactPoreSizes {
     const Vector3d& position(int j) const { return positions_[j]; }
 
   private:
+    /// inside() and particleDistance() for the largest particle's shape.
+    bool insideUnit(int particle, const Vector3d& d) const {
+        const double squared = d.squaredNorm();
+        if (shape_.isSphere()) return squared < shape_.semiAxis() * shape_.semiAxis();
+        if (squared < (1.0 - 1e-12) * inradius_ * inradius_) return true;
+        return gaugePower(shape_, rotations_[particle].transpose() * d) < 1.0;
+    }
+    SurfaceDistance unitDistance(int particle, const Vector3d& d) const;
     /// Calls visit(particle, shift) for each particle of cell `unwrapped` (cell indices taken
     /// modulo the cells per side, shift the image's lab offset).
     template <class Visit>
@@ -91,6 +102,7 @@ class ExactPoreSizes {
     double inradius_;
     std::vector<Vector3d> positions_;
     std::vector<Matrix3d> rotations_; ///< body to lab
+    std::vector<double> sizes_;       ///< a mixture's R_j / R; empty for identical particles
     CellList cells_; ///< cells of edge >= the circumradius (common/contacts/cell_list)
 };
 

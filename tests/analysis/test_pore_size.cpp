@@ -297,19 +297,21 @@ TEST(ExactPoreSize, ClosestPointIsCertifiedByTheSupportFunction) {
     }
 }
 
-TEST(ExactPoreSize, CellSearchEqualsBruteForceOverAllImages) {
+/// The cell search against every image of every particle, each by closestPoint of its own shape;
+/// of a mixture (docs/mixtures.md), semi-axes 0.24, 0.32, 0.4 in turn.
+void expectCellSearchEqualsBruteForce(double p, bool mixture) {
     std::mt19937_64 generator(17);
     Packing packing;
-    packing.p = 1.5;
+    packing.p = p;
     packing.semiAxis = 0.4;
     packing.boxLength = 4.0;
     std::uniform_real_distribution<double> uniform(0.0, packing.boxLength);
     for (int n = 0; n < 25; ++n) {
         packing.positions.emplace_back(uniform(generator), uniform(generator), uniform(generator));
         packing.orientations.push_back(randomRotation(generator));
+        if (mixture) packing.semiAxes.push_back(0.08 * (3 + n % 3));
     }
     const ExactPoreSizes pores(packing);
-    const Superball shape = packing.shape();
     for (int n = 0; n < 120; ++n) {
         const Vector3d x(uniform(generator), uniform(generator), uniform(generator));
         double expected = std::numeric_limits<double>::infinity();
@@ -321,10 +323,20 @@ TEST(ExactPoreSize, CellSearchEqualsBruteForceOverAllImages) {
                             packing.positions[j] + packing.boxLength * Vector3d(a, b, c);
                         const Vector3d body =
                             packing.orientations[j].toRotationMatrix().transpose() * (x - image);
+                        const Superball shape(packing.p, packing.semiAxisOf(j));
                         expected = std::min(expected, (body - closestPoint(shape, body)).norm());
                     }
         ASSERT_NEAR(pores.poreSize(x), expected, 1e-14) << x.transpose();
     }
+}
+
+TEST(ExactPoreSize, CellSearchEqualsBruteForceOverAllImages) {
+    expectCellSearchEqualsBruteForce(1.5, false);
+}
+
+TEST(ExactPoreSize, CellSearchEqualsBruteForceForAMixture) {
+    for (const double p : {1.0, 1.5, 0.8})
+        expectCellSearchEqualsBruteForce(p, true);
 }
 
 TEST(ExactPoreSize, RejectsBadInput) {

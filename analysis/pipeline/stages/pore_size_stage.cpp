@@ -44,7 +44,7 @@ namespace {
 PoreSizeMap poreSizeMap(const FileContext& context, int m, bool features) {
     checkPoreSizeMemory(m);
 #ifdef SBPACK_WITH_CUDA
-    if (context.settings().device.device == ComputeDevice::Cuda && !features)
+    if (context.gridsOnGpu() && !features)
         return cudaPoreSizeMap(context, m); // refined pore sizes run on the CPU (docs/gpu.md)
 #endif
     std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m);
@@ -78,7 +78,7 @@ PoreSizeDistributionResult measurePores(const FileContext& context, std::optiona
     const Stopwatch clock;
 #ifdef SBPACK_WITH_CUDA
     // All voxels counted and no export: the histogram alone comes back from the GPU.
-    if (s.device.device == ComputeDevice::Cuda && !refined && s.pores.points == 0 &&
+    if (context.gridsOnGpu() && !refined && s.pores.points == 0 &&
         context.vdbExport(Analysis::PoreSizes) == nullptr) {
         PoreSizeDistributionResult pores = cudaPoreSizes(context, s.poreVoxels(), parameters);
         mapSeconds = clock.seconds() - pores.runtimeSeconds;

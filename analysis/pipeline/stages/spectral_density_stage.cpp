@@ -85,8 +85,7 @@ bool runSpectralDensity(FileContext& context, schema::Record& record) {
         reportPlan(context.progress(), parameters.fft, s.voxels, s.planSeconds, s.planSource);
     }
 #ifdef SBPACK_WITH_CUDA
-    else if (context.settings().device.device == ComputeDevice::Cuda &&
-             !context.packing().isMixture()) // a mixture's voxels are the CPU's
+    else if (context.gridsOnGpu())
         s = cudaSpectralDensity(context, parameters);
 #endif
     else

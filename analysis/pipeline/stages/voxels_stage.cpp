@@ -57,11 +57,7 @@ std::optional<std::string> exportVoxels(const FileContext& context, const Voxeli
 bool runVoxels(FileContext& context, schema::Record& record) {
     if (context.grids() != nullptr) return runSlabVoxels(context, record);
 #ifdef SBPACK_WITH_CUDA
-    if (context.settings().device.device == ComputeDevice::Cuda) {
-        if (!context.packing().isMixture()) return runCudaVoxels(context, record);
-        context.progress().warn("voxels: a mixture is voxelised on the CPU (the GPU voxeliser "
-                                "reads one size; docs/mixtures.md)");
-    }
+    if (context.gridsOnGpu()) return runCudaVoxels(context, record);
 #endif
     const int m = context.settings().voxelization.voxels;
     Voxelization voxels =
