@@ -18,12 +18,7 @@ using Matrix2d = Eigen::Matrix2d;
 /// H(u) = h_A(u) + h_B(u) and its derivatives in the lab frame (u need not be unit).
 class MinkowskiSum {
   public:
-    /// B's own shape: `shape` itself where sizeB = 1 (identical bodies, the same arithmetic).
-    explicit MinkowskiSum(const SuperballPair& pair)
-        : pair_(pair),
-          shapeB_(pair.sizeB == 1.0
-                      ? pair.shape
-                      : Superball(pair.shape.p(), pair.shape.semiAxis() * pair.sizeB)) {}
+    explicit MinkowskiSum(const SuperballPair& pair) : pair_(pair), shapeB_(sbpack::shapeB(pair)) {}
 
     double support(const Vector3d& u) const {
         ++evaluations;

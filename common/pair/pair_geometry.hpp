@@ -46,6 +46,12 @@ struct SuperballPair {
     double sizeB = 1.0; ///< B's semi-axis over A's
 };
 
+/// B's own shape: `pair.shape` itself where sizeB = 1 (identical bodies, the same arithmetic).
+inline Superball shapeB(const SuperballPair& pair) {
+    return pair.sizeB == 1.0 ? pair.shape
+                             : Superball(pair.shape.p(), pair.shape.semiAxis() * pair.sizeB);
+}
+
 struct ScaleFactorResult {
     double scaleFactor = 0.0; ///< mu; < 1 overlap, 1 touching
     Vector3d normal;          ///< unit, from A towards B

@@ -148,7 +148,7 @@ void GeneratorCommandLine::addProtocolOptions() {
         "reduced pressure at which growth slows (default 1e6)");
     protocol(
         "--size-ratio", "R", [&p](auto n, auto v) { p.sizeRatio = parseNumber(n, v); },
-        "a binary mixture of spheres: the large ones' diameter over the small ones',\n"
+        "a binary mixture (any p): the large ones' diameter over the small ones',\n"
         "in [1, 10] (default 1: identical particles; docs/mixtures.md); all grow by\n"
         "the same factor, as in the Lubachevsky-Stillinger code");
     protocol(
@@ -157,7 +157,7 @@ void GeneratorCommandLine::addProtocolOptions() {
         "round(X N) particles");
     protocol(
         "--polydispersity", "S", [&p](auto n, auto v) { p.polydispersity = parseNumber(n, v); },
-        "a polydisperse mixture of spheres: diameters uniformly distributed with\n"
+        "a polydisperse mixture (any p): diameters uniformly distributed with\n"
         "standard deviation S times their mean, S in [0, 0.3] (default 0: none), as the\n"
         "N equally spaced quantiles, largest first (docs/mixtures.md)");
     protocol(

@@ -104,11 +104,13 @@ template <EngineShape Shape> class EventDrivenMd {
             sum += s.velocity.squaredNorm();
         return sum / (3.0 * size());
     }
-    /// Rotational kT = I <omega^2> / 3 (0 for shapes that do not rotate).
+    /// Rotational kT = <I omega^2> / 3 (0 for shapes that do not rotate); a mixture's particle
+    /// of size s has the inertia s^2 I.
     double rotationalTemperature() const {
         double sum = 0.0;
-        for (const ParticleState& s : state_)
-            sum += s.angularVelocity.squaredNorm();
+        for (int k = 0; k < size(); ++k)
+            sum += (sizes_.empty() ? 1.0 : sizes_[k] * sizes_[k]) *
+                   state_[k].angularVelocity.squaredNorm();
         return shape_.inertiaPerMass(diameter()) * sum / (3.0 * size());
     }
     void scaleVelocities(double factor) {
@@ -214,10 +216,12 @@ template <EngineShape Shape> class EventDrivenMd {
         m.relativeVelocity = state_[j].velocity - state_[i].velocity;
         m.diameter = clock_.diameter(t);
         m.growthRate = clock_.rate;
-        if (!sizes_.empty()) { // a mixture's pair: as spheres of its mean diameter
+        if (!sizes_.empty()) { // a mixture's pair: its mean diameter, each body's about it
             const double pairSize = 0.5 * (sizes_[i] + sizes_[j]);
             m.diameter *= pairSize;
             m.growthRate *= pairSize;
+            m.sizeI = sizes_[i] / pairSize;
+            m.sizeJ = sizes_[j] / pairSize;
         }
         shape_.orient(m, state_[i], t - time_[i], state_[j], t - time_[j]);
         if constexpr (kWitnessClock) {

@@ -274,11 +274,6 @@ ProtocolParameters checkedParameters(ProtocolParameters parameters, const Packin
                                      const std::string& source) {
     parameters.particles = static_cast<int>(packing.size());
     parameters.p = packing.p;
-    if (packing.isMixture() && rotating(packing.p))
-        throw std::invalid_argument("'" + source +
-                                    "': a mixture of superballs (p != 1) cannot "
-                                    "be resumed: sbgen makes mixtures of spheres only "
-                                    "(docs/mixtures.md)");
     try {
         parameters.validate();
     } catch (const ProtocolParameterError& e) {

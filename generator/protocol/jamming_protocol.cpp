@@ -71,8 +71,8 @@ Engine freshEngine(const ProtocolParameters& parameters, const PlacementWatch& p
     if (rotating(parameters.p)) {
         const std::vector<Vector3d> spins =
             maxwellAngularVelocities(n, SuperballShape(parameters.p).inertiaPerMass(1.0), random);
-        for (int i = 0; i < n; ++i)
-            state[i].angularVelocity = spins[i];
+        for (int i = 0; i < n; ++i) // a mixture's particle of size s: inertia s^2 I
+            state[i].angularVelocity = sizes.empty() ? spins[i] : spins[i] / sizes[i];
     }
     return makeEngine<Engine>(parameters.p, box, std::move(state),
                               GrowthClock{1.0, 0.0, parameters.fastGrowthRate()}, std::move(sizes));
@@ -186,9 +186,6 @@ void ProtocolParameters::validate() const {
             "must be in [0, 0.3] (the diameters' standard deviation over their mean)");
     require(polydispersity == 0.0 || sizeRatio == 1.0, "polydispersity",
             "cannot be given with size_ratio (--size-ratio): each makes a mixture");
-    require(!isMixture() || !rotating(p), sizeRatio != 1.0 ? "size_ratio" : "polydispersity",
-            "mixtures of superballs (p != 1) are not in sbgen yet: only spheres "
-            "(docs/mixtures.md)");
 }
 
 JammingProtocol::JammingProtocol(const ProtocolParameters& parameters, const PlacementWatch& placed)

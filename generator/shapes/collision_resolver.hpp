@@ -29,10 +29,11 @@ struct BodyVelocity {
     Vector3d& angular;
 };
 
-/// Rotating bodies with unit mass and isotropic inertia I: the impulse J n acts at the common
-/// contact point. The surfaces' normal velocity there,
+/// Rotating bodies with unit mass and isotropic inertia I (of diameter m.diameter; a mixture's
+/// body k has I_k = size_k^2 I): the impulse J n acts at the common contact point. The
+/// surfaces' normal velocity there,
 ///   u_n = n.(v_j + omega_j x a_j - v_i - omega_i x a_i) + (gamma / D) n.(a_j - a_i),
-/// changes by J K with K = 2 + (|a_i x n|^2 + |a_j x n|^2) / I; elastic: J = -2 u_n / K.
+/// changes by J K with K = 2 + |a_i x n|^2 / I_i + |a_j x n|^2 / I_j; elastic: J = -2 u_n / K.
 /// Returns J >= 0. Linear and angular momentum are conserved exactly (one contact point).
 inline double resolveCollision(const PairMotion& m, const PairContact& c, double inertia,
                                BodyVelocity i, BodyVelocity j) {
@@ -42,12 +43,14 @@ inline double resolveCollision(const PairMotion& m, const PairContact& c, double
         n.dot(j.linear + j.angular.cross(c.armJ) - i.linear - i.angular.cross(c.armI)) +
         growth * n.dot(c.armJ - c.armI);
     const Vector3d torqueI = c.armI.cross(n), torqueJ = c.armJ.cross(n);
-    const double k = 2.0 + (torqueI.squaredNorm() + torqueJ.squaredNorm()) / inertia;
+    const double inverseI = 1.0 / (m.sizeI * m.sizeI), inverseJ = 1.0 / (m.sizeJ * m.sizeJ);
+    const double k =
+        2.0 + (inverseI * torqueI.squaredNorm() + inverseJ * torqueJ.squaredNorm()) / inertia;
     const double impulse = std::max(0.0, -2.0 * surfaceNormalVelocity / k);
     j.linear += impulse * n;
     i.linear -= impulse * n;
-    j.angular += (impulse / inertia) * torqueJ;
-    i.angular -= (impulse / inertia) * torqueI;
+    j.angular += (inverseJ * impulse / inertia) * torqueJ;
+    i.angular -= (inverseI * impulse / inertia) * torqueI;
     return impulse;
 }
 

@@ -25,14 +25,17 @@ struct ParticleState {
     Vector3d angularVelocity = Vector3d::Zero();       ///< lab frame
 };
 
-/// Two identical bodies i and j at the current time.
+/// Two bodies i and j at the current time: identical, or of a mixture's two sizes, each with
+/// its diameter sizeI D, sizeJ D about the pair's mean D (docs/mixtures.md).
 struct PairMotion {
     Vector3d displacement = Vector3d::Zero();     ///< r_j - r_i (minimum image)
     Vector3d relativeVelocity = Vector3d::Zero(); ///< v_j - v_i
     Quaterniond orientationI = Quaterniond::Identity(), orientationJ = Quaterniond::Identity();
     Vector3d angularVelocityI = Vector3d::Zero(), angularVelocityJ = Vector3d::Zero();
-    double diameter = 1.0;   ///< D now
+    double diameter = 1.0;   ///< D now: the mean of the two bodies' diameters
     double growthRate = 0.0; ///< dD/dt = gamma
+    /// Each body's diameter over D (their mean: sizeI + sizeJ = 2); 1 for identical bodies.
+    double sizeI = 1.0, sizeJ = 1.0;
     /// Each body's accumulated rotation angle now (the integral of |omega| dt since the engine's
     /// last rebuild): the witness records' clock (shapes/witness_bound.hpp).
     double turnedI = 0.0, turnedJ = 0.0;

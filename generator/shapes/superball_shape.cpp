@@ -96,7 +96,8 @@ std::optional<PlaneGap> SuperballShape::separatingPlane(const PairMotion& m,
     const PlaneGap cached = gap.planeGap(normal, 0.0);
     bound(cached.gap);
     const double semiAxis = 0.5 * m.diameter; // the record's points are at semi-axis 1
-    memory.witness = {cached.pointI / semiAxis, cached.pointJ / semiAxis, m.turnedI, m.turnedJ};
+    memory.witness = {cached.pointI / (semiAxis * m.sizeI), cached.pointJ / (semiAxis * m.sizeJ),
+                      m.turnedI, m.turnedJ};
     if (separatedToEnd(cached.gap) || (cached.gap > 0.0 && end < kNoContact &&
                                        std::min(cached.gap, gap.planeGap(normal, end).gap) >
                                            0.125 * gap.planeCurvature(normal) * end * end)) {
@@ -109,8 +110,9 @@ std::optional<PlaneGap> SuperballShape::separatingPlane(const PairMotion& m,
 PairContact SuperballShape::contact(const PairMotion& m, PairMemory& memory,
                                     PairMemory::Resolved& resolved) {
     Vector3d& normal = memory.normal;
-    const SuperballPair pair{Superball(p_, 0.5 * m.diameter), m.orientationI.toRotationMatrix(),
-                             m.orientationJ.toRotationMatrix(), m.displacement};
+    const SuperballPair pair{Superball(p_, 0.5 * m.diameter * m.sizeI),
+                             m.orientationI.toRotationMatrix(), m.orientationJ.toRotationMatrix(),
+                             m.displacement, m.sizeJ / m.sizeI};
     // The prediction's normal was the optimal one at the root it found, a state within rounding
     // of this one: where its plane still touches (within the contact gap, either way), no
     // evaluation is needed (at p = 10 that evaluation is a local search: bench/RESULTS.md,

@@ -56,16 +56,20 @@ bool witnessSeparates(const PairMotion& m, const Vector3d& n, const WitnessRecor
     if (!(std::max(reachI, reachJ) <= bound.maxAngle)) return false;
     const double radius = 0.5 * m.diameter, growth = m.growthRate;
     const double largest = std::max(radius, radius + 0.5 * growth * end);
+    // A mixture's body k: its points at R size_k, growing at gamma size_k / 2 (docs/mixtures.md).
+    const double sI = m.sizeI, sJ = m.sizeJ;
     const Vector3d yI = m.orientationI * record.pointI, yJ = m.orientationJ * record.pointJ;
-    const double along = n.dot(yI + yJ);
+    const double along = n.dot(sI * yI + sJ * yJ);
     const double gap = n.dot(m.displacement) - radius * along;
-    const double rate =
-        n.dot(m.relativeVelocity) - 0.5 * growth * along -
-        radius * (n.dot(m.angularVelocityI.cross(yI)) + n.dot(m.angularVelocityJ.cross(yJ)));
-    const double curvature = circumscribedRatio * (spinI * (std::abs(growth) + largest * spinI) +
-                                                   spinJ * (std::abs(growth) + largest * spinJ));
+    const double rate = n.dot(m.relativeVelocity) - 0.5 * growth * along -
+                        radius * (sI * n.dot(m.angularVelocityI.cross(yI)) +
+                                  sJ * n.dot(m.angularVelocityJ.cross(yJ)));
+    const double curvature =
+        circumscribedRatio * (sI * spinI * (std::abs(growth) + largest * spinI) +
+                              sJ * spinJ * (std::abs(growth) + largest * spinJ));
     // The slack at the end bounds it over the whole interval (it grows with tau).
-    const double slack = largest * bound.constant * (bound.power(reachI) + bound.power(reachJ));
+    const double slack =
+        largest * bound.constant * (sI * bound.power(reachI) + sJ * bound.power(reachJ));
     const double atStart = gap - slack;
     const double atEnd = gap + rate * end - 0.5 * curvature * end * end - slack;
     return atStart > margin && atEnd > margin;

@@ -8,6 +8,7 @@
 #include "order/order_metrics.hpp"
 #include "protocol/jamming_protocol.hpp"
 #include "shapes/sphere.hpp"
+#include "shapes/superball_shape.hpp"
 #include "small_runs.hpp"
 
 #include <gtest/gtest.h>
@@ -57,6 +58,41 @@ TEST(Mixtures, TwoGrowingSpheresOfTwoSizesCollideAtTheSumOfTheirRadii) {
     // The surfaces' normal velocity -1 - 0.375 reversed: v_n' = 2 * 0.375 + 1 = 1.75.
     EXPECT_NEAR(engine.particles()[1].velocity.x() - engine.particles()[0].velocity.x(), 1.75,
                 1e-14);
+}
+
+// Two aligned superballs (p = 1.5) of diameters D and D / 2, not turning, meet face to face along
+// x where their semi-axes add up, 0.75 D(t): the time of the spheres above.
+TEST(Mixtures, TwoAlignedSuperballsOfTwoSizesMeetFaceToFace) {
+    std::vector<ParticleState> state = {{{2, 5, 5}, {0.5, 0, 0}}, {{5, 5, 5}, {-0.5, 0, 0}}};
+    EventDrivenMd<SuperballShape> engine(SuperballShape(1.5), 10.0, state,
+                                         GrowthClock{1.0, 0.0, 0.5}, {1.0, 0.5});
+    const RunReport report = engine.run(1);
+    ASSERT_EQ(report.collisions, 1U);
+    EXPECT_NEAR(report.duration, 2.25 / 1.375, 1e-12);
+    const Vector3d d = engine.particles()[1].position - engine.particles()[0].position;
+    EXPECT_NEAR(d.norm(), 0.75 * engine.diameter(), 1e-12);
+    // A central collision: no torque, the normal velocity reversed as for the spheres.
+    EXPECT_NEAR(engine.particles()[1].velocity.x() - engine.particles()[0].velocity.x(), 1.75,
+                1e-12);
+    EXPECT_LT(engine.particles()[0].angularVelocity.norm(), 1e-12);
+}
+
+// docs/mixtures.md: a binary superball mixture (p = 1.5, ratio 1.4) jams without overlap by the
+// contact network (common/pair's pair geometry of two sizes, not the predictor's) and is not
+// ordered.
+TEST(Mixtures, ABinarySuperballRunJamsWithoutOverlap) {
+    ProtocolParameters p = smallMixture(5);
+    p.p = 1.5;
+    JammingProtocol run(p);
+    ASSERT_TRUE(run.run([](const ProtocolStatus&) {}));
+    const Packing packing = run.checkpoint();
+    EXPECT_EQ(packing.semiAxes.size(), 80U);
+    EXPECT_GE(run.status().reducedPressure, 1e7);
+    const ContactResult c = ContactNetwork({.tolerance = 1e-4}).compute(packing);
+    EXPECT_EQ(c.overlappingPairs, 0);
+    EXPECT_GT(c.worstGap, -1e-12);
+    EXPECT_GT(c.meanContactNumber, 6.0);
+    EXPECT_FALSE(orderVerdict(measureOrder(packing)).ordered);
 }
 
 TEST(Mixtures, TheRandomStartPlacesEachPairAtItsOwnDistance) {
@@ -150,10 +186,7 @@ TEST(Mixtures, APolydisperseRunHasTheDiametersOfItsDistributionAndJams) {
     EXPECT_NEAR(packing.semiAxes.back() / packing.semiAxis, sizes.back(), 1e-15);
 }
 
-TEST(Mixtures, SuperballMixturesAndOneSizedMixturesAreRefused) {
-    ProtocolParameters superballs = smallMixture(1);
-    superballs.p = 1.5;
-    EXPECT_THROW(superballs.validate(), ProtocolParameterError);
+TEST(Mixtures, OneSizedMixturesAreRefused) {
     ProtocolParameters allLarge = smallMixture(1);
     allLarge.largeFraction = 1.0;
     EXPECT_THROW(allLarge.validate(), ProtocolParameterError);

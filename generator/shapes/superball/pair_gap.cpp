@@ -38,13 +38,14 @@ std::optional<SphereWindow> circumscribedWindow(const PairMotion& m, double c, d
 
 PlaneGap SuperballPairGap::planeGap(const Vector3d& n, double tau) const {
     const double diameter = m_.diameter + m_.growthRate * tau;
-    const Superball body(p_, 0.5 * diameter);
+    const Superball body(p_, 0.5 * diameter * m_.sizeI);
+    const Superball bodyB = m_.sizeJ == m_.sizeI ? body : Superball(p_, 0.5 * diameter * m_.sizeJ);
     const Matrix3d qi =
         advancedOrientation(m_.orientationI, m_.angularVelocityI, tau).toRotationMatrix();
     const Matrix3d qj =
         advancedOrientation(m_.orientationJ, m_.angularVelocityJ, tau).toRotationMatrix();
     const Vector3d bodyI = body.supportPoint(qi.transpose() * n);
-    const Vector3d bodyJ = body.supportPoint(qj.transpose() * n);
+    const Vector3d bodyJ = bodyB.supportPoint(qj.transpose() * n);
     const Vector3d xI = qi * bodyI, xJ = qj * bodyJ;
     return {n.dot(m_.displacement + m_.relativeVelocity * tau - xI - xJ),
             planeGapRate(m_, diameter, n, xI, xJ), bodyI, bodyJ};
@@ -55,9 +56,10 @@ Sample SuperballPairGap::at(double tau) {
     const double diameter = m_.diameter + m_.growthRate * tau;
     const Vector3d d = m_.displacement + m_.relativeVelocity * tau;
     const SuperballPair pair{
-        Superball(p_, 0.5 * diameter),
+        Superball(p_, 0.5 * diameter * m_.sizeI),
         advancedOrientation(m_.orientationI, m_.angularVelocityI, tau).toRotationMatrix(),
-        advancedOrientation(m_.orientationJ, m_.angularVelocityJ, tau).toRotationMatrix(), d};
+        advancedOrientation(m_.orientationJ, m_.angularVelocityJ, tau).toRotationMatrix(), d,
+        m_.sizeJ / m_.sizeI};
     const double strain = m_.growthRate / diameter;
     const PairRates rates{m_.relativeVelocity, m_.angularVelocityI, m_.angularVelocityJ, strain};
     // Warm start: the last optimal normal carried along at its rate (first order in the time

@@ -40,10 +40,12 @@ class SuperballPairGap {
 
     // The plane bound's rate at unit normal n, valid up to `end` (R at its largest there):
     // dh_k/dtau = (n x omega_k) . x_k with x_k the support point, and only its part normal to n
-    // counts, |x_perp|^2 = |x|^2 - h^2 <= (c^2 - c_in^2) R^2 (the lever; 0 for spheres).
+    // counts, |x_perp|^2 = |x|^2 - h^2 <= (c^2 - c_in^2) R_k^2 (the lever; 0 for spheres), R_k
+    // = size_k R of a mixture's body.
     double planeRate(const Vector3d& n) const {
         return n.dot(m_.relativeVelocity) -
-               (n.cross(m_.angularVelocityI).norm() + n.cross(m_.angularVelocityJ).norm()) *
+               (m_.sizeI * n.cross(m_.angularVelocityI).norm() +
+                m_.sizeJ * n.cross(m_.angularVelocityJ).norm()) *
                    leverBound_ -
                c_ * growth_;
     }
@@ -52,11 +54,11 @@ class SuperballPairGap {
     // runs on a circle, |u'| = |n x omega|, |u''| = |n x omega| |omega|, and a support function
     // there has h'' = u'^T (d2h) u' + x . u'' >= -c R |n x omega| |omega| (h is convex); growth
     // adds (R h_hat)'' = gamma h_hat' + R h_hat''. So g_n'' <= M_n = sum_k |n x omega_k|
-    // (c gamma + c R |omega_k|).
+    // (c gamma + c R |omega_k|), each body's gamma and R times its size.
     double planeCurvature(const Vector3d& n) const {
-        return n.cross(m_.angularVelocityI).norm() *
+        return m_.sizeI * n.cross(m_.angularVelocityI).norm() *
                    (c_ * growth_ + radiusBound_ * m_.angularVelocityI.norm()) +
-               n.cross(m_.angularVelocityJ).norm() *
+               m_.sizeJ * n.cross(m_.angularVelocityJ).norm() *
                    (c_ * growth_ + radiusBound_ * m_.angularVelocityJ.norm());
     }
 

@@ -57,7 +57,7 @@ struct NormalPoint {
 };
 NormalPoint normalPoint(const SuperballPair& pair, const Vector3d& n) {
     NormalPoint point{n, pair.shape.supportJet(pair.rotationA.transpose() * n),
-                      pair.shape.supportJet(pair.rotationB.transpose() * n), 0.0};
+                      shapeB(pair).supportJet(pair.rotationB.transpose() * n), 0.0};
     point.f = n.dot(pair.displacement) - point.ji.value - point.jj.value;
     return point;
 }
@@ -153,7 +153,7 @@ WarmNewton newtonSignedDistance(const SuperballPair& pair, Vector3d n,
 bool insideBoth(const SuperballPair& pair, const Vector3d& x) {
     constexpr double kInside = 1.0 - 1e-14;
     return pair.shape.gauge(pair.rotationA.transpose() * x) < kInside &&
-           pair.shape.gauge(pair.rotationB.transpose() * (x - pair.displacement)) < kInside;
+           shapeB(pair).gauge(pair.rotationB.transpose() * (x - pair.displacement)) < kInside;
 }
 
 /// Newton again from the face normal of either body with the largest plane gap (better than
@@ -169,7 +169,7 @@ void restartFromFaces(const SuperballPair& pair, WarmNewton& warm,
             const Vector3d n = face.dot(pair.displacement) >= 0.0 ? face : Vector3d(-face);
             const double gap = n.dot(pair.displacement) -
                                pair.shape.support(pair.rotationA.transpose() * n) -
-                               pair.shape.support(pair.rotationB.transpose() * n);
+                               shapeB(pair).support(pair.rotationB.transpose() * n);
             if (gap > bestGap) {
                 bestGap = gap;
                 best = n;
@@ -237,7 +237,7 @@ SignedDistanceResult atNormal(const SuperballPair& pair, const Vector3d& n) {
     r.normal = n;
     r.contactA = pair.rotationA * pair.shape.supportPoint(pair.rotationA.transpose() * n);
     r.contactB = pair.displacement -
-                 pair.rotationB * pair.shape.supportPoint(pair.rotationB.transpose() * n);
+                 pair.rotationB * shapeB(pair).supportPoint(pair.rotationB.transpose() * n);
     r.signedDistance = n.dot(r.contactB - r.contactA);
     return r;
 }
