@@ -150,12 +150,16 @@ void registerGenerator(py::module_& m) {
         "generate",
         [](const py::int_& n, double p, std::uint64_t seed, Option phiInit, Option gammaFast,
            Option gammaSlow, Option speed, Option pressureSwitch, Option pressureFinal,
-           Option window, Option costLimit, const py::object& progress, double progressInterval) {
+           Option window, Option costLimit, Option sizeRatio, Option largeFraction,
+           Option polydispersity, const py::object& progress, double progressInterval) {
             checkProgress(progress, progressInterval);
             // Options left None keep ProtocolParameters' defaults, which are sbgen's.
             ProtocolParameters parameters =
                 costParameters(n, p, gammaSlow, speed, pressureSwitch, pressureFinal);
             parameters.seed = seed;
+            parameters.sizeRatio = sizeRatio.value_or(parameters.sizeRatio); // docs/mixtures.md
+            parameters.largeFraction = largeFraction.value_or(parameters.largeFraction);
+            parameters.polydispersity = polydispersity.value_or(parameters.polydispersity);
             parameters.phiInit = phiInit.value_or(parameters.phiInit);
             if (gammaFast) parameters.gammaFast = gammaFast;
             parameters.collisionsPerWindow = window.value_or(parameters.collisionsPerWindow);
@@ -167,10 +171,13 @@ void registerGenerator(py::module_& m) {
         py::arg("gamma_slow") = py::none(), py::arg("speed") = py::none(),
         py::arg("pressure_switch") = py::none(), py::arg("pressure_final") = py::none(),
         py::arg("window") = py::none(), py::arg("cost_limit") = py::none(),
-        py::arg("progress") = py::none(), py::arg("progress_interval") = 2.0,
+        py::arg("size_ratio") = py::none(), py::arg("large_fraction") = py::none(),
+        py::arg("polydispersity") = py::none(), py::arg("progress") = py::none(),
+        py::arg("progress_interval") = 2.0,
         "Jams a packing as sbgen does with the same options and defaults (docs/python.md); "
-        "progress(status) every progress_interval seconds; Ctrl-C stops at the end of the "
-        "running window");
+        "size_ratio, large_fraction and polydispersity make a mixture as sbgen's --size-ratio, "
+        "--large-fraction and --polydispersity (docs/mixtures.md); progress(status) every "
+        "progress_interval seconds; Ctrl-C stops at the end of the running window");
     m.def(
         "expected_collisions",
         [](const py::int_& n, double p, Option gammaSlow, Option speed, Option pressureSwitch,

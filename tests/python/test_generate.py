@@ -11,6 +11,8 @@ RUNS = {
     "superballs": dict(n=20, p=1.5, seed=3, gamma_slow=1e-2, pressure_switch=1e5,
                        pressure_final=1e8),
     "speed": dict(n=20, p=1.5, seed=3, speed=3, pressure_switch=1e5, pressure_final=1e8),
+    "binary superballs": dict(n=30, p=1.5, seed=3, gamma_slow=1e-2, pressure_switch=1e5,
+                              pressure_final=1e8, size_ratio=1.4, large_fraction=0.4),
 }
 TIMES = ("wall_time_s", "cpu_time_s")
 
@@ -19,7 +21,8 @@ def sbgen_options(options):
     flags = {"n": "--n", "p": "--p", "seed": "--seed", "gamma_slow": "--gamma-slow",
              "speed": "--speed",
              "pressure_switch": "--pressure-switch", "pressure_final": "--pressure-final",
-             "cost_limit": "--cost-limit"}
+             "cost_limit": "--cost-limit", "size_ratio": "--size-ratio",
+             "large_fraction": "--large-fraction"}
     return [a for k, v in options.items() for a in (flags[k], str(v))]
 
 
@@ -36,6 +39,8 @@ def test_generate_equals_sbgen(sbgen, tmp_path, case):
     assert np.array_equal(mine.orientations, theirs.orientations)
     assert (mine.box_length, mine.p, mine.semi_axis, mine.reduced_pressure, mine.seed) == (
         theirs.box_length, theirs.p, theirs.semi_axis, theirs.reduced_pressure, theirs.seed)
+    assert mine.is_mixture == ("size_ratio" in options)  # docs/mixtures.md
+    assert np.array_equal(mine.semi_axes, theirs.semi_axes)
     a, b = mine.provenance, theirs.provenance
     assert set(a) == set(b)
     assert {k: a[k] for k in a if k not in TIMES} == {k: b[k] for k in b if k not in TIMES}
@@ -49,6 +54,7 @@ def test_generate_equals_sbgen(sbgen, tmp_path, case):
     (dict(n=1), "n: need at least 2"),
     (dict(p=0.5), "p: must be in"),
     (dict(pressure_switch=1e9, pressure_final=1e8), "pressure_final: must be larger"),
+    (dict(size_ratio=0.7), "size_ratio: must be in"),
 ])
 def test_bad_parameters_raise_value_error(options, message):
     with pytest.raises(ValueError, match=message):
