@@ -165,7 +165,8 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   one frame, sbpack's export or OVITO's, a cubic `Lattice`, the shape from the keys `p=` and
   `semi_axis=` or the columns below; it carries no reduced pressure, so the contacts take
   `--tolerance`): OVITO reads positions, `orientation` (its
-  quaternion order `x y z w`) and `aspherical_shape` directly; map the two
+  quaternion order `x y z w`) and `aspherical_shape` directly (a mixture's: each particle's
+  own semi-axis, `semi_axis=` their largest; docs/mixtures.md); map the two
   `superquadric_roundness` columns (both `1/p`) to OVITO's "Superquadric Roundness" in the
   import dialog to see superball shapes.
 - **GSD** (`.gsd`, HOOMD-blue's format, read and written by `convert`, `info`, the analysis and

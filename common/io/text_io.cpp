@@ -4,6 +4,7 @@
 #include "io/text_lines.hpp"
 #include "packing/validation.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -157,15 +158,35 @@ void writeExtendedXyz(const Packing& packing, const fs::path& file) {
         for (std::size_t i = 0; i < packing.size(); ++i) {
             const Vector3d r = wrapIntoBox(packing.positions[i], packing.boxLength);
             const Quaterniond q = packing.orientations[i].normalized();
+            // A mixture's particle at its own size (docs/mixtures.md); the header's the largest.
+            const std::string own = packing.isMixture() ? full(packing.semiAxes[i]) : semiAxis;
             out << "Superball " << full(r.x()) << ' ' << full(r.y()) << ' ' << full(r.z()) << ' '
                 << full(q.x()) << ' ' << full(q.y()) << ' ' << full(q.z()) << ' ' << full(q.w())
-                << ' ' << semiAxis << ' ' << semiAxis << ' ' << semiAxis << ' ' << roundness << ' '
-                << roundness << '\n';
+                << ' ' << own << ' ' << own << ' ' << own << ' ' << roundness << ' ' << roundness
+                << '\n';
         }
     });
 }
 
 namespace {
+
+/// The packing's sizes from each particle's semi-axis (may be none) and the header's semi_axis
+/// (may be none): identical particles where all agree to 1e-12, else a mixture
+/// (docs/mixtures.md) whose largest is the header's where given.
+void readSemiAxes(const std::vector<double>& semiAxes, std::optional<double> header,
+                  Packing& packing, const LineReader& reader) {
+    if (semiAxes.empty()) {
+        if (!header) reader.failAt(2, "no semi_axis: give the header key or aspherical_shape");
+        packing.semiAxis = *header;
+        return;
+    }
+    const auto [smallest, largest] = std::minmax_element(semiAxes.begin(), semiAxes.end());
+    const double reference = header.value_or(*largest);
+    if (std::abs(*largest - reference) > 1e-12 * reference)
+        reader.failAt(2, "the header's semi_axis is not the largest of aspherical_shape");
+    packing.semiAxis = reference;
+    if (*largest - *smallest > 1e-12 * *largest) packing.semiAxes = semiAxes;
+}
 
 /// The comment line of an extended-XYZ frame as key=value pairs, keys in lower case, values
 /// unquoted ("..." may hold blanks).
@@ -266,7 +287,8 @@ Packing readExtendedXyz(const fs::path& file) {
     const std::optional<double> headerP = number("p");
     ShapeParameter roundness("p (superquadric_roundness = 1 / p)",
                              headerP ? std::optional(1.0 / *headerP) : std::nullopt);
-    ShapeParameter semiAxis("semi_axis (aspherical_shape)", number("semi_axis"));
+    const std::optional<double> headerSemiAxis = number("semi_axis");
+    std::vector<double> semiAxes; // each particle's, from aspherical_shape
     Packing packing;
     packing.boxLength = cubicLattice(*key("lattice"), reader);
     const auto column = [&](const char* name) {
@@ -291,16 +313,20 @@ Packing readExtendedXyz(const fs::path& file) {
         if (const auto* r = column("superquadricroundness"))
             for (std::size_t k = 0; k < r->second; ++k)
                 roundness.column(value(*r, k), reader);
-        if (const auto* a = column("asphericalshape"))
-            for (std::size_t k = 0; k < a->second; ++k)
-                semiAxis.column(value(*a, k), reader);
+        if (const auto* a = column("asphericalshape")) {
+            semiAxes.push_back(value(*a, 0));
+            for (std::size_t k = 1; k < a->second; ++k)
+                if (std::abs(value(*a, k) - semiAxes.back()) > 1e-12 * semiAxes.back())
+                    reader.fail("the aspherical_shape semi-axes differ: only superballs (a = b = "
+                                "c) are read");
+        }
     }
     if (static_cast<long long>(packing.positions.size()) != count)
         reader.fail("the header says " + std::to_string(count) + " particles but the file has " +
                     std::to_string(packing.positions.size()));
     // The header's p as written; only a p from the roundness column is inverted and repaired.
     packing.p = headerP ? *headerP : singlePrecisionRepaired(1.0 / roundness.value(reader));
-    packing.semiAxis = semiAxis.value(reader);
+    readSemiAxes(semiAxes, headerSemiAxis, packing, reader);
     if (!column("orientation") && packing.p != 1.0)
         reader.failAt(2, "no orientation column: superballs (p != 1) need their orientations");
     validatePacking(packing, reader.name());

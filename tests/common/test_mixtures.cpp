@@ -63,10 +63,19 @@ TEST(Mixtures, TheFileKeepsEachParticlesSemiAxis) {
     EXPECT_EQ(read.semiAxes, packing.semiAxes);
     EXPECT_EQ(read.semiAxis, 0.5);
     EXPECT_DOUBLE_EQ(read.packingFraction(), packing.packingFraction());
+    // Extended XYZ (OVITO) holds each particle's aspherical_shape: the sizes come back.
+    const fs::path xyz = fs::path(file).replace_extension(".xyz");
+    writePackingFile(packing, xyz);
+    const Packing fromXyz = readPackingFile(xyz);
+    EXPECT_EQ(fromXyz.semiAxes, packing.semiAxes);
+    EXPECT_EQ(fromXyz.semiAxis, 0.5);
+    fs::remove(xyz);
     // One size only in the other formats: refused rather than written without the sizes.
-    const fs::path text = fs::path(file).replace_extension(".txt");
-    EXPECT_THROW(writePackingFile(packing, text), std::invalid_argument);
-    EXPECT_FALSE(fs::exists(text));
+    for (const char* extension : {".txt", ".gsd", ".data"}) {
+        const fs::path other = fs::path(file).replace_extension(extension);
+        EXPECT_THROW(writePackingFile(packing, other), std::invalid_argument) << extension;
+        EXPECT_FALSE(fs::exists(other)) << extension;
+    }
     fs::remove(file);
 }
 
