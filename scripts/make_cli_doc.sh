@@ -198,8 +198,9 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   takes a dump's first frame from any origin, in `x y z`, `xu yu zu` or scaled `xs ys zs`, the
   particles in the order of their ids (`p = 1` without the roundness columns), and a data file's
   Atoms and Ellipsoids joined by id (`p` = blockiness / 2, or 1); neither carries the reduced
-  pressure, so the contacts take `--tolerance`. A non-cubic or tilted box, missing shape columns,
-  a repeated id or a short frame is refused naming the file and line.
+  pressure, so the contacts take `--tolerance`. A mixture's atoms carry their own diameters
+  (docs/mixtures.md). A non-cubic or tilted box, missing shape columns, a particle whose three
+  axes differ, a repeated id or a short frame is refused naming the file and line.
 - **Results file** (HDF5, `format = "sbpack.results"`, `format_version = 4`): the root holds the
   run, `files/<i>` one input with one subgroup per analysis, `ensembles/<k>` the inputs of equal
   `p` and `N`; every name and unit is in docs/results-schema.md. Reading it with h5py

@@ -23,19 +23,26 @@ struct Particle {
     long long id = 0;
     Vector3d position = Vector3d::Zero();
     Quaterniond orientation = Quaterniond::Identity();
+    double semiAxis = 0.0; ///< its own (a mixture's: docs/mixtures.md)
 };
 
-/// Every particle in the order of its id (wrapped into [0, L) by canonicalizePacking); fails on
-/// a repeated id.
+/// Every particle in the order of its id (wrapped into [0, L) by canonicalizePacking), with its
+/// size (identical particles where all agree); fails on a repeated id.
 void sortedInto(std::vector<Particle> particles, Packing& packing, const LineReader& reader) {
     std::sort(particles.begin(), particles.end(),
               [](const Particle& a, const Particle& b) { return a.id < b.id; });
+    std::vector<double> semiAxes;
     for (std::size_t k = 0; k < particles.size(); ++k) {
         if (k > 0 && particles[k].id == particles[k - 1].id)
             reader.fail("atom id " + std::to_string(particles[k].id) + " appears twice");
+        if (!(particles[k].semiAxis > 0.0))
+            reader.fail("atom id " + std::to_string(particles[k].id) +
+                        " has no shape (its Ellipsoids line)");
         packing.positions.push_back(particles[k].position);
         packing.orientations.push_back(particles[k].orientation);
+        semiAxes.push_back(particles[k].semiAxis);
     }
+    readSemiAxes(semiAxes, std::nullopt, packing, reader);
     canonicalizePacking(packing);
     validatePacking(packing, reader.name());
 }
@@ -85,10 +92,10 @@ class DumpColumns {
     std::string position_;
 };
 
-/// The particle of one ATOMS line, feeding the shape parameters.
+/// The particle of one ATOMS line, feeding the roundness.
 Particle dumpParticle(const std::vector<std::string>& tokens, const DumpColumns& columns,
-                      const std::array<std::array<double, 2>, 3>& bounds,
-                      std::array<ShapeParameter, 2>& shape, const LineReader& reader) {
+                      const std::array<std::array<double, 2>, 3>& bounds, ShapeParameter& roundness,
+                      const LineReader& reader) {
     if (tokens.size() != columns.size())
         reader.fail(fmt::format("{} values for {} columns", tokens.size(), columns.size()));
     Particle particle;
@@ -103,11 +110,12 @@ Particle dumpParticle(const std::vector<std::string>& tokens, const DumpColumns&
         particle.orientation = Quaterniond(
             columns.value(tokens, "quatw", reader), columns.value(tokens, "quati", reader),
             columns.value(tokens, "quatj", reader), columns.value(tokens, "quatk", reader));
-    for (const char* axis : {"shapex", "shapey", "shapez"})
-        shape[0].column(0.5 * columns.value(tokens, axis, reader), reader);
+    particle.semiAxis = equalAxes(0.5 * columns.value(tokens, "shapex", reader),
+                                  0.5 * columns.value(tokens, "shapey", reader),
+                                  0.5 * columns.value(tokens, "shapez", reader), reader);
     if (columns.has("SuperquadricRoundness.Phi"))
         for (const char* part : {"SuperquadricRoundness.Phi", "SuperquadricRoundness.Theta"})
-            shape[1].column(columns.value(tokens, part, reader), reader);
+            roundness.column(columns.value(tokens, part, reader), reader);
     return particle;
 }
 
@@ -116,7 +124,6 @@ Particle dumpParticle(const std::vector<std::string>& tokens, const DumpColumns&
 void writeLammpsDump(const Packing& packing, const fs::path& file) {
     validatePacking(packing, file.string());
     const std::string length = full(packing.boxLength);
-    const std::string diameter = full(2.0 * packing.semiAxis);
     const std::string roundness = full(1.0 / packing.p); // OVITO's: (1/p, 1/p) is the superball
     writeTextFile(file, [&](std::ostream& out) {
         out << "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n"
@@ -128,6 +135,7 @@ void writeLammpsDump(const Packing& packing, const fs::path& file) {
         for (std::size_t i = 0; i < packing.size(); ++i) {
             const Vector3d r = wrapIntoBox(packing.positions[i], packing.boxLength);
             const Quaterniond q = packing.orientations[i].normalized();
+            const std::string diameter = full(2.0 * packing.semiAxisOf(i)); // its own
             out << i + 1 << " 1 " << full(r.x()) << ' ' << full(r.y()) << ' ' << full(r.z()) << ' '
                 << full(q.w()) << ' ' << full(q.x()) << ' ' << full(q.y()) << ' ' << full(q.z())
                 << ' ' << diameter << ' ' << diameter << ' ' << diameter << ' ' << roundness << ' '
@@ -143,8 +151,7 @@ Packing readLammpsDump(const fs::path& file) {
     std::array<std::array<double, 2>, 3> bounds{};
     bool boxRead = false;
     std::vector<Particle> particles;
-    std::array<ShapeParameter, 2> shape{ShapeParameter("the semi-axis (shapex / 2)", {}),
-                                        ShapeParameter("p (SuperquadricRoundness = 1 / p)", {})};
+    ShapeParameter roundness("p (SuperquadricRoundness = 1 / p)", {});
     while (particles.empty() && reader.next(line)) {
         if (!line.starts_with("ITEM: "))
             reader.fail("expected an 'ITEM:' line, got '" + line + "'");
@@ -168,7 +175,7 @@ Packing readLammpsDump(const fs::path& file) {
             for (long long i = 0; i < count; ++i) {
                 if (!reader.next(line)) reader.fail(fmt::format("{} of {} atoms", i, count));
                 particles.push_back(
-                    dumpParticle(splitWhitespace(line), columns, bounds, shape, reader));
+                    dumpParticle(splitWhitespace(line), columns, bounds, roundness, reader));
             }
         } else if (!reader.next(line)) { // TIMESTEP and the others: one value line
             break;
@@ -177,8 +184,7 @@ Packing readLammpsDump(const fs::path& file) {
     if (particles.empty()) reader.fail("no ITEM: ATOMS frame");
     Packing packing;
     packing.boxLength = cubicEdge(bounds, reader);
-    packing.semiAxis = shape[0].value(reader);
-    packing.p = shape[1].has() ? singlePrecisionRepaired(1.0 / shape[1].value(reader)) : 1.0;
+    packing.p = roundness.has() ? singlePrecisionRepaired(1.0 / roundness.value(reader)) : 1.0;
     sortedInto(std::move(particles), packing, reader);
     return packing;
 }
@@ -227,10 +233,9 @@ std::vector<std::vector<std::string>> sectionLines(LineReader& reader, long long
     return lines;
 }
 
-/// One line of the Atoms (`atom`) or Ellipsoids section into its particle and the shape.
+/// One line of the Atoms (`atom`) or Ellipsoids section into its particle and p.
 void readDataLine(const std::vector<std::string>& t, bool atom, Particle& particle,
-                  const DataHeader& header, std::array<ShapeParameter, 2>& shape,
-                  const LineReader& reader) {
+                  const DataHeader& header, ShapeParameter& p, const LineReader& reader) {
     if (atom) {
         if (t.size() != 7 && t.size() != 10) reader.fail("expected id type 1 density x y z");
         for (int k = 0; k < 3; ++k)
@@ -239,12 +244,12 @@ void readDataLine(const std::vector<std::string>& t, bool atom, Particle& partic
     }
     if (t.size() != 8 && t.size() != 10)
         reader.fail("expected id shapex shapey shapez quatw quati quatj quatk [n1 n2]");
-    for (int k = 1; k <= 3; ++k)
-        shape[0].column(0.5 * reader.parseDouble(t[k]), reader);
+    particle.semiAxis = equalAxes(0.5 * reader.parseDouble(t[1]), 0.5 * reader.parseDouble(t[2]),
+                                  0.5 * reader.parseDouble(t[3]), reader);
     particle.orientation = Quaterniond(reader.parseDouble(t[4]), reader.parseDouble(t[5]),
                                        reader.parseDouble(t[6]), reader.parseDouble(t[7]));
     for (std::size_t k = 8; k < t.size(); ++k)
-        shape[1].column(0.5 * reader.parseDouble(t[k]), reader);
+        p.column(0.5 * reader.parseDouble(t[k]), reader);
 }
 
 } // namespace
@@ -252,11 +257,11 @@ void readDataLine(const std::vector<std::string>& t, bool atom, Particle& partic
 void writeLammpsData(const Packing& packing, const fs::path& file) {
     validatePacking(packing, file.string());
     const bool blocky = packing.p != 1.0;
-    const std::string diameter = full(2.0 * packing.semiAxis), length = full(packing.boxLength);
+    const std::string length = full(packing.boxLength);
     const std::string blockiness = blocky ? " " + full(2.0 * packing.p) : std::string();
     writeTextFile(file, [&](std::ostream& out) {
         out << "LAMMPS data file from sbpack: superballs p = " << full(packing.p) << ", semi-axis "
-            << full(packing.semiAxis)
+            << full(packing.semiAxis) << (packing.isMixture() ? " (the largest of a mixture)" : "")
             << (blocky ? " (atom_style ellipsoid superellipsoid, LAMMPS 30Mar2026 and later)\n\n"
                        : " (atom_style ellipsoid)\n\n")
             << packing.size() << " atoms\n1 atom types\n"
@@ -272,6 +277,7 @@ void writeLammpsData(const Packing& packing, const fs::path& file) {
         out << "\nEllipsoids\n\n";
         for (std::size_t i = 0; i < packing.size(); ++i) {
             const Quaterniond q = packing.orientations[i].normalized();
+            const std::string diameter = full(2.0 * packing.semiAxisOf(i)); // its own
             out << i + 1 << ' ' << diameter << ' ' << diameter << ' ' << diameter << ' '
                 << full(q.w()) << ' ' << full(q.x()) << ' ' << full(q.y()) << ' ' << full(q.z())
                 << blockiness << blockiness << '\n';
@@ -287,22 +293,20 @@ Packing readLammpsData(const fs::path& file) {
     if (header.ellipsoids != header.atoms)
         reader.fail("every atom must be an ellipsoid (atom_style ellipsoid)");
     std::map<long long, Particle> particles;
-    std::array<ShapeParameter, 2> shape{ShapeParameter("the semi-axis (shapex / 2)", {}),
-                                        ShapeParameter("p (blockiness / 2)", {})};
+    ShapeParameter p("p (blockiness / 2)", {});
     std::string line = section;
     do { // the sections by their keyword lines; others (Masses, Velocities) are passed over
         const std::vector<std::string> words = splitWhitespace(line.substr(0, line.find('#')));
         if (words.size() != 1 || (words[0] != "Atoms" && words[0] != "Ellipsoids")) continue;
         for (const auto& t : sectionLines(reader, header.atoms))
-            readDataLine(t, words[0] == "Atoms", particles[reader.parseCount(t[0])], header, shape,
+            readDataLine(t, words[0] == "Atoms", particles[reader.parseCount(t[0])], header, p,
                          reader);
     } while (reader.next(line));
     if (static_cast<long long>(particles.size()) != header.atoms)
         reader.fail("the Atoms and Ellipsoids sections name different atoms");
     Packing packing;
     packing.boxLength = cubicEdge(header.bounds, reader);
-    packing.semiAxis = shape[0].value(reader);
-    packing.p = shape[1].has() ? shape[1].value(reader) : 1.0;
+    packing.p = p.has() ? p.value(reader) : 1.0;
     std::vector<Particle> ordered;
     for (auto& [id, particle] : particles) {
         particle.id = id;

@@ -54,12 +54,11 @@ Packing readPackingFile(const fs::path& file) {
 
 void writePackingFile(const Packing& packing, const fs::path& file) {
     const PackingFormat format = packingFormatOf(file);
-    // The other formats hold one size: a mixture written there would lose its sizes.
-    if (packing.isMixture() && format != PackingFormat::Hdf5 &&
-        format != PackingFormat::ExtendedXyz)
+    // Text and GSD hold one size: a mixture written there would lose its sizes.
+    if (packing.isMixture() && (format == PackingFormat::Text || format == PackingFormat::Gsd))
         throw std::invalid_argument("'" + file.string() +
                                     "': a mixture (per-particle semi_axes) can be written only "
-                                    "as .h5 or .xyz for now (docs/mixtures.md)");
+                                    "as .h5, .xyz, .dump or .data for now (docs/mixtures.md)");
     switch (format) {
     case PackingFormat::Hdf5:
         return writePacking(packing, file);

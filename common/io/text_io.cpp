@@ -170,24 +170,6 @@ void writeExtendedXyz(const Packing& packing, const fs::path& file) {
 
 namespace {
 
-/// The packing's sizes from each particle's semi-axis (may be none) and the header's semi_axis
-/// (may be none): identical particles where all agree to 1e-12, else a mixture
-/// (docs/mixtures.md) whose largest is the header's where given.
-void readSemiAxes(const std::vector<double>& semiAxes, std::optional<double> header,
-                  Packing& packing, const LineReader& reader) {
-    if (semiAxes.empty()) {
-        if (!header) reader.failAt(2, "no semi_axis: give the header key or aspherical_shape");
-        packing.semiAxis = *header;
-        return;
-    }
-    const auto [smallest, largest] = std::minmax_element(semiAxes.begin(), semiAxes.end());
-    const double reference = header.value_or(*largest);
-    if (std::abs(*largest - reference) > 1e-12 * reference)
-        reader.failAt(2, "the header's semi_axis is not the largest of aspherical_shape");
-    packing.semiAxis = reference;
-    if (*largest - *smallest > 1e-12 * *largest) packing.semiAxes = semiAxes;
-}
-
 /// The comment line of an extended-XYZ frame as key=value pairs, keys in lower case, values
 /// unquoted ("..." may hold blanks).
 std::map<std::string, std::string> xyzKeys(const std::string& line, const LineReader& reader) {
@@ -314,11 +296,8 @@ Packing readExtendedXyz(const fs::path& file) {
             for (std::size_t k = 0; k < r->second; ++k)
                 roundness.column(value(*r, k), reader);
         if (const auto* a = column("asphericalshape")) {
-            semiAxes.push_back(value(*a, 0));
-            for (std::size_t k = 1; k < a->second; ++k)
-                if (std::abs(value(*a, k) - semiAxes.back()) > 1e-12 * semiAxes.back())
-                    reader.fail("the aspherical_shape semi-axes differ: only superballs (a = b = "
-                                "c) are read");
+            if (a->second != 3) reader.fail("aspherical_shape needs its three semi-axes");
+            semiAxes.push_back(equalAxes(value(*a, 0), value(*a, 1), value(*a, 2), reader));
         }
     }
     if (static_cast<long long>(packing.positions.size()) != count)

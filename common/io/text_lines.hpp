@@ -6,6 +6,7 @@
 #include "io/atomic_file.hpp"
 #include "io/packing_io.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -128,6 +129,31 @@ class ShapeParameter {
     std::string key_;
     std::optional<double> value_;
 };
+
+/// A superball's semi-axis from its three (a = b = c, to 1e-12); fails where they differ.
+inline double equalAxes(double a, double b, double c, const LineReader& reader) {
+    if (std::abs(b - a) > 1e-12 * a || std::abs(c - a) > 1e-12 * a)
+        reader.fail("the shape's three semi-axes differ: only superballs (a = b = c) are read");
+    return a;
+}
+
+/// The packing's sizes from each particle's semi-axis (may be none) and the header's semi_axis
+/// (may be none): identical particles where all agree to 1e-12, else a mixture
+/// (docs/mixtures.md) whose largest is the header's where given (extended XYZ, LAMMPS).
+inline void readSemiAxes(const std::vector<double>& semiAxes, std::optional<double> header,
+                         Packing& packing, const LineReader& reader) {
+    if (semiAxes.empty()) {
+        if (!header) reader.failAt(2, "no semi_axis: give the header key or aspherical_shape");
+        packing.semiAxis = *header;
+        return;
+    }
+    const auto [smallest, largest] = std::minmax_element(semiAxes.begin(), semiAxes.end());
+    const double reference = header.value_or(*largest);
+    if (std::abs(*largest - reference) > 1e-12 * reference)
+        reader.failAt(2, "the header's semi_axis is not the largest of aspherical_shape");
+    packing.semiAxis = reference;
+    if (*largest - *smallest > 1e-12 * *largest) packing.semiAxes = semiAxes;
+}
 
 /// p from a roundness written in single precision (OVITO's export: 1 / 0.6666667008 =
 /// 1.49999992): the value of 6 significant digits within 1e-7 of it, else p itself.

@@ -63,15 +63,18 @@ TEST(Mixtures, TheFileKeepsEachParticlesSemiAxis) {
     EXPECT_EQ(read.semiAxes, packing.semiAxes);
     EXPECT_EQ(read.semiAxis, 0.5);
     EXPECT_DOUBLE_EQ(read.packingFraction(), packing.packingFraction());
-    // Extended XYZ (OVITO) holds each particle's aspherical_shape: the sizes come back.
-    const fs::path xyz = fs::path(file).replace_extension(".xyz");
-    writePackingFile(packing, xyz);
-    const Packing fromXyz = readPackingFile(xyz);
-    EXPECT_EQ(fromXyz.semiAxes, packing.semiAxes);
-    EXPECT_EQ(fromXyz.semiAxis, 0.5);
-    fs::remove(xyz);
+    // Extended XYZ (OVITO's aspherical_shape) and LAMMPS (each atom's shape) hold each
+    // particle's own: the sizes come back.
+    for (const char* extension : {".xyz", ".dump", ".data"}) {
+        const fs::path other = fs::path(file).replace_extension(extension);
+        writePackingFile(packing, other);
+        const Packing back = readPackingFile(other);
+        EXPECT_EQ(back.semiAxes, packing.semiAxes) << extension;
+        EXPECT_EQ(back.semiAxis, 0.5) << extension;
+        fs::remove(other);
+    }
     // One size only in the other formats: refused rather than written without the sizes.
-    for (const char* extension : {".txt", ".gsd", ".data"}) {
+    for (const char* extension : {".txt", ".gsd"}) {
         const fs::path other = fs::path(file).replace_extension(extension);
         EXPECT_THROW(writePackingFile(packing, other), std::invalid_argument) << extension;
         EXPECT_FALSE(fs::exists(other)) << extension;
