@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <deque>
 #include <map>
@@ -98,15 +99,32 @@ class EnsembleSchemas {
         out.push_back(f);
         out.back().optional = f.pooledOptional;
     }
+    /// A group's first curve brings the common grid; a later one (S's partials, on S's shells)
+    /// its mean and deviation only, optional where it is.
     void addCurve(std::vector<Field>& out, const Field& f) {
         const std::string v(f.name);
-        out.push_back({"bin_width_Q_w", A, F, "1",
-                       "bin width of the common Q w grid: the mean of the files' 2 pi w / L"});
-        out.push_back({"Q_w", D, F, "1", "mean Q w of the files' shells in the bin"});
-        out.push_back({"Q", D, F, "1/length", "mean Q of the files' shells in the bin"});
-        out.push_back({f.name, D, F, f.units, keep("mean over the files of " + v)});
-        out.push_back({keep(v + "_std"), D, F, f.units,
-                       keep("sample standard deviation of " + v + " over the files in the bin")});
+        const bool first =
+            std::none_of(out.begin(), out.end(), [](const Field& g) { return g.name == "Q_w"; });
+        if (first) {
+            out.push_back({"bin_width_Q_w", A, F, "1",
+                           "bin width of the common Q w grid: the mean of the files' 2 pi w / L"});
+            out.push_back({"Q_w", D, F, "1", "mean Q w of the files' shells in the bin"});
+            out.push_back({"Q", D, F, "1/length", "mean Q of the files' shells in the bin"});
+        }
+        out.push_back({.name = f.name,
+                       .kind = D,
+                       .type = F,
+                       .units = f.units,
+                       .description = keep("mean over the files of " + v),
+                       .optional = f.optional});
+        out.push_back({.name = keep(v + "_std"),
+                       .kind = D,
+                       .type = F,
+                       .units = f.units,
+                       .description =
+                           keep("sample standard deviation of " + v + " over the files in the bin"),
+                       .optional = f.optional});
+        if (!first) return;
         out.push_back({"count", D, I, "1", "wave vectors in the bin, all files together"});
         out.push_back({"files", D, I, "1", "files with a shell in the bin"});
     }

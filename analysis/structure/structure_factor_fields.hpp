@@ -22,6 +22,7 @@ inline constexpr schema::FieldTable kTable{schema::joinColumns(
           .type = F,
           .units = "1",
           .description = "a binary mixture's number fraction of large particles (docs/mixtures.md)",
+          .reduce = Mean,
           .optional = true},
          schema::inside<&R::partials, &Partials::fractionA>},
         {{.name = "S_AA",
@@ -30,6 +31,7 @@ inline constexpr schema::FieldTable kTable{schema::joinColumns(
           .units = "1",
           .description = "a binary mixture's partial S(Q) of the large particles, "
                          "|rho_A(Q)|^2 / N_A (Ashcroft-Langreth), on S's shells",
+          .reduce = Curve,
           .optional = true},
          schema::inside<&R::partials, &Partials::aa>},
         {{.name = "S_BB",
@@ -38,6 +40,7 @@ inline constexpr schema::FieldTable kTable{schema::joinColumns(
           .units = "1",
           .description =
               "a binary mixture's partial S(Q) of the small particles, |rho_B(Q)|^2 / N_B",
+          .reduce = Curve,
           .optional = true},
          schema::inside<&R::partials, &Partials::bb>},
         {{.name = "S_AB",
@@ -46,6 +49,7 @@ inline constexpr schema::FieldTable kTable{schema::joinColumns(
           .units = "1",
           .description = "a binary mixture's cross term Re(rho_A rho_B*) / sqrt(N_A N_B); S = "
                          "x_A S_AA + x_B S_BB + 2 sqrt(x_A x_B) S_AB",
+          .reduce = Curve,
           .optional = true},
          schema::inside<&R::partials, &Partials::ab>},
     }},

@@ -492,6 +492,13 @@ TEST(Pipeline, AMixtureGetsEveryAnalysis) {
                                  "transport", "voronoi", "variance"})
         EXPECT_NE(file.group(computed), nullptr) << computed;
     EXPECT_EQ(log.str().find("not computed"), std::string::npos) << log.str();
+    // The partials' ensemble statistics on S's grid (one member here: its own curve).
+    const schema::Record* partials = results.ensembles[0].group("structure_factor");
+    ASSERT_NE(partials, nullptr);
+    ASSERT_TRUE(partials->has("S_AB"));
+    EXPECT_EQ(partials->floats("S_AB").size(), partials->floats("S").size());
+    EXPECT_DOUBLE_EQ(partials->number("x_A"), 0.5);
+    EXPECT_FALSE(results.ensembles[1].group("structure_factor")->has("S_AB"));
     // phi sums the particles' own volumes.
     const double v = 4.0 / 3.0 * std::numbers::pi;
     EXPECT_NEAR(file.root.number("phi"), 32 * v * (0.125 + 0.064) / std::pow(4 * 1.2, 3), 1e-12);
