@@ -179,7 +179,8 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   precision as the schema has them, and, so that nothing is lost, double-precision copies
   `log/particles/sbpack/position` (in `[0, L)`) and `log/particles/sbpack/orientation` with
   the scalars `log/sbpack/p`, `semi_axis`, `box_length`, `reduced_pressure` and `seed`: an sbpack
-  file round-trips bit for bit. A file from elsewhere is read from its last frame: the
+  file round-trips bit for bit. A mixture has a type per distinct size (`superball_0`, ...,
+  largest first) and `log/particles/sbpack/semi_axis` (docs/mixtures.md). A file from elsewhere is read from its last frame: the
   single-precision positions (a jammed packing then overlaps by up to the rounding: `info` and
   the contacts say so and advise `--tolerance`), orientations (identity where absent), a cubic
   box without tilt, and the shape from sbpack's scalars or one `Sphere` type_shape (a HOOMD

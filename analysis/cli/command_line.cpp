@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -228,12 +229,17 @@ std::string extrasMessage(const CLI::App& app, const CLI::ExtrasError& error) {
     for (const std::string& given : app.remaining(true))
         if (given.rfind("--", 0) == 0) {
             std::vector<std::string> known = longOptionNames(*command);
-            if (command != &app)
-                for (const std::string& name : longOptionNames(app))
-                    known.push_back(name);
             const std::string help = command == &app
                                          ? "sbanalyze --help"
                                          : "sbanalyze " + command->get_name() + " --help";
+            const std::vector<std::string> parent = longOptionNames(app);
+            // An analysis option after a command that does not take it: not a typo to suggest
+            // (it was "did you mean --out?" for --out itself).
+            const std::string name = given.substr(0, given.find('='));
+            if (command != &app && std::find(parent.begin(), parent.end(), name) != parent.end())
+                return name + " is an option of the analysis, not of sbanalyze " +
+                       command->get_name() + " (see " + help + ")";
+            if (command != &app) known.insert(known.end(), parent.begin(), parent.end());
             return unknownOptionMessage(given, known) + " (see " + help + ")";
         }
     return std::string(error.what()) + " (see sbanalyze --help)";

@@ -10,10 +10,12 @@
 #include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -254,6 +256,35 @@ double boxLengthOf(FrameReader& frame, const fs::path& file) {
     return b[0];
 }
 
+/// The particle types: one, "superball", of identical particles; a mixture's one per distinct
+/// size ("superball_0", ... largest first), each its own shape, and each particle's exact
+/// semi-axis in sbpack's log (docs/mixtures.md).
+void writeTypes(const Packing& packing, FrameWriter& w) {
+    const auto n = static_cast<std::uint32_t>(packing.size());
+    if (!packing.isMixture()) {
+        w.strings("particles/types", {"superball"});
+        w.strings("particles/type_shapes", {shapeJson(packing.p, packing.semiAxis)});
+        w.chunk("particles/typeid", GSD_TYPE_UINT32, n, 1, std::vector<std::uint32_t>(n, 0));
+        return;
+    }
+    std::vector<double> sizes = packing.semiAxes;
+    std::sort(sizes.begin(), sizes.end(), std::greater<>());
+    sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
+    std::vector<std::string> names, shapes;
+    for (std::size_t t = 0; t < sizes.size(); ++t) {
+        names.push_back("superball_" + std::to_string(t));
+        shapes.push_back(shapeJson(packing.p, sizes[t]));
+    }
+    std::vector<std::uint32_t> typeId;
+    for (const double r : packing.semiAxes)
+        typeId.push_back(
+            static_cast<std::uint32_t>(std::find(sizes.begin(), sizes.end(), r) - sizes.begin()));
+    w.strings("particles/types", names);
+    w.strings("particles/type_shapes", shapes);
+    w.chunk("particles/typeid", GSD_TYPE_UINT32, n, 1, typeId);
+    w.chunk(std::string(kParticleLog) + "semi_axis", GSD_TYPE_DOUBLE, n, 1, packing.semiAxes);
+}
+
 void writeFrame(const Packing& packing, FrameWriter& w) {
     const auto n = static_cast<std::uint32_t>(packing.size());
     const auto length = static_cast<float>(packing.boxLength);
@@ -261,9 +292,7 @@ void writeFrame(const Packing& packing, FrameWriter& w) {
     w.chunk("configuration/box", GSD_TYPE_FLOAT, 6, 1,
             std::vector<float>{length, length, length, 0.0F, 0.0F, 0.0F});
     w.chunk("particles/N", GSD_TYPE_UINT32, 1, 1, std::vector<std::uint32_t>{n});
-    w.strings("particles/types", {"superball"});
-    w.strings("particles/type_shapes", {shapeJson(packing.p, packing.semiAxis)});
-    w.chunk("particles/typeid", GSD_TYPE_UINT32, n, 1, std::vector<std::uint32_t>(n, 0));
+    writeTypes(packing, w);
     w.chunk("particles/position", GSD_TYPE_FLOAT, n, 3, centredPositions(packing));
     std::vector<float> q;
     std::vector<double> exactPositions, exactOrientations;
@@ -339,6 +368,8 @@ Packing readGsd(const fs::path& file) {
         packing.orientations.push_back(
             q ? Quaterniond((*q)[4 * i], (*q)[4 * i + 1], (*q)[4 * i + 2], (*q)[4 * i + 3])
               : Quaterniond::Identity()); // normalised by canonicalizePacking
+    if (const auto sizes = frame.numbers(std::string(kParticleLog) + "semi_axis", count, 1))
+        packing.semiAxes = *sizes; // a mixture's (docs/mixtures.md)
     if (const auto pressure = frame.numbers(std::string(kLog) + "reduced_pressure", 1, 1))
         packing.reducedPressure = pressure->front();
     if (const auto seed = frame.counts(std::string(kLog) + "seed", 1)) packing.seed = seed->front();
