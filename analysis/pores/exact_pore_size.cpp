@@ -184,8 +184,7 @@ ExactPoreSizes::ExactPoreSizes(const Packing& packing)
         positions_.push_back(wrapIntoBox(packing.positions[j], boxLength_));
         rotations_.push_back(packing.orientations[j].normalized().toRotationMatrix());
     }
-    for (const double r : packing.semiAxes)
-        sizes_.push_back(r / packing.semiAxis);
+    sizes_ = packing.relativeSizes();
 }
 
 SurfaceDistance ExactPoreSizes::particleDistance(int particle, const Vector3d& d) const {

@@ -54,7 +54,7 @@ ParticleTables particleTables(const Packing& packing, int kmax) {
     for (const Quaterniond& q : packing.orientations)
         t.toBody.push_back(scale * q.normalized().toRotationMatrix().transpose());
     for (std::size_t j = 0; j < packing.semiAxes.size(); ++j) {
-        const double size = packing.semiAxes[j] / packing.semiAxis;
+        const double size = packing.relativeSize(j);
         t.toBody[j] *= size;
         t.cubedSize.push_back(size * size * size);
     }

@@ -122,8 +122,8 @@ SetVoronoiResult SetVoronoi::compute(const Packing& packing, const std::vector<b
             throw std::domain_error("set-Voronoi cells: particle " + std::to_string(i) +
                                     " holds no voxel of its own on the " + std::to_string(m) +
                                     "^3 grid (it overlaps others)");
-        const double size = packing.semiAxisOf(i) / packing.semiAxis; // a mixture's s_i
-        const double volume = r.particleVolume * size * size * size;  // v_i
+        const double size = packing.relativeSize(i);
+        const double volume = r.particleVolume * size * size * size; // v_i
         r.cellVolumes.push_back(counts.cell[i] * voxelVolume);
         r.localPhi.push_back(volume / r.cellVolumes.back());
         r.particleVoxelError.push_back(counts.solid[i] * voxelVolume / volume - 1.0);

@@ -539,19 +539,16 @@ BlockGeometry blockGeometry(const Packing& packing, const VoxelizationParameters
     const int x0 = parameters.slabBegin, x1 = parameters.slabEnd;
     const int firstBlockX = x0 / kBlock;
     const Superball shape = packing.shape();
-    BlockGeometry g{m,
-                    packing.boxLength / m,
-                    Voxelizer::reach(shape),
-                    shape.inradius() * (1.0 - kSphereMargin),
-                    x0,
-                    x1,
-                    blocks,
-                    firstBlockX,
-                    x1 > x0 ? (x1 - 1) / kBlock - firstBlockX + 1 : 0,
-                    {}};
-    for (const double r : packing.semiAxes)
-        g.sizes.push_back(r / packing.semiAxis);
-    return g;
+    return BlockGeometry{m,
+                         packing.boxLength / m,
+                         Voxelizer::reach(shape),
+                         shape.inradius() * (1.0 - kSphereMargin),
+                         x0,
+                         x1,
+                         blocks,
+                         firstBlockX,
+                         x1 > x0 ? (x1 - 1) / kBlock - firstBlockX + 1 : 0,
+                         packing.relativeSizes()};
 }
 
 /// Lab-to-body rotations: x_body = R^T (x - r); of a mixture, over the particle's size, x_body

@@ -45,7 +45,7 @@ RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& net
         const Vector3d separation =
             inBox + cellImageShift(inBox, cell, cellInverse, result.boxLength);
         const double gap = network.gaps[c] * packing.pairSize(i, j); // a mixture's: over R_i + R_j
-        const double sizeA = packing.semiAxisOf(i) / packing.semiAxis;
+        const double sizeA = packing.relativeSize(i);
         const ContactCurvature curvature = contactCurvature(
             sizeA == 1.0 ? shape : Superball(packing.p, 0.5 * sizeA),
             packing.orientations[i].toRotationMatrix(), packing.orientations[j].toRotationMatrix(),

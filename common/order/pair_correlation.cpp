@@ -40,8 +40,7 @@ std::vector<double> movingAverage(const std::vector<double>& values, int halfWid
 double meanCubedPairSize(const Packing& packing) {
     if (!packing.isMixture()) return 1.0;
     double m1 = 0.0, m2 = 0.0, m3 = 0.0;
-    for (double r : packing.semiAxes) {
-        const double s = r / packing.semiAxis;
+    for (const double s : packing.relativeSizes()) {
         m1 += s;
         m2 += s * s;
         m3 += s * s * s;

@@ -14,6 +14,14 @@ double meanCubedSize(const std::vector<double>& sizes, double unit) {
     return sum / static_cast<double>(sizes.size());
 }
 
+std::vector<double> Packing::relativeSizes() const {
+    std::vector<double> sizes;
+    sizes.reserve(semiAxes.size());
+    for (std::size_t i = 0; i < semiAxes.size(); ++i)
+        sizes.push_back(relativeSize(i));
+    return sizes;
+}
+
 double Packing::smallestSemiAxis() const {
     return semiAxes.empty() ? semiAxis : *std::min_element(semiAxes.begin(), semiAxes.end());
 }

@@ -80,6 +80,14 @@ struct Packing {
     bool isMixture() const { return !semiAxes.empty(); }
     /// Particle i's semi-axis.
     double semiAxisOf(std::size_t i) const { return semiAxes.empty() ? semiAxis : semiAxes[i]; }
+    /// Particle i's size s_i = R_i / R, its semi-axis over the largest (1 for identical
+    /// particles): the factor a mixture's per-particle lengths and volumes scale by
+    /// (docs/mixtures.md).
+    double relativeSize(std::size_t i) const {
+        return semiAxes.empty() ? 1.0 : semiAxes[i] / semiAxis;
+    }
+    /// Every particle's relativeSize, empty for identical particles.
+    std::vector<double> relativeSizes() const;
     /// The smallest particle's semi-axis (semiAxis for identical particles).
     double smallestSemiAxis() const;
     /// The pair's mean size over the largest, (R_i + R_j) / (2 R): the unit of a mixture's pair

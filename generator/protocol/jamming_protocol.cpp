@@ -48,14 +48,6 @@ Engine makeEngine(double p, double box, std::vector<ParticleState> state, Growth
                                          std::move(sizes));
 }
 
-/// A checkpoint's mixture sizes, each semi-axis over the largest (empty: identical particles).
-std::vector<double> sizesOf(const Packing& packing) {
-    std::vector<double> sizes;
-    for (const double r : packing.semiAxes)
-        sizes.push_back(r / packing.semiAxis);
-    return sizes;
-}
-
 template <class Engine>
 Engine freshEngine(const ProtocolParameters& parameters, const PlacementWatch& placed) {
     Random random(parameters.seed);
@@ -93,7 +85,7 @@ Engine resumedEngine(const Packing& packing, const std::string& source,
         if (rotating(packing.p)) state[i].angularVelocity = packing.angularVelocities[i];
     }
     Engine engine = makeEngine<Engine>(packing.p, packing.boxLength, std::move(state), fields.clock,
-                                       sizesOf(packing));
+                                       packing.relativeSizes());
     if (auto* superballs = std::get_if<EventDrivenMd<SuperballShape>>(&engine))
         superballs->restorePairRecords(fields.pairRecords);
     return engine;
