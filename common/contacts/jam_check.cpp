@@ -48,10 +48,17 @@ std::vector<int> closedCycle(int a, int b, const std::vector<int>& parent) {
 /// that remain: the fraction of all particles. One pass, not iterated: a contact just above the
 /// tolerance can leave a load-bearing particle's contacts in one hemisphere, and in a network
 /// at the isostatic count removing it would cascade through the whole packing (MRJ spheres:
-/// 5 such particles in 5000, then all of them when iterated).
-/// Also counts the backbone and its contacts into `check` (its untrapped non-rattlers: the
-/// return's second).
-std::pair<double, int> untrappedFraction(const ContactResult& contacts, JamCheck& check) {
+/// 5 such particles in 5000, then all of them when iterated). With the backbone's counts (a
+/// mixture's second way to pass: backboneHoldsItsCount).
+struct UntrappedCounts {
+    double fraction = 0.0; ///< rattlers and untrapped particles over all particles
+    int free = 0;          ///< the untrapped non-rattlers
+    int backbone = 0;      ///< the non-rattlers
+    int backboneContacts = 0;
+};
+
+UntrappedCounts untrappedCounts(const ContactResult& contacts) {
+    UntrappedCounts counts;
     const int n = static_cast<int>(contacts.rattler.size());
     std::vector<std::vector<Vector3d>> normals(n);
     for (std::size_t k = 0; k < contacts.contacts.size(); ++k) {
@@ -59,19 +66,20 @@ std::pair<double, int> untrappedFraction(const ContactResult& contacts, JamCheck
         if (contacts.rattler[i] || contacts.rattler[j]) continue;
         normals[i].push_back(contacts.normals[k]);
         normals[j].push_back(-contacts.normals[k]);
-        ++check.backboneContacts;
+        ++counts.backboneContacts;
     }
-    int removed = 0, free = 0;
+    int removed = 0;
     for (int i = 0; i < n; ++i) {
-        check.backbone += !contacts.rattler[i];
+        counts.backbone += !contacts.rattler[i];
         if (contacts.rattler[i]) {
             ++removed;
         } else if (!isLocallyTrapped(normals[i])) {
             ++removed;
-            ++free;
+            ++counts.free;
         }
     }
-    return {n > 0 ? static_cast<double>(removed) / n : 0.0, free};
+    counts.fraction = n > 0 ? static_cast<double>(removed) / n : 0.0;
+    return counts;
 }
 
 /// A mixture's second way to pass (docs/mixtures.md, "The jam check of a mixture"): its small
@@ -195,11 +203,13 @@ JamCheck checkJam(const Packing& packing, double reducedPressure,
                                  parameters.minTolerance, parameters.maxTolerance);
     check.contacts =
         ContactNetwork({check.tolerance, parameters.rattlerThreshold}).compute(packing);
-    const auto [untrapped, free] = untrappedFraction(check.contacts, check);
-    check.untrappedFraction = untrapped;
-    check.jammed =
-        untrapped <= parameters.maxRattlerFraction ||
-        (packing.isMixture() && backboneHoldsItsCount(check, free, packing.size(), parameters));
+    const UntrappedCounts counts = untrappedCounts(check.contacts);
+    check.untrappedFraction = counts.fraction;
+    check.backbone = counts.backbone;
+    check.backboneContacts = counts.backboneContacts;
+    check.jammed = counts.fraction <= parameters.maxRattlerFraction ||
+                   (packing.isMixture() &&
+                    backboneHoldsItsCount(check, counts.free, packing.size(), parameters));
     if (!check.jammed && !isCompressing(reducedPressure, parameters))
         check.chain = findSpanningChain(packing, check.contacts.contacts);
     check.verdict = verdictOf(check, packing, reducedPressure, parameters);
