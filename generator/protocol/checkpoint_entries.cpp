@@ -224,12 +224,13 @@ std::vector<Entry> resumeEntries() {
             R, "growth_elapsed", [](auto& f) -> auto& { return f.clock.elapsed; }),
         field<double>(
             R, "growth_rate", [](auto& f) -> auto& { return f.clock.rate; }),
-        // Their rows are the dataset resume_state/pair_records (pairRecordRows); common/io reads
+        // Their rows are the dataset resume_state/pair_records (shapes/registry); common/io reads
         // this count to read it.
         derived(R, "pair_records",
                 [](const CheckpointFields& f) -> std::optional<ProvenanceValue> {
                     if (f.pairRecords.empty()) return std::nullopt;
-                    return ProvenanceValue(static_cast<std::int64_t>(f.pairRecords.size()));
+                    return ProvenanceValue(
+                        static_cast<std::int64_t>(f.pairRecords.size() / kPairRecordColumns));
                 }),
     };
 }
@@ -282,57 +283,6 @@ ProtocolParameters checkedParameters(ProtocolParameters parameters, const Packin
     return parameters;
 }
 
-/// A record's row: i, j, the normal from i to j, the witness points (i's frame, j's frame) and
-/// the bodies' accumulated angles at the record (NaN: no witness), as PairMemory::synchronised
-/// leaves them.
-constexpr std::size_t kPairRecordRow = 2 + 3 + 3 + 3 + 2;
-static_assert(kPairRecordRow == kPairRecordColumns);
-
-std::vector<double> pairRecordRows(const std::vector<PairRecord>& records) {
-    std::vector<double> rows;
-    rows.reserve(kPairRecordRow * records.size());
-    for (const PairRecord& r : records) {
-        const PairMemory& m = r.memory;
-        const WitnessRecord& w = m.witness;
-        rows.insert(rows.end(), {static_cast<double>(r.i), static_cast<double>(r.j)});
-        for (const Vector3d* v : {&m.normal, &w.pointI, &w.pointJ})
-            rows.insert(rows.end(), v->data(), v->data() + 3);
-        rows.insert(rows.end(), {w.turnedI, w.turnedJ});
-    }
-    return rows;
-}
-
-/// The records of pairRecordRows, refused (naming the row) unless i < j are particles and the
-/// vectors finite with a unit or zero normal.
-std::vector<PairRecord> checkedPairRecords(const Packing& packing, const std::string& source) {
-    const std::vector<double>& rows = packing.pairRecords;
-    std::vector<PairRecord> records(rows.size() / kPairRecordRow);
-    const auto n = static_cast<double>(packing.size());
-    for (std::size_t k = 0; k < records.size(); ++k) {
-        const double* row = rows.data() + kPairRecordRow * k;
-        const auto refuse = [&](const std::string& problem) {
-            throw std::invalid_argument("'" + source + "': checkpoint resume_state pair_records " +
-                                        "row " + std::to_string(k) + ": " + problem);
-        };
-        if (!(row[0] >= 0.0 && row[0] < row[1] && row[1] < n && std::floor(row[0]) == row[0] &&
-              std::floor(row[1]) == row[1]))
-            refuse("the particles must be indices i < j < n_particles");
-        if (!std::all_of(row + 2, row + 11, [](double x) { return std::isfinite(x); }) ||
-            std::any_of(row + 11, row + 13, [](double x) { return std::isinf(x); }))
-            refuse("normal and points must be finite, the angles finite or NaN");
-        PairMemory m;
-        m.normal = Vector3d(row[2], row[3], row[4]);
-        if (m.normal != Vector3d::Zero() && std::abs(m.normal.norm() - 1.0) > 1e-9)
-            refuse("the normal must be a unit vector or zero");
-        m.witness = {Vector3d(row[5], row[6], row[7]), Vector3d(row[8], row[9], row[10]), row[11],
-                     row[12]};
-        records[k] = {static_cast<int>(row[0]), static_cast<int>(row[1]), m};
-    }
-    if (!records.empty() && !rotating(packing.p))
-        throw std::invalid_argument("'" + source + "': checkpoint has pair_records for spheres");
-    return records;
-}
-
 } // namespace
 
 std::vector<CheckpointKey> checkpointKeys() {
@@ -346,7 +296,7 @@ void writeCheckpoint(const CheckpointFields& fields, Packing& packing) {
     for (const Entry& e : table())
         if (const std::optional<ProvenanceValue> value = e.write(fields))
             groupOf(packing, e.group)[e.key] = *value;
-    packing.pairRecords = pairRecordRows(fields.pairRecords);
+    packing.pairRecords = fields.pairRecords;
 }
 
 CheckpointFields readCheckpoint(const Packing& packing, const std::string& source) {
@@ -364,7 +314,7 @@ CheckpointFields readCheckpoint(const Packing& packing, const std::string& sourc
     }
     fields.parameters = checkedParameters(fields.parameters, packing, source);
     fields.clock = checkedClock(fields.clock, packing, source);
-    fields.pairRecords = checkedPairRecords(packing, source);
+    fields.pairRecords = packing.pairRecords;
     return fields;
 }
 

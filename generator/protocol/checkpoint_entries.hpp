@@ -5,7 +5,6 @@
 // writes this table and the resume constructor reads it; no other code names a key.
 
 #include "engine/growth_clock.hpp"
-#include "engine/pair_memories.hpp"
 #include "packing/packing.hpp"
 #include "protocol/jamming_protocol.hpp"
 
@@ -14,16 +13,14 @@
 
 namespace sbpack {
 
-/// One pair record of a superball run's synchronised engine (engine/pair_memories.hpp).
-using PairRecord = PairMemories<PairMemory>::Entry;
-
 /// What a checkpoint holds of a run besides its particles.
 struct CheckpointFields {
     ProtocolParameters parameters;
     ProtocolStatus status;
     GrowthClock clock;
-    /// The superball predictor's pair records (none for spheres), in ascending pair order.
-    std::vector<PairRecord> pairRecords;
+    /// The engine's pair records as a checkpoint's rows (shapes/registry: pairRecordRows; none
+    /// for spheres), read into the engine, and checked there, by restorePairRecords.
+    std::vector<double> pairRecords;
 };
 
 /// The checkpoint's format name, resume_state/format (a reader refuses any other).
@@ -49,8 +46,8 @@ void writeCheckpoint(const CheckpointFields& fields, Packing& packing);
 /// The run's fields from a checkpoint, everything validated before a protocol exists: every
 /// entry the table reads, of its type and present unless optional, the format, the phase and
 /// the counters; the parameters (the packing's size and p) as a fresh run's; the growth clock
-/// positive and agreeing with the packing's semi_axis; the pair records' particles in range and
-/// their vectors finite. Throws std::invalid_argument naming `source` and the entry.
+/// positive and agreeing with the packing's semi_axis (the pair records are the engine's to
+/// check: restorePairRecords). Throws std::invalid_argument naming `source` and the entry.
 CheckpointFields readCheckpoint(const Packing& packing, const std::string& source);
 
 } // namespace sbpack

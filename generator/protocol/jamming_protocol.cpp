@@ -14,7 +14,6 @@
 #include <cstdio>
 #include <ctime>
 #include <stdexcept>
-#include <type_traits>
 
 namespace sbpack {
 namespace {
@@ -36,45 +35,36 @@ bool positiveFinite(double x) {
     return std::isfinite(x) && x > 0.0;
 }
 
-/// The engine for exponent p: the exact sphere engine at p = 1, the superball one otherwise;
-/// `sizes` a mixture's (EventDrivenMd).
-template <class Engine>
-Engine makeEngine(double p, double box, std::vector<ParticleState> state, GrowthClock clock,
-                  std::vector<double> sizes) {
-    if (!rotating(p))
-        return EventDrivenMd<SphereShape>(SphereShape{}, box, std::move(state), clock,
-                                          std::move(sizes));
-    return EventDrivenMd<SuperballShape>(SuperballShape(p), box, std::move(state), clock,
-                                         std::move(sizes));
-}
-
-template <class Engine>
-Engine freshEngine(const ProtocolParameters& parameters, const PlacementWatch& placed) {
+AnyEngine freshEngine(const ProtocolParameters& parameters, const PlacementWatch& placed) {
     Random random(parameters.seed);
     const int n = parameters.particles;
     std::vector<double> sizes = parameters.relativeSizes();
     const double box = boxLengthFor(n, Superball(parameters.p, 0.5).volume() * meanCubedSize(sizes),
                                     parameters.phiInit);
-    const RandomPlacement placement = randomPlacement(n, parameters.p, box, random, placed, sizes);
-    const std::vector<Vector3d> velocities = maxwellVelocities(n, random);
-    std::vector<ParticleState> state(n);
-    for (int i = 0; i < n; ++i)
-        state[i] = {placement.positions[i], velocities[i], placement.orientations[i]};
-    if (rotating(parameters.p)) {
-        const std::vector<Vector3d> spins =
-            maxwellAngularVelocities(n, SuperballShape(parameters.p).inertiaPerMass(1.0), random);
-        for (int i = 0; i < n; ++i) // a mixture's particle of size s: inertia s^2 I
-            state[i].angularVelocity = sizes.empty() ? spins[i] : spins[i] / sizes[i];
-    }
-    return makeEngine<Engine>(parameters.p, box, std::move(state),
-                              GrowthClock{1.0, 0.0, parameters.fastGrowthRate()}, std::move(sizes));
+    const GrowthClock clock{1.0, 0.0, parameters.fastGrowthRate()};
+    return std::visit(
+        [&](const auto& shape) -> AnyEngine {
+            using Shape = std::decay_t<decltype(shape)>;
+            const RandomPlacement placement = randomPlacement(shape, n, box, random, placed, sizes);
+            const std::vector<Vector3d> velocities = maxwellVelocities(n, random);
+            std::vector<ParticleState> state(n);
+            for (int i = 0; i < n; ++i)
+                state[i] = {placement.positions[i], velocities[i], placement.orientations[i]};
+            if constexpr (Shape::kRotates) {
+                const std::vector<Vector3d> spins =
+                    maxwellAngularVelocities(n, shape.inertiaPerMass(1.0), random);
+                for (int i = 0; i < n; ++i) // a mixture's particle of size s: inertia s^2 I
+                    state[i].angularVelocity = sizes.empty() ? spins[i] : spins[i] / sizes[i];
+            }
+            return EventDrivenMd(shape, box, std::move(state), clock, std::move(sizes));
+        },
+        shapeFor(parameters.p));
 }
 
 /// The engine of a checkpoint's particles and pair records, refused without velocities or with
 /// overlaps.
-template <class Engine>
-Engine resumedEngine(const Packing& packing, const std::string& source,
-                     const CheckpointFields& fields) {
+AnyEngine resumedEngine(const Packing& packing, const std::string& source,
+                        const CheckpointFields& fields) {
     if (packing.velocities.size() != packing.size() ||
         (rotating(packing.p) && packing.angularVelocities.size() != packing.size()))
         throw std::invalid_argument("'" + source + "': checkpoint without velocities");
@@ -84,10 +74,9 @@ Engine resumedEngine(const Packing& packing, const std::string& source,
         state[i] = {packing.positions[i], packing.velocities[i], packing.orientations[i]};
         if (rotating(packing.p)) state[i].angularVelocity = packing.angularVelocities[i];
     }
-    Engine engine = makeEngine<Engine>(packing.p, packing.boxLength, std::move(state), fields.clock,
-                                       packing.relativeSizes());
-    if (auto* superballs = std::get_if<EventDrivenMd<SuperballShape>>(&engine))
-        superballs->restorePairRecords(fields.pairRecords);
+    AnyEngine engine = makeEngine(packing.p, packing.boxLength, std::move(state), fields.clock,
+                                  packing.relativeSizes());
+    restorePairRecords(engine, fields.pairRecords, source);
     return engine;
 }
 
@@ -98,10 +87,6 @@ bool dueAt(std::int64_t count, std::int64_t base) {
 }
 
 } // namespace
-
-bool rotating(double p) {
-    return p != 1.0;
-}
 
 double ProtocolParameters::fastGrowthRate() const {
     return gammaFast.value_or(paperFastRate(p));
@@ -181,8 +166,8 @@ void ProtocolParameters::validate() const {
 }
 
 JammingProtocol::JammingProtocol(const ProtocolParameters& parameters, const PlacementWatch& placed)
-    : parameters_((parameters.validate(), parameters)),
-      engine_(freshEngine<Engine>(parameters, placed)), forceWindows_(parameters.forceWindows) {
+    : parameters_((parameters.validate(), parameters)), engine_(freshEngine(parameters, placed)),
+      forceWindows_(parameters.forceWindows) {
     status_.packingFraction = packingFraction();
     adaptSkin();
 }
@@ -193,7 +178,7 @@ JammingProtocol::JammingProtocol(const Packing& packing, const std::string& sour
 JammingProtocol::JammingProtocol(const Packing& packing, const std::string& source,
                                  const CheckpointFields& fields)
     : parameters_(fields.parameters), status_(fields.status),
-      engine_(resumedEngine<Engine>(packing, source, fields)),
+      engine_(resumedEngine(packing, source, fields)),
       forceWindows_(fields.parameters.forceWindows) {
     status_.packingFraction = packing.packingFraction();
     adaptSkin(); // as the run that wrote the checkpoint did at the end of its window
@@ -388,9 +373,6 @@ Packing JammingProtocol::checkpoint() const {
     std::visit(
         [&](const auto& engine) {
             fields.clock = engine.clock();
-            if constexpr (std::is_same_v<std::decay_t<decltype(engine)>,
-                                         EventDrivenMd<SuperballShape>>)
-                fields.pairRecords = engine.pairRecords();
             packing.semiAxis = 0.5 * engine.diameter();
             for (const double size : engine.sizes())
                 packing.semiAxes.push_back(packing.semiAxis * size);
@@ -403,6 +385,7 @@ Packing JammingProtocol::checkpoint() const {
             }
         },
         engine_);
+    fields.pairRecords = pairRecordRows(engine_);
     // None measured before the first window ends (a second signal can stop the run there):
     // the packing then has none, as any packing without a pressure (docs/design.md §4).
     if (status_.reducedPressure > 0.0) packing.reducedPressure = status_.reducedPressure;

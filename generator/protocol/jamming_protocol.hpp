@@ -21,8 +21,7 @@
 #include "initial/random_start.hpp"
 #include "packing/packing.hpp"
 #include "protocol/force_windows.hpp"
-#include "shapes/sphere.hpp"
-#include "shapes/superball_shape.hpp"
+#include "shapes/registry.hpp"
 #include "stop/stop_request.hpp"
 
 #include <cstdint>
@@ -35,10 +34,6 @@
 namespace sbpack {
 
 struct CheckpointFields;
-
-/// Whether bodies of exponent p rotate: all but spheres, which run on the exact sphere shape (the
-/// one place the protocol tells the shapes apart; the engine does not).
-bool rotating(double p);
 
 struct ProtocolParameters {
     /// The range of N that sbgen --n and sbpack.generate accept.
@@ -228,11 +223,9 @@ class JammingProtocol {
     /// phi = N v1 / L^3 at the current diameter.
     double packingFraction() const;
 
-    using Engine = std::variant<EventDrivenMd<SphereShape>, EventDrivenMd<SuperballShape>>;
-
     ProtocolParameters parameters_;
     ProtocolStatus status_;
-    Engine engine_;
+    AnyEngine engine_;
     ContactImpulses impulses_; ///< the window's, while recorded
     ForceWindows forceWindows_;
     std::optional<Packing> windowStart_; ///< checkpoint() at the running window's start

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace sbpack {
 
@@ -149,6 +151,16 @@ struct PairMemory {
     /// What the pair's predictions right after its collision, at that very state, are given
     /// (engine/pair_memories.hpp keeps the last collision's).
     struct Resolved;
+
+    /// The columns this memory writes into a checkpoint's pair record after the pair's i and j
+    /// (dataset resume_state/pair_records, docs/design.md §4): the normal from i to j, the
+    /// witness points in i's and j's body frames and the bodies' angles at the record (NaN: no
+    /// witness), as synchronised() leaves it.
+    static constexpr std::size_t kCheckpointColumns = 3 + 3 + 3 + 2;
+    void appendColumns(std::vector<double>& row) const;
+    /// The memory of appendColumns' columns, or the problem that makes them none (the vectors
+    /// not finite, the angles neither finite nor NaN, the normal neither unit nor zero).
+    static std::optional<PairMemory> fromColumns(const double* columns, std::string& problem);
 };
 
 /// A pair the engine has just resolved at this very state: touching now is no contact (the
@@ -173,6 +185,7 @@ struct PairMemory::Resolved {
 /// What a shape whose exact predictor needs nothing from a pair's last prediction keeps of it
 /// (the sphere): nothing (engine/pair_memories.hpp stores no record for it).
 struct NoPairMemory {
+    static constexpr std::size_t kCheckpointColumns = 0; ///< no pair records in a checkpoint
     struct Resolved {
         Resolved seenFromOther() const { return {}; }
     };

@@ -4,7 +4,8 @@
 // is a shape whose bodies keep their orientation and whose exact predictor remembers nothing.
 //
 //   geometry:    circumscribedRatio() (over the semi-axis: the neighbour lists), inertiaPerMass(D)
-//                (isotropic, docs/design.md §1)
+//                (isotropic, docs/design.md §1), kRotates (whether bodies turn: spheres do not),
+//                overlapping(m) (the pair now: the random start's test)
 //   motion:      turned(q, omega, tau), the orientation after free flight; orient(m, ...), the
 //                pair's orientations and spins in its PairMotion
 //   prediction:  Memory, what the predictor keeps of a pair between predictions;
@@ -28,6 +29,8 @@ concept EngineShape = requires(S shape, const S& constShape, const PairMotion& m
                                const PairContact& contact, ParticleState& body,
                                const Quaterniond& q, const Vector3d& omega, double x) {
     { constShape.circumscribedRatio() } -> std::convertible_to<double>;
+    { S::kRotates } -> std::convertible_to<bool>;
+    { constShape.overlapping(m) } -> std::convertible_to<bool>;
     { constShape.inertiaPerMass(x) } -> std::convertible_to<double>;
     { constShape.turned(q, omega, x) } -> std::convertible_to<Quaterniond>;
     constShape.orient(out, body, x, body, x);

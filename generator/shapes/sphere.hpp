@@ -14,6 +14,8 @@ namespace sbpack {
 
 struct SphereShape {
     using Memory = NoPairMemory;
+    /// Spheres keep their orientation (the random start draws none).
+    static constexpr bool kRotates = false;
 
     /// Circumradius over semi-axis: sizes the neighbour lists.
     double circumscribedRatio() const { return 1.0; }
@@ -26,6 +28,11 @@ struct SphereShape {
     }
     void orient(PairMotion& /*m*/, const ParticleState& /*i*/, double /*tauI*/,
                 const ParticleState& /*j*/, double /*tauJ*/) const {}
+
+    /// Whether the pair's bodies overlap now: |d| < D (the random start's test).
+    bool overlapping(const PairMotion& m) const {
+        return m.displacement.squaredNorm() < m.diameter * m.diameter;
+    }
 
     /// The neighbours in list order (each prediction is exact and cheap).
     template <class MotionOf, class Consider>

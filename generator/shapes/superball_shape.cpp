@@ -107,6 +107,13 @@ std::optional<PlaneGap> SuperballShape::separatingPlane(const PairMotion& m,
     return cached;
 }
 
+bool SuperballShape::overlapping(const PairMotion& m) const {
+    const SuperballPair pair{Superball(p_, 0.5 * m.diameter * m.sizeI),
+                             m.orientationI.toRotationMatrix(), m.orientationJ.toRotationMatrix(),
+                             m.displacement, m.sizeJ / m.sizeI};
+    return !(scaleFactor(pair).scaleFactor > 1.0);
+}
+
 PairContact SuperballShape::contact(const PairMotion& m, PairMemory& memory,
                                     PairMemory::Resolved& resolved) {
     Vector3d& normal = memory.normal;

@@ -30,6 +30,7 @@ class SuperballPairGap;
 class SuperballShape {
   public:
     using Memory = PairMemory;
+    static constexpr bool kRotates = true;
 
     /// Throws std::invalid_argument unless 0.5 <= p < inf.
     explicit SuperballShape(double p);
@@ -41,6 +42,10 @@ class SuperballShape {
     double inscribedRatio() const { return cIn_; }
     /// I / m of a body of diameter D (isotropic inertia, docs/design.md §1).
     double inertiaPerMass(double diameter) const;
+
+    /// Whether the pair's bodies overlap now: unless their scale factor mu exceeds 1
+    /// (docs/design.md §2; the random start's test).
+    bool overlapping(const PairMotion& m) const;
 
     /// Free flight of the orientation (constant lab-frame omega, isotropic inertia).
     Quaterniond turned(const Quaterniond& q, const Vector3d& omega, double tau) const {

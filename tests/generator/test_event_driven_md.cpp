@@ -19,7 +19,7 @@ using Engine = EventDrivenMd<SphereShape>;
 Engine randomFluid(int n, double phi, double gamma, std::uint64_t seed) {
     Random random(seed);
     const double box = boxLengthFor(n, Superball(1.0, 0.5).volume(), phi);
-    const auto placement = randomPlacement(n, 1.0, box, random);
+    const auto placement = randomPlacement(SphereShape{}, n, box, random);
     const auto velocities = maxwellVelocities(n, random);
     std::vector<ParticleState> state(n);
     for (int i = 0; i < n; ++i)

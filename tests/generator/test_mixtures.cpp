@@ -104,7 +104,7 @@ TEST(Mixtures, TheRandomStartPlacesEachPairAtItsOwnDistance) {
     for (const double s : sizes)
         volume += std::numbers::pi / 6.0 * s * s * s;
     const double box = std::cbrt(volume / 0.3);
-    const RandomPlacement placement = randomPlacement(n, 1.0, box, random, {}, sizes);
+    const RandomPlacement placement = randomPlacement(SphereShape{}, n, box, random, {}, sizes);
     Packing packing;
     packing.boxLength = box;
     packing.positions = placement.positions;

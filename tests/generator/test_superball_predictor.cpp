@@ -759,7 +759,7 @@ TEST(SuperballEngine, NoOverlapAfterDenseGrowingRuns) {
         Random random(7 + static_cast<std::uint64_t>(100 * p));
         SuperballShape shape{p};
         const double box = boxLengthFor(n, Superball(p, 0.5).volume(), 0.3);
-        const RandomPlacement placement = randomPlacement(n, p, box, random);
+        const RandomPlacement placement = randomPlacement(shape, n, box, random);
         const auto velocities = maxwellVelocities(n, random);
         const auto spins = maxwellAngularVelocities(n, shape.inertiaPerMass(1.0), random);
         std::vector<ParticleState> state(n);

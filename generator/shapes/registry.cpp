@@ -1,0 +1,83 @@
+#include "shapes/registry.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace sbpack {
+namespace {
+
+template <class Shape> std::vector<double> rowsOf(const EventDrivenMd<Shape>& engine) {
+    using Memory = typename Shape::Memory;
+    std::vector<double> rows;
+    if constexpr (Memory::kCheckpointColumns > 0) {
+        static_assert(2 + Memory::kCheckpointColumns == kPairRecordColumns);
+        for (const auto& record : engine.pairRecords()) {
+            rows.insert(rows.end(), {static_cast<double>(record.i), static_cast<double>(record.j)});
+            record.memory.appendColumns(rows);
+        }
+    }
+    return rows;
+}
+
+template <class Shape>
+void restoreRows(EventDrivenMd<Shape>& engine, const std::vector<double>& rows,
+                 const std::string& source) {
+    using Memory = typename Shape::Memory;
+    if constexpr (Memory::kCheckpointColumns == 0) {
+        if (!rows.empty())
+            throw std::invalid_argument("'" + source +
+                                        "': checkpoint has pair_records for spheres");
+    } else {
+        std::vector<typename EventDrivenMd<Shape>::PairRecord> records(rows.size() /
+                                                                       kPairRecordColumns);
+        const auto n = static_cast<double>(engine.particles().size());
+        for (std::size_t k = 0; k < records.size(); ++k) {
+            const double* row = rows.data() + kPairRecordColumns * k;
+            const auto refuse = [&](const std::string& problem) {
+                throw std::invalid_argument("'" + source + "': checkpoint resume_state " +
+                                            "pair_records row " + std::to_string(k) + ": " +
+                                            problem);
+            };
+            if (!(row[0] >= 0.0 && row[0] < row[1] && row[1] < n && std::floor(row[0]) == row[0] &&
+                  std::floor(row[1]) == row[1]))
+                refuse("the particles must be indices i < j < n_particles");
+            std::string problem;
+            const std::optional<Memory> memory = Memory::fromColumns(row + 2, problem);
+            if (!memory) refuse(problem);
+            records[k] = {static_cast<int>(row[0]), static_cast<int>(row[1]), *memory};
+        }
+        engine.restorePairRecords(records);
+    }
+}
+
+} // namespace
+
+bool rotating(double p) {
+    return p != 1.0;
+}
+
+AnyShape shapeFor(double p) {
+    if (!rotating(p)) return SphereShape{};
+    return SuperballShape(p);
+}
+
+AnyEngine makeEngine(double p, double boxLength, std::vector<ParticleState> state,
+                     GrowthClock clock, std::vector<double> sizes) {
+    return std::visit(
+        [&](const auto& shape) -> AnyEngine {
+            return EventDrivenMd(shape, boxLength, std::move(state), clock, std::move(sizes));
+        },
+        shapeFor(p));
+}
+
+std::vector<double> pairRecordRows(const AnyEngine& engine) {
+    return std::visit([](const auto& e) { return rowsOf(e); }, engine);
+}
+
+void restorePairRecords(AnyEngine& engine, const std::vector<double>& rows,
+                        const std::string& source) {
+    std::visit([&](auto& e) { restoreRows(e, rows, source); }, engine);
+}
+
+} // namespace sbpack
