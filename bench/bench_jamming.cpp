@@ -159,7 +159,7 @@ int main(int argc, char** argv) {
                        checkJam(packing, packing.reducedPressure.value_or(1e12)).tolerance};
     const std::string categories = argc > 3 ? argv[3] : "lcs";
     const JammingTest test({});
-    std::printf("%s: N = %zu, p = %g\n", argv[1], packing.size(), packing.p);
+    std::printf("%s: N = %zu, p = %g\n", argv[1], packing.size(), packing.superball().p());
     for (const double tolerance : tolerances) {
         const RigidityNetwork network =
             backboneNetwork(packing, ContactNetwork({tolerance, 4}).compute(packing));

@@ -63,7 +63,7 @@ double cpuSeconds() {
 /// Gauss-Seidel sweeps push every overlapping pair apart until none overlaps.
 Packing disorderedSpheres(int count, double phi, std::uint64_t seed) {
     Packing packing;
-    packing.p = 1.0;
+    packing.shapeSpec.p = 1.0;
     packing.semiAxis = 0.5;
     packing.boxLength = std::cbrt(count * std::numbers::pi / 6.0 / phi);
     const double length = packing.boxLength;
@@ -109,7 +109,7 @@ Packing disorderedSpheres(int count, double phi, std::uint64_t seed) {
 /// The same centres carrying superballs of exponent p inscribed in the spheres (circumradius
 /// 0.5, so still no overlap) with uniformly random orientations: a superball test case.
 Packing inscribedSuperballs(Packing packing, double p, std::uint64_t seed) {
-    packing.p = p;
+    packing.shapeSpec.p = p;
     packing.semiAxis = 0.5 / sbpack::Superball(p, 1.0).circumradius();
     std::mt19937_64 generator(seed);
     std::normal_distribution<double> gauss;
@@ -125,7 +125,7 @@ Packing inscribedSuperballs(Packing packing, double p, std::uint64_t seed) {
 std::vector<std::uint8_t> solidMask(const Packing& packing, int m) {
     std::vector<std::uint8_t> mask(static_cast<std::size_t>(m) * m * m, 0);
     const double a = packing.boxLength / m;
-    const sbpack::Superball shape = packing.shape();
+    const sbpack::Superball shape = packing.superball();
     const double r = shape.circumradius();
     for (std::size_t n = 0; n < packing.size(); ++n) {
         const Vector3d& c = packing.positions[n];
@@ -278,10 +278,10 @@ int errors(const Options& o, const Packing& packing) {
             sbpack::largestGap(voxel, exact), relative(shifted.mean, exact.mean),
             relative(shifted.secondMoment, exact.secondMoment), sbpack::largestGap(shifted, exact));
         if (m == list.back()) {
-            const auto t =
-                sbpack::Transport({}).compute(voxel, packing.p, packing.packingFraction());
-            const auto te =
-                sbpack::Transport({}).compute(exact, packing.p, packing.packingFraction());
+            const auto t = sbpack::Transport({}).compute(voxel, packing.shapeSpec.p,
+                                                         packing.packingFraction());
+            const auto te = sbpack::Transport({}).compute(exact, packing.shapeSpec.p,
+                                                          packing.packingFraction());
             std::printf("transport at M = %d (exact in brackets): zeta2 = %.5f, F = %.4f, k/w^2 = "
                         "%.3e (%.3e), tau D/w^2 = %.3e (%.3e), T1 D/w^2 = %.3e (%.3e)\n",
                         m, t.zeta2, t.formationFactor, t.permeabilityOverWidth2(),

@@ -277,7 +277,7 @@ PackingJamming testJammingCategories(const Packing& packing, const JammingSettin
             fmt::format("jamming: --jamming-unjam-distance is Donev et al.'s finite-gap test of "
                         "sphere packings; at p = {:g} it would linearise rotations of up to "
                         "radians, and unjams every superball packing (docs/jamming.md §4.1)",
-                        packing.p));
+                        packing.superball().p()));
     if (settings.relax && packing.isMixture())
         throw std::invalid_argument("jamming: --jamming-relax reads one size; a mixture's "
                                     "nearest jammed packing is not computed yet "

@@ -17,7 +17,7 @@ schema::Record fileRecord(const Packing& packing, const std::filesystem::path& i
                           const FileContext& context) {
     schema::Record r(schema::fileGroup());
     r.set("input", input.string())
-        .set("p", packing.p)
+        .set("p", packing.superball().p())
         .set("n_particles", packing.size())
         .set("box_length", packing.boxLength)
         .set("semi_axis", packing.semiAxis)

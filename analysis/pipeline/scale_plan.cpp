@@ -145,7 +145,7 @@ std::string planText(const RunSettings& settings, const std::vector<Packing>& pa
                           : fmt::format(", at most {} per rank", (files + ranks - 1) / ranks));
     for (std::size_t k = 0; k < packings.size(); ++k)
         text += fmt::format("'{}' (N = {}, p = {}):\n", settings.inputs[mine[k]].string(),
-                            packings[k].size(), packings[k].p) +
+                            packings[k].size(), packings[k].superball().p()) +
                 filePlan(settings, packings[k], ranks);
     return text;
 }

@@ -175,8 +175,8 @@ const std::vector<Vector3d>& checkedPositions(const Packing& packing) {
 } // namespace
 
 ExactPoreSizes::ExactPoreSizes(const Packing& packing)
-    : shape_(packing.shape()), boxLength_(packing.boxLength), circumradius_(shape_.circumradius()),
-      inradius_(shape_.inradius()),
+    : shape_(packing.superball()), boxLength_(packing.boxLength),
+      circumradius_(shape_.circumradius()), inradius_(shape_.inradius()),
       cells_(checkedPositions(packing), packing.boxLength, shape_.circumradius()) {
     positions_.reserve(packing.size());
     rotations_.reserve(packing.size());

@@ -128,7 +128,7 @@ WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
     if (!packing.shape().isSphere() || packing.isMixture())
         throw std::invalid_argument("exact spectral density: the particles are not identical "
                                     "spheres (p = " +
-                                    std::to_string(packing.p) + ")");
+                                    std::to_string(packing.superball().p()) + ")");
     if (maxN2 < 1) throw std::invalid_argument("exact spectral density: no wave vector");
     const DensityModes modes =
         collectiveDensity(packing.positions, packing.boxLength, maxN2, progress);
@@ -154,7 +154,7 @@ WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
 WaveVectorSpectrum superballWaveVectors(const Packing& packing, std::int64_t maxN2,
                                         const Progress& progress) {
     if (maxN2 < 1) throw std::invalid_argument("exact spectral density: no wave vector");
-    const SuperballFormFactor form(packing.shape());
+    const SuperballFormFactor form(packing.superball());
     WaveVectorSpectrum out{packing.boxLength, maxN2, halfSpaceWaveVectors(maxN2), {}};
     const ParticleTables tables = particleTables(packing, isqrt(maxN2));
     constexpr int T = SuperballFormFactor::kTile;
@@ -201,7 +201,7 @@ ExactSpectralDensityResult ExactSpectralDensity::compute(const Packing& packing,
     ExactSpectralDensityResult result;
     result.parameters = parameters_;
     result.boxLength = packing.boxLength;
-    const Superball shape = packing.shape();
+    const Superball shape = packing.superball();
     result.meanWidth = shape.meanWidth();
     result.phi = packing.packingFraction();
     result.maxN2 = maxN2For(parameters_.maxQw, packing.boxLength, result.meanWidth);
@@ -217,8 +217,8 @@ ExactSpectralDensityResult ExactSpectralDensity::compute(const Packing& packing,
     if (series && reach > SuperballFormFactor::kSeriesLimit)
         throw std::invalid_argument(
             "exact spectral density: qmax = " + fmt::format("{:g}", parameters_.maxQw) +
-            " is beyond the form factor series' range for p = " + std::to_string(packing.p) +
-            " (Q w <= " +
+            " is beyond the form factor series' range for p = " +
+            std::to_string(packing.superball().p()) + " (Q w <= " +
             std::to_string(SuperballFormFactor::kSeriesLimit * result.meanWidth /
                            shape.circumradius()) +
             ")");

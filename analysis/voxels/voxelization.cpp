@@ -349,7 +349,7 @@ namespace {
 
 /// The narrowest width of the packing's particles: twice the smallest particle's inradius.
 double narrowestWidth(const Packing& packing) {
-    return 2.0 * Superball(packing.p, packing.smallestSemiAxis()).inradius();
+    return 2.0 * Superball(packing.superball().p(), packing.smallestSemiAxis()).inradius();
 }
 
 } // namespace
@@ -362,7 +362,7 @@ int Voxelizer::minimumVoxels(const Packing& packing) {
 }
 
 void Voxelizer::checkResolution(const Packing& packing, int voxels) {
-    const Superball shape = packing.shape();
+    const Superball shape = packing.superball();
     if (2.0 * shape.circumradius() > packing.boxLength) {
         std::ostringstream message; // %g: lengths in metres are not 0.000000
         message << std::setprecision(6) << "voxel grid: the particles (circumdiameter "
@@ -538,7 +538,7 @@ BlockGeometry blockGeometry(const Packing& packing, const VoxelizationParameters
     const int blocks = (m + kBlock - 1) / kBlock;
     const int x0 = parameters.slabBegin, x1 = parameters.slabEnd;
     const int firstBlockX = x0 / kBlock;
-    const Superball shape = packing.shape();
+    const Superball shape = packing.superball();
     return BlockGeometry{m,
                          packing.boxLength / m,
                          Voxelizer::reach(shape),
@@ -569,11 +569,11 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
     checkResolution(packing, parameters_.voxels);
     const BlockGeometry geometry = blockGeometry(packing, parameters_);
     BlockMasks masks = voxelizeBlocks(blockCandidates(packing, geometry), bodyRotations(packing),
-                                      ContainmentTest(packing.shape()), geometry, progress);
+                                      ContainmentTest(packing.superball()), geometry, progress);
     auto grid = std::make_unique<Voxelization::Grid>();
     std::int64_t solid = 0;
     grid->grid = assembleTree(masks, geometry, solid);
-    return Voxelization(std::move(grid), parameters_, packing.boxLength, packing.p,
+    return Voxelization(std::move(grid), parameters_, packing.boxLength, packing.superball().p(),
                         packing.packingFraction(), solid, clock.seconds());
 }
 
@@ -586,7 +586,7 @@ std::vector<std::uint32_t> Voxelizer::particleLabels(const Packing& packing,
     const BlockGeometry g = blockGeometry(packing, parameters_);
     const BlockCandidates in = blockCandidates(packing, g);
     const std::vector<Eigen::Matrix3d> toBody = bodyRotations(packing);
-    const ContainmentTest inside(packing.shape());
+    const ContainmentTest inside(packing.superball());
     std::vector<std::uint32_t> labels(static_cast<std::size_t>(m * m * m), 0);
     parallelFor(
         0, g.blockCount(), kBlocksPerTask,
@@ -629,8 +629,8 @@ Voxelization Voxelizer::fromRowBits(std::span<const std::uint32_t> rows, const P
     std::int64_t solid = 0;
     grid->grid = assembleTree(masks, geometry, solid);
     return Voxelization(std::move(grid), VoxelizationParameters{voxels, 0, voxels},
-                        packing.boxLength, packing.p, packing.packingFraction(), solid,
-                        runtimeSeconds);
+                        packing.boxLength, packing.superball().p(), packing.packingFraction(),
+                        solid, runtimeSeconds);
 }
 
 } // namespace sbpack

@@ -76,7 +76,7 @@ SuperballPair pairOf(const Packing& packing, const Superball& shape, int i, int 
                      const std::vector<Matrix3d>& rotations, const Vector3d& d) {
     if (!packing.isMixture()) return {shape, rotations[i], rotations[j], d};
     const double ri = packing.semiAxisOf(i), rj = packing.semiAxisOf(j);
-    return {Superball(packing.p, ri), rotations[i], rotations[j], d, rj / ri};
+    return {Superball(packing.superball().p(), ri), rotations[i], rotations[j], d, rj / ri};
 }
 
 /// Throws unless s of pair (i, j) at this centre distance lies within the sphere bounds.
@@ -135,7 +135,7 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
         throw std::invalid_argument("contact network: packing has " + std::to_string(size) +
                                     " positions but " +
                                     std::to_string(packing.orientations.size()) + " orientations");
-    const Superball shape = packing.shape();
+    const Superball shape = packing.superball();
     const double diameter = shape.diameter();
     const double contactGap = parameters_.tolerance * diameter;
     const SphereBounds bounds(shape);

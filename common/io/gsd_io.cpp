@@ -263,7 +263,7 @@ void writeTypes(const Packing& packing, FrameWriter& w) {
     const auto n = static_cast<std::uint32_t>(packing.size());
     if (!packing.isMixture()) {
         w.strings("particles/types", {"superball"});
-        w.strings("particles/type_shapes", {shapeJson(packing.p, packing.semiAxis)});
+        w.strings("particles/type_shapes", {shapeJson(packing.superball().p(), packing.semiAxis)});
         w.chunk("particles/typeid", GSD_TYPE_UINT32, n, 1, std::vector<std::uint32_t>(n, 0));
         return;
     }
@@ -273,7 +273,7 @@ void writeTypes(const Packing& packing, FrameWriter& w) {
     std::vector<std::string> names, shapes;
     for (std::size_t t = 0; t < sizes.size(); ++t) {
         names.push_back("superball_" + std::to_string(t));
-        shapes.push_back(shapeJson(packing.p, sizes[t]));
+        shapes.push_back(shapeJson(packing.superball().p(), sizes[t]));
     }
     std::vector<std::uint32_t> typeId;
     for (const double r : packing.semiAxes)
@@ -308,7 +308,7 @@ void writeFrame(const Packing& packing, FrameWriter& w) {
     w.chunk("particles/orientation", GSD_TYPE_FLOAT, n, 4, q);
     w.chunk(std::string(kParticleLog) + "position", GSD_TYPE_DOUBLE, n, 3, exactPositions);
     w.chunk(std::string(kParticleLog) + "orientation", GSD_TYPE_DOUBLE, n, 4, exactOrientations);
-    w.scalar(std::string(kLog) + "p", packing.p);
+    w.scalar(std::string(kLog) + "p", packing.superball().p());
     w.scalar(std::string(kLog) + "semi_axis", packing.semiAxis);
     w.scalar(std::string(kLog) + "box_length", packing.boxLength);
     if (packing.reducedPressure)
@@ -347,7 +347,9 @@ Packing readGsd(const fs::path& file) {
     checkInputFile(file);
     FrameReader frame(file);
     Packing packing;
-    std::tie(packing.p, packing.semiAxis) = shapeOf(frame, file);
+    const auto [p, semiAxis] = shapeOf(frame, file);
+    packing.shapeSpec = ShapeSpec::superball(p);
+    packing.semiAxis = semiAxis;
     packing.boxLength = boxLengthOf(frame, file);
     const auto n = frame.counts("particles/N", 1);
     if (!n || n->front() == 0)

@@ -124,7 +124,8 @@ Particle dumpParticle(const std::vector<std::string>& tokens, const DumpColumns&
 void writeLammpsDump(const Packing& packing, const fs::path& file) {
     validatePacking(packing, file.string());
     const std::string length = full(packing.boxLength);
-    const std::string roundness = full(1.0 / packing.p); // OVITO's: (1/p, 1/p) is the superball
+    const std::string roundness =
+        full(1.0 / packing.superball().p()); // OVITO's: (1/p, 1/p) is the superball
     writeTextFile(file, [&](std::ostream& out) {
         out << "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n"
             << packing.size() << "\nITEM: BOX BOUNDS pp pp pp\n";
@@ -184,7 +185,8 @@ Packing readLammpsDump(const fs::path& file) {
     if (particles.empty()) reader.fail("no ITEM: ATOMS frame");
     Packing packing;
     packing.boxLength = cubicEdge(bounds, reader);
-    packing.p = roundness.has() ? singlePrecisionRepaired(1.0 / roundness.value(reader)) : 1.0;
+    packing.shapeSpec = ShapeSpec::superball(
+        roundness.has() ? singlePrecisionRepaired(1.0 / roundness.value(reader)) : 1.0);
     sortedInto(std::move(particles), packing, reader);
     return packing;
 }
@@ -256,12 +258,14 @@ void readDataLine(const std::vector<std::string>& t, bool atom, Particle& partic
 
 void writeLammpsData(const Packing& packing, const fs::path& file) {
     validatePacking(packing, file.string());
-    const bool blocky = packing.p != 1.0;
+    const bool blocky = packing.superball().p() != 1.0;
     const std::string length = full(packing.boxLength);
-    const std::string blockiness = blocky ? " " + full(2.0 * packing.p) : std::string();
+    const std::string blockiness =
+        blocky ? " " + full(2.0 * packing.superball().p()) : std::string();
     writeTextFile(file, [&](std::ostream& out) {
-        out << "LAMMPS data file from sbpack: superballs p = " << full(packing.p) << ", semi-axis "
-            << full(packing.semiAxis) << (packing.isMixture() ? " (the largest of a mixture)" : "")
+        out << "LAMMPS data file from sbpack: superballs p = " << full(packing.superball().p())
+            << ", semi-axis " << full(packing.semiAxis)
+            << (packing.isMixture() ? " (the largest of a mixture)" : "")
             << (blocky ? " (atom_style ellipsoid superellipsoid, LAMMPS 30Mar2026 and later)\n\n"
                        : " (atom_style ellipsoid)\n\n")
             << packing.size() << " atoms\n1 atom types\n"
@@ -306,7 +310,7 @@ Packing readLammpsData(const fs::path& file) {
         reader.fail("the Atoms and Ellipsoids sections name different atoms");
     Packing packing;
     packing.boxLength = cubicEdge(header.bounds, reader);
-    packing.p = p.has() ? p.value(reader) : 1.0;
+    packing.shapeSpec = ShapeSpec::superball(p.has() ? p.value(reader) : 1.0);
     std::vector<Particle> ordered;
     for (auto& [id, particle] : particles) {
         particle.id = id;

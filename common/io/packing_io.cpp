@@ -214,7 +214,7 @@ std::string fileContents(const Packing& packing, const std::string& name) {
     const hid_t root = file.get();
     writeStringAttribute(root, kFormat, kPackingFormat);
     writeInt64Attribute(root, kFormatVersion, kPackingFormatVersion);
-    writeDoubleAttribute(root, kP, packing.p);
+    writeDoubleAttribute(root, kP, packing.superball().p());
     writeDoubleAttribute(root, kBoxLength, packing.boxLength);
     writeDoubleAttribute(root, kSemiAxis, packing.semiAxis);
     writeInt64Attribute(root, kParticles, static_cast<std::int64_t>(packing.size()));
@@ -260,7 +260,7 @@ Packing readContents(hid_t root, const std::string& file) {
                                std::to_string(kPackingFormatVersion) + ")");
 
     Packing packing;
-    packing.p = readDoubleAttribute(root, kP);
+    packing.shapeSpec = ShapeSpec::superball(readDoubleAttribute(root, kP));
     packing.boxLength = readDoubleAttribute(root, kBoxLength);
     packing.semiAxis = readDoubleAttribute(root, kSemiAxis);
     const std::int64_t n = readInt64Attribute(root, kParticles);

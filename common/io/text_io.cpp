@@ -31,7 +31,7 @@ constexpr const char* kTextMagic = "# sbpack text packing v1";
 void writeTextPacking(const Packing& packing, const fs::path& file) {
     validatePacking(packing, file.string());
     writeTextFile(file, [&](std::ostream& out) {
-        out << kTextMagic << "\n# p " << full(packing.p) << "\n# semi_axis "
+        out << kTextMagic << "\n# p " << full(packing.superball().p()) << "\n# semi_axis "
             << full(packing.semiAxis) << "\n# box_length " << full(packing.boxLength)
             << "\n# n_particles " << packing.size() << '\n';
         if (packing.reducedPressure)
@@ -130,7 +130,7 @@ Packing readTextPacking(const fs::path& file) {
                                std::to_string(header.count()) + " but the file has " +
                                std::to_string(packing.positions.size()) +
                                " particle lines (wrong particle count)");
-    packing.p = header.value("p");
+    packing.shapeSpec = ShapeSpec::superball(header.value("p"));
     packing.semiAxis = header.value("semi_axis");
     packing.boxLength = header.value("box_length");
     header.setOptional(packing);
@@ -148,13 +148,13 @@ void writeExtendedXyz(const Packing& packing, const fs::path& file) {
     // "Superquadric Roundness" and (a, b, c) the "Aspherical Shape" semi-axes; our superball
     // |x|^2p + |y|^2p + |z|^2p = R^2p is phi = theta = 1/p, a = b = c = R. OVITO's
     // "Orientation" is the quaternion (x, y, z, w) rotating the shape into the lab frame.
-    const std::string roundness = full(1.0 / packing.p);
+    const std::string roundness = full(1.0 / packing.superball().p());
     writeTextFile(file, [&](std::ostream& out) {
         out << packing.size() << "\nLattice=\"" << length << " 0 0 0 " << length << " 0 0 0 "
             << length << "\" Origin=\"0 0 0\" pbc=\"T T T\" "
             << "Properties=species:S:1:pos:R:3:orientation:R:4:aspherical_shape:R:3:"
-            << "superquadric_roundness:R:2 p=" << full(packing.p) << " semi_axis=" << semiAxis
-            << "\n";
+            << "superquadric_roundness:R:2 p=" << full(packing.superball().p())
+            << " semi_axis=" << semiAxis << "\n";
         for (std::size_t i = 0; i < packing.size(); ++i) {
             const Vector3d r = wrapIntoBox(packing.positions[i], packing.boxLength);
             const Quaterniond q = packing.orientations[i].normalized();
@@ -304,9 +304,10 @@ Packing readExtendedXyz(const fs::path& file) {
         reader.fail("the header says " + std::to_string(count) + " particles but the file has " +
                     std::to_string(packing.positions.size()));
     // The header's p as written; only a p from the roundness column is inverted and repaired.
-    packing.p = headerP ? *headerP : singlePrecisionRepaired(1.0 / roundness.value(reader));
+    packing.shapeSpec = ShapeSpec::superball(
+        headerP ? *headerP : singlePrecisionRepaired(1.0 / roundness.value(reader)));
     readSemiAxes(semiAxes, headerSemiAxis, packing, reader);
-    if (!column("orientation") && packing.p != 1.0)
+    if (!column("orientation") && packing.shapeSpec.p != 1.0)
         reader.failAt(2, "no orientation column: superballs (p != 1) need their orientations");
     validatePacking(packing, reader.name());
     canonicalizePacking(packing);

@@ -71,7 +71,7 @@ Packing referencePacking(const State& state) {
 /// of the pairs within `range` in the cell.
 ContactResult referencePairs(const State& state, double range, int rattlerThreshold) {
     const Matrix3d cellInverse = state.cell.inverse();
-    const Superball shape = state.packing.shape();
+    const Superball shape = state.packing.superball();
     const double distortion = (cellInverse - Matrix3d::Identity()).norm() *
                               (2.0 * shape.circumradius() / shape.diameter() + range);
     return ContactNetwork(
@@ -98,7 +98,7 @@ struct EnergyTerms {
 class OverlapEnergy {
   public:
     OverlapEnergy(const Packing& packing, double shell, double margin, bool deformBox)
-        : shape_(packing.shape()), shell_(shell * packing.shape().diameter()),
+        : shape_(packing.superball()), shell_(shell * packing.shape().diameter()),
           margin_(margin * packing.shape().diameter()), boxLength_(packing.boxLength),
           rotations_(!shape_.isSphere()), deformBox_(deformBox),
           particles_(static_cast<int>(packing.size())) {}
@@ -362,7 +362,7 @@ ContactResult relaxedContacts(const SoftMinimum& minimum, double tolerance, int 
     for (const auto& [i, j] : candidates.contacts) {
         const Vector3d d = pairImage(state, cellInverse, i, j).separation;
         const SignedDistanceResult pair =
-            signedDistance({packing.shape(), packing.orientations[i].toRotationMatrix(),
+            signedDistance({packing.superball(), packing.orientations[i].toRotationMatrix(),
                             packing.orientations[j].toRotationMatrix(), d});
         if (pair.signedDistance >= tolerance * diameter) continue;
         result.contacts.emplace_back(i, j);

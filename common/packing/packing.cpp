@@ -34,7 +34,7 @@ double Packing::packingFraction() const {
 
 Packing inLengthUnit(const Packing& packing, double unit) {
     Packing reduced;
-    reduced.p = packing.p;
+    reduced.shapeSpec = packing.shapeSpec;
     reduced.semiAxis = packing.semiAxis / unit;
     reduced.semiAxes.reserve(packing.semiAxes.size());
     for (const double r : packing.semiAxes)

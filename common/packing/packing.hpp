@@ -1,7 +1,7 @@
 #pragma once
 // The packing model shared by sbgen and sbanalyze (docs/design.md §4).
 
-#include "geometry/superball.hpp"
+#include "geometry/particle_shape.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -45,10 +45,11 @@ struct ContactForces {
     double reducedPressure = 0.0;
 };
 
-/// Superballs of one exponent in a cubic periodic box of edge L: identical, or a mixture of
-/// sizes (docs/mixtures.md).
+/// Particles of one shape in a cubic periodic box of edge L: identical, or a mixture of sizes
+/// (docs/mixtures.md).
 struct Packing {
-    double p = 1.0;
+    /// The particles' shape family and parameters (superballs of exponent p).
+    ShapeSpec shapeSpec;
     /// The semi-axis of every particle; of a mixture, the largest of semiAxes (what lengths that
     /// must hold for every particle, such as neighbour cut-offs, are sized by).
     double semiAxis = 0.5;
@@ -76,7 +77,9 @@ struct Packing {
 
     std::size_t size() const { return positions.size(); }
     /// The shape of every particle; of a mixture, the largest.
-    Superball shape() const { return Superball(p, semiAxis); }
+    ParticleShape shape() const { return {shapeSpec, semiAxis}; }
+    /// shape()'s superball, for code that holds for superballs only.
+    Superball superball() const { return shape().superball(); }
     bool isMixture() const { return !semiAxes.empty(); }
     /// Particle i's semi-axis.
     double semiAxisOf(std::size_t i) const { return semiAxes.empty() ? semiAxis : semiAxes[i]; }

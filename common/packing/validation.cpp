@@ -65,8 +65,9 @@ namespace {
 /// p, the box, the semi-axis and the pressure: each finite and in range, the particle narrower
 /// than the box.
 void checkScalars(const Packing& packing, const std::string& source) {
-    if (!(packing.p >= 0.5 && std::isfinite(packing.p)))
-        reject(source, "p = " + formatDouble(packing.p) + " (must be finite and >= 0.5)");
+    const double p = packing.shapeSpec.p; // before any ParticleShape, which would throw
+    if (!(p >= 0.5 && std::isfinite(p)))
+        reject(source, "p = " + formatDouble(p) + " (must be finite and >= 0.5)");
     if (!(packing.boxLength > 0.0 && std::isfinite(packing.boxLength)))
         reject(source,
                "box_length = " + formatDouble(packing.boxLength) + " (must be finite and > 0)");

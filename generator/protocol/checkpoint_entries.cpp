@@ -274,7 +274,7 @@ GrowthClock checkedClock(const GrowthClock& clock, const Packing& packing,
 ProtocolParameters checkedParameters(ProtocolParameters parameters, const Packing& packing,
                                      const std::string& source) {
     parameters.particles = static_cast<int>(packing.size());
-    parameters.p = packing.p;
+    parameters.p = packing.superball().p();
     try {
         parameters.validate();
     } catch (const ProtocolParameterError& e) {

@@ -66,16 +66,17 @@ AnyEngine freshEngine(const ProtocolParameters& parameters, const PlacementWatch
 AnyEngine resumedEngine(const Packing& packing, const std::string& source,
                         const CheckpointFields& fields) {
     if (packing.velocities.size() != packing.size() ||
-        (rotating(packing.p) && packing.angularVelocities.size() != packing.size()))
+        (rotating(packing.superball().p()) && packing.angularVelocities.size() != packing.size()))
         throw std::invalid_argument("'" + source + "': checkpoint without velocities");
     refuseOverlaps(packing, source);
     std::vector<ParticleState> state(packing.size());
     for (std::size_t i = 0; i < packing.size(); ++i) {
         state[i] = {packing.positions[i], packing.velocities[i], packing.orientations[i]};
-        if (rotating(packing.p)) state[i].angularVelocity = packing.angularVelocities[i];
+        if (rotating(packing.superball().p()))
+            state[i].angularVelocity = packing.angularVelocities[i];
     }
-    AnyEngine engine = makeEngine(packing.p, packing.boxLength, std::move(state), fields.clock,
-                                  packing.relativeSizes());
+    AnyEngine engine = makeEngine(packing.superball().p(), packing.boxLength, std::move(state),
+                                  fields.clock, packing.relativeSizes());
     restorePairRecords(engine, fields.pairRecords, source);
     return engine;
 }
@@ -368,7 +369,7 @@ std::optional<Packing> JammingProtocol::resumeCheckpoint() const {
 
 Packing JammingProtocol::checkpoint() const {
     Packing packing;
-    packing.p = parameters_.p;
+    packing.shapeSpec = ShapeSpec::superball(parameters_.p);
     CheckpointFields fields{parameters_, status_, {}, {}};
     std::visit(
         [&](const auto& engine) {

@@ -66,7 +66,7 @@ Packing fromArrays(const py::object& positionsObject, const py::object& orientat
     const py::ssize_t n = positions.shape(0);
     checkShape(orientations, "orientations", n, 4, source);
     Packing packing;
-    packing.p = p;
+    packing.shapeSpec = ShapeSpec::superball(p);
     packing.boxLength = boxLength;
     packing.semiAxis = semiAxis;
     const auto r = positions.unchecked<2>();
@@ -169,7 +169,8 @@ void registerPacking(py::module_& m) {
         .def_property_readonly("orientations", &orientationsOf,
                                "N x 4 quaternions (w, x, y, z), a read-only copy")
         .def_readonly("box_length", &Packing::boxLength)
-        .def_readonly("p", &Packing::p)
+        .def_property_readonly(
+            "p", [](const Packing& p) { return p.superball().p(); }, "the superball exponent")
         .def_readonly("semi_axis", &Packing::semiAxis)
         .def_property_readonly("semi_axes", &semiAxesOf,
                                "N semi-axes R_i, a read-only copy: a mixture's sizes "
@@ -187,7 +188,7 @@ void registerPacking(py::module_& m) {
         .def("__len__", &Packing::size)
         .def("__repr__", [](const Packing& p) {
             return "<sbpack.Packing N=" + std::to_string(p.size()) +
-                   " p=" + py::repr(py::float_(p.p)).cast<std::string>() +
+                   " p=" + py::repr(py::float_(p.superball().p())).cast<std::string>() +
                    " phi=" + py::repr(py::float_(p.packingFraction())).cast<std::string>() + ">";
         });
 }

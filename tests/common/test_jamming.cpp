@@ -118,7 +118,7 @@ double movedDistance(const Packing& packing, const DegreesOfFreedom& dof, const 
     }
     const Vector3d d = minimumImage(packing.positions[1] - packing.positions[0], packing.boxLength);
     const Vector3d moved = d + t * (strain * d + nonAffine[1] - nonAffine[0]);
-    return signedDistance({packing.shape(), rotation[0], rotation[1], moved}).signedDistance;
+    return signedDistance({packing.superball(), rotation[0], rotation[1], moved}).signedDistance;
 }
 
 TEST(RigidityMatrix, GapChangesAreTheDerivativesOfTheExactSignedDistance) {
@@ -127,12 +127,12 @@ TEST(RigidityMatrix, GapChangesAreTheDerivativesOfTheExactSignedDistance) {
     for (const double p : {0.85, 1.0, 1.5, 3.0}) {
         for (int trial = 0; trial < 10; ++trial) {
             Packing packing;
-            packing.p = p;
+            packing.shapeSpec.p = p;
             packing.boxLength = 10.0;
             packing.orientations = {random.rotation(), random.rotation()};
             const Vector3d u = random.normalVector().normalized();
             const double touching =
-                1.0 / scaleFactor({packing.shape(), packing.orientations[0].toRotationMatrix(),
+                1.0 / scaleFactor({packing.superball(), packing.orientations[0].toRotationMatrix(),
                                    packing.orientations[1].toRotationMatrix(), u})
                           .scaleFactor;
             // Across the box's corner for odd trials: the strain enters through the image.
@@ -440,7 +440,7 @@ TEST(JammingCategories, AnOpeningFreesASphereButLeavesASlidingSuperballUndecided
     Packing packing = simpleCubic(4);
     const int loose = 5;
     for (const double p : {1.0, 1.5}) {
-        packing.p = p;
+        packing.shapeSpec.p = p;
         const RigidityNetwork network = backboneNetwork(
             packing, withoutPlusXContacts(ContactNetwork({}).compute(packing), loose));
         const JammingResult local = test(network, JammingCategory::Local);

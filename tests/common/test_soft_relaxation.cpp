@@ -101,7 +101,7 @@ TEST(SoftRelaxation, ItsForcesAreASelfStressOfTheContactAnalysesNetworkAndTheStr
 /// of 0.01 D (within a shell of 0.02 D: f = 0.01), alone in a large box.
 Packing threeSuperballs() {
     Packing packing;
-    packing.p = 1.5;
+    packing.shapeSpec.p = 1.5;
     packing.semiAxis = 0.5;
     packing.boxLength = 10.0;
     packing.orientations = {Quaterniond(0.9, 0.2, -0.3, 0.1).normalized(),
@@ -113,9 +113,9 @@ Packing threeSuperballs() {
     for (int j = 1; j <= 2; ++j) {
         double distance = 1.0;
         for (int k = 0; k < 40; ++k) { // the gap grows with the distance at slope n . d^ ~ 1
-            const SuperballPair pair{packing.shape(), packing.orientations[0].toRotationMatrix(),
-                                     packing.orientations[j].toRotationMatrix(),
-                                     distance * directions[j - 1]};
+            const SuperballPair pair{
+                packing.superball(), packing.orientations[0].toRotationMatrix(),
+                packing.orientations[j].toRotationMatrix(), distance * directions[j - 1]};
             distance += 0.01 - signedDistance(pair).signedDistance;
         }
         packing.positions[j] = packing.positions[0] + distance * directions[j - 1];

@@ -43,7 +43,7 @@ template <class Read> Outcome outcome(const std::filesystem::path& path, Read re
 }
 
 bool samePacking(const sbpack::Packing& a, const sbpack::Packing& b) {
-    if (a.size() != b.size() || a.p != b.p || a.semiAxis != b.semiAxis ||
+    if (a.size() != b.size() || !(a.shapeSpec == b.shapeSpec) || a.semiAxis != b.semiAxis ||
         a.boxLength != b.boxLength)
         return false;
     for (std::size_t i = 0; i < a.size(); ++i)

@@ -36,7 +36,8 @@ Network countContacts(const Packing& packing, double tolerance) {
             for (int k = 0; k < 3; ++k)
                 d[k] -= box * std::round(d[k] / box);
             if (d.norm() > 2.0 * packing.shape().circumradius() + tolerance * diameter) continue;
-            const SuperballPair pair{packing.shape(), packing.orientations[i].toRotationMatrix(),
+            const SuperballPair pair{packing.superball(),
+                                     packing.orientations[i].toRotationMatrix(),
                                      packing.orientations[j].toRotationMatrix(), d};
             const double gap = signedDistance(pair).signedDistance / diameter;
             net.smallestGap = std::min(net.smallestGap, gap);

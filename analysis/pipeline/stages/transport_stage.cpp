@@ -13,7 +13,7 @@ bool runTransport(FileContext& context, schema::Record& record) {
     TransportResult t;
     try {
         t = Transport({}).compute(context.kept<PoreSizeDistributionResult>(Analysis::PoreSizes),
-                                  packing.p, packing.packingFraction());
+                                  packing.superball().p(), packing.packingFraction());
     } catch (const std::domain_error& e) {
         // Outside the fitted range of the zeta_2 interpolation: no group, a warning.
         context.progress().warn(std::string("transport skipped: ") + e.what());

@@ -1,0 +1,8 @@
+#include "geometry/particle_shape.hpp"
+
+namespace sbpack {
+
+ParticleShape::ParticleShape(const ShapeSpec& spec, double semiAxis)
+    : spec_(spec), superball_(spec.p, semiAxis) {}
+
+} // namespace sbpack
