@@ -109,7 +109,7 @@ class GeneratorCommandLine {
 void GeneratorCommandLine::addProtocolOptions() {
     ProtocolParameters& p = options_.protocol;
     protocol(
-        "--p", "P", [&p](auto n, auto v) { p.p = parseNumber(n, v); },
+        "--p", "P", [&p](auto n, auto v) { p.shape = ShapeSpec::superball(parseNumber(n, v)); },
         "superball exponent in (0.5, 1000] (default 1: spheres, exact fast path;\n"
         "otherwise rotating superballs); practical up to 10, above it a warning");
     protocol(

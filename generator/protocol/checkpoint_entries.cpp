@@ -193,7 +193,7 @@ std::vector<Entry> statusEntries() {
             P, named.first, [counter](auto& f) -> auto& { return f.status.predictor.*counter; },
             true);
         e.write = [counter](const CheckpointFields& f) -> std::optional<ProvenanceValue> {
-            if (!rotating(f.parameters.p)) return std::nullopt; // spheres predict exactly
+            if (!rotating(f.parameters.shape)) return std::nullopt; // spheres predict exactly
             return ProvenanceValue(static_cast<std::int64_t>(f.status.predictor.*counter));
         };
         entries.push_back(std::move(e));
@@ -274,7 +274,7 @@ GrowthClock checkedClock(const GrowthClock& clock, const Packing& packing,
 ProtocolParameters checkedParameters(ProtocolParameters parameters, const Packing& packing,
                                      const std::string& source) {
     parameters.particles = static_cast<int>(packing.size());
-    parameters.p = packing.superball().p();
+    parameters.shape = packing.shapeSpec;
     try {
         parameters.validate();
     } catch (const ProtocolParameterError& e) {

@@ -39,8 +39,9 @@ AnyEngine freshEngine(const ProtocolParameters& parameters, const PlacementWatch
     Random random(parameters.seed);
     const int n = parameters.particles;
     std::vector<double> sizes = parameters.relativeSizes();
-    const double box = boxLengthFor(n, Superball(parameters.p, 0.5).volume() * meanCubedSize(sizes),
-                                    parameters.phiInit);
+    const double box =
+        boxLengthFor(n, ParticleShape(parameters.shape, 0.5).volume() * meanCubedSize(sizes),
+                     parameters.phiInit);
     const GrowthClock clock{1.0, 0.0, parameters.fastGrowthRate()};
     return std::visit(
         [&](const auto& shape) -> AnyEngine {
@@ -58,7 +59,7 @@ AnyEngine freshEngine(const ProtocolParameters& parameters, const PlacementWatch
             }
             return EventDrivenMd(shape, box, std::move(state), clock, std::move(sizes));
         },
-        shapeFor(parameters.p));
+        shapeFor(parameters.shape));
 }
 
 /// The engine of a checkpoint's particles and pair records, refused without velocities or with
@@ -66,16 +67,15 @@ AnyEngine freshEngine(const ProtocolParameters& parameters, const PlacementWatch
 AnyEngine resumedEngine(const Packing& packing, const std::string& source,
                         const CheckpointFields& fields) {
     if (packing.velocities.size() != packing.size() ||
-        (rotating(packing.superball().p()) && packing.angularVelocities.size() != packing.size()))
+        (rotating(packing.shapeSpec) && packing.angularVelocities.size() != packing.size()))
         throw std::invalid_argument("'" + source + "': checkpoint without velocities");
     refuseOverlaps(packing, source);
     std::vector<ParticleState> state(packing.size());
     for (std::size_t i = 0; i < packing.size(); ++i) {
         state[i] = {packing.positions[i], packing.velocities[i], packing.orientations[i]};
-        if (rotating(packing.superball().p()))
-            state[i].angularVelocity = packing.angularVelocities[i];
+        if (rotating(packing.shapeSpec)) state[i].angularVelocity = packing.angularVelocities[i];
     }
-    AnyEngine engine = makeEngine(packing.superball().p(), packing.boxLength, std::move(state),
+    AnyEngine engine = makeEngine(packing.shapeSpec, packing.boxLength, std::move(state),
                                   fields.clock, packing.relativeSizes());
     restorePairRecords(engine, fields.pairRecords, source);
     return engine;
@@ -90,11 +90,11 @@ bool dueAt(std::int64_t count, std::int64_t base) {
 } // namespace
 
 double ProtocolParameters::fastGrowthRate() const {
-    return gammaFast.value_or(paperFastRate(p));
+    return gammaFast.value_or(paperFastRate(shape.p));
 }
 
 double ProtocolParameters::slowGrowthRate() const {
-    return gammaSlow.value_or(speed * (rotating(p) ? paperSlowRate(p) : 1e-4));
+    return gammaSlow.value_or(speed * (rotating(shape) ? paperSlowRate(shape.p) : 1e-4));
 }
 
 std::vector<double> ProtocolParameters::relativeSizes() const {
@@ -121,6 +121,7 @@ void ProtocolParameters::validate() const {
     require(particles >= 2, "n_particles", "need at least 2 particles");
     // The octahedron p = 0.5 itself stalls the predictor (194 collisions in 20 CPU s at N = 50;
     // p = 0.501 makes 3.8e3 per CPU s): bench/RESULTS.md, "Extreme p".
+    const double p = shape.p;
     require(std::isfinite(p) && p > 0.5 && p <= 1e3, "p",
             "must be in (0.5, 1000] (the octahedron p = 0.5 stalls the event-driven predictor)");
     static_assert(kLeastPhiInit == 1e-3, "the message below names it");
@@ -355,7 +356,7 @@ double JammingProtocol::packingFraction() const {
     return std::visit(
         [&](const auto& engine) {
             return parameters_.particles * meanCubedSize(engine.sizes()) *
-                   Superball(parameters_.p, 0.5 * engine.diameter()).volume() /
+                   ParticleShape(parameters_.shape, 0.5 * engine.diameter()).volume() /
                    std::pow(engine.boxLength(), 3);
         },
         engine_);
@@ -369,7 +370,7 @@ std::optional<Packing> JammingProtocol::resumeCheckpoint() const {
 
 Packing JammingProtocol::checkpoint() const {
     Packing packing;
-    packing.shapeSpec = ShapeSpec::superball(parameters_.p);
+    packing.shapeSpec = parameters_.shape;
     CheckpointFields fields{parameters_, status_, {}, {}};
     std::visit(
         [&](const auto& engine) {
@@ -382,7 +383,8 @@ Packing JammingProtocol::checkpoint() const {
                 packing.positions.push_back(s.position);
                 packing.orientations.push_back(s.orientation);
                 packing.velocities.push_back(s.velocity);
-                if (rotating(parameters_.p)) packing.angularVelocities.push_back(s.angularVelocity);
+                if (rotating(parameters_.shape))
+                    packing.angularVelocities.push_back(s.angularVelocity);
             }
         },
         engine_);

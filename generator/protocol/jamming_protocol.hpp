@@ -39,7 +39,8 @@ struct ProtocolParameters {
     /// The range of N that sbgen --n and sbpack.generate accept.
     static constexpr int kFewestParticles = 2, kMostParticles = 100'000'000;
     int particles = 1000;
-    double p = 1.0;
+    /// The particles' shape (shapes/registry picks its engine; --p sets the superball's p).
+    ShapeSpec shape;
     std::uint64_t seed = 1;
     double phiInit = 0.2;
     /// The least phi_init: the particles start at D = 1 in a box of (N v1 / phi_init)^(1/3) and

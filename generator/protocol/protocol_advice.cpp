@@ -55,7 +55,7 @@ constexpr int kSmallBoxParticles = 250;
 /// The box edge in diameters at jamming, with phi about 0.85 (bench/RESULTS.md, "Near-cubes after
 /// the jam check").
 double jammedBoxDiameters(const ProtocolParameters& parameters) {
-    const double unitVolume = Superball(parameters.p, 0.5).volume(); // D = 1
+    const double unitVolume = ParticleShape(parameters.shape, 0.5).volume(); // D = 1
     return std::cbrt(parameters.particles * unitVolume / 0.85);
 }
 
@@ -70,8 +70,7 @@ std::string costText(const ExpectedCost& cost) {
 } // namespace
 
 double collisionRate(double p) {
-    return rotating(p) ? interpolateInP(rotatingRates(), p, Interpolation::logarithmic)
-                       : kSphereRate;
+    return p != 1.0 ? interpolateInP(rotatingRates(), p, Interpolation::logarithmic) : kSphereRate;
 }
 
 ExpectedCost expectedCost(const ProtocolParameters& parameters) {
@@ -82,13 +81,13 @@ ExpectedCost expectedCost(const ProtocolParameters& parameters) {
     const double total = decadesTo(parameters.pressureFinal);
     const double slow =
         parameters.pressureFinish > 0.0 ? decadesTo(parameters.pressureFinish) : total;
-    const double perDecade = rotating(parameters.p) ? kSlowCollisionsTimesRateSuperballs
-                                                    : kSlowCollisionsTimesRateSpheres;
+    const double perDecade = rotating(parameters.shape) ? kSlowCollisionsTimesRateSuperballs
+                                                        : kSlowCollisionsTimesRateSpheres;
     const double perParticle = kFastPhaseCollisions +
                                perDecade * slow / parameters.slowGrowthRate() +
                                perDecade * (total - slow) / parameters.finishGrowthRate();
     const double collisions = perParticle * parameters.particles;
-    return {collisions, collisions / collisionRate(parameters.p)};
+    return {collisions, collisions / collisionRate(parameters.shape.p)};
 }
 
 std::vector<std::string> protocolWarnings(const ProtocolParameters& parameters) {
@@ -124,23 +123,23 @@ std::vector<std::string> protocolWarnings(const ProtocolParameters& parameters) 
             "gamma-slow {:g} is slower than the default for p = {:g}, {:.2g}: about {:.2g} "
             "times the slow phase's collisions; a larger rate is the faster one, and speed "
             "(--speed, speed=) scales the default for any p (docs/design.md §3, \"Speed\")",
-            *parameters.gammaSlow, parameters.p, defaults.slowGrowthRate(),
+            *parameters.gammaSlow, parameters.shape.p, defaults.slowGrowthRate(),
             defaults.slowGrowthRate() / *parameters.gammaSlow));
-    if (parameters.p > 10.0)
+    if (parameters.shape.p > 10.0)
         warnings.push_back(
             fmt::format("p = {:g}: near-cubes this flat run at a few hundred collisions per "
                         "CPU second (p = 100 and 1000: about 300 at N = 50), so a jam "
                         "takes days; p <= 10 is practical (bench/RESULTS.md, \"Extreme "
                         "p\")",
-                        parameters.p));
+                        parameters.shape.p));
     const double box = jammedBoxDiameters(parameters);
-    if (parameters.p >= kNearCubeExponent && box < kColumnBoxDiameters)
+    if (parameters.shape.p >= kNearCubeExponent && box < kColumnBoxDiameters)
         warnings.push_back(
             fmt::format("p = {:g}, N = {}: the box will be about {:.1f} diameters across, so "
                         "a column of near-cubes can span it and carry the pressure "
                         "alone; such runs end refused as not jammed (at N = 200 most "
                         "did); N >= 1000 avoids it",
-                        parameters.p, parameters.particles, box));
+                        parameters.shape.p, parameters.particles, box));
     else if (parameters.particles < kSmallBoxParticles)
         warnings.push_back(
             fmt::format("N = {}: a box this small often jams partly ordered, phi and Z "

@@ -53,22 +53,22 @@ void restoreRows(EventDrivenMd<Shape>& engine, const std::vector<double>& rows,
 
 } // namespace
 
-bool rotating(double p) {
-    return p != 1.0;
+bool rotating(const ShapeSpec& shape) {
+    return shape.p != 1.0;
 }
 
-AnyShape shapeFor(double p) {
-    if (!rotating(p)) return SphereShape{};
-    return SuperballShape(p);
+AnyShape shapeFor(const ShapeSpec& shape) {
+    if (!rotating(shape)) return SphereShape{};
+    return SuperballShape(shape.p);
 }
 
-AnyEngine makeEngine(double p, double boxLength, std::vector<ParticleState> state,
+AnyEngine makeEngine(const ShapeSpec& shape, double boxLength, std::vector<ParticleState> state,
                      GrowthClock clock, std::vector<double> sizes) {
     return std::visit(
         [&](const auto& shape) -> AnyEngine {
             return EventDrivenMd(shape, boxLength, std::move(state), clock, std::move(sizes));
         },
-        shapeFor(p));
+        shapeFor(shape));
 }
 
 std::vector<double> pairRecordRows(const AnyEngine& engine) {

@@ -24,14 +24,15 @@ template <class... Shapes> struct EnginesOf<std::variant<Shapes...>> {
 /// Every engine sbgen can run, one per shape.
 using AnyEngine = EnginesOf<AnyShape>::type;
 
-/// Whether bodies of exponent p rotate: all but spheres, which run on the exact sphere shape.
-bool rotating(double p);
+/// Whether the bodies rotate: all but spheres, which run on the exact sphere shape.
+bool rotating(const ShapeSpec& shape);
 
-/// The shape of exponent p: the exact sphere at p = 1, the rotating superball otherwise.
-AnyShape shapeFor(double p);
+/// The engine's shape for `shape`: the exact sphere for superballs of p = 1, the rotating
+/// superball of its p otherwise.
+AnyShape shapeFor(const ShapeSpec& shape);
 
-/// The engine of shapeFor(p); `sizes` a mixture's (EventDrivenMd).
-AnyEngine makeEngine(double p, double boxLength, std::vector<ParticleState> state,
+/// The engine of shapeFor(shape); `sizes` a mixture's (EventDrivenMd).
+AnyEngine makeEngine(const ShapeSpec& shape, double boxLength, std::vector<ParticleState> state,
                      GrowthClock clock, std::vector<double> sizes);
 
 /// The engine's synchronised pair records as the rows of a checkpoint's dataset

@@ -135,7 +135,7 @@ ProtocolParameters costParameters(const py::int_& n, double p, Option gammaSlow,
                                   Option pressureSwitch, Option pressureFinal) {
     ProtocolParameters parameters;
     parameters.particles = particleCount(n);
-    parameters.p = p;
+    parameters.shape = ShapeSpec::superball(p);
     if (gammaSlow) parameters.gammaSlow = gammaSlow;
     parameters.speed = speed.value_or(parameters.speed);
     parameters.pressureSwitch = pressureSwitch.value_or(parameters.pressureSwitch);

@@ -13,7 +13,7 @@ namespace {
 
 ProtocolParameters defaults(double p, int particles) {
     ProtocolParameters parameters;
-    parameters.p = p;
+    parameters.shape.p = p;
     parameters.particles = particles;
     return parameters;
 }
