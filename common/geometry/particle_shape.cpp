@@ -3,6 +3,6 @@
 namespace sbpack {
 
 ParticleShape::ParticleShape(const ShapeSpec& spec, double semiAxis)
-    : spec_(spec), superball_(spec.p, semiAxis) {}
+    : superball_(spec.p, semiAxis) {}
 
 } // namespace sbpack

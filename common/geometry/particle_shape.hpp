@@ -27,7 +27,6 @@ class ParticleShape {
     /// Throws std::invalid_argument where the parameters are not the family's (Superball).
     ParticleShape(const ShapeSpec& spec, double semiAxis);
 
-    const ShapeSpec& spec() const { return spec_; }
     double semiAxis() const { return superball_.semiAxis(); }
     double diameter() const { return superball_.diameter(); }
     double volume() const { return superball_.volume(); }
@@ -40,7 +39,6 @@ class ParticleShape {
     const Superball& superball() const { return superball_; }
 
   private:
-    ShapeSpec spec_;
     Superball superball_;
 };
 

@@ -412,8 +412,9 @@ TEST_P(SuperballPredictorByP, NeverMissesAndAgreesWithBruteForce) {
     printStats(p, shape.stats);
     EXPECT_GT(bruteContacts, pairs / 4);
     EXPECT_GT(shape.stats.boundRejections, 0); // the pieces' bounds were used
-    if (GetParam().sizeRatio == 1.0)           // and their witness records, on the grazing passes
+    if (GetParam().sizeRatio == 1.0) {         // and their witness records, on the grazing passes
         EXPECT_GT(shape.stats.witnessRejections, 0);
+    }
     EXPECT_GE(agreed + shallow + flat, bruteContacts - thinContacts);
 }
 
