@@ -159,7 +159,8 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   header `# sbpack text packing v1`, `# p P`, `# semi_axis R`,
   `# box_length L`, `# n_particles N`, optionally `# reduced_pressure P` and `# seed S` (the
   pressure sets the jam check's tolerance, so Z and phi_R), then one particle per line
-  `x y z qw qx qy qz`. `convert` to it (or to XYZ) names what the target leaves out
+  `x y z qw qx qy qz`, and for a mixture each particle's semi-axis as an eighth number on every
+  line (`semi_axis` their largest; docs/mixtures.md). `convert` to it (or to XYZ) names what the target leaves out
   (velocities, provenance, a checkpoint's resume state).
 - **Extended XYZ** (`.xyz`, written by `convert`; read by `info`, the analysis and `convert`:
   one frame, sbpack's export or OVITO's, a cubic `Lattice`, the shape from the keys `p=` and

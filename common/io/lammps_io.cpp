@@ -42,7 +42,7 @@ void sortedInto(std::vector<Particle> particles, Packing& packing, const LineRea
         packing.orientations.push_back(particles[k].orientation);
         semiAxes.push_back(particles[k].semiAxis);
     }
-    readSemiAxes(semiAxes, std::nullopt, packing, reader);
+    readSemiAxes(semiAxes, std::nullopt, packing, reader, "the shape columns");
     canonicalizePacking(packing);
     validatePacking(packing, reader.name());
 }

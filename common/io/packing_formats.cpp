@@ -54,12 +54,6 @@ Packing readPackingFile(const fs::path& file) {
 
 void writePackingFile(const Packing& packing, const fs::path& file) {
     const PackingFormat format = packingFormatOf(file);
-    // The text format holds one size: a mixture written there would lose its sizes.
-    if (packing.isMixture() && format == PackingFormat::Text)
-        throw std::invalid_argument("'" + file.string() +
-                                    "': a mixture (per-particle semi_axes) cannot be written as "
-                                    "text (.txt): write .h5, .xyz, .gsd, .dump or .data "
-                                    "(docs/mixtures.md)");
     switch (format) {
     case PackingFormat::Hdf5:
         return writePacking(packing, file);

@@ -37,12 +37,15 @@ void writeTextPacking(const Packing& packing, const fs::path& file) {
         if (packing.reducedPressure)
             out << "# reduced_pressure " << full(*packing.reducedPressure) << '\n';
         if (packing.seed) out << "# seed " << *packing.seed << '\n';
-        out << "# columns x y z qw qx qy qz\n";
+        // A mixture's lines end with each particle's semi-axis (docs/mixtures.md).
+        out << "# columns x y z qw qx qy qz" << (packing.isMixture() ? " semi_axis\n" : "\n");
         for (std::size_t i = 0; i < packing.size(); ++i) {
             const Vector3d r = wrapIntoBox(packing.positions[i], packing.boxLength);
             const Quaterniond& q = packing.orientations[i];
             out << full(r.x()) << ' ' << full(r.y()) << ' ' << full(r.z()) << ' ' << full(q.w())
-                << ' ' << full(q.x()) << ' ' << full(q.y()) << ' ' << full(q.z()) << '\n';
+                << ' ' << full(q.x()) << ' ' << full(q.y()) << ' ' << full(q.z());
+            if (packing.isMixture()) out << ' ' << full(packing.semiAxes[i]);
+            out << '\n';
         }
     });
 }
@@ -68,6 +71,7 @@ class TextHeader {
         } else if (const auto it = values_.find(key); it != values_.end()) {
             if (it->second) reader.fail("header key '" + key + "' is repeated");
             it->second = reader.parseDouble(tokens[2]);
+            lines_[key] = reader.line();
         }
     }
     /// Fails naming the first key missing.
@@ -78,6 +82,8 @@ class TextHeader {
     }
     long long count() const { return *count_; }
     double value(const std::string& key) const { return *values_.at(key); }
+    /// The line a key was read from.
+    int lineOf(const std::string& key) const { return lines_.at(key); }
     /// The optional keys, where given.
     void setOptional(Packing& packing) const {
         packing.reducedPressure = reducedPressure_;
@@ -89,19 +95,29 @@ class TextHeader {
     std::optional<std::uint64_t> seed_;
     std::map<std::string, std::optional<double>> values_ = {
         {"p", std::nullopt}, {"semi_axis", std::nullopt}, {"box_length", std::nullopt}};
+    std::map<std::string, int> lines_;
     std::optional<long long> count_;
 };
 
-/// One particle line, x y z qw qx qy qz, appended to `packing`.
-void readParticle(const std::vector<std::string>& tokens, LineReader& reader, Packing& packing) {
-    if (tokens.size() != 7)
-        reader.fail("expected 7 numbers (x y z qw qx qy qz), found " +
-                    std::to_string(tokens.size()));
-    double v[7];
-    for (int k = 0; k < 7; ++k)
+/// One particle line, x y z qw qx qy qz, and a mixture's semi-axis where the first particle
+/// line has eight numbers (every line as many), appended to `packing` and `semiAxes`.
+void readParticle(const std::vector<std::string>& tokens, LineReader& reader, Packing& packing,
+                  std::vector<double>& semiAxes) {
+    const bool first = packing.positions.empty();
+    const bool sized = first ? tokens.size() == 8 : !semiAxes.empty();
+    if (tokens.size() != (sized ? 8u : 7u))
+        reader.fail(sized ? "expected 8 numbers (x y z qw qx qy qz semi_axis) as on the first "
+                            "particle line, found " +
+                                std::to_string(tokens.size())
+                          : "expected 7 numbers (x y z qw qx qy qz), or 8 with a mixture's "
+                            "semi_axis on every line, found " +
+                                std::to_string(tokens.size()));
+    double v[8];
+    for (std::size_t k = 0; k < tokens.size(); ++k)
         v[k] = reader.parseDouble(tokens[k]);
     packing.positions.emplace_back(v[0], v[1], v[2]);
     packing.orientations.emplace_back(v[3], v[4], v[5], v[6]);
+    if (sized) semiAxes.push_back(v[7]);
 }
 
 } // namespace
@@ -114,6 +130,7 @@ Packing readTextPacking(const fs::path& file) {
                     std::string(kTextMagic) + "')");
     TextHeader header;
     Packing packing;
+    std::vector<double> semiAxes; // a mixture's, from an eighth column
     while (reader.next(line)) {
         const std::vector<std::string> tokens = splitWhitespace(line);
         if (tokens.empty()) continue;
@@ -122,7 +139,7 @@ Packing readTextPacking(const fs::path& file) {
             continue;
         }
         if (packing.positions.empty()) header.requireComplete(reader);
-        readParticle(tokens, reader, packing);
+        readParticle(tokens, reader, packing, semiAxes);
     }
     header.requireComplete(reader);
     if (static_cast<long long>(packing.positions.size()) != header.count())
@@ -131,7 +148,8 @@ Packing readTextPacking(const fs::path& file) {
                                std::to_string(packing.positions.size()) +
                                " particle lines (wrong particle count)");
     packing.shapeSpec = ShapeSpec::superball(header.value("p"));
-    packing.semiAxis = header.value("semi_axis");
+    readSemiAxes(semiAxes, header.value("semi_axis"), packing, reader, "the semi_axis column",
+                 header.lineOf("semi_axis"));
     packing.boxLength = header.value("box_length");
     header.setOptional(packing);
     validatePacking(packing, reader.name());
@@ -306,7 +324,7 @@ Packing readExtendedXyz(const fs::path& file) {
     // The header's p as written; only a p from the roundness column is inverted and repaired.
     packing.shapeSpec = ShapeSpec::superball(
         headerP ? *headerP : singlePrecisionRepaired(1.0 / roundness.value(reader)));
-    readSemiAxes(semiAxes, headerSemiAxis, packing, reader);
+    readSemiAxes(semiAxes, headerSemiAxis, packing, reader, "aspherical_shape");
     if (!column("orientation") && packing.shapeSpec.p != 1.0)
         reader.failAt(2, "no orientation column: superballs (p != 1) need their orientations");
     validatePacking(packing, reader.name());

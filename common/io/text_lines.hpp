@@ -67,6 +67,8 @@ class LineReader {
         return true;
     }
 
+    /// The number of the line last read (1 for the first).
+    int line() const { return number_; }
     [[noreturn]] void fail(const std::string& problem) const { failAt(number_, problem); }
     /// Names an earlier line (a header's problem found at the end).
     [[noreturn]] void failAt(int line, const std::string& problem) const {
@@ -137,20 +139,22 @@ inline double equalAxes(double a, double b, double c, const LineReader& reader) 
     return a;
 }
 
-/// The packing's sizes from each particle's semi-axis (may be none) and the header's semi_axis
-/// (may be none): identical particles where all agree to 1e-12, else a mixture
-/// (docs/mixtures.md) whose largest is the header's where given (extended XYZ, LAMMPS).
+/// The packing's sizes from each particle's semi-axis (may be none), read from `column`, and the
+/// header's semi_axis (may be none; on line `headerLine`): identical particles where all agree
+/// to 1e-12, else a mixture (docs/mixtures.md) whose largest is the header's where given (text,
+/// extended XYZ, LAMMPS).
 inline void readSemiAxes(const std::vector<double>& semiAxes, std::optional<double> header,
-                         Packing& packing, const LineReader& reader) {
+                         Packing& packing, const LineReader& reader, const std::string& column,
+                         int headerLine = 2) {
     if (semiAxes.empty()) {
-        if (!header) reader.failAt(2, "no semi_axis: give the header key or aspherical_shape");
+        if (!header) reader.failAt(headerLine, "no semi_axis: give the header key or " + column);
         packing.semiAxis = *header;
         return;
     }
     const auto [smallest, largest] = std::minmax_element(semiAxes.begin(), semiAxes.end());
     const double reference = header.value_or(*largest);
     if (std::abs(*largest - reference) > 1e-12 * reference)
-        reader.failAt(2, "the header's semi_axis is not the largest of aspherical_shape");
+        reader.failAt(headerLine, "the header's semi_axis is not the largest of " + column);
     packing.semiAxis = reference;
     if (*largest - *smallest > 1e-12 * *largest) packing.semiAxes = semiAxes;
 }

@@ -16,8 +16,10 @@
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <string>
 #include <unistd.h>
@@ -63,9 +65,10 @@ TEST(Mixtures, TheFileKeepsEachParticlesSemiAxis) {
     EXPECT_EQ(read.semiAxes, packing.semiAxes);
     EXPECT_EQ(read.semiAxis, 0.5);
     EXPECT_DOUBLE_EQ(read.packingFraction(), packing.packingFraction());
-    // Extended XYZ (OVITO's aspherical_shape), GSD (a type per size, the exact sizes in
-    // sbpack's log) and LAMMPS (each atom's shape) hold each particle's own: they come back.
-    for (const char* extension : {".xyz", ".gsd", ".dump", ".data"}) {
+    // Text (an eighth column), extended XYZ (OVITO's aspherical_shape), GSD (a type per size,
+    // the exact sizes in sbpack's log) and LAMMPS (each atom's shape) hold each particle's own:
+    // they come back.
+    for (const char* extension : {".txt", ".xyz", ".gsd", ".dump", ".data"}) {
         const fs::path other = fs::path(file).replace_extension(extension);
         writePackingFile(packing, other);
         const Packing back = readPackingFile(other);
@@ -73,10 +76,49 @@ TEST(Mixtures, TheFileKeepsEachParticlesSemiAxis) {
         EXPECT_EQ(back.semiAxis, 0.5) << extension;
         fs::remove(other);
     }
-    // One size only in the text format: refused rather than written without the sizes.
-    const fs::path text = fs::path(file).replace_extension(".txt");
-    EXPECT_THROW(writePackingFile(packing, text), std::invalid_argument);
-    EXPECT_FALSE(fs::exists(text));
+    fs::remove(file);
+}
+
+// A text file's sizes: every particle line has the eighth number or none does, and the
+// header's semi_axis is the largest; each refusal names the line.
+TEST(Mixtures, TextSizesAreOnEveryLineAndTheHeaderHoldsTheLargest) {
+    const fs::path file = fs::path(scratchFile("mixture")).replace_extension(".txt");
+    writePackingFile(fourSpheres(0.1, 0.1), file);
+    std::vector<std::string> lines;
+    {
+        std::ifstream in(file);
+        for (std::string line; std::getline(in, line);)
+            lines.push_back(line);
+    }
+    const auto refusal = [&](std::vector<std::string> changed) {
+        std::ofstream out(file);
+        for (const std::string& line : changed)
+            out << line << '\n';
+        out.close();
+        try {
+            readPackingFile(file);
+        } catch (const PackingFileError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    ASSERT_EQ(std::count(lines.back().begin(), lines.back().end(), ' '), 7) << lines.back();
+    std::vector<std::string> short7 = lines; // the last particle's semi-axis dropped
+    short7.back().erase(short7.back().rfind(' '));
+    EXPECT_NE(refusal(short7).find("expected 8 numbers (x y z qw qx qy qz semi_axis) as on the "
+                                   "first particle line, found 7"),
+              std::string::npos);
+    std::vector<std::string> header = lines;
+    const auto semiAxis = std::find_if(header.begin(), header.end(), [](const std::string& l) {
+        return l.starts_with("# semi_axis ");
+    });
+    ASSERT_NE(semiAxis, header.end());
+    *semiAxis = "# semi_axis 0.6";
+    const std::string line = std::to_string(semiAxis - header.begin() + 1);
+    EXPECT_NE(refusal(header).find("line " + line +
+                                   ": the header's semi_axis is not the largest of the "
+                                   "semi_axis column"),
+              std::string::npos);
     fs::remove(file);
 }
 

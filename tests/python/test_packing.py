@@ -157,9 +157,9 @@ def test_the_shape_is_never_a_silent_default():
     assert q.phi == p.phi
 
 
-def test_a_mixture_from_arrays_keeps_its_sizes_and_text_refuses_it(tmp_path):
+def test_a_mixture_from_arrays_keeps_its_sizes_in_the_file_and_in_text(tmp_path):
     """docs/mixtures.md: semi_axes by keyword, phi the sum of the particles' own volumes, the
-    sizes kept by the packing file and refused by the formats of one size."""
+    sizes kept by the packing file and by the text format's eighth column."""
     positions = np.array([[0.5, 0.5, 0.5], [2.0, 2.0, 2.0], [3.5, 0.5, 2.0]])
     orientations = np.tile([1.0, 0.0, 0.0, 0.0], (3, 1))
     radii = np.array([0.5, 0.35, 0.35])
@@ -170,8 +170,10 @@ def test_a_mixture_from_arrays_keeps_its_sizes_and_text_refuses_it(tmp_path):
     with h5py.File(tmp_path / "mix.h5") as f:
         assert np.array_equal(f["semi_axes"][:, 0], radii) and f.attrs["semi_axis"] == 0.5
     assert np.array_equal(sbpack.Packing.read(tmp_path / "mix.h5").semi_axes, radii)
-    with pytest.raises(ValueError, match="cannot be written as text"):
-        p.write(tmp_path / "mix.txt")
+    p.write(tmp_path / "mix.txt")
+    lines = (tmp_path / "mix.txt").read_text().splitlines()
+    assert [len(line.split()) for line in lines[-3:]] == [8, 8, 8]
+    assert np.array_equal(sbpack.Packing.read(tmp_path / "mix.txt").semi_axes, radii)
     with pytest.raises(ValueError, match="not the largest of semi_axes"):
         sbpack.Packing(positions, orientations, 5.0, p=1.0, semi_axis=0.4, semi_axes=radii)
     identical = sbpack.Packing.read(P15)
