@@ -18,6 +18,8 @@ struct ShapeSpec {
     double p = 1.0;
 
     static ShapeSpec superball(double exponent) { return {Family::superball, exponent}; }
+    /// Spheres: superballs of p = 1 (sbgen's exact sphere engine; orientations carry nothing).
+    bool isSphere() const { return family == Family::superball && p == 1.0; }
     bool operator==(const ShapeSpec&) const = default;
 };
 

@@ -325,7 +325,7 @@ Packing readExtendedXyz(const fs::path& file) {
     packing.shapeSpec = ShapeSpec::superball(
         headerP ? *headerP : singlePrecisionRepaired(1.0 / roundness.value(reader)));
     readSemiAxes(semiAxes, headerSemiAxis, packing, reader, "aspherical_shape");
-    if (!column("orientation") && packing.shapeSpec.p != 1.0)
+    if (!column("orientation") && !packing.shapeSpec.isSphere())
         reader.failAt(2, "no orientation column: superballs (p != 1) need their orientations");
     validatePacking(packing, reader.name());
     canonicalizePacking(packing);

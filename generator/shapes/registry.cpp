@@ -54,7 +54,7 @@ void restoreRows(EventDrivenMd<Shape>& engine, const std::vector<double>& rows,
 } // namespace
 
 bool rotating(const ShapeSpec& shape) {
-    return shape.p != 1.0;
+    return !shape.isSphere();
 }
 
 AnyShape shapeFor(const ShapeSpec& shape) {
