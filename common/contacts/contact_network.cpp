@@ -76,7 +76,7 @@ SuperballPair pairOf(const Packing& packing, const Superball& shape, int i, int 
                      const std::vector<Matrix3d>& rotations, const Vector3d& d) {
     if (!packing.isMixture()) return {shape, rotations[i], rotations[j], d};
     const double ri = packing.semiAxisOf(i), rj = packing.semiAxisOf(j);
-    return {Superball(packing.superball().p(), ri), rotations[i], rotations[j], d, rj / ri};
+    return {Superball(shape.p(), ri), rotations[i], rotations[j], d, rj / ri};
 }
 
 /// Throws unless s of pair (i, j) at this centre distance lies within the sphere bounds.

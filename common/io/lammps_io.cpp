@@ -258,7 +258,7 @@ void readDataLine(const std::vector<std::string>& t, bool atom, Particle& partic
 
 void writeLammpsData(const Packing& packing, const fs::path& file) {
     validatePacking(packing, file.string());
-    const bool blocky = packing.superball().p() != 1.0;
+    const bool blocky = !packing.shapeSpec.isSphere();
     const std::string length = full(packing.boxLength);
     const std::string blockiness =
         blocky ? " " + full(2.0 * packing.superball().p()) : std::string();

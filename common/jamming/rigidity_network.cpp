@@ -47,7 +47,7 @@ RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& net
         const double gap = network.gaps[c] * packing.pairSize(i, j); // a mixture's: over R_i + R_j
         const double sizeA = packing.relativeSize(i);
         const ContactCurvature curvature = contactCurvature(
-            sizeA == 1.0 ? shape : Superball(packing.superball().p(), 0.5 * sizeA),
+            sizeA == 1.0 ? shape : Superball(shape.p(), 0.5 * sizeA),
             packing.orientations[i].toRotationMatrix(), packing.orientations[j].toRotationMatrix(),
             separation, network.normals[c], gap, packing.semiAxisOf(j) / packing.semiAxisOf(i));
         const Vector3d point = midpointLever(curvature);
