@@ -12,7 +12,9 @@ template <class Shape> std::vector<double> rowsOf(const EventDrivenMd<Shape>& en
     std::vector<double> rows;
     if constexpr (Memory::kCheckpointColumns > 0) {
         static_assert(2 + Memory::kCheckpointColumns == kPairRecordColumns);
-        for (const auto& record : engine.pairRecords()) {
+        const auto records = engine.pairRecords();
+        rows.reserve(kPairRecordColumns * records.size());
+        for (const auto& record : records) {
             rows.insert(rows.end(), {static_cast<double>(record.i), static_cast<double>(record.j)});
             record.memory.appendColumns(rows);
         }
