@@ -98,7 +98,8 @@ void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info
     const double diameter = 2.0 * packing.semiAxis / info.lengthUnit; // of the contacts' packing
     out << std::setprecision(10) << file.string() << '\n'
         << "  particles          N = " << packing.size() << '\n'
-        << "  exponent           p = " << packing.superball().p() << '\n'
+        << "  shape              " << packing.shapeSpec.info().name << ", "
+        << packing.shapeSpec.describe() << '\n'
         << "  box edge           L = " << packing.boxLength << '\n'
         << "  semi-axis          R = " << packing.semiAxis
         << (packing.isMixture() ? "  (the largest)\n" : "\n");

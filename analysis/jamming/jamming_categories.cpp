@@ -275,9 +275,9 @@ PackingJamming testJammingCategories(const Packing& packing, const JammingSettin
     if (finiteGap && !packing.shape().isSphere())
         throw std::invalid_argument(
             fmt::format("jamming: --jamming-unjam-distance is Donev et al.'s finite-gap test of "
-                        "sphere packings; at p = {:g} it would linearise rotations of up to "
-                        "radians, and unjams every superball packing (docs/jamming.md §4.1)",
-                        packing.superball().p()));
+                        "sphere packings; at {} it would linearise rotations of up to radians, "
+                        "and unjams every packing of rotating particles (docs/jamming.md §4.1)",
+                        packing.shapeSpec.describe()));
     if (settings.relax && packing.isMixture())
         throw std::invalid_argument("jamming: --jamming-relax reads one size; a mixture's "
                                     "nearest jammed packing is not computed yet "

@@ -204,12 +204,13 @@ schema::Record reduce(const schema::Group& source, const schema::Group& target, 
 }
 
 void checkSameEnsemble(const FileResults& first, const FileResults& other) {
-    if (other.p() == first.p() && other.particles() == first.particles()) return;
+    if (other.shape() == first.shape() && other.particles() == first.particles()) return;
     throw std::invalid_argument(fmt::format(
-        "ensemble: '{}' (p = {}, N = {}) and '{}' (p = {}, N = {}) differ in p or N and are "
+        "ensemble: '{}' ({} {}, N = {}) and '{}' ({} {}, N = {}) differ in shape or N and are "
         "not averaged together",
-        first.input.string(), first.p(), first.particles(), other.input.string(), other.p(),
-        other.particles()));
+        first.input.string(), first.shape().info().name, first.shape().describe(),
+        first.particles(), other.input.string(), other.shape().info().name,
+        other.shape().describe(), other.particles()));
 }
 
 } // namespace
@@ -228,7 +229,7 @@ std::vector<std::vector<std::size_t>> ensembleMembers(std::span<const FileResult
     std::vector<std::vector<std::size_t>> ensembles;
     for (std::size_t i = 0; i < files.size(); ++i) {
         auto same = [&](const std::vector<std::size_t>& e) {
-            return files[e.front()].p() == files[i].p() &&
+            return files[e.front()].shape() == files[i].shape() &&
                    files[e.front()].particles() == files[i].particles() &&
                    files[e.front()].sizeRatio == files[i].sizeRatio;
         };
@@ -253,8 +254,8 @@ EnsembleResults computeEnsemble(std::span<const FileResults> files,
     all.files = all.records;
     EnsembleResults e;
     e.root = reduce(schema::fileGroup(), schema::ensembleRootGroup(), all);
-    e.root.set("p", files[members.front()].p())
-        .set("n_particles", files[members.front()].particles())
+    schema::setShape(e.root, files[members.front()].shape());
+    e.root.set("n_particles", files[members.front()].particles())
         .set("n_files", members.size())
         .set("members", std::vector<std::int64_t>(members.begin(), members.end()));
     for (const schema::Group* group : resultGroups()) {

@@ -16,9 +16,9 @@ namespace {
 schema::Record fileRecord(const Packing& packing, const std::filesystem::path& input,
                           const FileContext& context) {
     schema::Record r(schema::fileGroup());
-    r.set("input", input.string())
-        .set("p", packing.superball().p())
-        .set("n_particles", packing.size())
+    r.set("input", input.string());
+    schema::setShape(r, packing.shapeSpec);
+    r.set("n_particles", packing.size())
         .set("box_length", packing.boxLength)
         .set("semi_axis", packing.semiAxis)
         .set("phi", context.packing().packingFraction())

@@ -6,6 +6,7 @@
 #include "pipeline/stage.hpp"
 #include "progress/progress.hpp"
 #include "schema/record.hpp"
+#include "schema/shape_record.hpp"
 
 #include <filesystem>
 #include <map>
@@ -26,7 +27,7 @@ struct FileResults {
 
     /// The group called `name` (e.g. "contacts"); nullptr if it was not written.
     const schema::Record* group(std::string_view name) const;
-    double p() const { return root.number("p"); }
+    ShapeSpec shape() const { return schema::shapeOf(root); }
     std::int64_t particles() const { return root.integer("n_particles"); }
 };
 

@@ -256,10 +256,11 @@ std::vector<EnsembleResults> ensemblesOf(const std::vector<FileResults>& files,
     std::vector<EnsembleResults> ensembles = computeEnsembles(files);
     std::string detail;
     for (const EnsembleResults& e : ensembles)
-        detail += fmt::format("{}p = {}, N = {}: {} file(s)", detail.empty() ? "" : "; ",
-                              e.root.number("p"), e.root.integer("n_particles"), e.members.size());
+        detail += fmt::format("{}{}, N = {}: {} file(s)", detail.empty() ? "" : "; ",
+                              schema::shapeOf(e.root).describe(), e.root.integer("n_particles"),
+                              e.members.size());
     if (ensembles.size() > 1)
-        progress.warn(fmt::format("the inputs differ in p or N: {} ensembles, not averaged "
+        progress.warn(fmt::format("the inputs differ in shape or N: {} ensembles, not averaged "
                                   "together ({})",
                                   ensembles.size(), detail));
     progress.stageDone("ensembles", clock.seconds(), detail);

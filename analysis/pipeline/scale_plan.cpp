@@ -144,8 +144,8 @@ std::string planText(const RunSettings& settings, const std::vector<Packing>& pa
                     grids ? ", each on every rank"
                           : fmt::format(", at most {} per rank", (files + ranks - 1) / ranks));
     for (std::size_t k = 0; k < packings.size(); ++k)
-        text += fmt::format("'{}' (N = {}, p = {}):\n", settings.inputs[mine[k]].string(),
-                            packings[k].size(), packings[k].superball().p()) +
+        text += fmt::format("'{}' (N = {}, {}):\n", settings.inputs[mine[k]].string(),
+                            packings[k].size(), packings[k].shapeSpec.describe()) +
                 filePlan(settings, packings[k], ranks);
     return text;
 }

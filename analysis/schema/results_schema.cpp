@@ -1,5 +1,7 @@
 #include "schema/results_schema.hpp"
 
+#include "geometry/particle_shape.hpp"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -30,7 +32,7 @@ constexpr Field kRun[] = {
     {"ranks", A, I, "1", "MPI processes of the run (1 without mpirun; docs/scale-out.md)"},
     {"distribute", A, S, "", "what the ranks shared out (--distribute): files or grids"},
     {"n_files", A, I, "1", "inputs: groups files/0 ... files/<n_files - 1>"},
-    {"n_ensembles", A, I, "1", "ensembles (inputs of equal p and N): ensembles/0 ..."},
+    {"n_ensembles", A, I, "1", "ensembles (inputs of equal shape and N): ensembles/0 ..."},
     {"runtime_s", A, F, "s", "wall-clock time of the whole run"},
 };
 
@@ -42,9 +44,12 @@ constexpr RenamedField kRenamed[] = {
     {"spreadability", "alpha_stderr", "alpha_window_mean_stderr", 4},
 };
 
-constexpr Field kFile[] = {
+constexpr Field kFileLeading[] = {
     {"input", A, S, "", "the packing file, as named on the command line"},
-    {"p", A, F, "1", "superball exponent"},
+};
+
+// After the shape's fields (shapeFields).
+constexpr Field kFile[] = {
     {"n_particles", A, I, "1", "N"},
     {"box_length", A, F, "length", "cubic box edge L", Mean},
     {"semi_axis", A, F, "length", "semi-axis R (major-axis length D = 2 R)"},
@@ -52,22 +57,49 @@ constexpr Field kFile[] = {
     {"mean_width", A, F, "length", "mean width w of one superball", Mean},
 };
 
+// After the shape's fields, which the members share (shapeFields).
 constexpr Field kEnsembleOwn[] = {
-    {"p", A, F, "1", "superball exponent, common to the members"},
     {"n_particles", A, I, "1", "N, common to the members"},
     {"n_files", A, I, "1", "members"},
     {"members", D, I, "1", "indices i of the members' groups files/<i>"},
 };
 
 constexpr Group kRunGroup{"", "/", "the run", kRun};
-constexpr Group kFileGroup{"", "files/<i>", "one input", kFile};
+
+/// `leading`, then the shape (geometry/particle_shape): the family's name, written only where
+/// it is not the superball, and each family's parameters under their names; then `rest`.
+std::vector<Field> withShapeFields(std::span<const Field> leading, std::span<const Field> rest) {
+    std::vector<Field> fields(leading.begin(), leading.end());
+    fields.push_back({.name = "shape",
+                      .kind = A,
+                      .type = S,
+                      .description = "the shape family, whose parameters follow; absent: superball",
+                      .optional = true});
+    const bool several = shapeFamilies().size() > 1;
+    for (const ShapeFamily& family : shapeFamilies())
+        for (const ShapeParameter& parameter : family.parameters)
+            fields.push_back({.name = parameter.name,
+                              .kind = A,
+                              .type = F,
+                              .units = parameter.units,
+                              .description = parameter.description,
+                              .optional = several});
+    fields.insert(fields.end(), rest.begin(), rest.end());
+    return fields;
+}
+
+const Group& fileGroupOnce() {
+    static const std::vector<Field> fields = withShapeFields(kFileLeading, kFile);
+    static const Group group{"", "files/<i>", "one input", fields};
+    return group;
+}
 
 /// The ensemble groups, derived from the fields and their Reduce, built once per group.
 class EnsembleSchemas {
   public:
     EnsembleSchemas() {
-        build("", "ensembles/<k>", "statistics over inputs of equal p and N", kEnsembleOwn,
-              kFileGroup);
+        build("", "ensembles/<k>", "statistics over inputs of equal shape and N",
+              withShapeFields({}, kEnsembleOwn), fileGroupOnce());
     }
     const Group& root() const { return groups_.at("").group; }
     const Group& operator[](const Group& source) {
@@ -174,7 +206,7 @@ const Group& runGroup() {
     return kRunGroup;
 }
 const Group& fileGroup() {
-    return kFileGroup;
+    return fileGroupOnce();
 }
 const Group& ensembleRootGroup() {
     return ensembleSchemas().root();

@@ -1,6 +1,65 @@
 #include "geometry/particle_shape.hpp"
 
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
 namespace sbpack {
+
+namespace {
+
+constexpr ShapeParameter kSuperballParameters[] = {
+    {"p", "1",
+     "superball exponent (paper Eq. 1), >= 0.5: 1 the sphere, 0.5 the octahedron, "
+     "infinity the cube"}};
+constexpr ShapeFamily kFamilies[] = {{"superball", kSuperballParameters}};
+
+} // namespace
+
+std::span<const ShapeFamily> shapeFamilies() {
+    return kFamilies;
+}
+
+const ShapeFamily* findShapeFamily(std::string_view name) {
+    for (const ShapeFamily& family : kFamilies)
+        if (family.name == name) return &family;
+    return nullptr;
+}
+
+std::string shapeFamilyNames() {
+    std::string names;
+    for (const ShapeFamily& family : kFamilies)
+        names += (names.empty() ? "" : ", ") + std::string(family.name);
+    return names;
+}
+
+ShapeSpec ShapeSpec::fromValues(std::string_view name, std::span<const double> values) {
+    if (findShapeFamily(name) == nullptr)
+        throw std::invalid_argument(
+            fmt::format("unknown shape family '{}' (known: {})", name, shapeFamilyNames()));
+    if (values.size() != std::size(kSuperballParameters))
+        throw std::invalid_argument(
+            fmt::format("the superball takes 1 parameter (p), not {}", values.size()));
+    return superball(values[0]);
+}
+
+const ShapeFamily& ShapeSpec::info() const {
+    return kFamilies[static_cast<int>(family)];
+}
+
+std::vector<double> ShapeSpec::values() const {
+    return {p};
+}
+
+std::optional<std::string> ShapeSpec::problem() const {
+    if (p >= 0.5 && std::isfinite(p)) return std::nullopt;
+    return fmt::format("p = {} (must be finite and >= 0.5)", p);
+}
+
+std::string ShapeSpec::describe() const {
+    return fmt::format("p = {}", p);
+}
 
 ParticleShape::ParticleShape(const ShapeSpec& spec, double semiAxis)
     : superball_(spec.p, semiAxis) {}

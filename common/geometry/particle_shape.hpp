@@ -8,9 +8,30 @@
 
 #include "geometry/superball.hpp"
 
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
 namespace sbpack {
 
-/// A shape family and its parameters, without a size.
+/// One parameter of a shape family, under the name the packing file and the results carry.
+struct ShapeParameter {
+    std::string_view name;
+    /// "1" dimensionless, "length" (the packing's, as the semi-axis).
+    std::string_view units;
+    std::string_view description;
+};
+
+/// A shape family: its name and its parameters, in the order ShapeSpec::values gives them.
+struct ShapeFamily {
+    std::string_view name;
+    std::span<const ShapeParameter> parameters;
+};
+
+/// A shape family and its parameters, without a size. Files, results, ensembles and messages
+/// know a shape only through its identity here (family(), values(), problem(), describe()).
 struct ShapeSpec {
     enum class Family { superball };
     Family family = Family::superball;
@@ -18,10 +39,29 @@ struct ShapeSpec {
     double p = 1.0;
 
     static ShapeSpec superball(double exponent) { return {Family::superball, exponent}; }
+    /// The shape of family `name` (shapeFamilies()) with `values` in its parameters' order;
+    /// throws std::invalid_argument for an unknown family or the wrong number of values.
+    static ShapeSpec fromValues(std::string_view name, std::span<const double> values);
     /// Spheres: superballs of p = 1 (sbgen's exact sphere engine; orientations carry nothing).
     bool isSphere() const { return family == Family::superball && p == 1.0; }
+    /// The family's name and parameters.
+    const ShapeFamily& info() const;
+    /// The parameters' values, in the order of info().parameters.
+    std::vector<double> values() const;
+    /// What makes the parameters no shape of the family (e.g. "p = 0.4 (must be finite and
+    /// >= 0.5)"), or nothing.
+    std::optional<std::string> problem() const;
+    /// The parameters for messages and tables: "p = 1.5".
+    std::string describe() const;
     bool operator==(const ShapeSpec&) const = default;
 };
+
+/// Every shape family, the superball first (a file without a family name holds superballs).
+std::span<const ShapeFamily> shapeFamilies();
+/// The family called `name`, or nullptr.
+const ShapeFamily* findShapeFamily(std::string_view name);
+/// The families' names, for messages: "superball".
+std::string shapeFamilyNames();
 
 /// A body of a ShapeSpec at semi-axis R (the largest half-width of its bounding box).
 class ParticleShape {

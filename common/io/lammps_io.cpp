@@ -94,7 +94,7 @@ class DumpColumns {
 
 /// The particle of one ATOMS line, feeding the roundness.
 Particle dumpParticle(const std::vector<std::string>& tokens, const DumpColumns& columns,
-                      const std::array<std::array<double, 2>, 3>& bounds, ShapeParameter& roundness,
+                      const std::array<std::array<double, 2>, 3>& bounds, UniformColumn& roundness,
                       const LineReader& reader) {
     if (tokens.size() != columns.size())
         reader.fail(fmt::format("{} values for {} columns", tokens.size(), columns.size()));
@@ -152,7 +152,7 @@ Packing readLammpsDump(const fs::path& file) {
     std::array<std::array<double, 2>, 3> bounds{};
     bool boxRead = false;
     std::vector<Particle> particles;
-    ShapeParameter roundness("p (SuperquadricRoundness = 1 / p)", {});
+    UniformColumn roundness("p (SuperquadricRoundness = 1 / p)", {});
     while (particles.empty() && reader.next(line)) {
         if (!line.starts_with("ITEM: "))
             reader.fail("expected an 'ITEM:' line, got '" + line + "'");
@@ -237,7 +237,7 @@ std::vector<std::vector<std::string>> sectionLines(LineReader& reader, long long
 
 /// One line of the Atoms (`atom`) or Ellipsoids section into its particle and p.
 void readDataLine(const std::vector<std::string>& t, bool atom, Particle& particle,
-                  const DataHeader& header, ShapeParameter& p, const LineReader& reader) {
+                  const DataHeader& header, UniformColumn& p, const LineReader& reader) {
     if (atom) {
         if (t.size() != 7 && t.size() != 10) reader.fail("expected id type 1 density x y z");
         for (int k = 0; k < 3; ++k)
@@ -297,7 +297,7 @@ Packing readLammpsData(const fs::path& file) {
     if (header.ellipsoids != header.atoms)
         reader.fail("every atom must be an ellipsoid (atom_style ellipsoid)");
     std::map<long long, Particle> particles;
-    ShapeParameter p("p (blockiness / 2)", {});
+    UniformColumn p("p (blockiness / 2)", {});
     std::string line = section;
     do { // the sections by their keyword lines; others (Masses, Velocities) are passed over
         const std::vector<std::string> words = splitWhitespace(line.substr(0, line.find('#')));

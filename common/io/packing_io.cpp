@@ -208,13 +208,38 @@ void migrate(hid_t root, std::int64_t version, Packing& packing) {
     }
 }
 
+/// The shape's family (only where it is not the superball, so that every superball file is as
+/// before) and its parameters by name.
+void writeShape(hid_t root, const ShapeSpec& shape) {
+    const ShapeFamily& family = shape.info();
+    if (family.name != shapeFamilies().front().name)
+        writeStringAttribute(root, kShape, std::string(family.name));
+    const std::vector<double> values = shape.values();
+    for (std::size_t k = 0; k < values.size(); ++k)
+        writeDoubleAttribute(root, std::string(family.parameters[k].name), values[k]);
+}
+
+ShapeSpec readShape(hid_t root, const std::string& file) {
+    const std::string name = hasAttribute(root, kShape) ? readStringAttribute(root, kShape)
+                                                        : std::string(shapeFamilies().front().name);
+    const ShapeFamily* family = findShapeFamily(name);
+    if (family == nullptr)
+        throw PackingFileError("'" + file + "': shape '" + name +
+                               "' is not a shape family this build knows (" + shapeFamilyNames() +
+                               ")");
+    std::vector<double> values;
+    for (const ShapeParameter& parameter : family->parameters)
+        values.push_back(readDoubleAttribute(root, std::string(parameter.name)));
+    return ShapeSpec::fromValues(name, values);
+}
+
 /// The packing file's bytes (built in memory; docs/design.md §4).
 std::string fileContents(const Packing& packing, const std::string& name) {
     Hdf5Handle file = createFile(name);
     const hid_t root = file.get();
     writeStringAttribute(root, kFormat, kPackingFormat);
     writeInt64Attribute(root, kFormatVersion, kPackingFormatVersion);
-    writeDoubleAttribute(root, kP, packing.superball().p());
+    writeShape(root, packing.shapeSpec);
     writeDoubleAttribute(root, kBoxLength, packing.boxLength);
     writeDoubleAttribute(root, kSemiAxis, packing.semiAxis);
     writeInt64Attribute(root, kParticles, static_cast<std::int64_t>(packing.size()));
@@ -260,7 +285,7 @@ Packing readContents(hid_t root, const std::string& file) {
                                std::to_string(kPackingFormatVersion) + ")");
 
     Packing packing;
-    packing.shapeSpec = ShapeSpec::superball(readDoubleAttribute(root, kP));
+    packing.shapeSpec = readShape(root, file);
     packing.boxLength = readDoubleAttribute(root, kBoxLength);
     packing.semiAxis = readDoubleAttribute(root, kSemiAxis);
     const std::int64_t n = readInt64Attribute(root, kParticles);

@@ -1,6 +1,10 @@
 #include "io/packing_schema.hpp"
 
+#include "geometry/particle_shape.hpp"
 #include "packing/packing.hpp"
+
+#include <iterator>
+#include <vector>
 
 namespace sbpack {
 
@@ -17,14 +21,17 @@ constexpr PackingType U = PackingType::UInt64;
 constexpr PackingType S = PackingType::String;
 
 // The root's attributes, its datasets, then the groups (docs/design.md §4).
-constexpr PackingEntry kEntries[] = {
+constexpr PackingEntry kLeading[] = {
     {.name = kFormat, .kind = A, .type = S, .description = "\"sbpack.packing\""},
     {.name = kFormatVersion,
      .kind = A,
      .type = I,
      .units = "1",
      .description = "1 (this layout); a reader refuses any other"},
-    {.name = kP, .kind = A, .type = F, .units = "1", .description = "superball exponent, >= 0.5"},
+};
+
+// Then the shape's (from geometry/particle_shape), then these.
+constexpr PackingEntry kEntries[] = {
     {.name = kBoxLength,
      .kind = A,
      .type = F,
@@ -245,7 +252,27 @@ constexpr PackingMigration kMigrations[] = {
 } // namespace
 
 std::span<const PackingEntry> packingEntries() {
-    return kEntries;
+    static const std::vector<PackingEntry> entries = [] {
+        std::vector<PackingEntry> all(std::begin(kLeading), std::end(kLeading));
+        all.push_back({.name = kShape,
+                       .kind = A,
+                       .type = S,
+                       .description = "the shape family, whose parameters follow; absent: "
+                                      "superball (written only for another family)",
+                       .optional = true});
+        const bool several = shapeFamilies().size() > 1;
+        for (const ShapeFamily& family : shapeFamilies())
+            for (const ShapeParameter& parameter : family.parameters)
+                all.push_back({.name = parameter.name,
+                               .kind = A,
+                               .type = F,
+                               .units = parameter.units,
+                               .description = parameter.description,
+                               .optional = several});
+        all.insert(all.end(), std::begin(kEntries), std::end(kEntries));
+        return all;
+    }();
+    return entries;
 }
 
 std::span<const PackingMigration> packingMigrations() {

@@ -22,7 +22,9 @@ inline constexpr std::int64_t kPackingFormatVersion = 1;
 namespace packing_file {
 inline constexpr const char* kFormat = "format";
 inline constexpr const char* kFormatVersion = "format_version";
-inline constexpr const char* kP = "p";
+/// The shape family's name (ShapeSpec::info); absent: superball. The family's parameters follow
+/// under their own names (ShapeParameter::name, e.g. "p").
+inline constexpr const char* kShape = "shape";
 inline constexpr const char* kBoxLength = "box_length";
 inline constexpr const char* kSemiAxis = "semi_axis";
 inline constexpr const char* kParticles = "n_particles";

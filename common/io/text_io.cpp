@@ -285,8 +285,8 @@ Packing readExtendedXyz(const fs::path& file) {
         return key(name) ? std::optional(reader.parseDouble(*key(name))) : std::nullopt;
     };
     const std::optional<double> headerP = number("p");
-    ShapeParameter roundness("p (superquadric_roundness = 1 / p)",
-                             headerP ? std::optional(1.0 / *headerP) : std::nullopt);
+    UniformColumn roundness("p (superquadric_roundness = 1 / p)",
+                            headerP ? std::optional(1.0 / *headerP) : std::nullopt);
     const std::optional<double> headerSemiAxis = number("semi_axis");
     std::vector<double> semiAxes; // each particle's, from aspherical_shape
     Packing packing;

@@ -108,11 +108,12 @@ class LineReader {
     int number_ = 0;
 };
 
-/// One shape parameter: the header's key where there is one, else the column's value, the same
-/// in every particle and every component (the header and the columns must agree to 1e-12).
-class ShapeParameter {
+/// One shape parameter of a text file (e.g. p): the header's key where there is one, else the
+/// column's value, the same in every particle and every component (the header and the columns must
+/// agree to 1e-12).
+class UniformColumn {
   public:
-    ShapeParameter(std::string key, std::optional<double> header)
+    UniformColumn(std::string key, std::optional<double> header)
         : key_(std::move(key)), value_(header) {}
     void column(double v, const LineReader& reader) {
         if (!value_) value_ = v;

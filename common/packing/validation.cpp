@@ -62,12 +62,12 @@ void checkOptionalRows(const std::vector<Vector3d>& rows, const std::string& wha
 
 namespace {
 
-/// p, the box, the semi-axis and the pressure: each finite and in range, the particle narrower
-/// than the box.
+/// The shape's parameters, the box, the semi-axis and the pressure: each finite and in range, the
+/// particle narrower than the box.
 void checkScalars(const Packing& packing, const std::string& source) {
-    const double p = packing.shapeSpec.p; // before any ParticleShape, which would throw
-    if (!(p >= 0.5 && std::isfinite(p)))
-        reject(source, "p = " + formatDouble(p) + " (must be finite and >= 0.5)");
+    // Before any ParticleShape, which would throw.
+    if (const std::optional<std::string> problem = packing.shapeSpec.problem())
+        reject(source, *problem);
     if (!(packing.boxLength > 0.0 && std::isfinite(packing.boxLength)))
         reject(source,
                "box_length = " + formatDouble(packing.boxLength) + " (must be finite and > 0)");

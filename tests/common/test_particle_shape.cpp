@@ -1,0 +1,73 @@
+// The shape description (common/geometry/particle_shape, docs/architecture.md "What a new shape
+// needs"): a family's identity by name, and a body of it whose geometry is the superball's.
+#include "geometry/particle_shape.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sbpack {
+namespace {
+
+std::string messageOf(auto&& call) {
+    try {
+        call();
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "(no exception)";
+}
+
+TEST(ShapeSpec, TheSuperballIsNamedWithItsExponent) {
+    const ShapeSpec shape = ShapeSpec::superball(1.5);
+    EXPECT_EQ(shape.info().name, "superball");
+    ASSERT_EQ(shape.info().parameters.size(), 1u);
+    EXPECT_EQ(shape.info().parameters[0].name, "p");
+    EXPECT_EQ(shape.values(), std::vector<double>{1.5});
+    EXPECT_EQ(shape.describe(), "p = 1.5");
+    EXPECT_EQ(ShapeSpec::fromValues("superball", shape.values()), shape);
+    EXPECT_EQ(shapeFamilies().front().name, "superball"); // a file without a family holds these
+    EXPECT_EQ(findShapeFamily("superball"), &shapeFamilies().front());
+    EXPECT_EQ(findShapeFamily("ellipsoid"), nullptr);
+}
+
+TEST(ShapeSpec, ParametersOutsideTheFamilyAreNamed) {
+    EXPECT_FALSE(ShapeSpec::superball(0.5).problem()); // the octahedron
+    EXPECT_FALSE(ShapeSpec::superball(1000.0).problem());
+    EXPECT_EQ(ShapeSpec::superball(0.4).problem().value_or(""),
+              "p = 0.4 (must be finite and >= 0.5)");
+    EXPECT_EQ(ShapeSpec::superball(NAN).problem().value_or(""),
+              "p = nan (must be finite and >= 0.5)");
+    EXPECT_TRUE(ShapeSpec::superball(INFINITY).problem());
+    const std::vector<double> two{1.0, 2.0};
+    EXPECT_EQ(messageOf([&] { ShapeSpec::fromValues("superball", two); }),
+              "the superball takes 1 parameter (p), not 2");
+    EXPECT_EQ(messageOf([&] { ShapeSpec::fromValues("cube", two); }),
+              "unknown shape family 'cube' (known: superball)");
+}
+
+// Only p = 1 is the sphere; the body at a size has the superball's geometry (paper Eq. 1 and
+// Sec. II D), whose closed forms tests/common/test_superball.cpp checks.
+TEST(ParticleShape, IsTheSuperballOfItsSpec) {
+    EXPECT_TRUE(ShapeSpec::superball(1.0).isSphere());
+    EXPECT_FALSE(ShapeSpec::superball(1.0 + 1e-12).isSphere());
+    const ParticleShape sphere(ShapeSpec::superball(1.0), 0.5);
+    EXPECT_NEAR(sphere.volume(), M_PI / 6.0, 1e-15);
+    EXPECT_NEAR(sphere.meanWidth(), 1.0, 1e-14);
+    for (const double p : {0.5, 0.85, 1.5, 10.0}) {
+        const ParticleShape body(ShapeSpec::superball(p), 0.7);
+        const Superball superball(p, 0.7);
+        EXPECT_EQ(body.volume(), superball.volume()) << p;
+        EXPECT_EQ(body.meanWidth(), superball.meanWidth()) << p;
+        EXPECT_EQ(body.circumradius(), superball.circumradius()) << p;
+        EXPECT_EQ(body.inradius(), superball.inradius()) << p;
+        EXPECT_EQ(body.diameter(), 1.4) << p;
+    }
+    EXPECT_THROW(ParticleShape(ShapeSpec::superball(0.4), 1.0), std::invalid_argument);
+}
+
+} // namespace
+} // namespace sbpack
