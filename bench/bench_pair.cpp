@@ -68,7 +68,7 @@ std::vector<PoolEntry> makePool(double p, const PoolParameters& parameters) {
         const Vector3d u = gaussianDirection(rng);
         // mu is homogeneous of degree one in d, so the contact distance along u is 1/mu(u).
         const double contact =
-            1.0 / sbpack::scaleFactor({shape, rotationA, rotationB, u}).scaleFactor;
+            1.0 / sbpack::scaleFactor(SuperballPair{shape, rotationA, rotationB, u}).scaleFactor;
         SuperballPair pair{shape, rotationA, rotationB, contact * gap(rng) * u};
         const Vector3d warmNormal = sbpack::scaleFactor(pair).normal;
         pair.displacement +=

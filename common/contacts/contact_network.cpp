@@ -66,17 +66,17 @@ std::vector<bool> findRattlers(int count, const std::vector<std::pair<int, int>>
 /// for a mixture's pair the two bodies' radii summed (`pairScale` = (R_i + R_j) / 2R).
 struct SphereBounds {
     double inradius, circumradius, slack;
-    explicit SphereBounds(const Superball& shape, double pairScale = 1.0)
+    explicit SphereBounds(const ParticleShape& shape, double pairScale = 1.0)
         : inradius(shape.inradius() * pairScale), circumradius(shape.circumradius() * pairScale),
           slack(boundSlack * shape.diameter() * pairScale) {}
 };
 
 /// Pair (i, j) of `packing`: A with i's shape, B scaled to j's (docs/mixtures.md).
-SuperballPair pairOf(const Packing& packing, const Superball& shape, int i, int j,
-                     const std::vector<Matrix3d>& rotations, const Vector3d& d) {
+BodyPair<ParticleShape> pairOf(const Packing& packing, const ParticleShape& shape, int i, int j,
+                               const std::vector<Matrix3d>& rotations, const Vector3d& d) {
     if (!packing.isMixture()) return {shape, rotations[i], rotations[j], d};
     const double ri = packing.semiAxisOf(i), rj = packing.semiAxisOf(j);
-    return {Superball(shape.p(), ri), rotations[i], rotations[j], d, rj / ri};
+    return {ParticleShape(packing.shapeSpec, ri), rotations[i], rotations[j], d, rj / ri};
 }
 
 /// Throws unless s of pair (i, j) at this centre distance lies within the sphere bounds.
@@ -135,7 +135,7 @@ ContactResult ContactNetwork::compute(const Packing& packing) const {
         throw std::invalid_argument("contact network: packing has " + std::to_string(size) +
                                     " positions but " +
                                     std::to_string(packing.orientations.size()) + " orientations");
-    const Superball shape = packing.superball();
+    const ParticleShape shape = packing.shape();
     const double diameter = shape.diameter();
     const double contactGap = parameters_.tolerance * diameter;
     const SphereBounds bounds(shape);

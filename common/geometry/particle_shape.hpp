@@ -77,10 +77,27 @@ class ParticleShape {
     double circumradius() const { return superball_.circumradius(); }
     double inradius() const { return superball_.inradius(); }
     bool isSphere() const { return superball_.isSphere(); }
+    bool isOctahedron() const { return superball_.isOctahedron(); }
+    /// The same shape at `factor` times the size.
+    ParticleShape scaled(double factor) const { return ParticleShape(superball_.scaled(factor)); }
+
+    /// The body as the pair solvers and the curvature see it (pair/pair_geometry's ConvexBody,
+    /// body frame): gauge, support function, support point, its Hessian, the surface curvature.
+    double gauge(const Vector3d& xBody) const { return superball_.gauge(xBody); }
+    double support(const Vector3d& nBody) const { return superball_.support(nBody); }
+    Vector3d supportPoint(const Vector3d& nBody) const { return superball_.supportPoint(nBody); }
+    Matrix3d supportHessian(const Vector3d& nBody) const {
+        return superball_.supportHessian(nBody);
+    }
+    Matrix3d surfaceCurvature(const Vector3d& nBody) const {
+        return superball_.surfaceCurvature(nBody);
+    }
+
     /// The superball, for code that holds for superballs only.
     const Superball& superball() const { return superball_; }
 
   private:
+    explicit ParticleShape(const Superball& superball) : superball_(superball) {}
     Superball superball_;
 };
 

@@ -186,4 +186,16 @@ double Superball::meanWidth() const {
     return 2.0 * 48.0 * integral / (4.0 * std::numbers::pi); // w = (1/4pi) int 2 h dOmega
 }
 
+Matrix3d Superball::surfaceCurvature(const Vector3d& nBody) const {
+    // With y = |x| / R: Hess(xi) / |grad xi| = (2p - 1) / R diag(y^{2p-2}) / |y^{2p-1}| (the
+    // 2p / R cancel).
+    const Vector3d y = (supportPoint(nBody) / r_).cwiseAbs();
+    Vector3d gradient, diagonal;
+    for (int k = 0; k < 3; ++k) {
+        gradient[k] = std::pow(y[k], 2.0 * p_ - 1.0);
+        diagonal[k] = std::pow(y[k], 2.0 * p_ - 2.0);
+    }
+    return ((2.0 * p_ - 1.0) / (r_ * gradient.norm())) * diagonal.asDiagonal();
+}
+
 } // namespace sbpack

@@ -19,6 +19,8 @@ class Superball {
     Superball(double p, double semiAxis);
 
     double p() const { return p_; }
+    /// The same exponent at `factor` times the semi-axis.
+    Superball scaled(double factor) const { return {p_, r_ * factor}; }
     double semiAxis() const { return r_; }
     double diameter() const { return 2.0 * r_; }
     /// Exponent of the dual norm, q = 2p / (2p - 1); infinite for the octahedron p = 0.5.
@@ -55,6 +57,12 @@ class Superball {
     /// Hessian of h at n, clamped to stay finite where it diverges (faces of cube-like
     /// shapes); zero for the octahedron.
     Matrix3d supportHessian(const Vector3d& nBody) const;
+
+    /// The curvature tensor (shape operator) of the surface at the support point along the unit
+    /// nBody, in the body frame: II = Hess(xi) / |grad xi| of xi(x) = sum_k |x_k / R|^{2p} - 1
+    /// (docs/jamming.md §6.1), to be projected on the tangent plane. Not finite (inf or NaN) at a
+    /// body coordinate 0 for p < 1 (edges; every point of the octahedron's support map).
+    Matrix3d surfaceCurvature(const Vector3d& nBody) const;
 
     double circumradius() const;
     double inradius() const;

@@ -28,29 +28,24 @@ Matrix3d rotationTerm(const Vector3d& sigma, const Vector3d& n) {
     return sigma.dot(n) * Matrix3d::Identity() - 0.5 * (outer + outer.transpose());
 }
 
-} // namespace
-
-Matrix3d surfaceCurvature(const Superball& shape, const Matrix3d& rotation,
-                          const Vector3d& normal) {
-    // II = P^T Hess(xi) P / |grad xi|, xi = sum |x_k / R|^{2p} - 1: with y = |x| / R,
-    // Hess(xi) / |grad xi| = (2p - 1) / R diag(y^{2p-2}) / |y^{2p-1}| (the 2p / R cancel).
-    const double p = shape.p(), r = shape.semiAxis();
-    const Vector3d y = (shape.supportPoint(rotation.transpose() * normal) / r).cwiseAbs();
-    Vector3d gradient, diagonal;
-    for (int k = 0; k < 3; ++k) {
-        gradient[k] = std::pow(y[k], 2.0 * p - 1.0);
-        diagonal[k] = std::pow(y[k], 2.0 * p - 2.0);
-    }
-    const Matrix3d bodyCurvature =
-        ((2.0 * p - 1.0) / (r * gradient.norm())) * diagonal.asDiagonal();
+/// The curvature tensor (shape operator) of a body's surface at its support point along `normal`
+/// (unit, lab frame; the surface's outward normal there), in the lab frame: symmetric, zero on
+/// `normal`, the inverse radii of curvature on the tangent plane. `rotation`: body -> lab.
+template <ConvexBody Body>
+Matrix3d surfaceCurvature(const Body& shape, const Matrix3d& rotation, const Vector3d& normal) {
+    // II = P^T Hess(xi) P / |grad xi| on the tangent plane (the body's own closed form).
+    const Matrix3d bodyCurvature = shape.surfaceCurvature(rotation.transpose() * normal);
     const Matrix3d tangent = Matrix3d::Identity() - normal * normal.transpose();
     return tangent * rotation * bodyCurvature * rotation.transpose() * tangent;
 }
 
-ContactCurvature contactCurvature(const Superball& shape, const Matrix3d& rotationA,
+} // namespace
+
+template <ConvexBody Body>
+ContactCurvature contactCurvature(const Body& shape, const Matrix3d& rotationA,
                                   const Matrix3d& rotationB, const Vector3d& displacement,
                                   const Vector3d& normal, double gap, double sizeB) {
-    const Superball shapeB = sizeB == 1.0 ? shape : Superball(shape.p(), shape.semiAxis() * sizeB);
+    const Body shapeB = sizeB == 1.0 ? shape : shape.scaled(sizeB);
     ContactCurvature c;
     c.normal = normal;
     c.gap = gap;
@@ -112,5 +107,10 @@ Matrix12d gapHessian(const ContactCurvature& c) {
     hessian -= z.transpose() * (grownA + wB).inverse() * z;
     return hessian;
 }
+
+template ContactCurvature contactCurvature(const Superball&, const Matrix3d&, const Matrix3d&,
+                                           const Vector3d&, const Vector3d&, double, double);
+template ContactCurvature contactCurvature(const ParticleShape&, const Matrix3d&, const Matrix3d&,
+                                           const Vector3d&, const Vector3d&, double, double);
 
 } // namespace sbpack

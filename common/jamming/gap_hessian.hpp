@@ -1,21 +1,14 @@
 #pragma once
 // The second derivatives of a contact's gap (docs/jamming.md §6.1): the exact signed distance s
-// of two superballs (common/pair) as a function of the 12 coordinates (dr_A, dtheta_A, dr_B,
-// dtheta_B), the rotations as R = exp([dtheta]) R0, from both surfaces' curvature at the contact
-// points. The curvature is that of the implicit function xi(x) = sum_k |x_k / R|^{2p} - 1,
-// II = P^T Hess(xi) P / |grad xi| on the tangent plane, finite wherever no body coordinate of the
-// contact point vanishes for p < 1 (the edges of octahedron-like superballs, where it diverges).
+// of two bodies (common/pair, any ConvexBody) as a function of the 12 coordinates (dr_A, dtheta_A,
+// dr_B, dtheta_B), the rotations as R = exp([dtheta]) R0, from both surfaces' curvature at the
+// contact points (the body's surfaceCurvature projected on the tangent plane; for the superball
+// finite wherever no body coordinate of the contact point vanishes for p < 1: the edges of
+// octahedron-like superballs, where it diverges).
 
-#include "geometry/superball.hpp"
+#include "pair/pair_geometry.hpp"
 
 namespace sbpack {
-
-/// The curvature tensor (shape operator) of a body's surface at its support point along `normal`
-/// (unit, lab frame; the surface's outward normal there), in the lab frame: symmetric, zero on
-/// `normal`, the inverse radii of curvature on the tangent plane. `rotation`: body -> lab. Not
-/// finite (inf or NaN) at a body coordinate 0 for p < 1 (edges; every point of the octahedron's
-/// support map).
-Matrix3d surfaceCurvature(const Superball& shape, const Matrix3d& rotation, const Vector3d& normal);
 
 /// What the Hessian of a contact's gap needs: lever arms from each centre to its own closest
 /// point (apart by `gap` along `normal` from A's to B's) and the two curvature tensors there.
@@ -36,7 +29,8 @@ struct ContactCurvature {
 /// x_A = a + P (W_A + W_B)^{-1} W_B P^T (b - s n - a), x_B = x_A + s n; the midpoint of a and
 /// b - s n where both surfaces are flat (or both curvatures diverge); where one diverges, its
 /// own support point.
-ContactCurvature contactCurvature(const Superball& shape, const Matrix3d& rotationA,
+template <ConvexBody Body>
+ContactCurvature contactCurvature(const Body& shape, const Matrix3d& rotationA,
                                   const Matrix3d& rotationB, const Vector3d& displacement,
                                   const Vector3d& normal, double gap, double sizeB = 1.0);
 

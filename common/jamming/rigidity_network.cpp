@@ -26,7 +26,7 @@ RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& net
                                 const Matrix3d& cell) {
     checkSizes(packing, network);
     const double diameter = packing.shape().diameter();
-    const Superball shape(packing.superball().p(), 0.5); // units of D
+    const ParticleShape shape(packing.shapeSpec, 0.5); // units of D
     RigidityNetwork result;
     result.packingSize = static_cast<int>(packing.size());
     result.rotations = !packing.shape().isSphere();
@@ -47,9 +47,9 @@ RigidityNetwork backboneNetwork(const Packing& packing, const ContactResult& net
         const double gap = network.gaps[c] * packing.pairSize(i, j); // a mixture's: over R_i + R_j
         const double sizeA = packing.relativeSize(i);
         const ContactCurvature curvature = contactCurvature(
-            sizeA == 1.0 ? shape : Superball(shape.p(), 0.5 * sizeA),
-            packing.orientations[i].toRotationMatrix(), packing.orientations[j].toRotationMatrix(),
-            separation, network.normals[c], gap, packing.semiAxisOf(j) / packing.semiAxisOf(i));
+            sizeA == 1.0 ? shape : shape.scaled(sizeA), packing.orientations[i].toRotationMatrix(),
+            packing.orientations[j].toRotationMatrix(), separation, network.normals[c], gap,
+            packing.semiAxisOf(j) / packing.semiAxisOf(i));
         const Vector3d point = midpointLever(curvature);
         result.contacts.push_back({backboneIndex[i], backboneIndex[j], network.normals[c], point,
                                    point - separation, separation - inBox, std::max(gap, 0.0),

@@ -71,7 +71,7 @@ Packing referencePacking(const State& state) {
 /// of the pairs within `range` in the cell.
 ContactResult referencePairs(const State& state, double range, int rattlerThreshold) {
     const Matrix3d cellInverse = state.cell.inverse();
-    const Superball shape = state.packing.superball();
+    const ParticleShape shape = state.packing.shape();
     const double distortion = (cellInverse - Matrix3d::Identity()).norm() *
                               (2.0 * shape.circumradius() / shape.diameter() + range);
     return ContactNetwork(
@@ -98,7 +98,7 @@ struct EnergyTerms {
 class OverlapEnergy {
   public:
     OverlapEnergy(const Packing& packing, double shell, double margin, bool deformBox)
-        : shape_(packing.superball()), shell_(shell * packing.shape().diameter()),
+        : shape_(packing.shape()), shell_(shell * packing.shape().diameter()),
           margin_(margin * packing.shape().diameter()), boxLength_(packing.boxLength),
           rotations_(!shape_.isSphere()), deformBox_(deformBox),
           particles_(static_cast<int>(packing.size())) {}
@@ -171,7 +171,7 @@ class OverlapEnergy {
     void addPair(const State& state, const Matrix3d& cellInverse, std::size_t k, bool hessian,
                  EnergyTerms& terms);
 
-    Superball shape_;
+    ParticleShape shape_;
     double shell_, margin_, boxLength_;
     bool rotations_, deformBox_;
     int particles_;
@@ -226,7 +226,7 @@ void OverlapEnergy::addPair(const State& state, const Matrix3d& cellInverse, std
     const Matrix3d rotationI = state.packing.orientations[i].toRotationMatrix();
     const Matrix3d rotationJ = state.packing.orientations[j].toRotationMatrix();
     const SignedDistanceResult pair =
-        signedDistance({shape_, rotationI, rotationJ, d}, normals_[k]);
+        signedDistance(BodyPair<ParticleShape>{shape_, rotationI, rotationJ, d}, normals_[k]);
     normals_[k] = pair.normal;
     terms.smallestGap = std::min(terms.smallestGap, pair.signedDistance);
     const double force = shell_ - pair.signedDistance;
@@ -361,9 +361,9 @@ ContactResult relaxedContacts(const SoftMinimum& minimum, double tolerance, int 
     result.counts.assign(packing.size(), 0);
     for (const auto& [i, j] : candidates.contacts) {
         const Vector3d d = pairImage(state, cellInverse, i, j).separation;
-        const SignedDistanceResult pair =
-            signedDistance({packing.superball(), packing.orientations[i].toRotationMatrix(),
-                            packing.orientations[j].toRotationMatrix(), d});
+        const SignedDistanceResult pair = signedDistance(
+            BodyPair<ParticleShape>{packing.shape(), packing.orientations[i].toRotationMatrix(),
+                                    packing.orientations[j].toRotationMatrix(), d});
         if (pair.signedDistance >= tolerance * diameter) continue;
         result.contacts.emplace_back(i, j);
         result.gaps.push_back(pair.signedDistance / diameter);

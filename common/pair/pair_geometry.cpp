@@ -16,9 +16,10 @@ using Vector2d = Eigen::Vector2d;
 using Matrix2d = Eigen::Matrix2d;
 
 /// H(u) = h_A(u) + h_B(u) and its derivatives in the lab frame (u need not be unit).
-class MinkowskiSum {
+template <ConvexBody Body> class MinkowskiSum {
   public:
-    explicit MinkowskiSum(const SuperballPair& pair) : pair_(pair), shapeB_(sbpack::shapeB(pair)) {}
+    explicit MinkowskiSum(const BodyPair<Body>& pair)
+        : pair_(pair), shapeB_(sbpack::shapeB(pair)) {}
 
     double support(const Vector3d& u) const {
         ++evaluations;
@@ -45,18 +46,18 @@ class MinkowskiSum {
     /// A's and B's semi-axes summed: the pair's contact distance of spheres, its diameter.
     double pairDiameter() const { return shape().semiAxis() + shapeB_.semiAxis(); }
 
-    const Superball& shape() const { return pair_.shape; }
-    const Superball& shapeB() const { return shapeB_; }
+    const Body& shape() const { return pair_.shape; }
+    const Body& shapeB() const { return shapeB_; }
     const Matrix3d& ra() const { return pair_.rotationA; }
     const Matrix3d& rb() const { return pair_.rotationB; }
     const Vector3d& displacement() const { return pair_.displacement; }
-    const SuperballPair& pair() const { return pair_; }
+    const BodyPair<Body>& pair() const { return pair_; }
 
     mutable int evaluations = 0;
 
   private:
-    const SuperballPair& pair_;
-    Superball shapeB_;
+    const BodyPair<Body>& pair_;
+    Body shapeB_;
 };
 
 /// A bracket [lo, hi] of the root of phi', phi'(lo) = dlo < 0 <= dhi = phi'(hi), refined by
@@ -140,7 +141,8 @@ Vector2d newtonDirection(const Matrix2d& h, const Vector2d& g, double shift) {
 
 /// Unit vectors containing every face normal of K (faces of A, of B, and the cross
 /// products of their edge directions), up to sign.
-std::vector<Vector3d> octahedronFaceNormalCandidates(const MinkowskiSum& k) {
+template <ConvexBody Body>
+std::vector<Vector3d> octahedronFaceNormalCandidates(const MinkowskiSum<Body>& k) {
     static const std::array<Vector3d, 4> faces = {Vector3d(1, 1, 1), Vector3d(1, 1, -1),
                                                   Vector3d(1, -1, 1), Vector3d(-1, 1, 1)};
     static const std::array<Vector3d, 6> edges = {Vector3d(1, 1, 0), Vector3d(1, -1, 0),
@@ -159,7 +161,7 @@ std::vector<Vector3d> octahedronFaceNormalCandidates(const MinkowskiSum& k) {
     return normals;
 }
 
-ScaleFactorResult octahedronScaleFactor(const MinkowskiSum& k) {
+template <ConvexBody Body> ScaleFactorResult octahedronScaleFactor(const MinkowskiSum<Body>& k) {
     // The gauge of a polytope is its largest n.d / h(n) over the face normals (exact).
     ScaleFactorResult result;
     const Vector3d& d = k.displacement();
@@ -178,7 +180,8 @@ ScaleFactorResult octahedronScaleFactor(const MinkowskiSum& k) {
 /// s = max_n n.d - H(n) over directions that contain its maximiser: the face normals of K
 /// (nearest feature a face, or d inside K), the directions to its vertices, and to the
 /// nearest points of the segments between vertices (nearest feature an edge). Exact.
-void octahedronSignedDistance(const MinkowskiSum& k, SignedDistanceResult& result) {
+template <ConvexBody Body>
+void octahedronSignedDistance(const MinkowskiSum<Body>& k, SignedDistanceResult& result) {
     const Vector3d& d = k.displacement();
     double best = -std::numeric_limits<double>::infinity();
     auto consider = [&](Vector3d n) {
@@ -320,7 +323,8 @@ Vector2d cuttingPlaneMinimum(F&& valueAndGradient, Bound&& lowerBound, double ra
 /// Certificate of the scale factor mu at u: the bodies scaled by mu meet at mu s_A(u) or at
 /// d - mu s_B(u) (primal points; where one body presents a face its support point is
 /// ill-conditioned, the other's is not).
-bool scaledBodiesMeet(const MinkowskiSum& k, const Vector3d& u, double mu,
+template <ConvexBody Body>
+bool scaledBodiesMeet(const MinkowskiSum<Body>& k, const Vector3d& u, double mu,
                       const PairTolerances& tolerances) {
     const Vector3d& d = k.displacement();
     const double limit = mu * (1.0 + tolerances.certificateTolerance);
@@ -331,7 +335,8 @@ bool scaledBodiesMeet(const MinkowskiSum& k, const Vector3d& u, double mu,
 /// Where Newton stalled on a kink: H minimised exactly over the square of half-width `radius`
 /// in the tangent coordinates of d_hat (cutting planes: H is convex, so its subgradient cuts are
 /// supporting planes); (u, h) replaced where that is lower.
-void minimiseOverSquare(const MinkowskiSum& k, const Vector3d& dHat,
+template <ConvexBody Body>
+void minimiseOverSquare(const MinkowskiSum<Body>& k, const Vector3d& dHat,
                         const Eigen::Matrix<double, 3, 2>& basis, double radius,
                         const PairTolerances& tolerances, Vector3d& u, double& h) {
     double best = 0.0;
@@ -354,7 +359,8 @@ void minimiseOverSquare(const MinkowskiSum& k, const Vector3d& dHat,
 
 /// 1/mu = min H(u) / |d| over the plane u . d_hat = 1 (docs/design.md §2): a convex problem in
 /// the two tangent coordinates c, u = d_hat + P c.
-ScaleFactorResult generalScaleFactor(const MinkowskiSum& k, const Vector3d& warmNormal,
+template <ConvexBody Body>
+ScaleFactorResult generalScaleFactor(const MinkowskiSum<Body>& k, const Vector3d& warmNormal,
                                      const PairTolerances& tolerances) {
     const Vector3d& d = k.displacement();
     const double distance = d.norm();
@@ -404,7 +410,8 @@ ScaleFactorResult generalScaleFactor(const MinkowskiSum& k, const Vector3d& warm
 
 /// Ascent of f(n) = n.d - H(n) on the unit sphere from the normal of mu, which is exact
 /// at contact: Newton on the tangent plane of the current normal, f(u/|u|) = f~(u)/|u|.
-void generalSignedDistance(const MinkowskiSum& k, const PairTolerances& tolerances,
+template <ConvexBody Body>
+void generalSignedDistance(const MinkowskiSum<Body>& k, const PairTolerances& tolerances,
                            SignedDistanceResult& result) {
     const Vector3d& d = k.displacement();
     Vector3d n = result.normal;
@@ -474,20 +481,22 @@ Eigen::Matrix<double, 3, 2> tangentBasis(const Vector3d& n) {
     return basis;
 }
 
-double supportPlaneMismatch(const SuperballPair& pair, const Vector3d& n, double f,
+template <ConvexBody Body>
+double supportPlaneMismatch(const BodyPair<Body>& pair, const Vector3d& n, double f,
                             const Vector3d& contactA, const Vector3d& contactB) {
     const Vector3d& d = pair.displacement;
     const Vector3d belowB = contactB - f * n, aboveA = contactA + f * n - d;
-    const MinkowskiSum k(pair);
+    const MinkowskiSum<Body> k(pair);
     const double gaugeA = std::max(1.0, k.gaugeA(belowB));
     const double gaugeB = std::max(1.0, k.gaugeB(aboveA));
     return std::min((contactB - belowB / gaugeA).norm(), (contactA - d - aboveA / gaugeB).norm()) -
            f;
 }
 
-LocalMaximum tangentMaximum(const SuperballPair& pair, const Vector3d& n, double radius,
+template <ConvexBody Body>
+LocalMaximum tangentMaximum(const BodyPair<Body>& pair, const Vector3d& n, double radius,
                             double resolution, int iterations) {
-    const MinkowskiSum k(pair);
+    const MinkowskiSum<Body> k(pair);
     const Vector3d& d = pair.displacement;
     const Eigen::Matrix<double, 3, 2> basis = tangentBasis(n);
     // -f~(n + P c) is convex in c (f~(u) = u . d - H(u), H convex): its supporting planes, from
@@ -517,18 +526,20 @@ LocalMaximum tangentMaximum(const SuperballPair& pair, const Vector3d& n, double
             k.evaluations};
 }
 
-ScaleFactorResult scaleFactor(const SuperballPair& pair, const Vector3d& warmNormal,
+template <ConvexBody Body>
+ScaleFactorResult scaleFactor(const BodyPair<Body>& pair, const Vector3d& warmNormal,
                               const PairTolerances& tolerances) {
     const Vector3d& d = pair.displacement;
     const double distance = d.norm();
     if (distance == 0.0) return {0.0, Vector3d::UnitX(), 0, 0, 0};
-    const MinkowskiSum k(pair);
+    const MinkowskiSum<Body> k(pair);
     if (pair.shape.isSphere()) return {distance / k.pairDiameter(), d / distance, 0, 0, 0};
     if (pair.shape.isOctahedron()) return octahedronScaleFactor(k);
     return generalScaleFactor(k, warmNormal, tolerances);
 }
 
-SignedDistanceResult signedDistance(const SuperballPair& pair, const Vector3d& warmNormal,
+template <ConvexBody Body>
+SignedDistanceResult signedDistance(const BodyPair<Body>& pair, const Vector3d& warmNormal,
                                     const PairTolerances& tolerances) {
     const ScaleFactorResult mu = scaleFactor(pair, warmNormal, tolerances);
     SignedDistanceResult result;
@@ -536,7 +547,7 @@ SignedDistanceResult signedDistance(const SuperballPair& pair, const Vector3d& w
     result.normal = mu.normal;
     result.iterations = mu.iterations;
     result.fallbacks = mu.fallbacks;
-    const MinkowskiSum k(pair);
+    const MinkowskiSum<Body> k(pair);
     const Vector3d& d = pair.displacement;
     if (pair.shape.isSphere()) {
         result.signedDistance = d.norm() - k.pairDiameter();
@@ -554,5 +565,20 @@ SignedDistanceResult signedDistance(const SuperballPair& pair, const Vector3d& w
 Vector3d contactPoint(const SignedDistanceResult& result) {
     return 0.5 * (result.contactA + result.contactB);
 }
+
+// The bodies the solvers are built for: the superball (sbgen's engine) and the particle shape of
+// a packing (the analyses), which holds any family (geometry/particle_shape).
+#define SBPACK_PAIR_SOLVERS(Body)                                                                  \
+    template double supportPlaneMismatch(const BodyPair<Body>&, const Vector3d&, double,           \
+                                         const Vector3d&, const Vector3d&);                        \
+    template LocalMaximum tangentMaximum(const BodyPair<Body>&, const Vector3d&, double, double,   \
+                                         int);                                                     \
+    template ScaleFactorResult scaleFactor(const BodyPair<Body>&, const Vector3d&,                 \
+                                           const PairTolerances&);                                 \
+    template SignedDistanceResult signedDistance(const BodyPair<Body>&, const Vector3d&,           \
+                                                 const PairTolerances&);
+SBPACK_PAIR_SOLVERS(Superball)
+SBPACK_PAIR_SOLVERS(ParticleShape)
+#undef SBPACK_PAIR_SOLVERS
 
 } // namespace sbpack

@@ -1,5 +1,5 @@
 #pragma once
-// Pair geometry of two identical oriented superballs (docs/design.md §2).
+// Pair geometry of two oriented convex bodies, superballs or any ConvexBody (docs/design.md §2).
 //
 // With K = A + B the Minkowski sum (both bodies centrally symmetric) and d = r_B - r_A:
 //   scale factor     mu = max_{|n|=1} n.d / (h_A(n) + h_B(n))   (gauge of K at d)
@@ -11,9 +11,30 @@
 // where Newton stalls on the kinks of near-cubes; the octahedron p = 0.5 is exact over its
 // candidate face normals.
 
-#include "geometry/superball.hpp"
+#include "geometry/particle_shape.hpp"
+
+#include <concepts>
 
 namespace sbpack {
+
+/// What the pair solvers need of a body (centrally symmetric and convex, in its own frame): its
+/// support function h, support point and the Hessian of h (docs/design.md §2), its gauge, its
+/// semi-axis, the body scaled by a factor (B of a mixture's pair), whether it is a sphere or
+/// the octahedron (each solved in closed form), and its surface's curvature at the support point
+/// (jamming/gap_hessian). Superball (sbgen's engine) and ParticleShape (the
+/// analyses, any family) are two.
+template <class Body>
+concept ConvexBody = requires(const Body& body, const Vector3d& v, double factor) {
+    { body.support(v) } -> std::convertible_to<double>;
+    { body.supportPoint(v) } -> std::convertible_to<Vector3d>;
+    { body.supportHessian(v) } -> std::convertible_to<Matrix3d>;
+    { body.gauge(v) } -> std::convertible_to<double>;
+    { body.semiAxis() } -> std::convertible_to<double>;
+    { body.scaled(factor) } -> std::same_as<Body>;
+    { body.isSphere() } -> std::same_as<bool>;
+    { body.isOctahedron() } -> std::same_as<bool>;
+    { body.surfaceCurvature(v) } -> std::convertible_to<Matrix3d>;
+};
 
 /// Iteration limits and tolerances of the pair solvers, in one place.
 struct PairTolerances {
@@ -38,18 +59,18 @@ struct PairTolerances {
 /// One pair: the two orientations (rotation body -> lab) and the displacement d = r_B - r_A.
 /// A is `shape`; B is `shape` scaled by sizeB (a mixture's pair, docs/mixtures.md: its support
 /// function sizeB h, support point sizeB x(n), gauge g / sizeB), identical where sizeB = 1.
-struct SuperballPair {
-    Superball shape;
+template <ConvexBody Body> struct BodyPair {
+    Body shape;
     Matrix3d rotationA;
     Matrix3d rotationB;
     Vector3d displacement;
     double sizeB = 1.0; ///< B's semi-axis over A's
 };
+using SuperballPair = BodyPair<Superball>;
 
 /// B's own shape: `pair.shape` itself where sizeB = 1 (identical bodies, the same arithmetic).
-inline Superball shapeB(const SuperballPair& pair) {
-    return pair.sizeB == 1.0 ? pair.shape
-                             : Superball(pair.shape.p(), pair.shape.semiAxis() * pair.sizeB);
+template <ConvexBody Body> Body shapeB(const BodyPair<Body>& pair) {
+    return pair.sizeB == 1.0 ? pair.shape : pair.shape.scaled(pair.sizeB);
 }
 
 struct ScaleFactorResult {
@@ -83,7 +104,8 @@ struct SignedDistanceResult {
 /// (p > 1: its support point slides across the face under rounding changes of n), because the
 /// other body's support point is well conditioned there. contactA, contactB as in
 /// SignedDistanceResult (relative to r_A).
-double supportPlaneMismatch(const SuperballPair& pair, const Vector3d& n, double f,
+template <ConvexBody Body>
+double supportPlaneMismatch(const BodyPair<Body>& pair, const Vector3d& n, double f,
                             const Vector3d& contactA, const Vector3d& contactB);
 
 /// Orthonormal tangent basis (columns) of the plane orthogonal to the unit vector n.
@@ -103,7 +125,8 @@ struct LocalMaximum {
     bool interior = false;
     int evaluations = 0; ///< support-point pairs evaluated
 };
-LocalMaximum tangentMaximum(const SuperballPair& pair, const Vector3d& n, double radius,
+template <ConvexBody Body>
+LocalMaximum tangentMaximum(const BodyPair<Body>& pair, const Vector3d& n, double radius,
                             double resolution, int iterations);
 
 /// The contact point of a pair, relative to r_A: the midpoint of the two support points
@@ -114,12 +137,14 @@ LocalMaximum tangentMaximum(const SuperballPair& pair, const Vector3d& n, double
 Vector3d contactPoint(const SignedDistanceResult& result);
 
 /// mu of the pair. warmNormal, if non-zero, is a previous normal of the same pair.
-ScaleFactorResult scaleFactor(const SuperballPair& pair,
+template <ConvexBody Body>
+ScaleFactorResult scaleFactor(const BodyPair<Body>& pair,
                               const Vector3d& warmNormal = Vector3d::Zero(),
                               const PairTolerances& tolerances = {});
 
 /// Signed distance, normal and contact points; starts from the normal of mu.
-SignedDistanceResult signedDistance(const SuperballPair& pair,
+template <ConvexBody Body>
+SignedDistanceResult signedDistance(const BodyPair<Body>& pair,
                                     const Vector3d& warmNormal = Vector3d::Zero(),
                                     const PairTolerances& tolerances = {});
 

@@ -118,7 +118,8 @@ double movedDistance(const Packing& packing, const DegreesOfFreedom& dof, const 
     }
     const Vector3d d = minimumImage(packing.positions[1] - packing.positions[0], packing.boxLength);
     const Vector3d moved = d + t * (strain * d + nonAffine[1] - nonAffine[0]);
-    return signedDistance({packing.superball(), rotation[0], rotation[1], moved}).signedDistance;
+    return signedDistance(SuperballPair{packing.superball(), rotation[0], rotation[1], moved})
+        .signedDistance;
 }
 
 TEST(RigidityMatrix, GapChangesAreTheDerivativesOfTheExactSignedDistance) {
@@ -132,8 +133,9 @@ TEST(RigidityMatrix, GapChangesAreTheDerivativesOfTheExactSignedDistance) {
             packing.orientations = {random.rotation(), random.rotation()};
             const Vector3d u = random.normalVector().normalized();
             const double touching =
-                1.0 / scaleFactor({packing.superball(), packing.orientations[0].toRotationMatrix(),
-                                   packing.orientations[1].toRotationMatrix(), u})
+                1.0 / scaleFactor(SuperballPair{packing.superball(),
+                                                packing.orientations[0].toRotationMatrix(),
+                                                packing.orientations[1].toRotationMatrix(), u})
                           .scaleFactor;
             // Across the box's corner for odd trials: the strain enters through the image.
             const Vector3d first = Vector3d::Constant(trial % 2 ? 0.1 : 5.0);

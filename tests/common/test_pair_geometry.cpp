@@ -100,7 +100,8 @@ TEST_P(PairGeometry, AlignedPairsTouchAtTheClosedFormDistance) {
         for (const Vector3d& uBody : testDirections(rng)) {
             const double contact = shape.diameter() / lpNorm(uBody, 2.0 * shape.p());
             const Vector3d d = rotation * uBody * contact;
-            const SignedDistanceResult r = signedDistance({shape, rotation, rotation, d});
+            const SignedDistanceResult r =
+                signedDistance(SuperballPair{shape, rotation, rotation, d});
             EXPECT_NEAR(r.scaleFactor, 1.0, 2e-14) << uBody.transpose();
             EXPECT_NEAR(r.signedDistance, 0.0, 2e-14) << uBody.transpose();
             // contact points lie on the surfaces, separated by the gap along the normal (they
@@ -109,7 +110,8 @@ TEST_P(PairGeometry, AlignedPairsTouchAtTheClosedFormDistance) {
             EXPECT_NEAR(shape.gauge(rotation.transpose() * r.contactA), 1.0, 1e-12);
             EXPECT_NEAR(shape.gauge(rotation.transpose() * (r.contactB - d)), 1.0, 1e-12);
             // mu is exactly proportional to the distance along a ray
-            const ScaleFactorResult far = scaleFactor({shape, rotation, rotation, 1.7 * d});
+            const ScaleFactorResult far =
+                scaleFactor(SuperballPair{shape, rotation, rotation, 1.7 * d});
             EXPECT_NEAR(far.scaleFactor, 1.7, 5e-13);
             EXPECT_LE(far.iterations, PairTolerances{}.maxNewtonIterations);
         }
@@ -123,10 +125,12 @@ TEST_P(PairGeometry, SignIsRightAtTouchingPlusMinusOneEMinus12) {
         const Matrix3d ra = randomRotation(rng), rb = randomRotation(rng);
         const Vector3d u = randomUnit(rng);
         // mu is homogeneous of degree one in d, so the touching distance along u is 1/mu(u).
-        const double touching = 1.0 / scaleFactor({shape, ra, rb, u}).scaleFactor;
+        const double touching = 1.0 / scaleFactor(SuperballPair{shape, ra, rb, u}).scaleFactor;
         const double eps = 1e-12 * shape.diameter();
-        const SignedDistanceResult outside = signedDistance({shape, ra, rb, u * (touching + eps)});
-        const SignedDistanceResult inside = signedDistance({shape, ra, rb, u * (touching - eps)});
+        const SignedDistanceResult outside =
+            signedDistance(SuperballPair{shape, ra, rb, u * (touching + eps)});
+        const SignedDistanceResult inside =
+            signedDistance(SuperballPair{shape, ra, rb, u * (touching - eps)});
         EXPECT_GT(outside.signedDistance, 0.0) << trial;
         EXPECT_LT(inside.signedDistance, 0.0) << trial;
         EXPECT_GT(outside.scaleFactor, 1.0) << trial;
@@ -144,10 +148,11 @@ TEST_P(PairGeometry, ArgumentOrderAndCommonRotationDoNotMatter) {
         // from 5% overlap to wide gaps (deep overlaps have local maxima: see the header)
         const Vector3d u = randomUnit(rng);
         const Vector3d d = u * std::uniform_real_distribution<>(0.95, 1.5)(rng) /
-                           scaleFactor({shape, ra, rb, u}).scaleFactor;
-        const SignedDistanceResult ab = signedDistance({shape, ra, rb, d});
-        const SignedDistanceResult ba = signedDistance({shape, rb, ra, -d});
-        const SignedDistanceResult rotated = signedDistance({shape, q * ra, q * rb, q * d});
+                           scaleFactor(SuperballPair{shape, ra, rb, u}).scaleFactor;
+        const SignedDistanceResult ab = signedDistance(SuperballPair{shape, ra, rb, d});
+        const SignedDistanceResult ba = signedDistance(SuperballPair{shape, rb, ra, -d});
+        const SignedDistanceResult rotated =
+            signedDistance(SuperballPair{shape, q * ra, q * rb, q * d});
         EXPECT_NEAR(ab.scaleFactor, ba.scaleFactor, 1e-13);
         EXPECT_NEAR(ab.signedDistance, ba.signedDistance, 1e-13);
         EXPECT_NEAR(ab.scaleFactor, rotated.scaleFactor, 1e-13);
@@ -171,7 +176,7 @@ TEST_P(PairGeometry, ScaledBodiesTouchAtOnePoint) {
     for (int trial = 0; trial < 200; ++trial) {
         const Matrix3d ra = randomRotation(rng), rb = randomRotation(rng);
         const Vector3d d = randomUnit(rng) * std::uniform_real_distribution<>(0.6, 1.6)(rng);
-        const ScaleFactorResult r = scaleFactor({shape, ra, rb, d});
+        const ScaleFactorResult r = scaleFactor(SuperballPair{shape, ra, rb, d});
         const Vector3d x = r.scaleFactor * (ra * shape.supportPoint(ra.transpose() * r.normal));
         const double h =
             shape.support(ra.transpose() * r.normal) + shape.support(rb.transpose() * r.normal);
@@ -190,7 +195,7 @@ TEST_P(PairGeometry, RandomRotatedPairsAgreeWithBruteForce) {
         auto h = [&](const Vector3d& n) {
             return shape.support(ra.transpose() * n) + shape.support(rb.transpose() * n);
         };
-        const SignedDistanceResult r = signedDistance({shape, ra, rb, d});
+        const SignedDistanceResult r = signedDistance(SuperballPair{shape, ra, rb, d});
         const double mu = bruteForceMaximum([&](const Vector3d& n) { return n.dot(d) / h(n); });
         const double s = bruteForceMaximum([&](const Vector3d& n) { return n.dot(d) - h(n); });
         // Both are maxima: the solver must reach at least the brute force's value, and the
@@ -209,8 +214,9 @@ TEST_P(PairGeometry, WarmStartConvergesAtOnce) {
     std::mt19937_64 rng(19);
     const Matrix3d ra = randomRotation(rng), rb = randomRotation(rng);
     const Vector3d d = randomUnit(rng);
-    const ScaleFactorResult cold = scaleFactor({shape, ra, rb, d});
-    const ScaleFactorResult warm = scaleFactor({shape, ra, rb, d * (1 + 1e-9)}, cold.normal);
+    const ScaleFactorResult cold = scaleFactor(SuperballPair{shape, ra, rb, d});
+    const ScaleFactorResult warm =
+        scaleFactor(SuperballPair{shape, ra, rb, d * (1 + 1e-9)}, cold.normal);
     EXPECT_LE(warm.iterations, 2);
     EXPECT_NEAR(warm.scaleFactor, cold.scaleFactor * (1 + 1e-9), 1e-14);
 }
@@ -222,7 +228,8 @@ TEST(ContactPoint, SpheresTouchHalfwayBetweenTheCentresAtAnyGap) {
     const Matrix3d identity = Matrix3d::Identity();
     for (const double gap : {-1e-3, 0.0, 1e-10, 0.2}) {
         const Vector3d d = (1.0 + gap) * Vector3d(2.0, -1.0, 2.0) / 3.0;
-        const Vector3d x = contactPoint(signedDistance({sphere, identity, identity, d}));
+        const Vector3d x =
+            contactPoint(signedDistance(SuperballPair{sphere, identity, identity, d}));
         EXPECT_LT((x - 0.5 * d).norm(), 1e-15) << "gap " << gap;
     }
 }
@@ -234,12 +241,13 @@ TEST(ContactPoint, LiesOnBothSurfacesAtTouchingInBothArgumentOrders) {
         for (int trial = 0; trial < 50; ++trial) {
             const Matrix3d ra = randomRotation(rng), rb = randomRotation(rng);
             const Vector3d u = randomUnit(rng);
-            const Vector3d d = u / scaleFactor({shape, ra, rb, u}).scaleFactor; // touching
-            const Vector3d x = contactPoint(signedDistance({shape, ra, rb, d}));
+            const Vector3d d =
+                u / scaleFactor(SuperballPair{shape, ra, rb, u}).scaleFactor; // touching
+            const Vector3d x = contactPoint(signedDistance(SuperballPair{shape, ra, rb, d}));
             EXPECT_NEAR(shape.gauge(ra.transpose() * x), 1.0, 1e-9) << "p " << p;
             EXPECT_NEAR(shape.gauge(rb.transpose() * (x - d)), 1.0, 1e-9) << "p " << p;
             // From B, relative to r_B: the same point.
-            const Vector3d fromB = contactPoint(signedDistance({shape, rb, ra, -d}));
+            const Vector3d fromB = contactPoint(signedDistance(SuperballPair{shape, rb, ra, -d}));
             EXPECT_LT((fromB + d - x).norm(), 1e-6) << "p " << p;
         }
     }
@@ -250,7 +258,7 @@ TEST(PairGeometryEdgeCases, CoincidentCentresAreOverlapsWithoutNaN) {
         const Superball shape(p, 0.5);
         const Matrix3d identity = Matrix3d::Identity();
         const SignedDistanceResult r =
-            signedDistance({shape, identity, identity, Vector3d::Zero()});
+            signedDistance(SuperballPair{shape, identity, identity, Vector3d::Zero()});
         EXPECT_EQ(r.scaleFactor, 0.0);
         EXPECT_TRUE(std::isfinite(r.signedDistance));
         EXPECT_LE(r.signedDistance, -2.0 * shape.inradius() + 1e-12) << p;

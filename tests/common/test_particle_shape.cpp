@@ -1,6 +1,10 @@
 // The shape description (common/geometry/particle_shape, docs/architecture.md "What a new shape
 // needs"): a family's identity by name, and a body of it whose geometry is the superball's.
 #include "geometry/particle_shape.hpp"
+#include "jamming/gap_hessian.hpp"
+#include "pair/pair_geometry.hpp"
+
+#include <Eigen/Geometry>
 
 #include <gtest/gtest.h>
 
@@ -67,6 +71,38 @@ TEST(ParticleShape, IsTheSuperballOfItsSpec) {
         EXPECT_EQ(body.diameter(), 1.4) << p;
     }
     EXPECT_THROW(ParticleShape(ShapeSpec::superball(0.4), 1.0), std::invalid_argument);
+}
+
+// The analyses solve pairs of ParticleShape, sbgen of Superball: the one pair solver and the one
+// curvature (pair/pair_geometry, jamming/gap_hessian) give both the same bits, touching pairs
+// of a mixture included.
+TEST(ParticleShape, ThePairSolversSeeTheSameBodyAsTheSuperballs) {
+    for (const double p : {0.5, 1.0, 0.85, 1.5, 10.0}) {
+        const Superball superball(p, 0.5);
+        const ParticleShape shape(ShapeSpec::superball(p), 0.5);
+        const Matrix3d a = Eigen::Quaterniond(0.9, 0.1, -0.3, 0.2).normalized().toRotationMatrix();
+        const Matrix3d b = Eigen::Quaterniond(0.4, -0.5, 0.6, 0.1).normalized().toRotationMatrix();
+        for (const double sizeB : {1.0, 1.4})
+            for (const double distance : {0.9, 1.1, 1.6}) {
+                const Vector3d d = distance * Vector3d(0.6, -0.48, 0.64);
+                const SignedDistanceResult x =
+                    signedDistance(SuperballPair{superball, a, b, d, sizeB});
+                const SignedDistanceResult y =
+                    signedDistance(BodyPair<ParticleShape>{shape, a, b, d, sizeB});
+                EXPECT_EQ(x.signedDistance, y.signedDistance) << p;
+                EXPECT_EQ(x.scaleFactor, y.scaleFactor) << p;
+                EXPECT_EQ(x.normal, y.normal) << p;
+                EXPECT_EQ(x.contactA, y.contactA) << p;
+                if (p == 0.5) continue; // the octahedron's curvature is not finite
+                const ContactCurvature cx =
+                    contactCurvature(superball, a, b, d, x.normal, x.signedDistance, sizeB);
+                const ContactCurvature cy =
+                    contactCurvature(shape, a, b, d, y.normal, y.signedDistance, sizeB);
+                EXPECT_EQ(cx.curvatureA, cy.curvatureA) << p;
+                EXPECT_EQ(cx.curvatureB, cy.curvatureB) << p;
+                EXPECT_EQ(cx.leverA, cy.leverA) << p;
+            }
+    }
 }
 
 } // namespace

@@ -41,9 +41,9 @@ struct MovedPair {
             const double angle = theta.norm();
             return angle == 0.0 ? r : Matrix3d(Eigen::AngleAxisd(angle, theta / angle) * r);
         };
-        return signedDistance({shape, turned(rotationA, q.segment<3>(3)),
-                               turned(rotationB, q.segment<3>(9)),
-                               displacement + q.segment<3>(6) - q.segment<3>(0)})
+        return signedDistance(SuperballPair{shape, turned(rotationA, q.segment<3>(3)),
+                                            turned(rotationB, q.segment<3>(9)),
+                                            displacement + q.segment<3>(6) - q.segment<3>(0)})
             .signedDistance;
     }
 
@@ -84,10 +84,11 @@ TEST(GapHessian, EqualsFiniteDifferencesOfTheExactSignedDistance) {
                            random.rotation().toRotationMatrix(), Vector3d::Zero()};
             const Vector3d u = random.normalVector().normalized();
             const double touching =
-                1.0 / scaleFactor({shape, pair.rotationA, pair.rotationB, u}).scaleFactor;
+                1.0 /
+                scaleFactor(SuperballPair{shape, pair.rotationA, pair.rotationB, u}).scaleFactor;
             pair.displacement = (touching + 1e-3) * u;
-            const SignedDistanceResult s =
-                signedDistance({shape, pair.rotationA, pair.rotationB, pair.displacement});
+            const SignedDistanceResult s = signedDistance(
+                SuperballPair{shape, pair.rotationA, pair.rotationB, pair.displacement});
             const ContactCurvature contact =
                 contactCurvature(shape, pair.rotationA, pair.rotationB, pair.displacement, s.normal,
                                  s.signedDistance);
