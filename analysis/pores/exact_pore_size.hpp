@@ -4,6 +4,7 @@
 // against which the voxel path (distance transform) is checked.
 
 #include "contacts/cell_list.hpp"
+#include "geometry/superball_projection.hpp"
 #include "packing/packing.hpp"
 #include "pores/pore_size_distribution.hpp"
 #include "progress/progress.hpp"
@@ -14,19 +15,6 @@
 #include <vector>
 
 namespace sbpack {
-
-/// g(x)^{2p} = sum |x_i / R|^{2p} (g the gauge, Superball::gauge): x is inside iff it is < 1;
-/// products and roots instead of powers at p = 1 and 1.5, the pore sizes' inner loop.
-double gaugePower(const Superball& shape, const Vector3d& xBody);
-
-/// The point of the superball (body frame, centred at the origin) nearest to xBody; xBody itself
-/// when it is inside. Euclidean projection onto { sum |y_i / R|^{2p} <= 1 }: by symmetry in the
-/// octant of |x|, from the KKT conditions u_i + kappa u_i^{2p-1} = |x_i| / R (u = |y| / R), a
-/// monotone scalar equation per axis inside a monotone equation sum u_i^{2p} = 1 for kappa, both
-/// solved by bracketed Newton steps to rounding. Closed forms for the sphere and, as the l1-ball
-/// projection, for the octahedron p = 0.5. The distance |x - y| is certified by the support
-/// function: with n = (x - y) / |x - y|, n.x - h(n) <= dist(x, body) <= |x - y|.
-Vector3d closestPoint(const Superball& shape, const Vector3d& xBody);
 
 /// Certified bounds on a distance to a particle surface: the true distance lies in [lower, upper];
 /// upper is the distance to a point of the surface (a distance that is realised), lower the
@@ -61,10 +49,10 @@ class ExactPoreSizes {
         if (shape_.isSphere() || centre == 0.0) return centre - s * shape_.semiAxis();
         return centre - s * shape_.support(rotations_[particle].transpose() * d / centre);
     }
-    /// A particle whose minimum image contains x (Superball::contains), or -1 if none does.
+    /// A particle whose minimum image contains x (the shape's gaugePower), or -1 if none does.
     int particleContaining(const Vector3d& x) const;
     /// Whether r + d is inside particle `particle` centred at r (gaugePower < 1, which may differ
-    /// from Superball::contains within rounding of the surface); no gauge well inside the
+    /// from the shape's inside test within rounding of the surface); no gauge well inside the
     /// inscribed sphere.
     bool inside(int particle, const Vector3d& d) const {
         const double s = relativeSize(particle);
@@ -87,7 +75,7 @@ class ExactPoreSizes {
         const double squared = d.squaredNorm();
         if (shape_.isSphere()) return squared < shape_.semiAxis() * shape_.semiAxis();
         if (squared < (1.0 - 1e-12) * inradius_ * inradius_) return true;
-        return gaugePower(shape_, rotations_[particle].transpose() * d) < 1.0;
+        return shape_.gaugePower(rotations_[particle].transpose() * d) < 1.0;
     }
     SurfaceDistance unitDistance(int particle, const Vector3d& d) const;
     /// Calls visit(particle, shift) for each particle of cell `unwrapped` (cell indices taken
@@ -96,7 +84,7 @@ class ExactPoreSizes {
     void forEachInCell(const std::array<int, 3>& unwrapped, Visit&& visit) const;
     std::array<int, 3> homeCell(const Vector3d& xWrapped) const;
 
-    Superball shape_;
+    ParticleShape shape_;
     double boxLength_;
     double circumradius_;
     double inradius_;

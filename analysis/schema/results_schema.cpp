@@ -73,6 +73,7 @@ std::vector<Field> withShapeFields(std::span<const Field> leading, std::span<con
     fields.push_back({.name = "shape",
                       .kind = A,
                       .type = S,
+                      .units = "",
                       .description = "the shape family, whose parameters follow; absent: superball",
                       .optional = true});
     const bool several = shapeFamilies().size() > 1;

@@ -36,7 +36,8 @@ static_assert(MaskLeaf::DIM == kBlock);
 /// Blocks per task of the parallel loop (and per interrupt check).
 constexpr std::int64_t kBlocksPerTask = 16;
 /// Relative margin of the inscribed- and circumscribed-sphere shortcuts: voxel centres this close
-/// to either sphere get the exact test, so the shortcuts agree with Superball::contains exactly.
+/// to either sphere get the exact test, so the shortcuts agree with the shape's inside test
+/// exactly.
 constexpr double kSphereMargin = 1e-12;
 
 /// A particle, or one of its periodic images, whose circumscribed sphere reaches a block.
@@ -46,59 +47,6 @@ struct Candidate {
 };
 
 using grid::voxelRange;
-
-/// Superball::contains for body-frame points, mostly without std::pow. With y = |x| / R and the
-/// integers lo = floor(2p) <= 2p <= hi = ceil(2p), sum y_i^hi <= sum y_i^2p <= sum y_i^lo while
-/// every y_i < 1 (norms decrease with the exponent), so integer powers decide most points; then
-/// single-precision powers, accurate to ~1e-6; only points closer than that to the surface
-/// take the exact test. Margins keep every shortcut's answer that of Superball::contains.
-class ContainmentTest {
-  public:
-    explicit ContainmentTest(const Superball& shape)
-        : shape_(shape), inverseRadius_(1.0 / shape.semiAxis()),
-          lo_(static_cast<int>(std::floor(2.0 * shape.p()))),
-          hi_(static_cast<int>(std::ceil(2.0 * shape.p()))),
-          exponent_(static_cast<float>(2.0 * shape.p())) {}
-
-    bool operator()(const Vector3d& x) const {
-        const Vector3d y = x.cwiseAbs() * inverseRadius_;
-        const double largest = y.maxCoeff();
-        if (largest > 1.0 + kExactMargin) return false; // one term alone exceeds 1
-        if (largest < 1.0 - kExactMargin) {
-            if (powerSum(y, lo_) < 1.0 - kExactMargin) return true;
-            if (powerSum(y, hi_) > 1.0 + kExactMargin) return false;
-            if (lo_ != hi_) {
-                float sum = 0.0f;
-                for (int i = 0; i < 3; ++i)
-                    sum += std::exp(exponent_ * std::log(static_cast<float>(y[i])));
-                if (sum < 1.0f - kFloatMargin) return true;
-                if (sum > 1.0f + kFloatMargin) return false;
-            }
-        }
-        return shape_.contains(x);
-    }
-
-  private:
-    static constexpr double kExactMargin = 1e-12;
-    static constexpr float kFloatMargin = 1e-5f;
-
-    /// sum of y_i^n by repeated squaring (n >= 1).
-    static double powerSum(const Vector3d& y, int n) {
-        double sum = 0.0;
-        for (int i = 0; i < 3; ++i) {
-            double power = 1.0, base = y[i];
-            for (int e = n; e > 0; e >>= 1, base *= base)
-                if (e & 1) power *= base;
-            sum += power;
-        }
-        return sum;
-    }
-
-    Superball shape_;
-    double inverseRadius_;
-    int lo_, hi_;
-    float exponent_;
-};
 
 /// Bits z0..z1 (inclusive, within one 8-voxel row) of a block word, the row starting at `shift`.
 std::uint64_t rowBits(int z0, int z1, int shift) {
@@ -167,8 +115,9 @@ std::uint64_t rowWord(int z0, int z1, grid::IndexRange inner, int shift, const S
 /// 1 / s_j, so that the largest particle's test decides for it (bodyRotations).
 template <class Row>
 void forEachCandidateRow(int ox, int oy, int oz, std::span<const Candidate> candidates,
-                         const std::vector<Eigen::Matrix3d>& toBody, const ContainmentTest& inside,
-                         const BlockGeometry& g, const Row& row) {
+                         const std::vector<Eigen::Matrix3d>& toBody,
+                         const ParticleShape::InsideTest& inside, const BlockGeometry& g,
+                         const Row& row) {
     const int lastX = std::min(g.x1, ox + kBlock) - 1;
     const int firstX = std::max(g.x0, ox);
     const int lastY = std::min(g.m, oy + kBlock) - 1;
@@ -205,7 +154,7 @@ void forEachCandidateRow(int ox, int oy, int oz, std::span<const Candidate> cand
 std::array<std::uint64_t, kBlock> voxelizeBlock(int ox, int oy, int oz,
                                                 std::span<const Candidate> candidates,
                                                 const std::vector<Eigen::Matrix3d>& toBody,
-                                                const ContainmentTest& inside,
+                                                const ParticleShape::InsideTest& inside,
                                                 const BlockGeometry& g) {
     std::array<std::uint64_t, kBlock> words{};
     forEachCandidateRow(ox, oy, oz, candidates, toBody, inside, g,
@@ -244,10 +193,10 @@ struct Voxelization::Grid {
 };
 
 Voxelization::Voxelization(std::unique_ptr<Grid> grid, VoxelizationParameters parameters,
-                           double boxLength, double p, double phiExact, std::int64_t solidCount,
-                           double runtimeSeconds)
+                           double boxLength, const ShapeSpec& shape, double phiExact,
+                           std::int64_t solidCount, double runtimeSeconds)
     : grid_(std::move(grid)), parameters_(parameters), voxels_(parameters.voxels),
-      boxLength_(boxLength), p_(p), phiExact_(phiExact), solidCount_(solidCount),
+      boxLength_(boxLength), shape_(shape), phiExact_(phiExact), solidCount_(solidCount),
       runtimeSeconds_(runtimeSeconds), slabBegin_(parameters.slabBegin),
       slabEnd_(parameters.slabEnd) {}
 
@@ -320,7 +269,10 @@ std::string Voxelization::vdbImage(double lengthUnit) const {
     density->tree().topologyUnion(grid_->grid->tree());
     openvdb::tools::foreach (density->beginValueOn(),
                              [](const openvdb::FloatGrid::ValueOnIter& it) { it.setValue(1.0f); });
-    density->insertMeta("p", openvdb::DoubleMetadata(p_));
+    const std::vector<double> values = shape_.values(); // e.g. p, under their names
+    for (std::size_t k = 0; k < values.size(); ++k)
+        density->insertMeta(std::string(shape_.info().parameters[k].name),
+                            openvdb::DoubleMetadata(values[k]));
     density->insertMeta("phi_voxel", openvdb::DoubleMetadata(phiVoxel()));
     density->insertMeta("phi_exact", openvdb::DoubleMetadata(phiExact_));
     return sbpack::vdbImage(density, boxLength_, voxels_,
@@ -341,7 +293,7 @@ Voxelizer::Voxelizer(VoxelizationParameters parameters) : parameters_(parameters
                                    ")");
 }
 
-double Voxelizer::reach(const Superball& shape) {
+double Voxelizer::reach(const ParticleShape& shape) {
     return shape.circumradius() * (1.0 + kSphereMargin);
 }
 
@@ -349,7 +301,7 @@ namespace {
 
 /// The narrowest width of the packing's particles: twice the smallest particle's inradius.
 double narrowestWidth(const Packing& packing) {
-    return 2.0 * Superball(packing.superball().p(), packing.smallestSemiAxis()).inradius();
+    return 2.0 * ParticleShape(packing.shapeSpec, packing.smallestSemiAxis()).inradius();
 }
 
 } // namespace
@@ -362,7 +314,7 @@ int Voxelizer::minimumVoxels(const Packing& packing) {
 }
 
 void Voxelizer::checkResolution(const Packing& packing, int voxels) {
-    const Superball shape = packing.superball();
+    const ParticleShape shape = packing.shape();
     if (2.0 * shape.circumradius() > packing.boxLength) {
         std::ostringstream message; // %g: lengths in metres are not 0.000000
         message << std::setprecision(6) << "voxel grid: the particles (circumdiameter "
@@ -467,7 +419,7 @@ struct BlockMasks {
 };
 
 BlockMasks voxelizeBlocks(const BlockCandidates& in, const std::vector<Eigen::Matrix3d>& toBody,
-                          const ContainmentTest& inside, const BlockGeometry& geometry,
+                          const ParticleShape::InsideTest& inside, const BlockGeometry& geometry,
                           const Progress& progress) {
     BlockMasks out(geometry.blockCount());
     parallelFor(
@@ -538,7 +490,7 @@ BlockGeometry blockGeometry(const Packing& packing, const VoxelizationParameters
     const int blocks = (m + kBlock - 1) / kBlock;
     const int x0 = parameters.slabBegin, x1 = parameters.slabEnd;
     const int firstBlockX = x0 / kBlock;
-    const Superball shape = packing.superball();
+    const ParticleShape shape = packing.shape();
     return BlockGeometry{m,
                          packing.boxLength / m,
                          Voxelizer::reach(shape),
@@ -552,7 +504,7 @@ BlockGeometry blockGeometry(const Packing& packing, const VoxelizationParameters
 }
 
 /// Lab-to-body rotations: x_body = R^T (x - r); of a mixture, over the particle's size, x_body
-/// = R^T (x - r) / s_j, the point in the largest particle's frame (Superball is homogeneous).
+/// = R^T (x - r) / s_j, the point in the largest particle's frame (the shape is homogeneous).
 std::vector<Eigen::Matrix3d> bodyRotations(const Packing& packing) {
     std::vector<Eigen::Matrix3d> toBody(packing.size());
     for (std::size_t j = 0; j < packing.size(); ++j) {
@@ -569,11 +521,11 @@ Voxelization Voxelizer::compute(const Packing& packing, const Progress& progress
     checkResolution(packing, parameters_.voxels);
     const BlockGeometry geometry = blockGeometry(packing, parameters_);
     BlockMasks masks = voxelizeBlocks(blockCandidates(packing, geometry), bodyRotations(packing),
-                                      ContainmentTest(packing.superball()), geometry, progress);
+                                      packing.shape().insideTest(), geometry, progress);
     auto grid = std::make_unique<Voxelization::Grid>();
     std::int64_t solid = 0;
     grid->grid = assembleTree(masks, geometry, solid);
-    return Voxelization(std::move(grid), parameters_, packing.boxLength, packing.superball().p(),
+    return Voxelization(std::move(grid), parameters_, packing.boxLength, packing.shapeSpec,
                         packing.packingFraction(), solid, clock.seconds());
 }
 
@@ -586,7 +538,7 @@ std::vector<std::uint32_t> Voxelizer::particleLabels(const Packing& packing,
     const BlockGeometry g = blockGeometry(packing, parameters_);
     const BlockCandidates in = blockCandidates(packing, g);
     const std::vector<Eigen::Matrix3d> toBody = bodyRotations(packing);
-    const ContainmentTest inside(packing.superball());
+    const ParticleShape::InsideTest inside = packing.shape().insideTest();
     std::vector<std::uint32_t> labels(static_cast<std::size_t>(m * m * m), 0);
     parallelFor(
         0, g.blockCount(), kBlocksPerTask,
@@ -629,8 +581,8 @@ Voxelization Voxelizer::fromRowBits(std::span<const std::uint32_t> rows, const P
     std::int64_t solid = 0;
     grid->grid = assembleTree(masks, geometry, solid);
     return Voxelization(std::move(grid), VoxelizationParameters{voxels, 0, voxels},
-                        packing.boxLength, packing.superball().p(), packing.packingFraction(),
-                        solid, runtimeSeconds);
+                        packing.boxLength, packing.shapeSpec, packing.packingFraction(), solid,
+                        runtimeSeconds);
 }
 
 } // namespace sbpack

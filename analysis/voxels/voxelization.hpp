@@ -2,7 +2,7 @@
 // Voxelization of a packing (paper Sec. III B, docs/design.md §5): M^3 cubic voxels of edge a = L /
 // M tile the periodic box; voxel (i, j, k) has its centre at ((i + 1/2) a, (j + 1/2) a, (k + 1/2)
 // a) and is solid when that centre lies inside a particle or one of its periodic images
-// (Superball::contains on the body-frame vector; the paper's epsilon rescaling is not applied).
+// (the shape's inside test on the body-frame vector; the paper's epsilon rescaling is not applied).
 // Stored sparsely as an OpenVDB mask grid; OpenVDB stays out of this header (pimpl).
 
 #include "packing/packing.hpp"
@@ -72,7 +72,8 @@ class Voxelization {
 
     /// Writes the grid as an OpenVDB file (atomically, through AtomicOutput) for Blender,
     /// Houdini or ParaView: a float fog volume "density" (1 in the particles, 0 elsewhere) in
-    /// the packing's length units, with metadata p, box_length, voxels, phi_voxel, phi_exact.
+    /// the packing's length units, with metadata the shape's parameters (p), box_length, voxels,
+    /// phi_voxel, phi_exact.
     void writeVdb(const std::filesystem::path& file) const;
     /// The bytes of that .vdb file (writeVdb writes them through AtomicOutput); metadata
     /// length_unit: what one length unit of the grid is in the packing's (voxels/vdb_image.hpp).
@@ -82,7 +83,8 @@ class Voxelization {
     friend class Voxelizer;
     struct Grid; // the OpenVDB mask grid
     Voxelization(std::unique_ptr<Grid> grid, VoxelizationParameters parameters, double boxLength,
-                 double p, double phiExact, std::int64_t solidCount, double runtimeSeconds);
+                 const ShapeSpec& shape, double phiExact, std::int64_t solidCount,
+                 double runtimeSeconds);
     template <class T>
     void copySolid(std::span<T> values, std::int64_t rowStride, const char* what,
                    const Progress& progress) const;
@@ -91,7 +93,7 @@ class Voxelization {
     VoxelizationParameters parameters_;
     int voxels_;
     double boxLength_;
-    double p_;
+    ShapeSpec shape_;
     double phiExact_;
     std::int64_t solidCount_;
     double runtimeSeconds_;
@@ -136,7 +138,7 @@ class Voxelizer {
 
     /// The circumscribed radius with the margin that keeps the sphere shortcuts exact: voxel
     /// centres farther from a particle's centre are never tested (the CPU and GPU voxelisers).
-    static double reach(const Superball& shape);
+    static double reach(const ParticleShape& shape);
     /// Smallest M that puts kMinVoxelsAcross voxels across the particles of `packing`;
     /// kMaxVoxels + 1 where no grid can.
     static int minimumVoxels(const Packing& packing);
@@ -158,7 +160,7 @@ class Voxelizer {
     /// Parallel by output blocks (the 8^3 leaves of the tree): each block tests the voxels of
     /// the particles whose circumscribed sphere reaches it (candidate lists, O(voxels + N));
     /// voxels inside the inscribed sphere are solid without a test, only the shell up to the
-    /// circumscribed sphere needs Superball::contains. Fully solid blocks become tiles.
+    /// circumscribed sphere needs the shape's inside test. Fully solid blocks become tiles.
     Voxelization compute(const Packing& packing, const Progress& progress) const;
 
     /// The particle whose body holds each voxel centre, the same test as compute(): index

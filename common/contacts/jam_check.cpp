@@ -126,7 +126,7 @@ std::string verdictOf(const JamCheck& check, const Packing& packing, double redu
                fmt::format(" (box {:.2f} D) and carries the pressure; ",
                            packing.boxLength / packing.shape().diameter()) +
                network +
-               (packing.superball().p() >= kNearCubeExponent
+               (packing.shape().stacksInColumns()
                     ? ". Near-cubes stack into such columns in boxes a few D long"
                     : ". In a box this few D across, a few particles in a row span it") +
                ": use more particles";

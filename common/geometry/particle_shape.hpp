@@ -7,6 +7,8 @@
 // second one adds its body here, its branch to each method, and a refusal to superball().
 
 #include "geometry/superball.hpp"
+#include "geometry/superball_inside.hpp"
+#include "geometry/superball_projection.hpp"
 
 #include <optional>
 #include <span>
@@ -78,6 +80,13 @@ class ParticleShape {
     double inradius() const { return superball_.inradius(); }
     bool isSphere() const { return superball_.isSphere(); }
     bool isOctahedron() const { return superball_.isOctahedron(); }
+    /// Whether the body's three axes are equivalent under its symmetry (the cube's group), so that
+    /// their cubatic order P4 (common/order) and the face, edge and vertex contacts
+    /// (docs/contact-types.md) are defined: every superball but the sphere.
+    bool hasCubicAxes() const { return !superball_.isSphere(); }
+    /// Whether the bodies stack face to face into columns that can span a small periodic box
+    /// (bench/RESULTS.md, "Near-cubes after the jam check"): superballs from kNearCubeExponent.
+    bool stacksInColumns() const { return superball_.p() >= kNearCubeExponent; }
     /// The same shape at `factor` times the size.
     ParticleShape scaled(double factor) const { return ParticleShape(superball_.scaled(factor)); }
 
@@ -91,6 +100,17 @@ class ParticleShape {
     }
     Matrix3d surfaceCurvature(const Vector3d& nBody) const {
         return superball_.surfaceCurvature(nBody);
+    }
+
+    /// The inside test for many body-frame points (the voxels): the answer of gauge(x) < 1.
+    using InsideTest = SuperballInsideTest;
+    InsideTest insideTest() const { return InsideTest(superball_); }
+    /// An increasing function of the gauge that is 1 on the surface (the superball's g^{2p},
+    /// without a root): xBody is inside iff it is < 1 (the exact pore sizes' inner loop).
+    double gaugePower(const Vector3d& xBody) const { return sbpack::gaugePower(superball_, xBody); }
+    /// The point of the body nearest to xBody, xBody itself inside (the exact pore sizes).
+    Vector3d closestPoint(const Vector3d& xBody) const {
+        return sbpack::closestPoint(superball_, xBody);
     }
 
     /// The superball, for code that holds for superballs only.

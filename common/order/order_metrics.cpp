@@ -63,7 +63,7 @@ OrderMetrics measureOrder(const Packing& packing,
     TranslationalOrderParameters t;
     t.shellCount = fccShellsThatFit(packing, t);
     if (t.shellCount > 0) m.translational = TranslationalOrder(t).compute(packing);
-    if (!packing.shape().isSphere()) m.cubatic = cubaticOrder(packing.orientations);
+    if (packing.shape().hasCubicAxes()) m.cubatic = cubaticOrder(packing.orientations);
     m.solidLike = solidLikeParticles(packing);
     return m;
 }

@@ -73,6 +73,17 @@ TEST(ParticleShape, IsTheSuperballOfItsSpec) {
     EXPECT_THROW(ParticleShape(ShapeSpec::superball(0.4), 1.0), std::invalid_argument);
 }
 
+// The questions the order metrics and the jam check's advice ask of a shape, not of p.
+TEST(ParticleShape, AxesAreCubicButTheSpheresAndColumnsAreNearCubes) {
+    const auto shape = [](double p) { return ParticleShape(ShapeSpec::superball(p), 0.5); };
+    EXPECT_FALSE(shape(1.0).hasCubicAxes());
+    EXPECT_TRUE(shape(0.5).hasCubicAxes());
+    EXPECT_TRUE(shape(1.0 + 1e-9).hasCubicAxes());
+    EXPECT_FALSE(shape(2.99).stacksInColumns());
+    EXPECT_TRUE(shape(kNearCubeExponent).stacksInColumns());
+    EXPECT_TRUE(shape(10.0).stacksInColumns());
+}
+
 // The analyses solve pairs of ParticleShape, sbgen of Superball: the one pair solver and the one
 // curvature (pair/pair_geometry, jamming/gap_hessian) give both the same bits, touching pairs
 // of a mixture included.
