@@ -1,10 +1,9 @@
 #pragma once
 // Voxel-free pore sizes (paper Sec. II B): the distance from a point of the void to the nearest
-// particle surface, computed exactly from the superball geometry of common/. The reference
-// against which the voxel path (distance transform) is checked.
+// particle surface, computed exactly from the particle shape's geometry (ParticleShape). The
+// reference against which the voxel path (distance transform) is checked.
 
 #include "contacts/cell_list.hpp"
-#include "geometry/superball_projection.hpp"
 #include "packing/packing.hpp"
 #include "pores/pore_size_distribution.hpp"
 #include "progress/progress.hpp"

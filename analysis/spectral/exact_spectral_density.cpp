@@ -127,8 +127,8 @@ WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
                                      const Progress& progress) {
     if (!packing.shape().isSphere() || packing.isMixture())
         throw std::invalid_argument("exact spectral density: the particles are not identical "
-                                    "spheres (p = " +
-                                    std::to_string(packing.superball().p()) + ")");
+                                    "spheres (" +
+                                    packing.shapeSpec.describe() + ")");
     if (maxN2 < 1) throw std::invalid_argument("exact spectral density: no wave vector");
     const DensityModes modes =
         collectiveDensity(packing.positions, packing.boxLength, maxN2, progress);
@@ -217,8 +217,8 @@ ExactSpectralDensityResult ExactSpectralDensity::compute(const Packing& packing,
     if (series && reach > SuperballFormFactor::kSeriesLimit)
         throw std::invalid_argument(
             "exact spectral density: qmax = " + fmt::format("{:g}", parameters_.maxQw) +
-            " is beyond the form factor series' range for p = " +
-            std::to_string(packing.superball().p()) + " (Q w <= " +
+            " is beyond the form factor series' range for " + packing.shapeSpec.describe() +
+            " (Q w <= " +
             std::to_string(SuperballFormFactor::kSeriesLimit * result.meanWidth /
                            shape.circumradius()) +
             ")");

@@ -269,7 +269,11 @@ std::string Voxelization::vdbImage(double lengthUnit) const {
     density->tree().topologyUnion(grid_->grid->tree());
     openvdb::tools::foreach (density->beginValueOn(),
                              [](const openvdb::FloatGrid::ValueOnIter& it) { it.setValue(1.0f); });
-    const std::vector<double> values = shape_.values(); // e.g. p, under their names
+    // The shape as the packing file names it: the family where it is not the superball, then its
+    // parameters (e.g. p) under their names.
+    if (shape_.info().name != shapeFamilies().front().name)
+        density->insertMeta("shape", openvdb::StringMetadata(std::string(shape_.info().name)));
+    const std::vector<double> values = shape_.values();
     for (std::size_t k = 0; k < values.size(); ++k)
         density->insertMeta(std::string(shape_.info().parameters[k].name),
                             openvdb::DoubleMetadata(values[k]));

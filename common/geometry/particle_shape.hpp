@@ -1,10 +1,12 @@
 #pragma once
 // The particles' shape as Packing carries it (docs/architecture.md, "What a new shape needs"):
 // a family and its parameters (ShapeSpec), and a body of that shape at a size (ParticleShape),
-// whose geometry (volume, mean width, radii) every analysis may use whatever the family. Code
-// that holds for superballs only (their exponent, inside test, form factor, contact types) asks
-// for the superball (ParticleShape::superball). The superball is the one family so far; a
-// second one adds its body here, its branch to each method, and a refusal to superball().
+// whose geometry (volume, mean width, radii, the pair solvers' ConvexBody, the inside test and
+// the nearest point) every analysis may use whatever the family. Code that holds for superballs
+// only (the form factor, the GPU's inside test, the transport fit) asks for the superball
+// (ParticleShape::superball); sbgen's superball-only code (its rates, generator/shapes/superball)
+// reads ShapeSpec::p. The superball is the one family so far; a second one adds its body here,
+// its branch to each method, and a refusal to superball().
 
 #include "geometry/superball.hpp"
 #include "geometry/superball_inside.hpp"
@@ -37,7 +39,7 @@ struct ShapeFamily {
 struct ShapeSpec {
     enum class Family { superball };
     Family family = Family::superball;
-    /// The superball's exponent (paper Eq. 1); read it through ParticleShape::superball.
+    /// The superball's exponent (paper Eq. 1); analyses read it through ParticleShape::superball.
     double p = 1.0;
 
     static ShapeSpec superball(double exponent) { return {Family::superball, exponent}; }
@@ -81,8 +83,7 @@ class ParticleShape {
     bool isSphere() const { return superball_.isSphere(); }
     bool isOctahedron() const { return superball_.isOctahedron(); }
     /// Whether the body's three axes are equivalent under its symmetry (the cube's group), so that
-    /// their cubatic order P4 (common/order) and the face, edge and vertex contacts
-    /// (docs/contact-types.md) are defined: every superball but the sphere.
+    /// their cubatic order P4 (common/order) is defined: every superball but the sphere.
     bool hasCubicAxes() const { return !superball_.isSphere(); }
     /// Whether the bodies stack face to face into columns that can span a small periodic box
     /// (bench/RESULTS.md, "Near-cubes after the jam check"): superballs from kNearCubeExponent.

@@ -139,6 +139,14 @@ Vector2d newtonDirection(const Matrix2d& h, const Vector2d& g, double shift) {
 
 // ---- Octahedron p = 0.5: K = A + B is a polytope --------------------------------------
 
+/// Whether the body is the octahedron (only a body with isOctahedron() can be).
+template <ConvexBody Body> bool isOctahedron(const Body& body) {
+    if constexpr (requires { body.isOctahedron(); })
+        return body.isOctahedron();
+    else
+        return false;
+}
+
 /// Unit vectors containing every face normal of K (faces of A, of B, and the cross
 /// products of their edge directions), up to sign.
 template <ConvexBody Body>
@@ -534,7 +542,7 @@ ScaleFactorResult scaleFactor(const BodyPair<Body>& pair, const Vector3d& warmNo
     if (distance == 0.0) return {0.0, Vector3d::UnitX(), 0, 0, 0};
     const MinkowskiSum<Body> k(pair);
     if (pair.shape.isSphere()) return {distance / k.pairDiameter(), d / distance, 0, 0, 0};
-    if (pair.shape.isOctahedron()) return octahedronScaleFactor(k);
+    if (isOctahedron(pair.shape)) return octahedronScaleFactor(k);
     return generalScaleFactor(k, warmNormal, tolerances);
 }
 
@@ -551,7 +559,7 @@ SignedDistanceResult signedDistance(const BodyPair<Body>& pair, const Vector3d& 
     const Vector3d& d = pair.displacement;
     if (pair.shape.isSphere()) {
         result.signedDistance = d.norm() - k.pairDiameter();
-    } else if (pair.shape.isOctahedron()) {
+    } else if (isOctahedron(pair.shape)) {
         octahedronSignedDistance(k, result);
     } else {
         generalSignedDistance(k, tolerances, result);

@@ -19,10 +19,11 @@ namespace sbpack {
 
 /// What the pair solvers need of a body (centrally symmetric and convex, in its own frame): its
 /// support function h, support point and the Hessian of h (docs/design.md §2), its gauge, its
-/// semi-axis, the body scaled by a factor (B of a mixture's pair), whether it is a sphere or
-/// the octahedron (each solved in closed form), and its surface's curvature at the support point
-/// (jamming/gap_hessian). Superball (sbgen's engine) and ParticleShape (the
-/// analyses, any family) are two.
+/// semi-axis, the body scaled by a factor (B of a mixture's pair), whether it is a sphere (solved
+/// in closed form), and its surface's curvature at the support point (jamming/gap_hessian). A
+/// body that may be the octahedron (the superball at p = 0.5) says so by isOctahedron(), and its
+/// pairs are solved exactly over the polytope's face normals. Superball (sbgen's engine) and
+/// ParticleShape (the analyses, any family) are two.
 template <class Body>
 concept ConvexBody = requires(const Body& body, const Vector3d& v, double factor) {
     { body.support(v) } -> std::convertible_to<double>;
@@ -32,7 +33,6 @@ concept ConvexBody = requires(const Body& body, const Vector3d& v, double factor
     { body.semiAxis() } -> std::convertible_to<double>;
     { body.scaled(factor) } -> std::same_as<Body>;
     { body.isSphere() } -> std::same_as<bool>;
-    { body.isOctahedron() } -> std::same_as<bool>;
     { body.surfaceCurvature(v) } -> std::convertible_to<Matrix3d>;
 };
 

@@ -133,7 +133,7 @@ std::vector<std::string> protocolWarnings(const ProtocolParameters& parameters) 
                         "p\")",
                         parameters.shape.p));
     const double box = jammedBoxDiameters(parameters);
-    if (parameters.shape.p >= kNearCubeExponent && box < kColumnBoxDiameters)
+    if (ParticleShape(parameters.shape, 0.5).stacksInColumns() && box < kColumnBoxDiameters)
         warnings.push_back(
             fmt::format("p = {:g}, N = {}: the box will be about {:.1f} diameters across, so "
                         "a column of near-cubes can span it and carry the pressure "
