@@ -70,21 +70,13 @@ constexpr Group kRunGroup{"", "/", "the run", kRun};
 /// it is not the superball, and each family's parameters under their names; then `rest`.
 std::vector<Field> withShapeFields(std::span<const Field> leading, std::span<const Field> rest) {
     std::vector<Field> fields(leading.begin(), leading.end());
-    fields.push_back({.name = "shape",
-                      .kind = A,
-                      .type = S,
-                      .units = "",
-                      .description = "the shape family, whose parameters follow; absent: superball",
-                      .optional = true});
-    const bool several = shapeFamilies().size() > 1;
-    for (const ShapeFamily& family : shapeFamilies())
-        for (const ShapeParameter& parameter : family.parameters)
-            fields.push_back({.name = parameter.name,
-                              .kind = A,
-                              .type = F,
-                              .units = parameter.units,
-                              .description = parameter.description,
-                              .optional = several});
+    for (const ShapeField& shape : shapeFields())
+        fields.push_back({.name = shape.name,
+                          .kind = A,
+                          .type = shape.text ? S : F,
+                          .units = shape.units,
+                          .description = shape.description,
+                          .optional = shape.optional});
     fields.insert(fields.end(), rest.begin(), rest.end());
     return fields;
 }

@@ -271,12 +271,10 @@ std::string Voxelization::vdbImage(double lengthUnit) const {
                              [](const openvdb::FloatGrid::ValueOnIter& it) { it.setValue(1.0f); });
     // The shape as the packing file names it: the family where it is not the superball, then its
     // parameters (e.g. p) under their names.
-    if (shape_.info().name != shapeFamilies().front().name)
-        density->insertMeta("shape", openvdb::StringMetadata(std::string(shape_.info().name)));
-    const std::vector<double> values = shape_.values();
-    for (std::size_t k = 0; k < values.size(); ++k)
-        density->insertMeta(std::string(shape_.info().parameters[k].name),
-                            openvdb::DoubleMetadata(values[k]));
+    if (const std::optional<std::string_view> family = shape_.writtenFamily())
+        density->insertMeta(kShapeFamilyKey, openvdb::StringMetadata(std::string(*family)));
+    for (const auto& [name, value] : shape_.namedValues())
+        density->insertMeta(std::string(name), openvdb::DoubleMetadata(value));
     density->insertMeta("phi_voxel", openvdb::DoubleMetadata(phiVoxel()));
     density->insertMeta("phi_exact", openvdb::DoubleMetadata(phiExact_));
     return sbpack::vdbImage(density, boxLength_, voxels_,

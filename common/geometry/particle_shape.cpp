@@ -52,6 +52,37 @@ std::vector<double> ShapeSpec::values() const {
     return {p};
 }
 
+std::vector<std::pair<std::string_view, double>> ShapeSpec::namedValues() const {
+    std::vector<std::pair<std::string_view, double>> named;
+    const std::vector<double> all = values();
+    for (std::size_t k = 0; k < all.size(); ++k)
+        named.emplace_back(info().parameters[k].name, all[k]);
+    return named;
+}
+
+std::optional<std::string_view> ShapeSpec::writtenFamily() const {
+    if (family == Family::superball) return std::nullopt;
+    return info().name;
+}
+
+std::vector<ShapeField> shapeFields() {
+    std::vector<ShapeField> fields{{.name = kShapeFamilyKey,
+                                    .units = "",
+                                    .description = "the shape family, whose parameters follow; "
+                                                   "absent: superball (written only for another "
+                                                   "family)",
+                                    .text = true,
+                                    .optional = true}};
+    const bool several = std::size(kFamilies) > 1;
+    for (const ShapeFamily& family : kFamilies)
+        for (const ShapeParameter& parameter : family.parameters)
+            fields.push_back({.name = parameter.name,
+                              .units = parameter.units,
+                              .description = parameter.description,
+                              .optional = several});
+    return fields;
+}
+
 std::optional<std::string> ShapeSpec::problem() const {
     if (p >= 0.5 && std::isfinite(p)) return std::nullopt;
     return fmt::format("p = {} (must be finite and >= 0.5)", p);

@@ -16,9 +16,14 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace sbpack {
+
+/// The key under which the packing file, the results and the .vdb metadata name a shape's
+/// family; absent: the superball (every file written before the family had a name).
+inline constexpr const char* kShapeFamilyKey = "shape";
 
 /// One parameter of a shape family, under the name the packing file and the results carry.
 struct ShapeParameter {
@@ -52,6 +57,16 @@ struct ShapeSpec {
     const ShapeFamily& info() const;
     /// The parameters' values, in the order of info().parameters.
     std::vector<double> values() const;
+    /// Each parameter's name with its value, in the same order: what a file writes.
+    std::vector<std::pair<std::string_view, double>> namedValues() const;
+    /// The family's name as a file writes it under kShapeFamilyKey: nothing for the superball,
+    /// so that every superball file is written as before.
+    std::optional<std::string_view> writtenFamily() const;
+    /// The shape a file or record holds: the family named `written` (nothing: the superball),
+    /// each of its parameters read by name with value(name). Throws std::invalid_argument for an
+    /// unknown family (fromValues).
+    template <class Value>
+    static ShapeSpec read(const std::optional<std::string>& written, Value&& value);
     /// What makes the parameters no shape of the family (e.g. "p = 0.4 (must be finite and
     /// >= 0.5)"), or nothing.
     std::optional<std::string> problem() const;
@@ -66,6 +81,30 @@ std::span<const ShapeFamily> shapeFamilies();
 const ShapeFamily* findShapeFamily(std::string_view name);
 /// The families' names, for messages: "superball".
 std::string shapeFamilyNames();
+
+/// One entry a schema declares for the shape (the packing file's, the results'): the family's
+/// name under kShapeFamilyKey, then every family's parameters.
+struct ShapeField {
+    std::string_view name;
+    std::string_view units;
+    std::string_view description;
+    bool text = false;     ///< the family's name, a string; else a parameter, a float
+    bool optional = false; ///< a file may lack it (the family's name; a parameter of one family
+                           ///< where there are several)
+};
+/// The shape's entries, in the order files write them.
+std::vector<ShapeField> shapeFields();
+
+template <class Value>
+ShapeSpec ShapeSpec::read(const std::optional<std::string>& written, Value&& value) {
+    const std::string_view name =
+        written ? std::string_view(*written) : shapeFamilies().front().name;
+    std::vector<double> values;
+    if (const ShapeFamily* family = findShapeFamily(name))
+        for (const ShapeParameter& parameter : family->parameters)
+            values.push_back(value(parameter.name));
+    return fromValues(name, values);
+}
 
 /// A body of a ShapeSpec at semi-axis R (the largest half-width of its bounding box).
 class ParticleShape {

@@ -211,26 +211,22 @@ void migrate(hid_t root, std::int64_t version, Packing& packing) {
 /// The shape's family (only where it is not the superball, so that every superball file is as
 /// before) and its parameters by name.
 void writeShape(hid_t root, const ShapeSpec& shape) {
-    const ShapeFamily& family = shape.info();
-    if (family.name != shapeFamilies().front().name)
-        writeStringAttribute(root, kShape, std::string(family.name));
-    const std::vector<double> values = shape.values();
-    for (std::size_t k = 0; k < values.size(); ++k)
-        writeDoubleAttribute(root, std::string(family.parameters[k].name), values[k]);
+    if (const std::optional<std::string_view> family = shape.writtenFamily())
+        writeStringAttribute(root, kShape, std::string(*family));
+    for (const auto& [name, value] : shape.namedValues())
+        writeDoubleAttribute(root, std::string(name), value);
 }
 
 ShapeSpec readShape(hid_t root, const std::string& file) {
-    const std::string name = hasAttribute(root, kShape) ? readStringAttribute(root, kShape)
-                                                        : std::string(shapeFamilies().front().name);
-    const ShapeFamily* family = findShapeFamily(name);
-    if (family == nullptr)
-        throw PackingFileError("'" + file + "': shape '" + name +
+    std::optional<std::string> family;
+    if (hasAttribute(root, kShape)) family = readStringAttribute(root, kShape);
+    if (family && findShapeFamily(*family) == nullptr)
+        throw PackingFileError("'" + file + "': shape '" + *family +
                                "' is not a shape family this build knows (" + shapeFamilyNames() +
                                ")");
-    std::vector<double> values;
-    for (const ShapeParameter& parameter : family->parameters)
-        values.push_back(readDoubleAttribute(root, std::string(parameter.name)));
-    return ShapeSpec::fromValues(name, values);
+    return ShapeSpec::read(family, [&](std::string_view name) {
+        return readDoubleAttribute(root, std::string(name));
+    });
 }
 
 /// The packing file's bytes (built in memory; docs/design.md §4).

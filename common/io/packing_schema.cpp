@@ -254,21 +254,13 @@ constexpr PackingMigration kMigrations[] = {
 std::span<const PackingEntry> packingEntries() {
     static const std::vector<PackingEntry> entries = [] {
         std::vector<PackingEntry> all(std::begin(kLeading), std::end(kLeading));
-        all.push_back({.name = kShape,
-                       .kind = A,
-                       .type = S,
-                       .description = "the shape family, whose parameters follow; absent: "
-                                      "superball (written only for another family)",
-                       .optional = true});
-        const bool several = shapeFamilies().size() > 1;
-        for (const ShapeFamily& family : shapeFamilies())
-            for (const ShapeParameter& parameter : family.parameters)
-                all.push_back({.name = parameter.name,
-                               .kind = A,
-                               .type = F,
-                               .units = parameter.units,
-                               .description = parameter.description,
-                               .optional = several});
+        for (const ShapeField& shape : shapeFields())
+            all.push_back({.name = shape.name,
+                           .kind = A,
+                           .type = shape.text ? S : F,
+                           .units = shape.units,
+                           .description = shape.description,
+                           .optional = shape.optional});
         all.insert(all.end(), std::begin(kEntries), std::end(kEntries));
         return all;
     }();

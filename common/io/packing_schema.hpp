@@ -8,6 +8,8 @@
 // entries sbgen keeps in `provenance` and `resume_state` are declared in its own table,
 // generator/protocol/checkpoint_entries.
 
+#include "geometry/particle_shape.hpp"
+
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -24,7 +26,7 @@ inline constexpr const char* kFormat = "format";
 inline constexpr const char* kFormatVersion = "format_version";
 /// The shape family's name (ShapeSpec::info); absent: superball. The family's parameters follow
 /// under their own names (ShapeParameter::name, e.g. "p").
-inline constexpr const char* kShape = "shape";
+inline constexpr const char* kShape = kShapeFamilyKey;
 inline constexpr const char* kBoxLength = "box_length";
 inline constexpr const char* kSemiAxis = "semi_axis";
 inline constexpr const char* kParticles = "n_particles";
