@@ -37,10 +37,13 @@ const char* phaseName(sbpack::Phase phase) {
 
 void printProgress(const sbpack::ProtocolStatus& s, double runSeconds,
                    std::uint64_t runCollisions) {
-    std::fprintf(stderr, "sbgen: %s  phi %.6f  P %.3e  collisions %.4g  (%.3g M/s)  wall %.1f s\n",
+    std::fprintf(stderr, "sbgen: %s  phi %.6f  P %.3e  collisions %.4g  (%.3g M/s)  wall %.1f s",
                  phaseName(s.phase), s.packingFraction, s.reducedPressure,
                  static_cast<double>(s.collisions),
                  runSeconds > 0.0 ? runCollisions / runSeconds * 1e-6 : 0.0, s.wallSeconds);
+    // docs/design.md §3, "Plateaus"
+    if (s.stallSpeed > 1.0) std::fprintf(stderr, "  (growth x%g at a plateau)", s.stallSpeed);
+    std::fputc('\n', stderr);
 }
 
 std::filesystem::path interruptCheckpointPath(const sbpack::GeneratorOptions& o) {

@@ -81,6 +81,16 @@ Entry finish(Entry e) {
     return e;
 }
 
+/// An entry of the plateaus (docs/design.md §3, "Plateaus"), optional and written only by a run
+/// whose growth rate was raised at one: the files of the other runs stay as they were.
+Entry plateau(Entry e) {
+    e.write = [write = e.write](const CheckpointFields& f) -> std::optional<ProvenanceValue> {
+        if (f.status.stallSpeed == 1.0) return std::nullopt;
+        return write(f);
+    };
+    return e;
+}
+
 /// An entry of a mixture (docs/mixtures.md), optional and written only by a mixture's run.
 Entry mixture(Entry e) {
     e.write = [write = e.write](const CheckpointFields& f) -> std::optional<ProvenanceValue> {
@@ -180,6 +190,8 @@ std::vector<Entry> statusEntries() {
             P, "stale_events", [](auto& f) -> auto& { return f.status.staleEvents; }),
         field<std::int64_t>(
             P, "rechecks", [](auto& f) -> auto& { return f.status.rechecks; }, true),
+        plateau(field<double>(
+            P, "stall_speed", [](auto& f) -> auto& { return f.status.stallSpeed; }, true)),
         derived(P, "events",
                 [](const CheckpointFields& f) {
                     const ProtocolStatus& s = f.status;
@@ -215,9 +227,14 @@ std::vector<Entry> resumeEntries() {
         field<std::int64_t>(
             R, "subset_windows", [](auto& f) -> auto& { return f.status.subsetWindows; }, true),
         field<std::int64_t>(
-            R, "stalled_windows", [](auto& f) -> auto& { return f.status.stalledWindows; }, true),
+            R, "stalled_windows", [](auto& f) -> auto& { return f.status.stall.stalledWindows; },
+            true),
         field<double>(
-            R, "stall_pressure", [](auto& f) -> auto& { return f.status.stallPressure; }, true),
+            R, "stall_pressure", [](auto& f) -> auto& { return f.status.stall.stallPressure; },
+            true),
+        field<std::int64_t>(
+            R, "longest_doubling", [](auto& f) -> auto& { return f.status.stall.longestDoubling; },
+            true),
         field<double>(
             R, "base_diameter", [](auto& f) -> auto& { return f.clock.baseDiameter; }),
         field<double>(
@@ -314,6 +331,9 @@ CheckpointFields readCheckpoint(const Packing& packing, const std::string& sourc
     }
     fields.parameters = checkedParameters(fields.parameters, packing, source);
     fields.clock = checkedClock(fields.clock, packing, source);
+    if (!(std::isfinite(fields.status.stallSpeed) && fields.status.stallSpeed >= 1.0))
+        throw std::invalid_argument(where + "checkpoint provenance 'stall_speed' must be at "
+                                            "least 1 (the slow rate's raise at plateaus)");
     fields.pairRecords = packing.pairRecords;
     return fields;
 }

@@ -319,7 +319,7 @@ double JammingProtocol::finishWindow(double virial, double duration, bool record
                 engine.setGrowthRate(parameters_.slowGrowthRate());
             }
             if (status_.phase == Phase::Slow && finishing(sustained))
-                engine.setGrowthRate(parameters_.finishGrowthRate());
+                engine.setGrowthRate(parameters_.finishGrowthRate() * status_.stallSpeed);
         },
         engine_);
     ++status_.windows;
@@ -331,25 +331,34 @@ double JammingProtocol::finishWindow(double virial, double duration, bool record
 }
 
 void JammingProtocol::watchJam(std::uint64_t participants, double sustained) {
-    // A subset carries the pressure after this many windows in a row; the slow phase's pressure
-    // has stalled after this many windows without doubling. Either checks the jam then and at 2,
-    // 4, 8, ... times as many windows (docs/design.md §3, "Jam check on the way").
-    constexpr std::int64_t kSubsetWindows = 3, kStalledWindows = 50;
+    // A subset carries the pressure after this many windows in a row, and checks the jam then
+    // and at 2, 4, 8, ... times as many windows; the stall watch likewise from its own count
+    // (docs/design.md §3, "Jam check on the way").
+    constexpr std::int64_t kSubsetWindows = 3;
     const bool subset = status_.reducedPressure >= parameters_.pressureSwitch &&
                         2 * participants < static_cast<std::uint64_t>(parameters_.particles);
     status_.subsetWindows = subset ? status_.subsetWindows + 1 : 0;
-    if (status_.phase == Phase::Slow) {
-        const bool doubled = sustained >= 2.0 * status_.stallPressure;
-        if (doubled) status_.stallPressure = sustained;
-        status_.stalledWindows = doubled ? 0 : status_.stalledWindows + 1;
-    }
-    if (status_.phase == Phase::Done || !(dueAt(status_.subsetWindows, kSubsetWindows) ||
-                                          dueAt(status_.stalledWindows, kStalledWindows)))
+    if (status_.phase == Phase::Slow) status_.stall.observe(sustained);
+    const bool stallCheck = status_.phase == Phase::Slow && status_.stall.checkDue();
+    if (status_.phase == Phase::Done ||
+        !(dueAt(status_.subsetWindows, kSubsetWindows) || stallCheck))
         return;
     JamCheck check = checkJam(checkpoint(), status_.reducedPressure, parameters_.jamCheck);
-    if (!check.chain) return;
-    status_.phase = Phase::Done;
-    status_.jam = std::move(check);
+    if (check.chain) {
+        status_.phase = Phase::Done;
+        status_.jam = std::move(check);
+    } else if (stallCheck && check.jammed && status_.stall.plateau()) {
+        raiseGrowthRate(sustained);
+    }
+}
+
+void JammingProtocol::raiseGrowthRate(double sustained) {
+    // A jammed network whose pressure no longer rises at this rate creeps: it makes room as fast
+    // as the particles grow (bench/RESULTS.md, "Plateaus"). Twice the rate outruns the creep
+    // with the least change to the gaps the slow rate refines.
+    status_.stallSpeed *= 2.0;
+    std::visit([&](auto& engine) { engine.setGrowthRate(2.0 * engine.clock().rate); }, engine_);
+    status_.stall.restart(sustained);
 }
 
 double JammingProtocol::packingFraction() const {

@@ -14,13 +14,16 @@
 // the particles colliding in several windows in a row past the switch pressure) or when the slow
 // phase's pressure stalls (no doubling over many windows while the particles grow); a failed check
 // that finds a chain wrapping around the periodic box ends the run early, not jammed: such a chain
-// is rigid, and the rest cannot grow into a jam.
+// is rigid, and the rest cannot grow into a jam. A stall that outlasts the run's doublings and
+// whose check says jammed is a plateau, where growth and a slow creep balance: the growth rate is
+// doubled there (docs/design.md §3, "Plateaus").
 
 #include "contacts/jam_check.hpp"
 #include "engine/event_driven_md.hpp"
 #include "initial/random_start.hpp"
 #include "packing/packing.hpp"
 #include "protocol/force_windows.hpp"
+#include "protocol/stall_watch.hpp"
 #include "shapes/registry.hpp"
 #include "stop/stop_request.hpp"
 
@@ -144,11 +147,12 @@ struct ProtocolStatus {
     /// Windows in a row, past the switch pressure, in which fewer than half the particles
     /// collided: the pressure may come from a subset (then the jam is checked).
     std::int64_t subsetWindows = 0;
-    /// Slow-phase windows since the sustained pressure last doubled (reached twice
-    /// stallPressure): a pressure that stops rising while the particles grow (then the jam is
-    /// checked).
-    std::int64_t stalledWindows = 0;
-    double stallPressure = 0.0;
+    /// The slow phase's pressure that stops rising while the particles grow (then the jam is
+    /// checked, and a plateau's growth rate raised).
+    StallWatch stall;
+    /// The slow phase's growth rate over its protocol's (the slow rate, or the finish's): doubled
+    /// at each plateau whose jam check passes (docs/design.md §3, "Plateaus"); 1: never.
+    double stallSpeed = 1.0;
     /// The jam check, made when the final pressure is reached, or on the way when it finds a
     /// chain that wraps around the box (then the run ends, not jammed), or the refusal of a run
     /// that reached its cost limit (then the phase stays, so the output resumes).
@@ -216,8 +220,11 @@ class JammingProtocol {
     /// window's rebuild.
     void adaptSkin();
     /// After a window in which `participants` particles collided: the jam check on the way, when
-    /// a subset has carried the pressure or the sustained pressure has stalled for a while.
+    /// a subset has carried the pressure or the sustained pressure has stalled for a while, and
+    /// the growth rate doubled at a plateau.
     void watchJam(std::uint64_t participants, double sustained);
+    /// Doubles the slow phase's growth rate (a plateau at `sustained`).
+    void raiseGrowthRate(double sustained);
     /// Past the cost limit: status_.jam says the run stopped there, with the contact network at
     /// its pressure; returns whether it did.
     bool stopAtCostLimit();

@@ -129,5 +129,41 @@ TEST(StiffJamming, AStalledPressureOnAWrappingColumnEndsTheRunNotJammed) {
     EXPECT_NE(status.jam->verdict.find("wraps around the periodic box"), std::string::npos);
 }
 
+/// One window of the checkpoint of p = 5, N = 1000, seed 2 at its plateau (P about 5e10 after
+/// 57.3 M collisions, jammed by the check: bench/RESULTS.md, "p = 5 seed 2 creeps below the final
+/// pressure"), edited so that the stall watch checks after it (its 3200th stalled window) and
+/// its longest doubling is `longest` windows; returns the resumed run after that window.
+JammingProtocol plateauWindow(std::int64_t longest) {
+    const std::string file = std::string(SBPACK_DATA_DIR) + "/plateau-p5-n1000-s2.h5";
+    Packing checkpoint = readPacking(file);
+    checkpoint.resumeState["stalled_windows"] = std::int64_t{3199};
+    checkpoint.resumeState["longest_doubling"] = longest;
+    JammingProtocol run(checkpoint, file);
+    StopRequest once;
+    run.run([&](const ProtocolStatus&) { once.request(); }, once);
+    return run;
+}
+
+// docs/design.md §3, "Plateaus": a stall four times the run's longest doubling whose check says
+// jammed doubles the growth rate, written in the provenance and the growth clock; the same stall
+// within four longest doublings leaves the rate and the files as they were.
+TEST(StiffJamming, APlateauWhoseCheckSaysJammedDoublesTheGrowthRate) {
+    const JammingProtocol raised = plateauWindow(500);
+    EXPECT_EQ(raised.status().phase, Phase::Slow);
+    EXPECT_EQ(raised.status().stallSpeed, 2.0);
+    EXPECT_EQ(raised.status().stall.stalledWindows, 0);
+    const Packing written = raised.checkpoint();
+    EXPECT_EQ(std::get<double>(written.provenance.at("stall_speed")), 2.0);
+    EXPECT_EQ(std::get<double>(written.resumeState.at("growth_rate")), 2.0 * 1e-2);
+    EXPECT_EQ(JammingProtocol(written, "raised.h5").status().stallSpeed, 2.0);
+
+    const JammingProtocol kept = plateauWindow(1000); // a plateau only from 4000 windows
+    EXPECT_EQ(kept.status().phase, Phase::Slow);
+    EXPECT_EQ(kept.status().stallSpeed, 1.0);
+    EXPECT_EQ(kept.status().stall.stalledWindows, 3200);
+    EXPECT_EQ(kept.checkpoint().provenance.count("stall_speed"), 0u);
+    EXPECT_EQ(std::get<double>(kept.checkpoint().resumeState.at("growth_rate")), 1e-2);
+}
+
 } // namespace
 } // namespace sbpack

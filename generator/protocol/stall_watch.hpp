@@ -1,0 +1,57 @@
+#pragma once
+// The slow phase's stall watch (docs/design.md §3, "Jam check on the way" and "Plateaus"): it
+// counts the windows since the sustained reduced pressure last doubled, and remembers the most
+// windows any doubling took. The jam is checked at 1, 2, 4, ... times kCheckWindows stalled
+// windows; a plateau whose check says jammed raises the growth rate once the stall has lasted
+// kRaiseRatio times the run's longest doubling (at least kCheckWindows).
+
+#include <cstdint>
+
+namespace sbpack {
+
+struct StallWatch {
+    /// The first jam check of a stall, in windows (then at 2, 4, 8, ... times as many).
+    static constexpr std::int64_t kCheckWindows = 50;
+    /// A stall this many times the run's longest doubling is a plateau (docs/design.md §3,
+    /// "Plateaus": the doublings of p = 5 seed 2 took 70-520 windows, its plateau over 1900).
+    static constexpr std::int64_t kRaiseRatio = 4;
+
+    /// Slow-phase windows since the sustained pressure last doubled (reached twice
+    /// stallPressure).
+    std::int64_t stalledWindows = 0;
+    double stallPressure = 0.0;
+    /// The most windows a doubling of this run's slow phase took (0: none recorded yet, as in a
+    /// checkpoint written before sbgen kept it).
+    std::int64_t longestDoubling = 0;
+
+    /// After a slow-phase window whose sustained pressure is `sustained`.
+    void observe(double sustained) {
+        if (sustained >= 2.0 * stallPressure) {
+            if (stallPressure > 0.0 && stalledWindows + 1 > longestDoubling)
+                longestDoubling = stalledWindows + 1;
+            stallPressure = sustained;
+            stalledWindows = 0;
+        } else {
+            ++stalledWindows;
+        }
+    }
+    /// Whether the jam is checked after this window.
+    bool checkDue() const {
+        const std::int64_t multiple = stalledWindows / kCheckWindows;
+        return stalledWindows % kCheckWindows == 0 && multiple > 0 &&
+               (multiple & (multiple - 1)) == 0;
+    }
+    /// Whether the stall has lasted long enough to be a plateau (checked at checkDue()).
+    bool plateau() const {
+        const std::int64_t longest =
+            longestDoubling > kCheckWindows ? longestDoubling : kCheckWindows;
+        return stalledWindows >= kRaiseRatio * longest;
+    }
+    /// After the growth rate was raised at `sustained`: a new stall starts from there.
+    void restart(double sustained) {
+        stallPressure = sustained;
+        stalledWindows = 0;
+    }
+};
+
+} // namespace sbpack
