@@ -55,7 +55,8 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
 ### sbgen
 
 - **Progress**: a line on stderr every 2 s gives the phase, `phi`, `P`, collisions and
-  collisions per second, wall time (`--quiet` silences it).
+  collisions per second, wall time, and after a plateau the growth rate's raise (`growth x2 at
+  a plateau`, docs/design.md §3, "Plateaus"); `--quiet` silences it.
 - **Warnings before a run, once each**: a protocol whose expected cost exceeds a CPU hour (the
   estimate is printed: collisions per particle from the rates, collisions per CPU second
   measured at `p`, and when the cost limit would stop it; docs/design.md §3), a fast rate
@@ -67,7 +68,8 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   at the paper's `p` and `N = 1000` print none.
 - **Output**: the packing (format below, with `velocities`, and `angular_velocities` for
   superballs) and, in `provenance`, every parameter, the seed, the version, the final reduced
-  pressure, collisions (and `expected_collisions`, docs/design.md §3), events, list rebuilds,
+  pressure, collisions (and `expected_collisions`, docs/design.md §3), the growth rate's raise
+  at plateaus (`stall_speed`, only where there was one), events, list rebuilds,
   stale events and rechecks, the superball predictor's work (`predictor_*`: calls, sphere, bound
   and plane rejections, exact and robust evaluations, warm Newton steps on the normal, plane and
   chord steps, Newton brackets, uncertified roots, refinement steps, pair-solver fallbacks,
