@@ -47,6 +47,12 @@ def number(row, key):
     return float(value) if value not in ("", None) else math.nan
 
 
+def paper_value(row, key):
+    """The paper's value to two decimals, "-" where it has none (p beyond its table)."""
+    value = number(row, key)
+    return "-" if math.isnan(value) else f"{value:.2f}"
+
+
 def mark(ok):
     return "n/a" if ok is None else ("yes" if ok else "**no**")
 
@@ -188,10 +194,10 @@ def transport_row(results, group, paper):
             f"{pm(attr(group, 'transport', 'permeability_w2'), 1e4, 3, n)} | "
             f"{pm(attr(group, 'transport', 'mean_survival_time_w2'), 1e3, 3, n)} | "
             f"{pm(attr(group, 'transport', 'principal_relaxation_time_w2'), 1e3, 3, n)} | "
-            f"{pm(attr(group, 'spreadability', 'alpha'), 1, 2, n)} | {number(ref, 'alpha'):.2f} | "
-            f"{pooled(group, 'a0', 1e4, 1)} | {number(ref, 'a0_e-4'):.2f} | "
-            f"{pooled(group, 'a1', 1e3, 2)} | {number(ref, 'a1_e-3'):.2f} | "
-            f"{pooled(group, 'H', 1e3, 1)} | {number(ref, 'H_e-3'):.2f} |")
+            f"{pm(attr(group, 'spreadability', 'alpha'), 1, 2, n)} | {paper_value(ref, 'alpha')} | "
+            f"{pooled(group, 'a0', 1e4, 1)} | {paper_value(ref, 'a0_e-4')} | "
+            f"{pooled(group, 'a1', 1e3, 2)} | {paper_value(ref, 'a1_e-3')} | "
+            f"{pooled(group, 'H', 1e3, 1)} | {paper_value(ref, 'H_e-3')} |")
 
 
 def ordered_count(results, group):

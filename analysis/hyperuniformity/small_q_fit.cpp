@@ -127,7 +127,9 @@ IndexSpread indexSpread(const SmallQPoints& points, double qMaxW, double alpha, 
     IndexSpread s{INFINITY, -INFINITY};
     for (const double factor : kWindowFactors) {
         const SmallQPoints window = points.upTo(factor * qMaxW);
-        if (window.qw.size() < 3) continue;
+        // A window through one shell determines no a0 (fitFixedExponent refuses it): the
+        // narrowest windows of a small box (Q_min w near qMaxW) hold only the first shell.
+        if (window.qw.size() < 3 || distinctMagnitudes(window.qw) < 2) continue;
         const double h = fitFixedExponent(window, alpha).a0 / chiPeak;
         s.hMin = std::min(s.hMin, h);
         s.hMax = std::max(s.hMax, h);

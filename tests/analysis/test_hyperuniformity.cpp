@@ -386,6 +386,23 @@ TEST(SmallQFit, RecoversAnExactPowerLaw) {
     EXPECT_THROW(fitFixedExponent(points.upTo(0.1), 0.5), std::domain_error);
 }
 
+TEST(SmallQFit, TheSpreadLeavesOutWindowsThroughOneShell) {
+    // A box whose first shell lies at Q w = 0.79 and second at 1.12 (p = 0.55, N = 1000): the
+    // windows ending at 0.8 and 0.9 times 1.4 hold the first shell alone, and the spread is that
+    // of the windows through two shells or more (before, the narrowest refused the whole
+    // analysis: "hyperuniformity skipped").
+    SmallQPoints points;
+    for (const double q : {0.7926, 1.1209, 1.3728, 1.5852, 1.7723})
+        for (int k = 0; k < 3; ++k) {
+            points.qw.push_back(q);
+            points.chi.push_back(2e-4 + 1e-3 * std::pow(q, 0.55));
+        }
+    const IndexSpread spread = indexSpread(points, 1.4, 0.55, 0.02);
+    EXPECT_NEAR(spread.hMin, 0.01, 1e-10);
+    EXPECT_NEAR(spread.hMax, 0.01, 1e-10);
+    EXPECT_THROW(fitFixedExponent(points.upTo(0.8 * 1.4), 0.55), std::domain_error);
+}
+
 TEST(SmallQFit, OneDistinctMagnitudeIsRefused) {
     // Three members' wave vectors at one shell (their boxes 3e-4 apart): a0 + a1 Q^alpha through
     // one |Q| is not determined, however many wave vectors (issue 42: N = 300 printed
