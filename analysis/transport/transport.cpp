@@ -43,17 +43,20 @@ TransportResult Transport::compute(const PoreSizeDistributionResult& pores, doub
     r.meanWidth = pores.meanWidth;
     r.meanPoreSize = pores.mean;
     r.secondMoment = pores.secondMoment;
-    r.zeta2 = zeta2Interpolation(p, phi);
-    if (!(r.zeta2 > 0.0 && r.zeta2 <= 1.0))
-        throw std::domain_error("transport: the zeta_2 interpolation of Sec. V A gives " +
-                                std::to_string(r.zeta2) + " for p = " + std::to_string(p) +
+    const double zeta2 = zeta2Interpolation(p, phi);
+    if (zeta2 > 0.0 && zeta2 <= 1.0) {
+        r.zeta2 = zeta2;
+        r.formationFactor = formationFactor(phi, zeta2);
+        r.permeability = pores.secondMoment / *r.formationFactor; // Eq. 17: L^2 ~ <delta^2>
+    } else {
+        r.permeabilityOmitted = "the zeta_2 interpolation of Sec. V A gives " +
+                                std::to_string(zeta2) + " for p = " + std::to_string(p) +
                                 ", phi = " + std::to_string(phi) +
-                                ", outside (0, 1] (it was fitted for 0.85 <= p <= 1.5)");
-    r.formationFactor = formationFactor(phi, r.zeta2);
+                                ", outside (0, 1] (it was fitted for 0.85 <= p <= 1.5)";
+    }
     const double d = parameters_.diffusionCoefficient;
-    r.permeability = pores.secondMoment / r.formationFactor; // Eq. 17: L^2 ~ <delta^2>
-    r.meanSurvivalTime = pores.mean * pores.mean / d;        // Eq. 19, kappa -> inf
-    r.principalRelaxationTime = pores.secondMoment / d;      // Eq. 20, kappa -> inf
+    r.meanSurvivalTime = pores.mean * pores.mean / d;   // Eq. 19, kappa -> inf
+    r.principalRelaxationTime = pores.secondMoment / d; // Eq. 20, kappa -> inf
     r.runtimeSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return r;

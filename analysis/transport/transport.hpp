@@ -6,6 +6,9 @@
 
 #include "pores/pore_size_distribution.hpp"
 
+#include <optional>
+#include <string>
+
 namespace sbpack {
 
 /// Three-point parameter of the paper's interpolation between sphere and cube packings
@@ -28,19 +31,27 @@ struct TransportParameters {
 struct TransportResult {
     TransportParameters parameters;
     double p = 0.0;
-    double phi = 0.0;             ///< packing fraction N v1 / L^3 (solid fraction)
-    double meanWidth = 0.0;       ///< w
-    double meanPoreSize = 0.0;    ///< <delta> of the pore-size result used
-    double secondMoment = 0.0;    ///< <delta^2>
-    double zeta2 = 0.0;           ///< Sec. V A interpolation
-    double formationFactor = 0.0; ///< Eq. 18
-    double permeability = 0.0;    ///< k ~ <delta^2> / F (Eq. 17), length^2
+    double phi = 0.0;          ///< packing fraction N v1 / L^3 (solid fraction)
+    double meanWidth = 0.0;    ///< w
+    double meanPoreSize = 0.0; ///< <delta> of the pore-size result used
+    double secondMoment = 0.0; ///< <delta^2>
+    /// Sec. V A's interpolation, Eq. 18 and Eq. 17 (k ~ <delta^2> / F, length^2): absent where
+    /// the interpolation leaves (0, 1] (fitted for 0.85 <= p <= 1.5; past p of about 2 it
+    /// exceeds 1), where tau and T1, pore-size moments alone, still hold.
+    std::optional<double> zeta2;
+    std::optional<double> formationFactor;
+    std::optional<double> permeability;
     double meanSurvivalTime =
         0.0; ///< tau <= <delta>^2 / D_diff (Eq. 19, kappa -> inf), an upper bound
     double principalRelaxationTime = 0.0; ///< T1 <= <delta^2> / D_diff (Eq. 20, kappa -> inf)
     double runtimeSeconds = 0.0;
 
-    double permeabilityOverWidth2() const { return permeability / (meanWidth * meanWidth); }
+    std::optional<double> permeabilityOverWidth2() const {
+        if (!permeability) return std::nullopt;
+        return *permeability / (meanWidth * meanWidth);
+    }
+    /// Why k is absent (empty where it is given).
+    std::string permeabilityOmitted;
     /// tau D_diff / w^2 (paper Fig. 14).
     double meanSurvivalTimeOverWidth2() const {
         return meanSurvivalTime * parameters.diffusionCoefficient / (meanWidth * meanWidth);
@@ -58,8 +69,9 @@ class Transport {
     explicit Transport(TransportParameters parameters);
 
     /// From a pore-size result (any method) and the packing's p and phi. Throws
-    /// std::invalid_argument for p < 0.5 or phi outside (0, 1), and std::domain_error when the
-    /// interpolated zeta_2 leaves (0, 1] (the interpolation was fitted for 0.85 <= p <= 1.5).
+    /// std::invalid_argument for p < 0.5 or phi outside (0, 1); where the interpolated zeta_2
+    /// leaves (0, 1] (the interpolation was fitted for 0.85 <= p <= 1.5) zeta_2, F and k are
+    /// absent and permeabilityOmitted says why.
     TransportResult compute(const PoreSizeDistributionResult& pores, double p, double phi) const;
 
     const TransportParameters& parameters() const { return parameters_; }

@@ -10,11 +10,16 @@ namespace transport_fields {
 using namespace schema::columns;
 using R = TransportResult;
 inline constexpr schema::FieldTable kTable{std::array<schema::Column<R>, 10>{{
-    {{"zeta2", A, F, "1", "three-point parameter zeta_2 (Sec. V A interpolation)"},
+    {{"zeta2", A, F, "1",
+      "three-point parameter zeta_2 (Sec. V A interpolation); absent, with F and k, where it "
+      "leaves (0, 1] (fitted for 0.85 <= p <= 1.5)",
+      No, true},
      member<&R::zeta2>},
-    {{"formation_factor", A, F, "1", "formation factor F (Eq. 18)"}, member<&R::formationFactor>},
-    {{"permeability", A, F, "length^2", "k ~ <delta^2> / F (Eq. 17)"}, member<&R::permeability>},
-    {{"permeability_w2", A, F, "1", "k / w^2", Mean}, member<&R::permeabilityOverWidth2>},
+    {{"formation_factor", A, F, "1", "formation factor F (Eq. 18)", No, true},
+     member<&R::formationFactor>},
+    {{"permeability", A, F, "length^2", "k ~ <delta^2> / F (Eq. 17)", No, true},
+     member<&R::permeability>},
+    {{"permeability_w2", A, F, "1", "k / w^2", Mean, true}, member<&R::permeabilityOverWidth2>},
     {{"mean_survival_time", A, F, "time", "bound tau <= <delta>^2 / D_diff (Eq. 19)"},
      member<&R::meanSurvivalTime>},
     {{"mean_survival_time_w2", A, F, "w^2/D_diff", "tau D_diff / w^2", Mean},
@@ -31,8 +36,7 @@ inline constexpr schema::FieldTable kTable{std::array<schema::Column<R>, 10>{{
 
 inline constexpr schema::Group kTransportGroup{
     "transport", "files/<i>/transport",
-    "transport estimates, diffusion-controlled limit (transport); absent where zeta_2 leaves "
-    "(0, 1]",
+    "transport estimates, diffusion-controlled limit (transport)",
     transport_fields::kTable.fields()};
 
 } // namespace sbpack

@@ -42,12 +42,12 @@ TEST(Transport, PermeabilityAndBoundsFromTheMoments) {
     const TransportResult t = Transport(parameters).compute(pores, p, phi);
     const double zeta2 = 0.21068 * phi + 0.25 * (0.11882 + 0.772236 * phi);
     const double f = (2.0 + phi - (1.0 - phi) * zeta2) / ((1.0 - phi) * (2.0 - zeta2));
-    EXPECT_DOUBLE_EQ(t.zeta2, zeta2);
-    EXPECT_DOUBLE_EQ(t.formationFactor, f);
-    EXPECT_NEAR(t.permeability, 0.03 / f, 1e-15);              // Eq. 17
+    EXPECT_DOUBLE_EQ(t.zeta2.value(), zeta2);
+    EXPECT_DOUBLE_EQ(t.formationFactor.value(), f);
+    EXPECT_NEAR(t.permeability.value(), 0.03 / f, 1e-15);      // Eq. 17
     EXPECT_NEAR(t.meanSurvivalTime, 0.15 * 0.15 / 2.0, 1e-15); // Eq. 19
     EXPECT_NEAR(t.principalRelaxationTime, 0.03 / 2.0, 1e-15); // Eq. 20
-    EXPECT_NEAR(t.permeabilityOverWidth2(), 0.03 / f / (w * w), 1e-15);
+    EXPECT_NEAR(t.permeabilityOverWidth2().value(), 0.03 / f / (w * w), 1e-15);
     EXPECT_NEAR(t.meanSurvivalTimeOverWidth2(), 0.15 * 0.15 / (w * w), 1e-15);
     EXPECT_NEAR(t.principalRelaxationTimeOverWidth2(), 0.03 / (w * w), 1e-15);
     EXPECT_EQ(t.p, p);
@@ -55,7 +55,7 @@ TEST(Transport, PermeabilityAndBoundsFromTheMoments) {
     EXPECT_EQ(t.parameters.diffusionCoefficient, 2.0);
 }
 
-TEST(Transport, RejectsBadInputAndTheInterpolationsRangeLimit) {
+TEST(Transport, RejectsBadInputAndLeavesOutKWhereTheInterpolationEnds) {
     const std::vector<double> sizes = {0.1};
     const std::vector<std::int64_t> counts = {1};
     const PoreSizeDistributionResult pores = poreSizeStatistics(sizes, counts, 1.0, 8);
@@ -64,8 +64,16 @@ TEST(Transport, RejectsBadInputAndTheInterpolationsRangeLimit) {
     EXPECT_THROW(transport.compute(pores, 1.0, 0.0), std::invalid_argument);
     EXPECT_THROW(transport.compute(pores, 1.0, 1.0), std::invalid_argument);
     EXPECT_THROW(transport.compute(pores, 0.4, 0.6), std::invalid_argument);
-    EXPECT_THROW(transport.compute(pores, 3.0, 0.7), std::domain_error); // zeta_2 = 1.38
-    EXPECT_NO_THROW(transport.compute(pores, 1.5, 0.7));
+    // zeta_2 = 1.38 at p = 3: no F, no k; the pore-size bounds tau and T1 as at any p.
+    const TransportResult cubes = transport.compute(pores, 3.0, 0.7);
+    EXPECT_FALSE(cubes.zeta2 || cubes.formationFactor || cubes.permeability ||
+                 cubes.permeabilityOverWidth2());
+    EXPECT_NE(cubes.permeabilityOmitted.find("outside (0, 1]"), std::string::npos);
+    EXPECT_NEAR(cubes.meanSurvivalTime, 0.01, 1e-15);
+    EXPECT_NEAR(cubes.principalRelaxationTime, 0.01, 1e-15);
+    const TransportResult fitted = transport.compute(pores, 1.5, 0.7);
+    EXPECT_TRUE(fitted.permeability.has_value());
+    EXPECT_TRUE(fitted.permeabilityOmitted.empty());
 }
 
 } // namespace
