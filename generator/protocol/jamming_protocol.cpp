@@ -347,9 +347,14 @@ void JammingProtocol::watchJam(std::uint64_t participants, double sustained) {
     if (check.chain) {
         status_.phase = Phase::Done;
         status_.jam = std::move(check);
-    } else if (stallCheck && check.jammed && status_.stall.plateau()) {
+    } else if (stallCheck && check.jammed && status_.stall.plateau(expectedDoubling())) {
         raiseGrowthRate(sustained);
     }
+}
+
+double JammingProtocol::expectedDoubling() const {
+    const double rate = std::visit([](const auto& engine) { return engine.clock().rate; }, engine_);
+    return expectedWindowsPerDoubling(parameters_, rate);
 }
 
 void JammingProtocol::raiseGrowthRate(double sustained) {

@@ -225,6 +225,9 @@ class JammingProtocol {
     void watchJam(std::uint64_t participants, double sustained);
     /// Doubles the slow phase's growth rate (a plateau at `sustained`).
     void raiseGrowthRate(double sustained);
+    /// The windows a doubling of the pressure takes at the present growth rate by the cost
+    /// model (expectedWindowsPerDoubling).
+    double expectedDoubling() const;
     /// Past the cost limit: status_.jam says the run stopped there, with the contact network at
     /// its pressure; returns whether it did.
     bool stopAtCostLimit();

@@ -60,6 +60,12 @@ double jammedBoxDiameters(const ProtocolParameters& parameters) {
     return std::cbrt(parameters.particles * unitVolume / 0.85);
 }
 
+/// Collisions per particle per decade of the slow phase, times its rate.
+double slowCollisionsTimesRate(const ProtocolParameters& parameters) {
+    return rotating(parameters.shape) ? kSlowCollisionsTimesRateSuperballs
+                                      : kSlowCollisionsTimesRateSpheres;
+}
+
 std::string costText(const ExpectedCost& cost) {
     const double hours = cost.cpuSeconds / 3600.0;
     return hours >= 1.0
@@ -82,13 +88,17 @@ ExpectedCost expectedCost(const ProtocolParameters& parameters) {
     const double total = decadesTo(parameters.pressureFinal);
     const double slow =
         parameters.pressureFinish > 0.0 ? decadesTo(parameters.pressureFinish) : total;
-    const double perDecade = rotating(parameters.shape) ? kSlowCollisionsTimesRateSuperballs
-                                                        : kSlowCollisionsTimesRateSpheres;
+    const double perDecade = slowCollisionsTimesRate(parameters);
     const double perParticle = kFastPhaseCollisions +
                                perDecade * slow / parameters.slowGrowthRate() +
                                perDecade * (total - slow) / parameters.finishGrowthRate();
     const double collisions = perParticle * parameters.particles;
     return {collisions, collisions / collisionRate(parameters.shape.p)};
+}
+
+double expectedWindowsPerDoubling(const ProtocolParameters& parameters, double rate) {
+    return slowCollisionsTimesRate(parameters) * std::log10(2.0) /
+           (rate * parameters.collisionsPerWindow);
 }
 
 std::vector<std::string> protocolWarnings(const ProtocolParameters& parameters) {

@@ -22,6 +22,12 @@ struct ExpectedCost {
 /// CPU seconds at collisionRate(p).
 ExpectedCost expectedCost(const ProtocolParameters& parameters);
 
+/// The slow phase's windows per doubling of the reduced pressure at growth rate `rate` in the
+/// cost model (expectedCost's collisions per particle per decade, log10 2 of a decade, over the
+/// collisions per particle of a window): about 51 for superballs at 1e-2, 1440 for spheres at
+/// 1e-4 (docs/design.md §3, "Plateaus").
+double expectedWindowsPerDoubling(const ProtocolParameters& parameters, double rate);
+
 /// Collisions per CPU second measured at exponent p (N = 1000 and 200 runs; bench/RESULTS.md,
 /// "Results (collisions per CPU second, median over 5 seeds)"),
 /// interpolated log-linearly in p.

@@ -3,8 +3,9 @@
 // counts the windows since the sustained reduced pressure last doubled, and remembers the most
 // windows any doubling took. The jam is checked at 1, 2, 4, ... times kCheckWindows stalled
 // windows; a plateau whose check says jammed raises the growth rate once the stall has lasted
-// kRaiseRatio times the run's longest doubling (at least kCheckWindows).
+// kRaiseRatio times the run's longest doubling, or the cost model's doubling if longer.
 
+#include <algorithm>
 #include <cstdint>
 
 namespace sbpack {
@@ -41,11 +42,12 @@ struct StallWatch {
         return stalledWindows % kCheckWindows == 0 && multiple > 0 &&
                (multiple & (multiple - 1)) == 0;
     }
-    /// Whether the stall has lasted long enough to be a plateau (checked at checkDue()).
-    bool plateau() const {
-        const std::int64_t longest =
-            longestDoubling > kCheckWindows ? longestDoubling : kCheckWindows;
-        return stalledWindows >= kRaiseRatio * longest;
+    /// Whether the stall has lasted long enough to be a plateau (checked at checkDue()), given
+    /// the windows a doubling takes at the present rate by the cost model
+    /// (expectedWindowsPerDoubling: the run's own doublings are not known before its first).
+    bool plateau(double expectedDoubling) const {
+        const double longest = std::max(static_cast<double>(longestDoubling), expectedDoubling);
+        return static_cast<double>(stalledWindows) >= kRaiseRatio * longest;
     }
     /// After the growth rate was raised at `sustained`: a new stall starts from there.
     void restart(double sustained) {

@@ -60,6 +60,16 @@ TEST(ProtocolAdvice, TheCostGrowsWithNAndTheSlowPhaseAsOneOverItsRate) {
     EXPECT_GT(collisionRate(1.0), 5.0 * collisionRate(1.1)); // the exact sphere engine
 }
 
+TEST(ProtocolAdvice, ADoublingOfThePressureTakesTheModelsWindows) {
+    // docs/design.md §3, "Plateaus": 17 (superballs) or 4.8 (spheres) collisions per particle
+    // per decade over the rate, log10 2 of a decade, 10 collisions per particle a window; about
+    // 50-60 windows were measured at p = 10, gamma_slow 1e-2 ("A stalled pressure checks the jam").
+    EXPECT_NEAR(expectedWindowsPerDoubling(defaults(10.0, 1000), 1e-2), 51.2, 0.1);
+    EXPECT_NEAR(expectedWindowsPerDoubling(defaults(1.0, 1000), 1e-4), 1445.0, 1.0);
+    EXPECT_NEAR(expectedWindowsPerDoubling(defaults(3.0, 1000), 2e-2),
+                0.5 * expectedWindowsPerDoubling(defaults(3.0, 1000), 1e-2), 1e-12);
+}
+
 TEST(ProtocolAdvice, AVerySlowRunIsToldItsExpectedCost) {
     ProtocolParameters slow = defaults(1.5, 5000);
     slow.gammaSlow = 1e-4;

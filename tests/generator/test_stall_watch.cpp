@@ -11,12 +11,14 @@ namespace sbpack {
 namespace {
 
 /// The windows (counted from 1) after which the watch checks the jam over `windows` windows of
-/// constant pressure, and whether each check found a plateau.
-std::vector<std::pair<int, bool>> checksAtConstantPressure(StallWatch& watch, int windows) {
+/// constant pressure, and whether each check found a plateau (a doubling takes
+/// `expectedDoubling` windows by the cost model).
+std::vector<std::pair<int, bool>> checksAtConstantPressure(StallWatch& watch, int windows,
+                                                           double expectedDoubling) {
     std::vector<std::pair<int, bool>> checks;
     for (int w = 1; w <= windows; ++w) {
         watch.observe(watch.stallPressure);
-        if (watch.checkDue()) checks.emplace_back(w, watch.plateau());
+        if (watch.checkDue()) checks.emplace_back(w, watch.plateau(expectedDoubling));
     }
     return checks;
 }
@@ -37,16 +39,23 @@ TEST(StallWatch, APressureThatDoublesIsNeverCheckedAndItsLongestDoublingIsKept) 
 
 TEST(StallWatch, AStallIsCheckedAtPowersOfTwoAndIsAPlateauPastFourLongestDoublings) {
     // No doubling recorded (a fresh slow phase, or a checkpoint from before the watch kept it):
-    // the first check's 50 windows stand for the longest doubling.
+    // the cost model's doubling stands for the longest, 50 windows here.
     StallWatch fresh{0, 1e8, 0};
     const std::vector<std::pair<int, bool>> expected = {
         {50, false}, {100, false}, {200, true}, {400, true}};
-    EXPECT_EQ(checksAtConstantPressure(fresh, 400), expected);
+    EXPECT_EQ(checksAtConstantPressure(fresh, 400, 50.0), expected);
+    // Superballs at gamma_slow 1e-2 (51.2 windows by the model): four of them, 204.8, come
+    // after the check at 200.
+    StallWatch superballs{0, 1e8, 0};
+    EXPECT_EQ(checksAtConstantPressure(superballs, 200, 51.2).back(), std::make_pair(200, false));
     // A run whose doublings took up to 300 windows: a plateau from 1200, checked at 1600.
     StallWatch slow{0, 1e8, 300};
     const std::vector<std::pair<int, bool>> later = {{50, false},  {100, false}, {200, false},
                                                      {400, false}, {800, false}, {1600, true}};
-    EXPECT_EQ(checksAtConstantPressure(slow, 1600), later);
+    EXPECT_EQ(checksAtConstantPressure(slow, 1600, 50.0), later);
+    // Spheres at 1e-4 (about 1440 windows by the model): not before 5760 windows.
+    StallWatch spheres{0, 1e8, 0};
+    EXPECT_FALSE(checksAtConstantPressure(spheres, 3200, 1440.0).back().second);
 }
 
 TEST(StallWatch, ARestartBeginsANewStallFromItsPressure) {
