@@ -284,8 +284,9 @@ int errors(const Options& o, const Packing& packing) {
                                                           packing.packingFraction());
             std::printf("transport at M = %d (exact in brackets): zeta2 = %.5f, F = %.4f, k/w^2 = "
                         "%.3e (%.3e), tau D/w^2 = %.3e (%.3e), T1 D/w^2 = %.3e (%.3e)\n",
-                        m, t.zeta2, t.formationFactor, t.permeabilityOverWidth2(),
-                        te.permeabilityOverWidth2(), t.meanSurvivalTimeOverWidth2(),
+                        m, t.zeta2.value_or(NAN), t.formationFactor.value_or(NAN),
+                        t.permeabilityOverWidth2().value_or(NAN),
+                        te.permeabilityOverWidth2().value_or(NAN), t.meanSurvivalTimeOverWidth2(),
                         te.meanSurvivalTimeOverWidth2(), t.principalRelaxationTimeOverWidth2(),
                         te.principalRelaxationTimeOverWidth2());
         }

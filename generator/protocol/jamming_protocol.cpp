@@ -347,7 +347,8 @@ void JammingProtocol::watchJam(std::uint64_t participants, double sustained) {
     if (check.chain) {
         status_.phase = Phase::Done;
         status_.jam = std::move(check);
-    } else if (stallCheck && check.jammed && status_.stall.plateau(expectedDoubling())) {
+    } else if (stallCheck && check.jammed && sustained >= parameters_.pressureSwitch &&
+               status_.stall.plateau(expectedDoubling())) {
         raiseGrowthRate(sustained);
     }
 }
@@ -360,7 +361,9 @@ double JammingProtocol::expectedDoubling() const {
 void JammingProtocol::raiseGrowthRate(double sustained) {
     // A jammed network whose pressure no longer rises at this rate creeps: it makes room as fast
     // as the particles grow (bench/RESULTS.md, "Plateaus"). Twice the rate outruns the creep
-    // with the least change to the gaps the slow rate refines.
+    // with the least change to the gaps the slow rate refines. Only past the switch pressure:
+    // below it (the pressure falls after the fast phase's overshoot) the packing still
+    // rearranges, and the check's tolerance (100 / P D) is loose.
     status_.stallSpeed *= 2.0;
     std::visit([&](auto& engine) { engine.setGrowthRate(2.0 * engine.clock().rate); }, engine_);
     status_.stall.restart(sustained);
