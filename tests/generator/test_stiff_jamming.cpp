@@ -132,12 +132,14 @@ TEST(StiffJamming, AStalledPressureOnAWrappingColumnEndsTheRunNotJammed) {
 /// One window of the checkpoint of p = 5, N = 1000, seed 2 at its plateau (P about 5e10 after
 /// 57.3 M collisions, jammed by the check: bench/RESULTS.md, "p = 5 seed 2 creeps below the final
 /// pressure"), edited so that the stall watch checks after it (its 3200th stalled window) and
-/// its longest doubling is `longest` windows; returns the resumed run after that window.
-JammingProtocol plateauWindow(std::int64_t longest) {
+/// its longest doubling is `longest` windows (and, if given, its switch pressure `pressureSwitch`);
+/// returns the resumed run after that window.
+JammingProtocol plateauWindow(std::int64_t longest, double pressureSwitch = 1e6) {
     const std::string file = std::string(SBPACK_DATA_DIR) + "/plateau-p5-n1000-s2.h5";
     Packing checkpoint = readPacking(file);
     checkpoint.resumeState["stalled_windows"] = std::int64_t{3199};
     checkpoint.resumeState["longest_doubling"] = longest;
+    checkpoint.provenance["pressure_switch"] = pressureSwitch;
     JammingProtocol run(checkpoint, file);
     StopRequest once;
     run.run([&](const ProtocolStatus&) { once.request(); }, once);
@@ -146,7 +148,8 @@ JammingProtocol plateauWindow(std::int64_t longest) {
 
 // docs/design.md §3, "Plateaus": a stall four times the run's longest doubling whose check says
 // jammed doubles the growth rate, written in the provenance and the growth clock; the same stall
-// within four longest doublings leaves the rate and the files as they were.
+// within four longest doublings, or below the switch pressure, leaves the rate and the files as
+// they were.
 TEST(StiffJamming, APlateauWhoseCheckSaysJammedDoublesTheGrowthRate) {
     const JammingProtocol raised = plateauWindow(500);
     EXPECT_EQ(raised.status().phase, Phase::Slow);
@@ -163,6 +166,10 @@ TEST(StiffJamming, APlateauWhoseCheckSaysJammedDoublesTheGrowthRate) {
     EXPECT_EQ(kept.status().stall.stalledWindows, 3200);
     EXPECT_EQ(kept.checkpoint().provenance.count("stall_speed"), 0u);
     EXPECT_EQ(std::get<double>(kept.checkpoint().resumeState.at("growth_rate")), 1e-2);
+
+    const JammingProtocol below = plateauWindow(500, 5e11); // P about 2.5e10 < 5e11
+    EXPECT_EQ(below.status().stallSpeed, 1.0);
+    EXPECT_EQ(below.status().stall.stalledWindows, 3200);
 }
 
 } // namespace
