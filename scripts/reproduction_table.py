@@ -142,8 +142,9 @@ def beyond_row(results, group, second):
     n = int(group.attrs["n_files"])
     p = float(group.attrs["p"])
     overlaps = member_sum(results, group, "contacts", "overlapping_pairs")
-    provenance = provenance_values(results, group, "jammed", "cpu_time_s")
+    provenance = provenance_values(results, group, "jammed", "cpu_time_s", "stall_speed")
     jammed, times = provenance["jammed"], provenance["cpu_time_s"]
+    raised = len(provenance["stall_speed"])  # written only by a run raised at a plateau
     ordered = (f"{ordered_count(results, group)} of {n}"
                if any("order" in results["files"][str(m)] for m in group["members"][:]) else "-")
     return (f"| {p:g} | {int(group.attrs['n_particles'])} | {n} | "
@@ -153,7 +154,7 @@ def beyond_row(results, group, second):
             f"{pm(attr(group, 'contacts', 'rattler_fraction'), 100, 2, n)} | "
             f"{pm(attr(group, 'order', 'P4'), 1, 3, n)} | {second_value(second, 'P4', p)} | "
             f"{'-' if overlaps is None else overlaps} | "
-            f"{int(sum(jammed))} of {len(jammed)} | {ordered} | "
+            f"{int(sum(jammed))} of {len(jammed)} | {ordered} | {raised} | "
             f"{statistics.median(times) if times else math.nan:.0f} / "
             f"{max(times, default=math.nan):.0f} |")
 
@@ -344,13 +345,16 @@ JAMMING_NOTE = (
 
 
 BEYOND_HEADER = ("p", "N", "n", "phi", "Z", "Z (JST 2010)", "phi_R %", "P4", "P4 (JST 2010)",
-                 "overlapping pairs", "jammed (sbgen)", "ordered", "sbgen CPU s (median / max)")
+                 "overlapping pairs", "jammed (sbgen)", "ordered", "raised at a plateau",
+                 "sbgen CPU s (median / max)")
 BEYOND_NOTE = (
     "Ensembles at p the paper does not tabulate (issue 68): mean +- sd over the packings; Z and "
     "phi_R over the contact network at gaps < 1e-10 D, as for the paper's range; P4 the cubatic "
     "order of the axes. Overlapping pairs: summed over the ensemble, by sbanalyze's exact signed "
     "distance (independent of sbgen's predictor); jammed: sbgen's jam check, from each packing's "
-    "provenance; ordered: sbanalyze's verdict (docs/order-metrics.md). JST 2010: Jiao, "
+    "provenance; ordered: sbanalyze's verdict (docs/order-metrics.md); raised at a plateau: "
+    "the packings whose slow phase sbgen sped up where the pressure stalled on a jammed, "
+    "creeping network (provenance stall_speed; docs/design.md §3, \"Plateaus\"). JST 2010: Jiao, "
     "Stillinger & Torquato, PRE 81, 041304 (data/jst2010-reference-values.csv), the values its "
     "text states for 0.85 <= p <= 3 (its phi and Z are curves only): Z's plateau 8.15 from "
     "p = 1.4, and P4 between 0.03 and 0.21, growing with |p - 1|; a deforming box and fast "
