@@ -9,7 +9,7 @@
 #   scripts/reproduce-paper.sh [--n N] [--count C] [--p-list "P1 P2 ..."] [--jobs J]
 #                              [--work DIR] [--table FILE] [--compute LIST]
 #                              [--sbgen-options "..."] [--build DIR] [--doc FILE]
-#                              [--section TITLE]
+#                              [--section TITLE] [--figure-with "RESULTS.h5 ..."]
 # Defaults: N = 1000, C = 5, the paper's 12 p values, J = nproc, DIR = build/reproduce,
 # FILE = DIR/reproduction.md, LIST = contacts (add pores,transport,hyper for the rest).
 # --doc FILE also writes the tables into a document, as the section of this N (the command,
@@ -17,6 +17,8 @@
 # e.g. docs/reproduction.md: a rerun replaces that section alone, between its marks.
 # --section TITLE names the section instead (its marks and its figure's name follow the title),
 # e.g. "Beyond the paper's range, N = 1000" for p outside the paper's table (issue 68).
+# --figure-with adds other sbanalyze results to the figures (not the tables), e.g. the paper's
+# range (docs/reproduction-results.h5) beside the section's, so that the curves span both.
 # The CI slice (tests/CMakeLists.txt, reproduce_paper_small): --n 40 --count 2 --p-list "1 1.5"
 # --sbgen-options "--pressure-final 1e8 --gamma-slow 1e-2".
 set -euo pipefail
@@ -27,10 +29,10 @@ for arg in "$@"; do
     if [[ $arg =~ ^[A-Za-z0-9_./=:,+-]+$ ]]; then command+=" $arg"; else command+=" '${arg//\'/\'\\\'\'}'"; fi
 done
 n=1000 count=5 jobs=$(nproc) work=$root/build/reproduce table="" compute=contacts,order extra="" doc=""
-section=""
+section="" figure_with=""
 build=$root/build
 plist="0.85 0.9 0.95 0.975 1 1.025 1.05 1.1 1.2 1.3 1.4 1.5"
-usage() { sed -n '2,21p' "$0" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,23p' "$0" | sed 's/^# \{0,1\}//'; }
 while [ $# -gt 0 ]; do
     case $1 in
         --n) n=$2; shift 2 ;;
@@ -44,6 +46,7 @@ while [ $# -gt 0 ]; do
         --build) build=$2; shift 2 ;;
         --doc) doc=$2; shift 2 ;;
         --section) section=$2; shift 2 ;;
+        --figure-with) figure_with=$2; shift 2 ;;
         -h|--help) usage; exit 0 ;;
         *) echo "reproduce-paper.sh: unknown option '$1' (see --help)" >&2; exit 1 ;;
     esac
@@ -78,8 +81,9 @@ done
 /usr/bin/python3 "$root/scripts/reproduction_table.py" "$work/results.h5" \
     "$root/data/mst-reference-values.csv" "$root/data/jst2010-reference-values.csv" > "$table"
 echo "reproduce-paper.sh: table $table" >&2
+# shellcheck disable=SC2086 # --figure-with is a list of files
 PYTHONPATH="$build/python${PYTHONPATH:+:$PYTHONPATH}" /usr/bin/python3 -m sbpack.plot \
-    "$work/results.h5" --out "$work/figures" > /dev/null \
+    "$work/results.h5" $figure_with --out "$work/figures" > /dev/null \
     || { echo "reproduce-paper.sh: the figures failed (above); the table stands" >&2; exit 1; }
 echo "reproduce-paper.sh: figures in $work/figures" >&2
 [ -z "$doc" ] && exit 0
@@ -106,7 +110,7 @@ end="<!-- end of reproduce-paper.sh $key -->"
     echo
     cat "$table"
     echo
-    echo "![phi, Z, phi_R, alpha and the transport bounds against p at N = $n, the paper's values as markers]($figure)"
+    echo "![phi, Z, phi_R, alpha and the transport bounds against p at N = $n${figure_with:+, with $figure_with}, the paper's values as markers]($figure)"
     echo "$end"
 } > "$work/doc-block.md"
 # The block of this N replaces its earlier self; the rest of the document (other N, notes
