@@ -99,7 +99,9 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   wrong format or version, missing dataset, shape not matching `n_particles`, NaN/inf
   coordinates, quaternion far from unit norm, `p < 0.5` or NaN, `box_length <= 0`,
   `semi_axis <= 0`) gets one line naming the file and the problem. Overlapping particles are a
-  warning naming the worst pair and its depth.
+  warning naming the worst pair and its depth. A file that keeps sbgen's provenance also gets
+  its run (`made by`: collisions, CPU seconds, and the growth rate's raise where its slow phase
+  was raised at a plateau, docs/design.md §3, "Plateaus").
 - **The analyses** (`--compute`; each brings what it needs and nothing else runs):
 
   | name | what | paper |

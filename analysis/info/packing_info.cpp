@@ -5,6 +5,7 @@
 
 #include <iomanip>
 #include <map>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 
@@ -72,6 +73,26 @@ void printSizes(const Packing& packing, std::ostream& out) {
 }
 
 /// The jamming categories: the network, a line per category tested, the category reached.
+/// "  made by  sbgen: C collisions, T CPU s" where the file keeps sbgen's provenance, with the
+/// growth rate's raise at plateaus (docs/design.md §3, "Plateaus") where there was one.
+void printRun(const Packing& packing, std::ostream& out) {
+    const auto number = [&](const char* key) -> std::optional<double> {
+        const auto found = packing.provenance.find(key);
+        if (found == packing.provenance.end()) return std::nullopt;
+        if (const auto* i = std::get_if<std::int64_t>(&found->second))
+            return static_cast<double>(*i);
+        if (const auto* d = std::get_if<double>(&found->second)) return *d;
+        return std::nullopt;
+    };
+    const std::optional<double> collisions = number("collisions"), cpu = number("cpu_time_s");
+    if (!collisions || !cpu) return;
+    out << "  made by              sbgen: " << std::setprecision(4) << *collisions
+        << " collisions, " << std::setprecision(5) << *cpu << " CPU s";
+    if (const std::optional<double> raised = number("stall_speed"))
+        out << "; growth raised x" << *raised << " at a plateau (docs/design.md §3, \"Plateaus\")";
+    out << std::setprecision(10) << '\n';
+}
+
 void printJamming(const PackingJamming& j, std::ostream& out) {
     if (j.relaxation)
         out << std::setprecision(3) << "  jamming relaxation   " << j.relaxationSummary() << '\n';
@@ -110,6 +131,7 @@ void printPackingInfo(const std::filesystem::path& file, const PackingInfo& info
     if (packing.reducedPressure)
         out << "  reduced pressure     = " << std::setprecision(4) << *packing.reducedPressure
             << std::setprecision(10) << '\n';
+    printRun(packing, out);
     if (c.worstPairA >= 0)
         out << "  smallest gap         = " << std::setprecision(4) << c.worstGap / diameter
             << " D  (pair " << c.worstPairA << ", " << c.worstPairB << ")\n";
