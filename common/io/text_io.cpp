@@ -31,9 +31,14 @@ constexpr const char* kTextMagic = "# sbpack text packing v1";
 void writeTextPacking(const Packing& packing, const fs::path& file) {
     validatePacking(packing, file.string());
     writeTextFile(file, [&](std::ostream& out) {
-        out << kTextMagic << "\n# p " << full(packing.superball().p()) << "\n# semi_axis "
-            << full(packing.semiAxis) << "\n# box_length " << full(packing.boxLength)
-            << "\n# n_particles " << packing.size() << '\n';
+        // The shape as the packing file writes it (ShapeSpec::namedValues): "# p 1.5".
+        out << kTextMagic << '\n';
+        if (const auto family = packing.shapeSpec.writtenFamily())
+            out << "# " << kShapeFamilyKey << ' ' << *family << '\n';
+        for (const auto& [name, value] : packing.shapeSpec.namedValues())
+            out << "# " << name << ' ' << full(value) << '\n';
+        out << "# semi_axis " << full(packing.semiAxis) << "\n# box_length "
+            << full(packing.boxLength) << "\n# n_particles " << packing.size() << '\n';
         if (packing.reducedPressure)
             out << "# reduced_pressure " << full(*packing.reducedPressure) << '\n';
         if (packing.seed) out << "# seed " << *packing.seed << '\n';
@@ -59,7 +64,13 @@ class TextHeader {
     void read(const std::vector<std::string>& tokens, LineReader& reader) {
         if (tokens.front() != "#" || tokens.size() != 3) return;
         const std::string& key = tokens[1];
-        if (key == "n_particles") {
+        if (key == kShapeFamilyKey) {
+            if (family_) reader.fail("header key '" + key + "' is repeated");
+            family_ = tokens[2];
+            if (!findShapeFamily(*family_))
+                reader.fail("unknown shape family '" + *family_ +
+                            "' (known: " + shapeFamilyNames() + ")");
+        } else if (key == "n_particles") {
             if (count_) reader.fail("header key 'n_particles' is repeated");
             count_ = reader.parseCount(tokens[2]);
         } else if (key == "seed") {
@@ -74,16 +85,29 @@ class TextHeader {
             lines_[key] = reader.line();
         }
     }
-    /// Fails naming the first key missing.
+    /// Fails naming the first key missing: the shape's parameters, semi_axis, box_length and
+    /// n_particles.
     void requireComplete(LineReader& reader) const {
-        for (const auto& [key, value] : values_)
-            if (!value) reader.fail("missing header key '" + key + "' before the particles");
+        const ShapeFamily& family =
+            *findShapeFamily(family_ ? std::string_view(*family_) : shapeFamilies().front().name);
+        for (const ShapeParameter& parameter : family.parameters)
+            if (!values_.at(std::string(parameter.name)))
+                reader.fail("missing header key '" + std::string(parameter.name) +
+                            "' before the particles");
+        for (const char* key : {"semi_axis", "box_length"})
+            if (!values_.at(key))
+                reader.fail("missing header key '" + std::string(key) + "' before the particles");
         if (!count_) reader.fail("missing header key 'n_particles' before the particles");
     }
     long long count() const { return *count_; }
     double value(const std::string& key) const { return *values_.at(key); }
     /// The line a key was read from.
     int lineOf(const std::string& key) const { return lines_.at(key); }
+    /// The shape of the header's family (the superball where it names none) and parameters.
+    ShapeSpec shape() const {
+        return ShapeSpec::read(family_,
+                               [&](std::string_view name) { return value(std::string(name)); });
+    }
     /// The optional keys, where given.
     void setOptional(Packing& packing) const {
         packing.reducedPressure = reducedPressure_;
@@ -93,8 +117,17 @@ class TextHeader {
   private:
     std::optional<double> reducedPressure_;
     std::optional<std::uint64_t> seed_;
-    std::map<std::string, std::optional<double>> values_ = {
-        {"p", std::nullopt}, {"semi_axis", std::nullopt}, {"box_length", std::nullopt}};
+    std::optional<std::string> family_;
+    /// The numbers a header may give: every family's parameters (its family, named or the
+    /// superball, requires its own), semi_axis and box_length.
+    std::map<std::string, std::optional<double>> values_ = [] {
+        std::map<std::string, std::optional<double>> keys = {{"semi_axis", std::nullopt},
+                                                             {"box_length", std::nullopt}};
+        for (const ShapeFamily& family : shapeFamilies())
+            for (const ShapeParameter& parameter : family.parameters)
+                keys.try_emplace(std::string(parameter.name));
+        return keys;
+    }();
     std::map<std::string, int> lines_;
     std::optional<long long> count_;
 };
@@ -147,7 +180,7 @@ Packing readTextPacking(const fs::path& file) {
                                std::to_string(header.count()) + " but the file has " +
                                std::to_string(packing.positions.size()) +
                                " particle lines (wrong particle count)");
-    packing.shapeSpec = ShapeSpec::superball(header.value("p"));
+    packing.shapeSpec = header.shape();
     readSemiAxes(semiAxes, header.value("semi_axis"), packing, reader, "the semi_axis column",
                  header.lineOf("semi_axis"));
     packing.boxLength = header.value("box_length");

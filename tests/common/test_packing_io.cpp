@@ -733,6 +733,31 @@ TEST_F(TextIo, MissingHeaderKey) {
                                   {"packing.txt", "missing header key 'semi_axis'"});
 }
 
+// docs/architecture.md, "a new shape": the header names the shape as the packing file does, the
+// family under `shape` (none: the superball) and its parameters by name, in any order.
+TEST_F(TextIo, TheHeaderNamesTheShapeFamilyAndItsParametersInAnyOrder) {
+    const std::string particles = "# semi_axis 0.5\n# box_length 10\n# n_particles 1\n"
+                                  "1 2 3 1 0 0 0\n";
+    const Packing plain = readTextPacking(textFile(kHeader + std::string("# n_particles 1\n1 2 3 "
+                                                                         "1 0 0 0\n")));
+    for (const char* shape : {"# shape superball\n# p 1.5\n", "# p 1.5\n# shape superball\n"}) {
+        const Packing named = readTextPacking(
+            textFile("# sbpack text packing v1\n" + std::string(shape) + particles, "named.txt"));
+        EXPECT_EQ(named.shapeSpec, plain.shapeSpec) << shape;
+        EXPECT_EQ(named.shapeSpec, ShapeSpec::superball(1.5));
+    }
+    const fs::path unknown = textFile(
+        "# sbpack text packing v1\n# shape ellipsoid\n# p 1.5\n" + particles, "unknown.txt");
+    expectError<PackingFileError>(
+        [&] { readTextPacking(unknown); },
+        {"unknown.txt", "line 2", "unknown shape family 'ellipsoid'", "known: superball"});
+    const fs::path twice = textFile(
+        "# sbpack text packing v1\n# shape superball\n# shape superball\n# p 1.5\n" + particles,
+        "twice.txt");
+    expectError<PackingFileError>([&] { readTextPacking(twice); },
+                                  {"twice.txt", "line 3", "header key 'shape' is repeated"});
+}
+
 TEST_F(TextIo, WrongParticleCount) {
     const fs::path path = textFile(std::string(kHeader) + "# n_particles 3\n1 2 3 1 0 0 0\n");
     expectError<PackingFileError>([&] { readTextPacking(path); },
