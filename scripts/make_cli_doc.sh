@@ -160,7 +160,8 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   datasets are in docs/design.md §4; its `phi` must equal `N v1 / L^3`, which readers check.
   Readable with h5py: `h5py.File(name)["positions"][:]`, `dict(f.attrs)`.
 - **Plain text** (`.txt`, read by `info`, the analysis, `convert` and `sbpack.Packing.read`): a
-  header `# sbpack text packing v1`, `# p P`, `# semi_axis R`,
+  header `# sbpack text packing v1`, the shape as the packing file names it (`# p P`; another
+  family would add `# shape NAME` and its own parameters), `# semi_axis R`,
   `# box_length L`, `# n_particles N`, optionally `# reduced_pressure P` and `# seed S` (the
   pressure sets the jam check's tolerance, so Z and phi_R), then one particle per line
   `x y z qw qx qy qz`, and for a mixture each particle's semi-axis as an eighth number on every
