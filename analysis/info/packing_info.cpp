@@ -72,7 +72,6 @@ void printSizes(const Packing& packing, std::ostream& out) {
     out << "  (a mixture)\n";
 }
 
-/// The jamming categories: the network, a line per category tested, the category reached.
 /// "  made by  sbgen: C collisions, T CPU s" where the file keeps sbgen's provenance, with the
 /// growth rate's raise at plateaus (docs/design.md §3, "Plateaus") where there was one.
 void printRun(const Packing& packing, std::ostream& out) {
@@ -93,6 +92,7 @@ void printRun(const Packing& packing, std::ostream& out) {
     out << std::setprecision(10) << '\n';
 }
 
+/// The jamming categories: the network, a line per category tested, the category reached.
 void printJamming(const PackingJamming& j, std::ostream& out) {
     if (j.relaxation)
         out << std::setprecision(3) << "  jamming relaxation   " << j.relaxationSummary() << '\n';

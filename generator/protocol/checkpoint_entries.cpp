@@ -71,33 +71,31 @@ Entry rate(std::string key, std::optional<double> ProtocolParameters::*member,
             }};
 }
 
-/// An entry of the finish (issue 64), optional and written only by a run that has one: the
-/// files of the paper's protocol stay as they were.
+/// An optional entry written only where `applies` (a finish, issue 64; a plateau's raise,
+/// docs/design.md §3 "Plateaus"; a mixture, docs/mixtures.md): the files of the other runs stay
+/// as they were.
+Entry writtenOnlyWhere(bool (*applies)(const CheckpointFields&), Entry e) {
+    e.write = [applies,
+               write = e.write](const CheckpointFields& f) -> std::optional<ProvenanceValue> {
+        if (!applies(f)) return std::nullopt;
+        return write(f);
+    };
+    return e;
+}
+
 Entry finish(Entry e) {
-    e.write = [write = e.write](const CheckpointFields& f) -> std::optional<ProvenanceValue> {
-        if (f.parameters.pressureFinish == 0.0) return std::nullopt;
-        return write(f);
-    };
-    return e;
+    return writtenOnlyWhere(
+        [](const CheckpointFields& f) { return f.parameters.pressureFinish != 0.0; }, std::move(e));
 }
 
-/// An entry of the plateaus (docs/design.md §3, "Plateaus"), optional and written only by a run
-/// whose growth rate was raised at one: the files of the other runs stay as they were.
 Entry plateau(Entry e) {
-    e.write = [write = e.write](const CheckpointFields& f) -> std::optional<ProvenanceValue> {
-        if (f.status.stallSpeed == 1.0) return std::nullopt;
-        return write(f);
-    };
-    return e;
+    return writtenOnlyWhere([](const CheckpointFields& f) { return f.status.stallSpeed != 1.0; },
+                            std::move(e));
 }
 
-/// An entry of a mixture (docs/mixtures.md), optional and written only by a mixture's run.
 Entry mixture(Entry e) {
-    e.write = [write = e.write](const CheckpointFields& f) -> std::optional<ProvenanceValue> {
-        if (!f.parameters.isMixture()) return std::nullopt;
-        return write(f);
-    };
-    return e;
+    return writtenOnlyWhere([](const CheckpointFields& f) { return f.parameters.isMixture(); },
+                            std::move(e));
 }
 
 /// The phase, range-checked (a phase beyond Done would never end).

@@ -81,12 +81,6 @@ AnyEngine resumedEngine(const Packing& packing, const std::string& source,
     return engine;
 }
 
-/// A watch that has counted `count` windows checks the jam at base, 2 base, 4 base, ... windows.
-bool dueAt(std::int64_t count, std::int64_t base) {
-    const std::int64_t multiple = count / base;
-    return count % base == 0 && multiple > 0 && (multiple & (multiple - 1)) == 0;
-}
-
 } // namespace
 
 double ProtocolParameters::fastGrowthRate() const {

@@ -10,6 +10,12 @@
 
 namespace sbpack {
 
+/// A watch that has counted `count` windows checks the jam at base, 2 base, 4 base, ... windows.
+inline bool dueAt(std::int64_t count, std::int64_t base) {
+    const std::int64_t multiple = count / base;
+    return count % base == 0 && multiple > 0 && (multiple & (multiple - 1)) == 0;
+}
+
 struct StallWatch {
     /// The first jam check of a stall, in windows (then at 2, 4, 8, ... times as many).
     static constexpr std::int64_t kCheckWindows = 50;
@@ -37,11 +43,7 @@ struct StallWatch {
         }
     }
     /// Whether the jam is checked after this window.
-    bool checkDue() const {
-        const std::int64_t multiple = stalledWindows / kCheckWindows;
-        return stalledWindows % kCheckWindows == 0 && multiple > 0 &&
-               (multiple & (multiple - 1)) == 0;
-    }
+    bool checkDue() const { return dueAt(stalledWindows, kCheckWindows); }
     /// Whether the stall has lasted long enough to be a plateau (checked at checkDue()), given
     /// the windows a doubling takes at the present rate by the cost model
     /// (expectedWindowsPerDoubling: the run's own doublings are not known before its first).
