@@ -167,24 +167,34 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   `x y z qw qx qy qz`, and for a mixture each particle's semi-axis as an eighth number on every
   line (`semi_axis` their largest; docs/mixtures.md). `convert` to it (or to XYZ) names what the target leaves out
   (velocities, provenance, a checkpoint's resume state).
+- **The shape in the exchange formats** (XYZ, GSD, LAMMPS; `ShapeSpec::superquadric` in
+  `common/geometry/particle_shape.hpp`): each writes the shape as a superquadric, OVITO's
+  `(|x/a|^(2/phi) + |y/b|^(2/phi))^(phi/theta) + |z/c|^(2/theta) <= 1` with the semi-axes
+  `(a, b, c)` at each particle's size and the roundness `(phi, theta)` (LAMMPS's blockiness
+  `n = 2 / roundness`); the superball (paper Eq. 1) is `a = b = c`, `phi = theta = 1/p`,
+  `n = 2p`, test `ShapeSpec.ItsSuperquadricIsPaperEq1AndReadsBack`. Reading inverts it
+  (`ShapeSpec::fromSuperquadric`): every particle must have the same proportions `a:b:c` and
+  roundness (its size may differ: a mixture), and a superquadric that is no family sbpack
+  knows (an ellipsoid's unequal axes, two roundnesses) is refused naming the file.
 - **Extended XYZ** (`.xyz`, written by `convert`; read by `info`, the analysis and `convert`:
-  one frame, sbpack's export or OVITO's, a cubic `Lattice`, the shape from the keys `p=` and
+  one frame, sbpack's export or OVITO's, a cubic `Lattice`, the shape from the keys `p=` (the
+  shape's parameters by name, with `shape=` for a family other than the superball) and
   `semi_axis=` or the columns below; it carries no reduced pressure, so the contacts take
   `--tolerance`): OVITO reads positions, `orientation` (its
   quaternion order `x y z w`) and `aspherical_shape` directly (a mixture's: each particle's
   own semi-axis, `semi_axis=` their largest; docs/mixtures.md); map the two
-  `superquadric_roundness` columns (both `1/p`) to OVITO's "Superquadric Roundness" in the
+  `superquadric_roundness` columns (`phi theta`, both `1/p`) to OVITO's "Superquadric Roundness" in the
   import dialog to see superball shapes.
 - **GSD** (`.gsd`, HOOMD-blue's format, read and written by `convert`, `info`, the analysis and
   `sbpack.Packing.read`/`write`; `common/io/gsd_io.hpp`, by the reference library vendored in
   `common/third_party/gsd`, BSD-2-Clause, gsd 5.0.1): one frame of HOOMD schema 1.4, which
   HOOMD 4, gsd.hoomd 4 and 5, freud and OVITO read: the cubic `configuration/box`, one type
-  `superball` whose `particles/type_shapes` is a `ConvexPolyhedron` of 266 points on the
+  named by the shape's family (`superball`) whose `particles/type_shapes` is a `ConvexPolyhedron` of 266 points on the
   superball's surface (OVITO draws the particles as superballs, no dialog),
   `particles/position` in `[-L/2, L/2)` and `particles/orientation` `(w, x, y, z)` in single
   precision as the schema has them, and, so that nothing is lost, double-precision copies
   `log/particles/sbpack/position` (in `[0, L)`) and `log/particles/sbpack/orientation` with
-  the scalars `log/sbpack/p`, `semi_axis`, `box_length`, `reduced_pressure` and `seed`: an sbpack
+  the scalars `log/sbpack/p` (the shape's parameters by name), `semi_axis`, `box_length`, `reduced_pressure` and `seed`: an sbpack
   file round-trips bit for bit. A mixture has a type per distinct size (`superball_0`, ...,
   largest first) and `log/particles/sbpack/semi_axis` (docs/mixtures.md). A file from elsewhere is read from its last frame: the
   single-precision positions (a jammed packing then overlaps by up to the rounding: `info` and
@@ -199,15 +209,16 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
   roundness `1/p`: OVITO 3.8.5 and later maps the columns by name to Orientation, Aspherical
   Shape and Superquadric Roundness and draws superballs with no dialog) and a data file (`.data`,
   `atom_style ellipsoid`: `Atoms # ellipsoid` lines `id type 1 1 x y z` and `Ellipsoids` lines
-  `id 2a 2a 2a quatw quati quatj quatk`, with the superellipsoid blockiness `2p 2p` appended
+  `id 2a 2b 2c quatw quati quatj quatk`, with the superellipsoid blockiness `2p 2p` appended
   where `p != 1`, which `atom_style ellipsoid superellipsoid` of LAMMPS 30Mar2026 and later
   reads and older versions refuse; spheres keep the 8 columns every version reads). Reading
   takes a dump's first frame from any origin, in `x y z`, `xu yu zu` or scaled `xs ys zs`, the
   particles in the order of their ids (`p = 1` without the roundness columns), and a data file's
   Atoms and Ellipsoids joined by id (`p` = blockiness / 2, or 1); neither carries the reduced
   pressure, so the contacts take `--tolerance`. A mixture's atoms carry their own diameters
-  (docs/mixtures.md). A non-cubic or tilted box, missing shape columns, a particle whose three
-  axes differ, a repeated id or a short frame is refused naming the file and line.
+  (docs/mixtures.md). A non-cubic or tilted box, missing shape columns, particles whose
+  proportions or roundness differ, a shape that is no superball, a repeated id or a short frame
+  is refused naming the file and line.
 - **Results file** (HDF5, `format = "sbpack.results"`, `format_version = 4`): the root holds the
   run, `files/<i>` one input with one subgroup per analysis, `ensembles/<k>` the inputs of equal
   `p` and `N`; every name and unit is in docs/results-schema.md. Reading it with h5py

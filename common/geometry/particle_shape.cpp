@@ -88,6 +88,21 @@ std::optional<std::string> ShapeSpec::problem() const {
     return fmt::format("p = {} (must be finite and >= 0.5)", p);
 }
 
+Superquadric ShapeSpec::superquadric() const {
+    return {Vector3d::Ones(), 2.0 * p, 2.0 * p}; // paper Eq. 1: |x|^2p + |y|^2p + |z|^2p <= 1
+}
+
+ShapeSpec ShapeSpec::fromSuperquadric(const Superquadric& q) {
+    const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); };
+    if (near(q.axes.x(), 1.0) && near(q.axes.y(), 1.0) && near(q.axes.z(), 1.0) &&
+        near(q.northSouth, q.eastWest))
+        return superball(0.5 * q.eastWest);
+    throw std::invalid_argument(fmt::format(
+        "semi-axes in proportion {}:{}:{} with blockiness {} (x, y) and {} (z) are no shape "
+        "sbpack knows ({}); a superball has three equal semi-axes and one blockiness 2p",
+        q.axes.x(), q.axes.y(), q.axes.z(), q.eastWest, q.northSouth, shapeFamilyNames()));
+}
+
 std::string ShapeSpec::describe() const {
     return fmt::format("p = {}", p);
 }

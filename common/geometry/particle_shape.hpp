@@ -39,6 +39,17 @@ struct ShapeFamily {
     std::span<const ShapeParameter> parameters;
 };
 
+/// A shape as the superquadric the exchange formats write (docs/cli.md, "Files"): OVITO's
+/// (|x/a|^(2/phi) + |y/b|^(2/phi))^(phi/theta) + |z/c|^(2/theta) <= 1, held here by the
+/// blockiness n = 2 / roundness that LAMMPS's superellipsoid takes, and the semi-axes over the
+/// particle's size (the largest is 1). The superball (paper Eq. 1) is a = b = c = 1, n = 2p
+/// both; an ellipsoid would be n = 2 both.
+struct Superquadric {
+    Vector3d axes = Vector3d::Ones();
+    double eastWest = 2.0;   ///< n of x and y: 2 / OVITO's roundness phi
+    double northSouth = 2.0; ///< n of z: 2 / OVITO's roundness theta
+};
+
 /// A shape family and its parameters, without a size. Files, results, ensembles and messages
 /// know a shape only through its identity here (family(), values(), problem(), describe()).
 struct ShapeSpec {
@@ -70,6 +81,11 @@ struct ShapeSpec {
     /// What makes the parameters no shape of the family (e.g. "p = 0.4 (must be finite and
     /// >= 0.5)"), or nothing.
     std::optional<std::string> problem() const;
+    /// The shape as a superquadric: what the exchange formats write.
+    Superquadric superquadric() const;
+    /// The shape whose superquadric `q` is (to 1e-12): what the exchange formats read. Throws
+    /// std::invalid_argument, saying what each family needs, where no family has it.
+    static ShapeSpec fromSuperquadric(const Superquadric& q);
     /// The parameters for messages and tables: "p = 1.5".
     std::string describe() const;
     bool operator==(const ShapeSpec&) const = default;

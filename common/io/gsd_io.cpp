@@ -38,29 +38,34 @@ void check(int status, const fs::path& file, const std::string& what) {
             fmt::format("'{}': GSD: {} failed (gsd error {})", file.string(), what, status));
 }
 
-/// Points on the superball's surface by the superquadric parametrisation
-/// (sgn(c) |c|^(1/p) ...), dense at the edges of near-cubes as at the poles; the hull OVITO
-/// builds from them is the shape.
-std::vector<Vector3d> surfacePoints(double p, double a) {
-    const auto power = [p](double t) { return std::copysign(std::pow(std::abs(t), 1.0 / p), t); };
+/// Points on the surface of the superquadric `q` at size `size` by its parametrisation
+/// (a sgn(c) |c|^(2/n) ...; ShapeSpec::superquadric), dense at the edges of near-cubes as at
+/// the poles; the hull OVITO builds from them is the shape.
+std::vector<Vector3d> surfacePoints(const Superquadric& q, double size) {
+    const auto power = [](double t, double n) {
+        return std::copysign(std::pow(std::abs(t), 2.0 / n), t);
+    };
+    const Vector3d a = size * q.axes;
     constexpr int kLatitudes = 12, kLongitudes = 24;
-    std::vector<Vector3d> points{{0.0, 0.0, a}, {0.0, 0.0, -a}};
+    std::vector<Vector3d> points{{0.0, 0.0, a.z()}, {0.0, 0.0, -a.z()}};
     for (int i = 1; i < kLatitudes; ++i) {
         const double eta = std::numbers::pi * (static_cast<double>(i) / kLatitudes - 0.5);
+        const double ring = power(std::cos(eta), q.northSouth);
         for (int j = 0; j < kLongitudes; ++j) {
             const double omega = 2.0 * std::numbers::pi * j / kLongitudes;
-            points.emplace_back(a * power(std::cos(eta)) * power(std::cos(omega)),
-                                a * power(std::cos(eta)) * power(std::sin(omega)),
-                                a * power(std::sin(eta)));
+            points.emplace_back(a.x() * ring * power(std::cos(omega), q.eastWest),
+                                a.y() * ring * power(std::sin(omega), q.eastWest),
+                                a.z() * power(std::sin(eta), q.northSouth));
         }
     }
     return points;
 }
 
-/// The type_shapes JSON of the superball (GSD's shape specification: ConvexPolyhedron).
-std::string shapeJson(double p, double a) {
+/// The type_shapes JSON of the shape at size `size` (GSD's shape specification:
+/// ConvexPolyhedron).
+std::string shapeJson(const ShapeSpec& shape, double size) {
     std::string json = R"({"type": "ConvexPolyhedron", "rounding_radius": 0, "vertices": [)";
-    const std::vector<Vector3d> points = surfacePoints(p, a);
+    const std::vector<Vector3d> points = surfacePoints(shape.superquadric(), size);
     for (std::size_t k = 0; k < points.size(); ++k)
         json += fmt::format("{}[{:.9g}, {:.9g}, {:.9g}]", k ? ", " : "", points[k].x(),
                             points[k].y(), points[k].z());
@@ -219,11 +224,36 @@ std::vector<std::string> FrameReader::strings(const std::string& name) {
     return out;
 }
 
-/// p and the semi-axis: sbpack's scalars, else one Sphere shape shared by every type.
-std::pair<double, double> shapeOf(FrameReader& frame, const fs::path& file) {
-    const auto p = frame.numbers(std::string(kLog) + "p", 1, 1);
+/// The shape sbpack's log gives: the family the first type names ("superball", "superball_0";
+/// the superball where it names none), each parameter a scalar under its own name; nothing where
+/// one is missing.
+std::optional<ShapeSpec> loggedShape(FrameReader& frame) {
+    const std::vector<std::string> types = frame.strings("particles/types");
+    std::optional<std::string> family;
+    if (!types.empty()) {
+        std::string type = types.front();
+        const std::size_t cut = type.find_last_of('_'); // a mixture's size index
+        if (cut != std::string::npos && cut + 1 < type.size() &&
+            type.find_first_not_of("0123456789", cut + 1) == std::string::npos)
+            type.resize(cut);
+        if (findShapeFamily(type)) family = type;
+    }
+    const ShapeFamily& known =
+        *findShapeFamily(family ? std::string_view(*family) : shapeFamilies().front().name);
+    std::vector<double> values;
+    for (const ShapeParameter& parameter : known.parameters) {
+        const auto value = frame.numbers(std::string(kLog) + std::string(parameter.name), 1, 1);
+        if (!value) return std::nullopt;
+        values.push_back(value->front());
+    }
+    return ShapeSpec::fromValues(known.name, values);
+}
+
+/// The shape and the semi-axis: sbpack's scalars, else one Sphere shape shared by every type.
+std::pair<ShapeSpec, double> shapeOf(FrameReader& frame, const fs::path& file) {
     const auto a = frame.numbers(std::string(kLog) + "semi_axis", 1, 1);
-    if (p && a) return {p->front(), a->front()};
+    const std::optional<ShapeSpec> logged = loggedShape(frame);
+    if (logged && a) return {*logged, a->front()};
     std::optional<double> diameter;
     for (const std::string& text : frame.strings("particles/type_shapes")) {
         const nlohmann::json shape = nlohmann::json::parse(text, nullptr, false);
@@ -231,16 +261,18 @@ std::pair<double, double> shapeOf(FrameReader& frame, const fs::path& file) {
             !shape.contains("diameter") || !shape["diameter"].is_number() ||
             (diameter && *diameter != shape["diameter"].get<double>()))
             throw PackingFileError(fmt::format(
-                "'{}': GSD file without a superball shape: neither {}p and semi_axis nor one "
-                "Sphere type_shape shared by every type (found '{}')",
+                "'{}': GSD file without a shape sbpack reads: neither {}semi_axis with the "
+                "shape's parameters (p) nor one Sphere type_shape shared by every type (found "
+                "'{}')",
                 file.string(), kLog, text.substr(0, 80)));
         diameter = shape["diameter"].get<double>();
     }
     if (!diameter)
-        throw PackingFileError(fmt::format("'{}': GSD file without a shape: neither {}p and "
-                                           "semi_axis nor particles/type_shapes",
+        throw PackingFileError(fmt::format("'{}': GSD file without a shape: neither {}semi_axis "
+                                           "with the shape's parameters (p) nor "
+                                           "particles/type_shapes",
                                            file.string(), kLog));
-    return {1.0, 0.5 * *diameter};
+    return {ShapeSpec::superball(1.0), 0.5 * *diameter};
 }
 
 /// The cubic box's edge: sbpack's scalar, else configuration/box with equal edges, no tilt.
@@ -256,14 +288,15 @@ double boxLengthOf(FrameReader& frame, const fs::path& file) {
     return b[0];
 }
 
-/// The particle types: one, "superball", of identical particles; a mixture's one per distinct
-/// size ("superball_0", ... largest first), each its own shape, and each particle's exact
-/// semi-axis in sbpack's log (docs/mixtures.md).
+/// The particle types, named by the shape's family: one ("superball") of identical particles; a
+/// mixture's one per distinct size ("superball_0", ... largest first), each its own shape, and
+/// each particle's exact semi-axis in sbpack's log (docs/mixtures.md).
 void writeTypes(const Packing& packing, FrameWriter& w) {
     const auto n = static_cast<std::uint32_t>(packing.size());
+    const std::string family(packing.shapeSpec.info().name);
     if (!packing.isMixture()) {
-        w.strings("particles/types", {"superball"});
-        w.strings("particles/type_shapes", {shapeJson(packing.superball().p(), packing.semiAxis)});
+        w.strings("particles/types", {family});
+        w.strings("particles/type_shapes", {shapeJson(packing.shapeSpec, packing.semiAxis)});
         w.chunk("particles/typeid", GSD_TYPE_UINT32, n, 1, std::vector<std::uint32_t>(n, 0));
         return;
     }
@@ -272,8 +305,8 @@ void writeTypes(const Packing& packing, FrameWriter& w) {
     sizes.erase(std::unique(sizes.begin(), sizes.end()), sizes.end());
     std::vector<std::string> names, shapes;
     for (std::size_t t = 0; t < sizes.size(); ++t) {
-        names.push_back("superball_" + std::to_string(t));
-        shapes.push_back(shapeJson(packing.superball().p(), sizes[t]));
+        names.push_back(family + "_" + std::to_string(t));
+        shapes.push_back(shapeJson(packing.shapeSpec, sizes[t]));
     }
     std::vector<std::uint32_t> typeId;
     for (const double r : packing.semiAxes)
@@ -308,7 +341,8 @@ void writeFrame(const Packing& packing, FrameWriter& w) {
     w.chunk("particles/orientation", GSD_TYPE_FLOAT, n, 4, q);
     w.chunk(std::string(kParticleLog) + "position", GSD_TYPE_DOUBLE, n, 3, exactPositions);
     w.chunk(std::string(kParticleLog) + "orientation", GSD_TYPE_DOUBLE, n, 4, exactOrientations);
-    w.scalar(std::string(kLog) + "p", packing.superball().p());
+    for (const auto& [name, value] : packing.shapeSpec.namedValues())
+        w.scalar(std::string(kLog) + std::string(name), value);
     w.scalar(std::string(kLog) + "semi_axis", packing.semiAxis);
     w.scalar(std::string(kLog) + "box_length", packing.boxLength);
     if (packing.reducedPressure)
@@ -347,9 +381,7 @@ Packing readGsd(const fs::path& file) {
     checkInputFile(file);
     FrameReader frame(file);
     Packing packing;
-    const auto [p, semiAxis] = shapeOf(frame, file);
-    packing.shapeSpec = ShapeSpec::superball(p);
-    packing.semiAxis = semiAxis;
+    std::tie(packing.shapeSpec, packing.semiAxis) = shapeOf(frame, file);
     packing.boxLength = boxLengthOf(frame, file);
     const auto n = frame.counts("particles/N", 1);
     if (!n || n->front() == 0)

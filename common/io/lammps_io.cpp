@@ -56,6 +56,14 @@ double cubicEdge(const std::array<std::array<double, 2>, 3>& bounds, const LineR
     return edge;
 }
 
+/// LAMMPS's shape of particle i: its diameters 2a 2b 2c, at its own size (a mixture's:
+/// docs/mixtures.md).
+std::string diameters(const Packing& packing, const Superquadric& shape, std::size_t i) {
+    const double twice = 2.0 * packing.semiAxisOf(i);
+    return full(twice * shape.axes.x()) + ' ' + full(twice * shape.axes.y()) + ' ' +
+           full(twice * shape.axes.z());
+}
+
 /// The columns of a dump's ATOMS line, and the lookups of one particle's values.
 class DumpColumns {
   public:
@@ -92,9 +100,22 @@ class DumpColumns {
     std::string position_;
 };
 
-/// The particle of one ATOMS line, feeding the roundness.
+/// A dump's shape columns beyond each particle's own size: the proportions and OVITO's two
+/// roundnesses (SuperquadricRoundness.Phi and .Theta).
+struct DumpShape {
+    AxesColumns axes;
+    UniformColumn phi{"SuperquadricRoundness.Phi", {}}, theta{"SuperquadricRoundness.Theta", {}};
+    /// The shape (a roundness written in single precision repaired); without the roundness
+    /// columns, 1 (the ellipsoid's: the sphere where a = b = c).
+    ShapeSpec shape(const LineReader& reader) const {
+        return superquadricShape(
+            {axes.proportions(), 2.0 / phi.valueOr(1.0), 2.0 / theta.valueOr(1.0)}, true, reader);
+    }
+};
+
+/// The particle of one ATOMS line, feeding the dump's shape.
 Particle dumpParticle(const std::vector<std::string>& tokens, const DumpColumns& columns,
-                      const std::array<std::array<double, 2>, 3>& bounds, UniformColumn& roundness,
+                      const std::array<std::array<double, 2>, 3>& bounds, DumpShape& shape,
                       const LineReader& reader) {
     if (tokens.size() != columns.size())
         reader.fail(fmt::format("{} values for {} columns", tokens.size(), columns.size()));
@@ -110,12 +131,14 @@ Particle dumpParticle(const std::vector<std::string>& tokens, const DumpColumns&
         particle.orientation = Quaterniond(
             columns.value(tokens, "quatw", reader), columns.value(tokens, "quati", reader),
             columns.value(tokens, "quatj", reader), columns.value(tokens, "quatk", reader));
-    particle.semiAxis = equalAxes(0.5 * columns.value(tokens, "shapex", reader),
-                                  0.5 * columns.value(tokens, "shapey", reader),
-                                  0.5 * columns.value(tokens, "shapez", reader), reader);
-    if (columns.has("SuperquadricRoundness.Phi"))
-        for (const char* part : {"SuperquadricRoundness.Phi", "SuperquadricRoundness.Theta"})
-            roundness.column(columns.value(tokens, part, reader), reader);
+    particle.semiAxis = shape.axes.size(0.5 * Vector3d(columns.value(tokens, "shapex", reader),
+                                                       columns.value(tokens, "shapey", reader),
+                                                       columns.value(tokens, "shapez", reader)),
+                                        reader);
+    if (columns.has("SuperquadricRoundness.Phi")) {
+        shape.phi.column(columns.value(tokens, "SuperquadricRoundness.Phi", reader), reader);
+        shape.theta.column(columns.value(tokens, "SuperquadricRoundness.Theta", reader), reader);
+    }
     return particle;
 }
 
@@ -124,8 +147,9 @@ Particle dumpParticle(const std::vector<std::string>& tokens, const DumpColumns&
 void writeLammpsDump(const Packing& packing, const fs::path& file) {
     validatePacking(packing, file.string());
     const std::string length = full(packing.boxLength);
-    const std::string roundness =
-        full(1.0 / packing.superball().p()); // OVITO's: (1/p, 1/p) is the superball
+    const Superquadric shape = packing.shapeSpec.superquadric();
+    const std::string roundness = // OVITO's (phi, theta) = 2 / blockiness
+        full(2.0 / shape.eastWest) + ' ' + full(2.0 / shape.northSouth);
     writeTextFile(file, [&](std::ostream& out) {
         out << "ITEM: TIMESTEP\n0\nITEM: NUMBER OF ATOMS\n"
             << packing.size() << "\nITEM: BOX BOUNDS pp pp pp\n";
@@ -136,11 +160,9 @@ void writeLammpsDump(const Packing& packing, const fs::path& file) {
         for (std::size_t i = 0; i < packing.size(); ++i) {
             const Vector3d r = wrapIntoBox(packing.positions[i], packing.boxLength);
             const Quaterniond q = packing.orientations[i].normalized();
-            const std::string diameter = full(2.0 * packing.semiAxisOf(i)); // its own
             out << i + 1 << " 1 " << full(r.x()) << ' ' << full(r.y()) << ' ' << full(r.z()) << ' '
                 << full(q.w()) << ' ' << full(q.x()) << ' ' << full(q.y()) << ' ' << full(q.z())
-                << ' ' << diameter << ' ' << diameter << ' ' << diameter << ' ' << roundness << ' '
-                << roundness << '\n';
+                << ' ' << diameters(packing, shape, i) << ' ' << roundness << '\n';
         }
     });
 }
@@ -152,7 +174,7 @@ Packing readLammpsDump(const fs::path& file) {
     std::array<std::array<double, 2>, 3> bounds{};
     bool boxRead = false;
     std::vector<Particle> particles;
-    UniformColumn roundness("p (SuperquadricRoundness = 1 / p)", {});
+    DumpShape shape;
     while (particles.empty() && reader.next(line)) {
         if (!line.starts_with("ITEM: "))
             reader.fail("expected an 'ITEM:' line, got '" + line + "'");
@@ -176,7 +198,7 @@ Packing readLammpsDump(const fs::path& file) {
             for (long long i = 0; i < count; ++i) {
                 if (!reader.next(line)) reader.fail(fmt::format("{} of {} atoms", i, count));
                 particles.push_back(
-                    dumpParticle(splitWhitespace(line), columns, bounds, roundness, reader));
+                    dumpParticle(splitWhitespace(line), columns, bounds, shape, reader));
             }
         } else if (!reader.next(line)) { // TIMESTEP and the others: one value line
             break;
@@ -185,8 +207,7 @@ Packing readLammpsDump(const fs::path& file) {
     if (particles.empty()) reader.fail("no ITEM: ATOMS frame");
     Packing packing;
     packing.boxLength = cubicEdge(bounds, reader);
-    packing.shapeSpec = ShapeSpec::superball(
-        roundness.has() ? singlePrecisionRepaired(1.0 / roundness.value(reader)) : 1.0);
+    packing.shapeSpec = shape.shape(reader);
     sortedInto(std::move(particles), packing, reader);
     return packing;
 }
@@ -235,9 +256,20 @@ std::vector<std::vector<std::string>> sectionLines(LineReader& reader, long long
     return lines;
 }
 
-/// One line of the Atoms (`atom`) or Ellipsoids section into its particle and p.
+/// A data file's shape columns beyond each particle's own size: the proportions and the
+/// superellipsoid's two blockinesses (absent: 2, the ellipsoid's).
+struct DataShape {
+    AxesColumns axes;
+    UniformColumn eastWest{"blockiness n1", {}}, northSouth{"blockiness n2", {}};
+    ShapeSpec shape(const LineReader& reader) const {
+        return superquadricShape(
+            {axes.proportions(), eastWest.valueOr(2.0), northSouth.valueOr(2.0)}, false, reader);
+    }
+};
+
+/// One line of the Atoms (`atom`) or Ellipsoids section into its particle and the shape.
 void readDataLine(const std::vector<std::string>& t, bool atom, Particle& particle,
-                  const DataHeader& header, UniformColumn& p, const LineReader& reader) {
+                  const DataHeader& header, DataShape& shape, const LineReader& reader) {
     if (atom) {
         if (t.size() != 7 && t.size() != 10) reader.fail("expected id type 1 density x y z");
         for (int k = 0; k < 3; ++k)
@@ -246,25 +278,32 @@ void readDataLine(const std::vector<std::string>& t, bool atom, Particle& partic
     }
     if (t.size() != 8 && t.size() != 10)
         reader.fail("expected id shapex shapey shapez quatw quati quatj quatk [n1 n2]");
-    particle.semiAxis = equalAxes(0.5 * reader.parseDouble(t[1]), 0.5 * reader.parseDouble(t[2]),
-                                  0.5 * reader.parseDouble(t[3]), reader);
+    particle.semiAxis =
+        shape.axes.size(0.5 * Vector3d(reader.parseDouble(t[1]), reader.parseDouble(t[2]),
+                                       reader.parseDouble(t[3])),
+                        reader);
     particle.orientation = Quaterniond(reader.parseDouble(t[4]), reader.parseDouble(t[5]),
                                        reader.parseDouble(t[6]), reader.parseDouble(t[7]));
-    for (std::size_t k = 8; k < t.size(); ++k)
-        p.column(0.5 * reader.parseDouble(t[k]), reader);
+    if (t.size() == 10) {
+        shape.eastWest.column(reader.parseDouble(t[8]), reader);
+        shape.northSouth.column(reader.parseDouble(t[9]), reader);
+    }
 }
 
 } // namespace
 
 void writeLammpsData(const Packing& packing, const fs::path& file) {
     validatePacking(packing, file.string());
-    const bool blocky = !packing.shapeSpec.isSphere();
+    const Superquadric shape = packing.shapeSpec.superquadric();
+    const bool blocky = shape.eastWest != 2.0 || shape.northSouth != 2.0;
     const std::string length = full(packing.boxLength);
     const std::string blockiness =
-        blocky ? " " + full(2.0 * packing.superball().p()) : std::string();
+        blocky ? ' ' + full(shape.eastWest) + ' ' + full(shape.northSouth) : std::string();
     writeTextFile(file, [&](std::ostream& out) {
-        out << "LAMMPS data file from sbpack: superballs p = " << full(packing.superball().p())
-            << ", semi-axis " << full(packing.semiAxis)
+        out << "LAMMPS data file from sbpack: " << packing.shapeSpec.info().name << "s";
+        for (const auto& [name, value] : packing.shapeSpec.namedValues())
+            out << ' ' << name << " = " << full(value) << ',';
+        out << " semi-axis " << full(packing.semiAxis)
             << (packing.isMixture() ? " (the largest of a mixture)" : "")
             << (blocky ? " (atom_style ellipsoid superellipsoid, LAMMPS 30Mar2026 and later)\n\n"
                        : " (atom_style ellipsoid)\n\n")
@@ -281,10 +320,8 @@ void writeLammpsData(const Packing& packing, const fs::path& file) {
         out << "\nEllipsoids\n\n";
         for (std::size_t i = 0; i < packing.size(); ++i) {
             const Quaterniond q = packing.orientations[i].normalized();
-            const std::string diameter = full(2.0 * packing.semiAxisOf(i)); // its own
-            out << i + 1 << ' ' << diameter << ' ' << diameter << ' ' << diameter << ' '
-                << full(q.w()) << ' ' << full(q.x()) << ' ' << full(q.y()) << ' ' << full(q.z())
-                << blockiness << blockiness << '\n';
+            out << i + 1 << ' ' << diameters(packing, shape, i) << ' ' << full(q.w()) << ' '
+                << full(q.x()) << ' ' << full(q.y()) << ' ' << full(q.z()) << blockiness << '\n';
         }
     });
 }
@@ -297,20 +334,20 @@ Packing readLammpsData(const fs::path& file) {
     if (header.ellipsoids != header.atoms)
         reader.fail("every atom must be an ellipsoid (atom_style ellipsoid)");
     std::map<long long, Particle> particles;
-    UniformColumn p("p (blockiness / 2)", {});
+    DataShape shape;
     std::string line = section;
     do { // the sections by their keyword lines; others (Masses, Velocities) are passed over
         const std::vector<std::string> words = splitWhitespace(line.substr(0, line.find('#')));
         if (words.size() != 1 || (words[0] != "Atoms" && words[0] != "Ellipsoids")) continue;
         for (const auto& t : sectionLines(reader, header.atoms))
-            readDataLine(t, words[0] == "Atoms", particles[reader.parseCount(t[0])], header, p,
+            readDataLine(t, words[0] == "Atoms", particles[reader.parseCount(t[0])], header, shape,
                          reader);
     } while (reader.next(line));
     if (static_cast<long long>(particles.size()) != header.atoms)
         reader.fail("the Atoms and Ellipsoids sections name different atoms");
     Packing packing;
     packing.boxLength = cubicEdge(header.bounds, reader);
-    packing.shapeSpec = ShapeSpec::superball(p.has() ? p.value(reader) : 1.0);
+    packing.shapeSpec = shape.shape(reader);
     std::vector<Particle> ordered;
     for (auto& [id, particle] : particles) {
         particle.id = id;

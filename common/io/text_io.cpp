@@ -4,6 +4,8 @@
 #include "io/text_lines.hpp"
 #include "packing/validation.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -194,27 +196,32 @@ void writeExtendedXyz(const Packing& packing, const fs::path& file) {
     validatePacking(packing, file.string());
     const std::string length = full(packing.boxLength);
     const std::string semiAxis = full(packing.semiAxis);
-    // OVITO's superquadric (howto "Non-spherical particle shapes"):
-    // (|x/a|^(2/phi) + |y/b|^(2/phi))^(phi/theta) + |z/c|^(2/theta) = 1, with (phi, theta) the
-    // "Superquadric Roundness" and (a, b, c) the "Aspherical Shape" semi-axes; our superball
-    // |x|^2p + |y|^2p + |z|^2p = R^2p is phi = theta = 1/p, a = b = c = R. OVITO's
-    // "Orientation" is the quaternion (x, y, z, w) rotating the shape into the lab frame.
-    const std::string roundness = full(1.0 / packing.superball().p());
+    // OVITO's superquadric (howto "Non-spherical particle shapes", ShapeSpec::superquadric):
+    // (phi, theta) the "Superquadric Roundness", (a, b, c) the "Aspherical Shape" semi-axes.
+    // OVITO's "Orientation" is the quaternion (x, y, z, w) rotating the shape into the lab frame.
+    const Superquadric shape = packing.shapeSpec.superquadric();
+    const std::string roundness = full(2.0 / shape.eastWest) + ' ' + full(2.0 / shape.northSouth);
+    std::string species(packing.shapeSpec.info().name);
+    species[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(species[0])));
     writeTextFile(file, [&](std::ostream& out) {
         out << packing.size() << "\nLattice=\"" << length << " 0 0 0 " << length << " 0 0 0 "
             << length << "\" Origin=\"0 0 0\" pbc=\"T T T\" "
             << "Properties=species:S:1:pos:R:3:orientation:R:4:aspherical_shape:R:3:"
-            << "superquadric_roundness:R:2 p=" << full(packing.superball().p())
-            << " semi_axis=" << semiAxis << "\n";
+            << "superquadric_roundness:R:2";
+        if (const auto family = packing.shapeSpec.writtenFamily())
+            out << ' ' << kShapeFamilyKey << '=' << *family;
+        for (const auto& [name, value] : packing.shapeSpec.namedValues())
+            out << ' ' << name << '=' << full(value);
+        out << " semi_axis=" << semiAxis << "\n";
         for (std::size_t i = 0; i < packing.size(); ++i) {
             const Vector3d r = wrapIntoBox(packing.positions[i], packing.boxLength);
             const Quaterniond q = packing.orientations[i].normalized();
             // A mixture's particle at its own size (docs/mixtures.md); the header's the largest.
-            const std::string own = packing.isMixture() ? full(packing.semiAxes[i]) : semiAxis;
-            out << "Superball " << full(r.x()) << ' ' << full(r.y()) << ' ' << full(r.z()) << ' '
+            const double own = packing.semiAxisOf(i);
+            out << species << ' ' << full(r.x()) << ' ' << full(r.y()) << ' ' << full(r.z()) << ' '
                 << full(q.x()) << ' ' << full(q.y()) << ' ' << full(q.z()) << ' ' << full(q.w())
-                << ' ' << own << ' ' << own << ' ' << own << ' ' << roundness << ' ' << roundness
-                << '\n';
+                << ' ' << full(own * shape.axes.x()) << ' ' << full(own * shape.axes.y()) << ' '
+                << full(own * shape.axes.z()) << ' ' << roundness << '\n';
         }
     });
 }
@@ -298,6 +305,28 @@ double cubicLattice(const std::string& lattice, const LineReader& reader) {
     return v[0];
 }
 
+/// The comment line's shape: the family `shape=` names (the superball where none) with each of
+/// its parameters under its own key; nothing where one is missing (the roundness column gives
+/// the shape then).
+template <class Key, class Number>
+std::optional<ShapeSpec> xyzHeaderShape(const Key& key, const Number& number,
+                                        const LineReader& reader) {
+    const std::optional<std::string> family = key(kShapeFamilyKey);
+    const ShapeFamily* known =
+        findShapeFamily(family ? std::string_view(*family) : shapeFamilies().front().name);
+    if (!known)
+        reader.failAt(2, fmt::format("{}={} is no shape family sbpack knows ({})", kShapeFamilyKey,
+                                     *family, shapeFamilyNames()));
+    for (const ShapeParameter& parameter : known->parameters)
+        if (!number(std::string(parameter.name))) return std::nullopt;
+    try {
+        return ShapeSpec::read(family,
+                               [&](std::string_view name) { return *number(std::string(name)); });
+    } catch (const std::invalid_argument& e) {
+        reader.failAt(2, e.what());
+    }
+}
+
 } // namespace
 
 Packing readExtendedXyz(const fs::path& file) {
@@ -317,9 +346,15 @@ Packing readExtendedXyz(const fs::path& file) {
     auto number = [&](const std::string& name) {
         return key(name) ? std::optional(reader.parseDouble(*key(name))) : std::nullopt;
     };
-    const std::optional<double> headerP = number("p");
-    UniformColumn roundness("p (superquadric_roundness = 1 / p)",
-                            headerP ? std::optional(1.0 / *headerP) : std::nullopt);
+    const std::optional<ShapeSpec> headerShape = xyzHeaderShape(key, number, reader);
+    const auto headerRoundness = [&](double Superquadric::*blockiness) {
+        return headerShape ? std::optional(2.0 / (headerShape->superquadric().*blockiness))
+                           : std::nullopt;
+    };
+    UniformColumn phi("superquadric_roundness (phi)", headerRoundness(&Superquadric::eastWest));
+    UniformColumn theta("superquadric_roundness (theta)",
+                        headerRoundness(&Superquadric::northSouth));
+    AxesColumns axes;
     const std::optional<double> headerSemiAxis = number("semi_axis");
     std::vector<double> semiAxes; // each particle's, from aspherical_shape
     Packing packing;
@@ -343,23 +378,32 @@ Packing readExtendedXyz(const fs::path& file) {
                                               value(*q, 2)); // OVITO's (x, y, z, w)
         else
             packing.orientations.push_back(Quaterniond::Identity());
-        if (const auto* r = column("superquadricroundness"))
-            for (std::size_t k = 0; k < r->second; ++k)
-                roundness.column(value(*r, k), reader);
+        if (const auto* r = column("superquadricroundness")) {
+            phi.column(value(*r, 0), reader); // one column: phi = theta
+            theta.column(value(*r, r->second - 1), reader);
+        }
         if (const auto* a = column("asphericalshape")) {
             if (a->second != 3) reader.fail("aspherical_shape needs its three semi-axes");
-            semiAxes.push_back(equalAxes(value(*a, 0), value(*a, 1), value(*a, 2), reader));
+            semiAxes.push_back(
+                axes.size(Vector3d(value(*a, 0), value(*a, 1), value(*a, 2)), reader));
         }
     }
     if (static_cast<long long>(packing.positions.size()) != count)
         reader.fail("the header says " + std::to_string(count) + " particles but the file has " +
                     std::to_string(packing.positions.size()));
-    // The header's p as written; only a p from the roundness column is inverted and repaired.
-    packing.shapeSpec = ShapeSpec::superball(
-        headerP ? *headerP : singlePrecisionRepaired(1.0 / roundness.value(reader)));
+    // The header's parameters as written; only a shape from the roundness column is inverted
+    // and repaired.
+    if (!headerShape && !phi.has())
+        reader.failAt(2, "no shape: give the header's parameters (p=...) or the "
+                         "superquadric_roundness column");
+    packing.shapeSpec = headerShape ? *headerShape
+                                    : superquadricShape({axes.proportions(), 2.0 / phi.valueOr(1.0),
+                                                         2.0 / theta.valueOr(1.0)},
+                                                        true, reader);
     readSemiAxes(semiAxes, headerSemiAxis, packing, reader, "aspherical_shape");
     if (!column("orientation") && !packing.shapeSpec.isSphere())
-        reader.failAt(2, "no orientation column: superballs (p != 1) need their orientations");
+        reader.failAt(
+            2, "no orientation column: particles other than spheres need their orientations");
     validatePacking(packing, reader.name());
     canonicalizePacking(packing);
     return packing;

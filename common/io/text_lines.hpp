@@ -14,6 +14,7 @@
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -108,9 +109,9 @@ class LineReader {
     int number_ = 0;
 };
 
-/// One shape parameter of a text file (e.g. p): the header's key where there is one, else the
-/// column's value, the same in every particle and every component (the header and the columns must
-/// agree to 1e-12).
+/// One shape value of a text file (a superquadric roundness or blockiness): the header's where
+/// there is one, else the column's value, the same in every particle (the header and the columns
+/// must agree to 1e-12).
 class UniformColumn {
   public:
     UniformColumn(std::string key, std::optional<double> header)
@@ -119,25 +120,61 @@ class UniformColumn {
         if (!value_) value_ = v;
         if (std::abs(v - *value_) > 1e-12 * std::abs(*value_))
             reader.fail("the particles differ in " + key_ +
-                        " (only identical superballs are read)");
+                        " (only particles of one shape, at their own sizes, are read)");
     }
     bool has() const { return value_.has_value(); }
-    /// The value; fails naming the comment line (2) where there is none.
-    double value(const LineReader& reader) const {
-        if (!value_) reader.failAt(2, "no " + key_ + ": give the header key or its column");
-        return *value_;
-    }
+    /// The value, or `absent` where there is none.
+    double valueOr(double absent) const { return value_.value_or(absent); }
 
   private:
     std::string key_;
     std::optional<double> value_;
 };
 
-/// A superball's semi-axis from its three (a = b = c, to 1e-12); fails where they differ.
-inline double equalAxes(double a, double b, double c, const LineReader& reader) {
-    if (std::abs(b - a) > 1e-12 * a || std::abs(c - a) > 1e-12 * a)
-        reader.fail("the shape's three semi-axes differ: only superballs (a = b = c) are read");
-    return a;
+/// The particles' semi-axes (a, b, c) as a file's shape columns give them: each particle's size
+/// (its largest) and the shape's proportions (a, b, c over the size), which every particle must
+/// share to 1e-12.
+class AxesColumns {
+  public:
+    double size(const Vector3d& axes, const LineReader& reader) {
+        const double largest = axes.maxCoeff();
+        if (!(largest > 0.0)) return largest; // refused by the packing's validation
+        const Vector3d proportions = axes / largest;
+        if (!proportions_) proportions_ = proportions;
+        if ((proportions - *proportions_).cwiseAbs().maxCoeff() > 1e-12)
+            reader.fail("the particles' semi-axes differ in proportion, not only in size (only "
+                        "particles of one shape, at their own sizes, are read)");
+        return largest;
+    }
+    /// The proportions (1, 1, 1 where no particle gave its axes).
+    Vector3d proportions() const { return proportions_.value_or(Vector3d::Ones()); }
+
+  private:
+    std::optional<Vector3d> proportions_;
+};
+
+/// A parameter from a value written in single precision (OVITO's export: 1 / 0.6666667008 =
+/// 1.49999992): the value of 6 significant digits within 1e-7 of it, else the value itself.
+inline double singlePrecisionRepaired(double value) {
+    const double scale = std::pow(10.0, 5 - static_cast<int>(std::floor(std::log10(value))));
+    const double rounded = std::round(value * scale) / scale;
+    return std::abs(rounded - value) <= 1e-7 * value ? rounded : value;
+}
+
+/// The shape whose superquadric `q` is (ShapeSpec::fromSuperquadric), failing with the file and
+/// line where no family has it; `repaired`: each parameter through singlePrecisionRepaired (a
+/// roundness written in single precision).
+inline ShapeSpec superquadricShape(const Superquadric& q, bool repaired, const LineReader& reader) {
+    try {
+        const ShapeSpec shape = ShapeSpec::fromSuperquadric(q);
+        if (!repaired) return shape;
+        std::vector<double> values = shape.values();
+        for (double& v : values)
+            v = singlePrecisionRepaired(v);
+        return ShapeSpec::fromValues(shape.info().name, values);
+    } catch (const std::invalid_argument& e) {
+        reader.fail(e.what());
+    }
 }
 
 /// The packing's sizes from each particle's semi-axis (may be none), read from `column`, and the
@@ -158,14 +195,6 @@ inline void readSemiAxes(const std::vector<double>& semiAxes, std::optional<doub
         reader.failAt(headerLine, "the header's semi_axis is not the largest of " + column);
     packing.semiAxis = reference;
     if (*largest - *smallest > 1e-12 * *largest) packing.semiAxes = semiAxes;
-}
-
-/// p from a roundness written in single precision (OVITO's export: 1 / 0.6666667008 =
-/// 1.49999992): the value of 6 significant digits within 1e-7 of it, else p itself.
-inline double singlePrecisionRepaired(double p) {
-    const double scale = std::pow(10.0, 5 - static_cast<int>(std::floor(std::log10(p))));
-    const double rounded = std::round(p * scale) / scale;
-    return std::abs(rounded - p) <= 1e-7 * p ? rounded : p;
 }
 
 } // namespace sbpack::text

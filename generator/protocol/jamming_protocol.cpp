@@ -4,7 +4,6 @@
 #include "geometry/superball.hpp"
 #include "initial/random_start.hpp"
 #include "protocol/checkpoint_entries.hpp"
-#include "protocol/paper_rates.hpp"
 #include "protocol/protocol_advice.hpp"
 #include "version.hpp"
 
@@ -84,11 +83,11 @@ AnyEngine resumedEngine(const Packing& packing, const std::string& source,
 } // namespace
 
 double ProtocolParameters::fastGrowthRate() const {
-    return gammaFast.value_or(paperFastRate(shape.p));
+    return gammaFast.value_or(measuredProtocol(shape).fastRate);
 }
 
 double ProtocolParameters::slowGrowthRate() const {
-    return gammaSlow.value_or(speed * (rotating(shape) ? paperSlowRate(shape.p) : 1e-4));
+    return gammaSlow.value_or(speed * measuredProtocol(shape).slowRate);
 }
 
 std::vector<double> ProtocolParameters::relativeSizes() const {
@@ -113,11 +112,8 @@ std::uint64_t ProtocolParameters::collisionLimit() const {
 
 void ProtocolParameters::validate() const {
     require(particles >= 2, "n_particles", "need at least 2 particles");
-    // The octahedron p = 0.5 itself stalls the predictor (194 collisions in 20 CPU s at N = 50;
-    // p = 0.501 makes 3.8e3 per CPU s): bench/RESULTS.md, "Extreme p".
-    const double p = shape.p;
-    require(std::isfinite(p) && p > 0.5 && p <= 1e3, "p",
-            "must be in (0.5, 1000] (the octahedron p = 0.5 stalls the event-driven predictor)");
+    if (const auto problem = measuredProtocol(shape).problem)
+        throw ProtocolParameterError(problem->parameter, problem->message);
     static_assert(kLeastPhiInit == 1e-3, "the message below names it");
     require(std::isfinite(phiInit) && phiInit >= kLeastPhiInit && phiInit < 0.5, "phi_init",
             "must be in [0.001, 0.5) (a more dilute start only adds growth time)");

@@ -89,12 +89,14 @@ struct ProtocolParameters {
     /// 0: none.
     std::int64_t forceWindows = 50;
 
-    /// The fast rate used: gammaFast if set, else the paper's protocol at p (paperFastRate:
+    /// The fast rate used: gammaFast if set, else the shape's measured default (shapes/registry:
+    /// measuredProtocol), for superballs the paper's protocol at p (paperFastRate:
     /// the rate in the paper's range (0.005, 0.05) that reproduces its phi, bench/RESULTS.md,
     /// "Fidelity", E8).
     double fastGrowthRate() const;
 
-    /// The slow rate used: gammaSlow if set, else speed times 1e-4 for spheres (Z = 5.978 +-
+    /// The slow rate used: gammaSlow if set, else speed times the shape's measured default:
+    /// 1e-4 for spheres (Z = 5.978 +-
     /// 0.005 at N = 1000, where 1e-3 leaves 5.94) and for superballs the paper's protocol at p
     /// (paperSlowRate: the rate that reproduces its Z, whose superball Z keeps rising as the slow
     /// phase slows; bench/RESULTS.md, "Fidelity", E11).

@@ -1,7 +1,6 @@
 #include "protocol/protocol_advice.hpp"
 
-#include "geometry/superball.hpp"
-#include "protocol/paper_rates.hpp"
+#include "shapes/registry.hpp"
 
 #include <fmt/format.h>
 
@@ -11,33 +10,9 @@
 namespace sbpack {
 namespace {
 
-/// Collisions per CPU second of the rotating engine, measured on this machine class with the
-/// other core busy (bench/RESULTS.md: "Extreme p" at N = 50 for p <= 0.55, the "Fidelity" E9
-/// defaults at N = 1000 for 0.85-1.5, "Near-cubes after the jam check" and the local search at
-/// N = 200 for 2-3; "Near-octahedra" at N = 100 for p = 0.5000001, so that the rate falls, and
-/// the warning comes, as p -> 1/2: issue 46, defect 12; "The near-cube rates again" for p >= 5:
-/// the N = 1000 ensembles at 5 and 10, the feasibility row at 20, N = 50 at 50-1000).
-const std::vector<MeasuredAtP>& rotatingRates() {
-    static const std::vector<MeasuredAtP> rates = {
-        {0.5000001, 2.1e2}, {0.501, 3.8e3}, {0.51, 1.8e4}, {0.55, 3.9e4},  {0.85, 7.8e4},
-        {1.1, 8.4e4},       {1.5, 7.4e4},   {2.0, 5.3e4},  {3.0, 3.6e4},   {5.0, 1.7e4},
-        {10.0, 1.1e4},      {20.0, 5.2e3},  {50.0, 3.3e3}, {100.0, 1.6e3}, {1000.0, 1.4e3},
-    };
-    return rates;
-}
-
-/// The exact sphere engine (bench/RESULTS.md, "MRJ spheres, N = 1000").
-constexpr double kSphereRate = 6.5e5;
-
 /// Collisions per particle up to the switch pressure at the paper's fast rates (0.01-0.03:
 /// 2.5-4e3 to P = 1e7, bench/RESULTS.md, "Fidelity", E8).
 constexpr double kFastPhaseCollisions = 3.0e3;
-
-/// Collisions per particle per decade of pressure, times gamma_slow, in the slow phase
-/// (bench/RESULTS.md, "Fidelity", E11: the same runs at gamma_slow 1e-2 and 5e-3; spheres
-/// from "MRJ spheres, N = 1000": 290 M collisions at 1e-4 against 40 M at 1e-3 to 1e12).
-constexpr double kSlowCollisionsTimesRateSpheres = 4.8;
-constexpr double kSlowCollisionsTimesRateSuperballs = 17.0;
 
 /// Above this expected CPU time a run is called very slow.
 constexpr double kSlowRunSeconds = 3600.0;
@@ -60,12 +35,6 @@ double jammedBoxDiameters(const ProtocolParameters& parameters) {
     return std::cbrt(parameters.particles * unitVolume / 0.85);
 }
 
-/// Collisions per particle per decade of the slow phase, times its rate.
-double slowCollisionsTimesRate(const ProtocolParameters& parameters) {
-    return rotating(parameters.shape) ? kSlowCollisionsTimesRateSuperballs
-                                      : kSlowCollisionsTimesRateSpheres;
-}
-
 std::string costText(const ExpectedCost& cost) {
     const double hours = cost.cpuSeconds / 3600.0;
     return hours >= 1.0
@@ -76,10 +45,6 @@ std::string costText(const ExpectedCost& cost) {
 
 } // namespace
 
-double collisionRate(double p) {
-    return p != 1.0 ? interpolateInP(rotatingRates(), p, Interpolation::logarithmic) : kSphereRate;
-}
-
 ExpectedCost expectedCost(const ProtocolParameters& parameters) {
     // The slow phase's decades of pressure, those of the finish (issue 64) at its own rate.
     const auto decadesTo = [&](double pressure) {
@@ -88,16 +53,17 @@ ExpectedCost expectedCost(const ProtocolParameters& parameters) {
     const double total = decadesTo(parameters.pressureFinal);
     const double slow =
         parameters.pressureFinish > 0.0 ? decadesTo(parameters.pressureFinish) : total;
-    const double perDecade = slowCollisionsTimesRate(parameters);
+    const MeasuredProtocol measured = measuredProtocol(parameters.shape);
+    const double perDecade = measured.slowCollisionsTimesRate;
     const double perParticle = kFastPhaseCollisions +
                                perDecade * slow / parameters.slowGrowthRate() +
                                perDecade * (total - slow) / parameters.finishGrowthRate();
     const double collisions = perParticle * parameters.particles;
-    return {collisions, collisions / collisionRate(parameters.shape.p)};
+    return {collisions, collisions / measured.collisionRate};
 }
 
 double expectedWindowsPerDoubling(const ProtocolParameters& parameters, double rate) {
-    return slowCollisionsTimesRate(parameters) * std::log10(2.0) /
+    return measuredProtocol(parameters.shape).slowCollisionsTimesRate * std::log10(2.0) /
            (rate * parameters.collisionsPerWindow);
 }
 
@@ -131,26 +97,21 @@ std::vector<std::string> protocolWarnings(const ProtocolParameters& parameters) 
     defaults.gammaSlow.reset();
     if (parameters.gammaSlow && *parameters.gammaSlow < defaults.slowGrowthRate())
         warnings.push_back(fmt::format(
-            "gamma-slow {:g} is slower than the default for p = {:g}, {:.2g}: about {:.2g} "
+            "gamma-slow {:g} is slower than the default for {}, {:.2g}: about {:.2g} "
             "times the slow phase's collisions; a larger rate is the faster one, and speed "
-            "(--speed, speed=) scales the default for any p (docs/design.md §3, \"Speed\")",
-            *parameters.gammaSlow, parameters.shape.p, defaults.slowGrowthRate(),
+            "(--speed, speed=) scales the default for any shape (docs/design.md §3, \"Speed\")",
+            *parameters.gammaSlow, parameters.shape.describe(), defaults.slowGrowthRate(),
             defaults.slowGrowthRate() / *parameters.gammaSlow));
-    if (parameters.shape.p > 10.0)
-        warnings.push_back(
-            fmt::format("p = {:g}: beyond the ensembles measured (p <= 10 at N = 1000); at "
-                        "N = 200, p = 20 jammed without order in 14 CPU minutes and p = 50 "
-                        "aligned its axes (P4 0.93) and was refused (bench/RESULTS.md, \"The "
-                        "feasibility row\")",
-                        parameters.shape.p));
+    for (const std::string& warning : measuredProtocol(parameters.shape).warnings)
+        warnings.push_back(warning);
     const double box = jammedBoxDiameters(parameters);
     if (ParticleShape(parameters.shape, 0.5).stacksInColumns() && box < kColumnBoxDiameters)
         warnings.push_back(
-            fmt::format("p = {:g}, N = {}: the box will be about {:.1f} diameters across, so "
+            fmt::format("{}, N = {}: the box will be about {:.1f} diameters across, so "
                         "a column of near-cubes can span it and carry the pressure "
                         "alone; such runs end refused as not jammed (at N = 200 most "
                         "did); N >= 1000 avoids it",
-                        parameters.shape.p, parameters.particles, box));
+                        parameters.shape.describe(), parameters.particles, box));
     else if (parameters.particles < kSmallBoxParticles)
         warnings.push_back(
             fmt::format("N = {}: a box this small often jams partly ordered, phi and Z "

@@ -13,13 +13,13 @@ namespace sbpack {
 /// The expected cost of a run from phi_init to pressureFinal.
 struct ExpectedCost {
     double collisions; ///< total, all particles
-    double cpuSeconds; ///< at the measured collision rate of p on this machine class
+    double cpuSeconds; ///< at the shape's measured collision rate on this machine class
 };
 
 /// Collisions per particle: kFastPhaseCollisions up to the switch, then per decade of pressure
 /// a constant over gamma_slow (the gaps shrink tenfold per decade at a rate gamma while the
 /// collision rate grows as P, so each decade costs about 1/gamma collisions per particle);
-/// CPU seconds at collisionRate(p).
+/// CPU seconds at the shape's measured collision rate (shapes/measured_protocol.hpp).
 ExpectedCost expectedCost(const ProtocolParameters& parameters);
 
 /// The slow phase's windows per doubling of the reduced pressure at growth rate `rate` in the
@@ -27,11 +27,6 @@ ExpectedCost expectedCost(const ProtocolParameters& parameters);
 /// collisions per particle of a window): about 51 for superballs at 1e-2, 1440 for spheres at
 /// 1e-4 (docs/design.md §3, "Plateaus").
 double expectedWindowsPerDoubling(const ProtocolParameters& parameters, double rate);
-
-/// Collisions per CPU second measured at exponent p (N = 1000 and 200 runs; bench/RESULTS.md,
-/// "Results (collisions per CPU second, median over 5 seeds)"),
-/// interpolated log-linearly in p.
-double collisionRate(double p);
 
 /// The warnings, each one line, for a protocol that is very slow (expected CPU above an hour),
 /// outside the paper's fast-rate range (0.005, 0.05), beyond the practical exponents (p > 10),

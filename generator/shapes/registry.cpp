@@ -1,5 +1,7 @@
 #include "shapes/registry.hpp"
 
+#include "shapes/superball_protocol.hpp"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -54,6 +56,10 @@ void restoreRows(EventDrivenMd<Shape>& engine, const std::vector<double>& rows,
 }
 
 } // namespace
+
+MeasuredProtocol measuredProtocol(const ShapeSpec& shape) {
+    return superballProtocol(shape.p);
+}
 
 bool rotating(const ShapeSpec& shape) {
     return !shape.isSphere();

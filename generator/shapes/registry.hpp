@@ -1,10 +1,12 @@
 #pragma once
 // The shapes sbgen runs, registered once (docs/architecture.md, "What a new shape needs"): the
 // shape variant and its engines, the factory that picks a shape for a packing's exponent, and
-// the shapes' pair records in a checkpoint. A new shape is one alternative of AnyShape and one
-// branch of shapeFor; the protocol, the random start and the checkpoint table name no shape.
+// the shapes' pair records in a checkpoint, and what sbgen has measured of each. A new shape is
+// one alternative of AnyShape, one branch of shapeFor and one of measuredProtocol; the protocol,
+// the random start and the checkpoint table name no shape.
 
 #include "engine/event_driven_md.hpp"
+#include "shapes/measured_protocol.hpp"
 #include "shapes/sphere.hpp"
 #include "shapes/superball_shape.hpp"
 
@@ -26,6 +28,9 @@ using AnyEngine = EnginesOf<AnyShape>::type;
 
 /// Whether the bodies rotate: all but spheres, which run on the exact sphere shape.
 bool rotating(const ShapeSpec& shape);
+
+/// What sbgen has measured of `shape`: its default rates, cost and range.
+MeasuredProtocol measuredProtocol(const ShapeSpec& shape);
 
 /// The engine's shape for `shape`: the exact sphere for superballs of p = 1, the rotating
 /// superball of its p otherwise.

@@ -4,7 +4,7 @@ The C++ core (the libraries of sbgen and sbanalyze) is the extension ``sbpack._s
 package adds the analyses as objects, a reader of results files and the figures (``sbpack.plot``).
 """
 from ._arguments import generate, name_argument_errors
-from ._sbpack import Packing, __version__, expected_collisions
+from ._sbpack import Packing, __version__, expected_collisions, shape_families
 from .analyses import analyze
 from .analysis_base import Analysis, Result
 from .analysis_classes import *  # noqa: F401,F403 (Contacts, ContactsResult, ...: __all__)
@@ -14,6 +14,6 @@ from .shipped_data import data_file, data_files
 
 name_argument_errors()
 
-__all__ = ["Packing", "generate", "expected_collisions", "analyze", "read_results", "data_file",
+__all__ = ["Packing", "generate", "expected_collisions", "shape_families", "analyze", "read_results", "data_file",
            "data_files", "Analysis",
            "Result", "__version__", *_analysis_names]

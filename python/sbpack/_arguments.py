@@ -10,10 +10,14 @@ _PACKING_INIT = _sbpack.Packing.__init__
 _GENERATE = _sbpack.generate
 
 
-def __init__(self, positions, orientations, box_length, *, p, semi_axis, semi_axes=None,
-             source="arrays"):
-    _PACKING_INIT(self, positions, orientations, box_length, p=p, semi_axis=semi_axis,
-                  semi_axes=semi_axes, source=source)
+def __init__(self, positions, orientations, box_length, *, semi_axis, semi_axes=None,
+             source="arrays", shape=None, **parameters):
+    families = _sbpack.shape_families()  # the shape's parameters by name: p=1.5 for superballs
+    if shape is None or shape in families:  # an unknown family: the extension's ValueError
+        check_keywords("Packing.__init__", parameters,
+                       families[shape if shape is not None else next(iter(families))])
+    _PACKING_INIT(self, positions, orientations, box_length, semi_axis=semi_axis,
+                  semi_axes=semi_axes, source=source, shape=shape, parameters=parameters)
 
 
 # The extension's own description (python/src/packing.cpp), without pybind11's signature line.

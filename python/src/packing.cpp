@@ -11,7 +11,9 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace sbpack::python {
 
@@ -55,10 +57,32 @@ Array realArray(const py::object& object, const char* name, const std::string& s
     return Array::ensure(array);
 }
 
+/// The shape of family `family` (None: the superball), each parameter read by name from
+/// `parameters` (ShapeSpec::read): TypeError for a missing one, ValueError naming `source` for
+/// an unknown family.
+ShapeSpec shapeFrom(const py::object& family, const py::dict& parameters,
+                    const std::string& source) {
+    const auto written =
+        family.is_none() ? std::nullopt : std::optional(family.cast<std::string>());
+    try {
+        return ShapeSpec::read(written, [&](std::string_view name) {
+            const py::str key(std::string(name).c_str());
+            if (!parameters.contains(key))
+                throw py::type_error("Packing.__init__() missing the " +
+                                     written.value_or("superball") + "'s keyword argument '" +
+                                     std::string(name) + "'");
+            return parameters[key].cast<double>();
+        });
+    } catch (const std::invalid_argument& e) {
+        throw py::value_error("'" + source + "': " + e.what());
+    }
+}
+
 /// A packing from arrays, validated and canonicalised as the readers do (common/io).
 Packing fromArrays(const py::object& positionsObject, const py::object& orientationsObject,
-                   double boxLength, double p, double semiAxis, const py::object& semiAxesObject,
-                   const std::string& source) {
+                   double boxLength, double semiAxis, const py::object& semiAxesObject,
+                   const std::string& source, const py::object& family,
+                   const py::dict& parameters) {
     checkNoNul(source, "source");
     const Array positions = realArray(positionsObject, "positions", source);
     const Array orientations = realArray(orientationsObject, "orientations", source);
@@ -66,7 +90,7 @@ Packing fromArrays(const py::object& positionsObject, const py::object& orientat
     const py::ssize_t n = positions.shape(0);
     checkShape(orientations, "orientations", n, 4, source);
     Packing packing;
-    packing.shapeSpec = ShapeSpec::superball(p);
+    packing.shapeSpec = shapeFrom(family, parameters, source);
     packing.boxLength = boxLength;
     packing.semiAxis = semiAxis;
     const auto r = positions.unchecked<2>();
@@ -139,6 +163,27 @@ py::array_t<double> semiAxesOf(const Packing& packing) {
     return readOnly(std::move(a));
 }
 
+/// The shape's family under "shape" and each of its parameters by name.
+py::dict shapeOf(const Packing& packing) {
+    py::dict d;
+    d["shape"] = std::string(packing.shapeSpec.info().name);
+    for (const auto& [name, value] : packing.shapeSpec.namedValues())
+        d[py::str(std::string(name))] = value;
+    return d;
+}
+
+/// Every shape family's name with its parameters' names, the superball first.
+py::dict shapeFamiliesOf() {
+    py::dict d;
+    for (const ShapeFamily& family : shapeFamilies()) {
+        py::list names;
+        for (const ShapeParameter& parameter : family.parameters)
+            names.append(std::string(parameter.name));
+        d[py::str(std::string(family.name))] = names;
+    }
+    return d;
+}
+
 py::dict provenanceOf(const Packing& packing) {
     py::dict d;
     for (const auto& entry : packing.provenance) // (clang 14 captures no structured bindings)
@@ -149,15 +194,19 @@ py::dict provenanceOf(const Packing& packing) {
 } // namespace
 
 void registerPacking(py::module_& m) {
+    m.def("shape_families", &shapeFamiliesOf,
+          "Every shape family's name with its parameters' names, the superball first");
     py::class_<Packing>(m, "Packing",
-                        "Superballs of one p in a cubic periodic box: identical, or a mixture of "
-                        "sizes")
+                        "Particles of one shape (superballs of one p) in a cubic periodic box: "
+                        "identical, or a mixture of sizes")
         .def(py::init(&fromArrays), py::arg("positions"), py::arg("orientations"),
-             py::arg("box_length"), py::kw_only(), py::arg("p"), py::arg("semi_axis"),
+             py::arg("box_length"), py::kw_only(), py::arg("semi_axis"),
              py::arg("semi_axes") = py::none(), py::arg("source") = "arrays",
-             "From N x 3 positions and N x 4 unit quaternions (w, x, y, z), the shape's p and "
-             "semi_axis given by keyword (no default: a packing's grown size is its own, "
-             "docs/python.md); a mixture's N semi_axes by keyword too, semi_axis their largest "
+             py::arg("shape") = py::none(), py::arg("parameters") = py::dict(),
+             "From N x 3 positions and N x 4 unit quaternions (w, x, y, z), the shape's "
+             "parameters (p) and semi_axis given by keyword (no default: a packing's grown size "
+             "is its own, docs/python.md), shape= naming a family other than the superball; a "
+             "mixture's N semi_axes by keyword too, semi_axis their largest "
              "(docs/mixtures.md); checked as the file readers check (ValueError with their "
              "message, naming `source`)")
         .def_static("read", &read, py::arg("path"), "Reads a .h5 (or .txt) packing file")
@@ -170,7 +219,16 @@ void registerPacking(py::module_& m) {
                                "N x 4 quaternions (w, x, y, z), a read-only copy")
         .def_readonly("box_length", &Packing::boxLength)
         .def_property_readonly(
-            "p", [](const Packing& p) { return p.superball().p(); }, "the superball exponent")
+            "p",
+            [](const Packing& p) {
+                for (const auto& [name, value] : p.shapeSpec.namedValues())
+                    if (name == "p") return value;
+                throw py::attribute_error("a " + std::string(p.shapeSpec.info().name) +
+                                          " has no p: see shape");
+            },
+            "the superball exponent (paper Eq. 1)")
+        .def_property_readonly("shape", &shapeOf,
+                               "the shape's family under 'shape' and its parameters by name")
         .def_readonly("semi_axis", &Packing::semiAxis)
         .def_property_readonly("semi_axes", &semiAxesOf,
                                "N semi-axes R_i, a read-only copy: a mixture's sizes "
@@ -183,13 +241,18 @@ void registerPacking(py::module_& m) {
         .def_property_readonly("phi", &Packing::packingFraction, "sum_i v_i / L^3 (N v1 / L^3)")
         .def_property_readonly(
             "mean_width", [](const Packing& p) { return p.shape().meanWidth(); },
-            "mean width w of one superball")
+            "mean width w of one particle (the largest of a mixture)")
         .def_property_readonly("provenance", &provenanceOf, "sbgen's parameters and run log")
         .def("__len__", &Packing::size)
         .def("__repr__", [](const Packing& p) {
-            return "<sbpack.Packing N=" + std::to_string(p.size()) +
-                   " p=" + py::repr(py::float_(p.superball().p())).cast<std::string>() +
-                   " phi=" + py::repr(py::float_(p.packingFraction())).cast<std::string>() + ">";
+            std::string text = "<sbpack.Packing N=" + std::to_string(p.size());
+            if (const auto family = p.shapeSpec.writtenFamily())
+                text += " shape=" + std::string(*family);
+            for (const auto& [name, value] : p.shapeSpec.namedValues())
+                text +=
+                    " " + std::string(name) + "=" + py::repr(py::float_(value)).cast<std::string>();
+            return text + " phi=" + py::repr(py::float_(p.packingFraction())).cast<std::string>() +
+                   ">";
         });
 }
 

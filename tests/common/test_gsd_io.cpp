@@ -162,7 +162,7 @@ TEST(GsdIo, RefusesWhatIsNotACubicSuperballPackingNamingTheFile) {
     const fs::path cube = scratch("polyhedron.gsd");
     writeHoomdFrame(cube, {8.0F, 8.0F, 8.0F, 0.0F, 0.0F, 0.0F},
                     R"({"type": "ConvexPolyhedron", "vertices": [[1, 1, 1]]})");
-    expectRefused(cube, "without a superball shape");
+    expectRefused(cube, "without a shape sbpack reads");
     const fs::path text = scratch("text.gsd");
     std::ofstream(text) << "not a gsd file\n";
     expectRefused(text, "GSD: opening the file");

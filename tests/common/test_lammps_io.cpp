@@ -113,9 +113,12 @@ TEST(LammpsIo, RefusesWhatIsNotACubicPackingNamingTheFileAndLine) {
     expectRefused(written("twice.dump", head + box + atoms + "1 1 1 1 1 1 1\n1 3 3 3 1 1 1\n"),
                   "appears twice");
     expectRefused(written("short.dump", head + box + atoms + "1 1 1 1 1 1 1\n"), "1 of 2 atoms");
-    // Two sizes are a mixture (docs/mixtures.md); one particle of three axes is no superball.
-    expectRefused(written("ellipsoid.dump", head + box + atoms + "1 1 1 1 1 1 1\n2 3 3 3 2 2 3\n"),
-                  "three semi-axes differ");
+    // Two sizes are a mixture (docs/mixtures.md); two proportions are two shapes; ellipsoids are
+    // no shape sbpack knows.
+    expectRefused(written("two.dump", head + box + atoms + "1 1 1 1 1 1 1\n2 3 3 3 2 2 3\n"),
+                  "differ in proportion");
+    expectRefused(written("ellipsoid.dump", head + box + atoms + "1 1 1 1 2 2 3\n2 3 3 3 2 2 3\n"),
+                  "no shape sbpack knows");
     const std::string data = "title\n\n2 atoms\n1 ellipsoids\n0 10 xlo xhi\n0 10 ylo yhi\n"
                              "0 10 zlo zhi\n\nAtoms\n\n1 1 1 1 1 1 1\n2 1 1 1 3 3 3\n";
     expectRefused(written("some.data", data), "every atom must be an ellipsoid");

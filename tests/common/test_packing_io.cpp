@@ -881,10 +881,12 @@ TEST_F(TextIo, ExtendedXyzInOvitosSpellingAndItsRefusals) {
     refused("2\nLattice=\"4 0 0 0 5 0 0 0 4\" Properties=pos:R:3 p=1 semi_axis=0.5\n",
             "not a cube");
     refused("1\nProperties=pos:R:3 p=1 semi_axis=0.5\n1 2 3\n", "no Lattice");
-    refused("1\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=pos:R:3 semi_axis=0.5\n1 2 3\n", "no p");
+    refused("1\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=pos:R:3 semi_axis=0.5\n1 2 3\n",
+            "no shape");
     refused("1\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=pos:R:3 p=1.5 semi_axis=0.5\n1 2 3\n",
             "no orientation column");
-    refused(ovito + a + "A 3 3 3 0 0 0.6 0.8 0.5 0.5 0.5 0.7 0.7\n", "differ in p");
+    refused(ovito + a + "A 3 3 3 0 0 0.6 0.8 0.5 0.5 0.5 0.7 0.7\n",
+            "differ in superquadric_roundness");
     refused(ovito + a, "the header says 2 particles but the file has 1");
     refused(ovito + "A 1 1 1 0 0 0 1\n", "8 columns, Properties gives 13");
 }

@@ -53,6 +53,36 @@ TEST(ShapeSpec, ParametersOutsideTheFamilyAreNamed) {
               "unknown shape family 'cube' (known: superball)");
 }
 
+// The exchange formats' superquadric (OVITO's implicit surface, docs/cli.md "Files") of a
+// superball is paper Eq. 1 itself: the two functions agree wherever they are evaluated, and the
+// formats' inverse gives the shape back; proportions or blockinesses no family has are refused.
+TEST(ShapeSpec, ItsSuperquadricIsPaperEq1AndReadsBack) {
+    for (const double p : {0.5, 0.8, 1.0, 1.5, 4.0, 40.0}) {
+        const ShapeSpec shape = ShapeSpec::superball(p);
+        const Superquadric q = shape.superquadric();
+        const double phi = 2.0 / q.eastWest, theta = 2.0 / q.northSouth;
+        for (const Vector3d& x :
+             {Vector3d(0.3, -0.7, 0.2), Vector3d(-1.1, 0.4, 0.9), Vector3d(0.05, 0.6, -0.95)}) {
+            const Vector3d r = x.cwiseQuotient(q.axes).cwiseAbs();
+            const double ovito =
+                std::pow(std::pow(r.x(), 2.0 / phi) + std::pow(r.y(), 2.0 / phi), phi / theta) +
+                std::pow(r.z(), 2.0 / theta);
+            const double eq1 = std::pow(std::abs(x.x()), 2.0 * p) +
+                               std::pow(std::abs(x.y()), 2.0 * p) +
+                               std::pow(std::abs(x.z()), 2.0 * p);
+            EXPECT_NEAR(ovito, eq1, 1e-12 * eq1) << "p = " << p;
+        }
+        EXPECT_EQ(ShapeSpec::fromSuperquadric(q), shape);
+    }
+    EXPECT_EQ(messageOf([] {
+                  ShapeSpec::fromSuperquadric({Vector3d(1.0, 1.0, 0.5), 3.0, 3.0});
+              }),
+              "semi-axes in proportion 1:1:0.5 with blockiness 3 (x, y) and 3 (z) are no shape "
+              "sbpack knows (superball); a superball has three equal semi-axes and one blockiness "
+              "2p");
+    EXPECT_THROW(ShapeSpec::fromSuperquadric({Vector3d::Ones(), 3.0, 4.0}), std::invalid_argument);
+}
+
 // Only p = 1 is the sphere; the body at a size has the superball's geometry (paper Eq. 1 and
 // Sec. II D), whose closed forms tests/common/test_superball.cpp checks.
 TEST(ParticleShape, IsTheSuperballOfItsSpec) {

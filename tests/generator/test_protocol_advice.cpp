@@ -2,6 +2,7 @@
 // protocol_advice): the model against the runs it was fitted to, and a warning exactly where a
 // protocol is very slow, outside the paper's fast-rate range or unlikely to jam.
 #include "protocol/protocol_advice.hpp"
+#include "shapes/superball_protocol.hpp"
 
 #include <gtest/gtest.h>
 

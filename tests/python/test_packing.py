@@ -157,6 +157,25 @@ def test_the_shape_is_never_a_silent_default():
     assert q.phi == p.phi
 
 
+def test_the_shape_is_its_family_and_parameters_by_name():
+    """Issue 67: the constructor takes the shape's parameters by name (any family by shape=), and
+    the packing names its shape as the file does."""
+    p = sbpack.Packing.read(P15)
+    assert p.shape == {"shape": "superball", "p": p.p} and p.p == 1.5
+    assert "superball" in sbpack.shape_families() and sbpack.shape_families()["superball"] == ["p"]
+    q = sbpack.Packing(p.positions, p.orientations, p.box_length, shape="superball", p=1.5,
+                       semi_axis=p.semi_axis)
+    assert q.shape == p.shape and q.phi == p.phi
+    with pytest.raises(TypeError, match=r"unexpected keyword argument 'pp'; did you mean p\?"):
+        sbpack.Packing(p.positions, p.orientations, p.box_length, pp=1.5, semi_axis=p.semi_axis)
+    with pytest.raises(TypeError, match="missing the superball's keyword argument 'p'"):
+        sbpack.Packing(p.positions, p.orientations, p.box_length, semi_axis=p.semi_axis)
+    with pytest.raises(ValueError, match=r"'arrays': unknown shape family 'cube' \(known: "
+                                         r"superball\)"):
+        sbpack.Packing(p.positions, p.orientations, p.box_length, shape="cube", a=1.0,
+                       semi_axis=p.semi_axis)
+
+
 def test_a_mixture_from_arrays_keeps_its_sizes_in_the_file_and_in_text(tmp_path):
     """docs/mixtures.md: semi_axes by keyword, phi the sum of the particles' own volumes, the
     sizes kept by the packing file and by the text format's eighth column."""
