@@ -177,6 +177,20 @@ def pm(pair, scale=1.0, digits=3, n=2):
     return f"{mean * scale:.{digits}f} +- {sd * scale:.{digits}f}"
 
 
+def members_with(results, group, name):
+    """How many of the ensemble's packings have the analysis `name` (one skipped on a packing,
+    e.g. hyperuniformity where the box is too small for alpha's window, writes none)."""
+    return sum(name in results["files"][str(m)] for m in group["members"][:])
+
+
+def over_members(text, k, n):
+    """`text` (a cell of the ensemble's value), saying over how many of the n packings where
+    only k have it: "0.10 (1 of 5)"."""
+    if k == n or text == "-":
+        return text
+    return f"{text.replace(' (one packing)', '')} ({k} of {n})"
+
+
 def pooled(group, key, scale, digits):
     """The ensemble's one fit through every member's wave vectors: value +- its standard error."""
     h = group["hyperuniformity"].attrs if "hyperuniformity" in group else {}
@@ -191,14 +205,17 @@ def transport_row(results, group, paper):
     ref = paper.get(round(p, 4))
     n = int(group.attrs["n_files"])
     width = width_over_axis(results, group)
+    k = members_with(results, group, "spreadability")
+    kh = members_with(results, group, "hyperuniformity")
     return (f"| {p:g} | {width:.4f} | {pm(attr(group, 'pore_size', 'mean_w'), 1e2, 3, n)} | "
             f"{pm(attr(group, 'transport', 'permeability_w2'), 1e4, 3, n)} | "
             f"{pm(attr(group, 'transport', 'mean_survival_time_w2'), 1e3, 3, n)} | "
             f"{pm(attr(group, 'transport', 'principal_relaxation_time_w2'), 1e3, 3, n)} | "
-            f"{pm(attr(group, 'spreadability', 'alpha'), 1, 2, n)} | {paper_value(ref, 'alpha')} | "
-            f"{pooled(group, 'a0', 1e4, 1)} | {paper_value(ref, 'a0_e-4')} | "
-            f"{pooled(group, 'a1', 1e3, 2)} | {paper_value(ref, 'a1_e-3')} | "
-            f"{pooled(group, 'H', 1e3, 1)} | {paper_value(ref, 'H_e-3')} |")
+            f"{over_members(pm(attr(group, 'spreadability', 'alpha'), 1, 2, k), k, n)} | "
+            f"{paper_value(ref, 'alpha')} | "
+            f"{over_members(pooled(group, 'a0', 1e4, 1), kh, n)} | {paper_value(ref, 'a0_e-4')} | "
+            f"{over_members(pooled(group, 'a1', 1e3, 2), kh, n)} | {paper_value(ref, 'a1_e-3')} | "
+            f"{over_members(pooled(group, 'H', 1e3, 1), kh, n)} | {paper_value(ref, 'H_e-3')} |")
 
 
 def ordered_count(results, group):
@@ -280,7 +297,9 @@ TRANSPORT_NOTE = (
     "17-20, diffusion-controlled: T1 D_diff / w^2 = <delta^2> / w^2). alpha from the spreadability "
     "(mean +- sd of the packings' alphas); a0, a1, H from one fit of chi_V = a0 + a1 Q^alpha "
     "through every packing's wave vectors at the ensemble's pooled alpha, +- its least-squares "
-    "standard error (docs/hyperuniformity.md, \"Ensembles\"). The paper prints no table of "
+    "standard error (docs/hyperuniformity.md, \"Ensembles\"); (k of n): over the k packings "
+    "the analysis ran on (hyperuniformity skips a packing whose box is too small for alpha's "
+    "window). The paper prints no table of "
     "w, pore sizes or transport (its figures only).")
 
 

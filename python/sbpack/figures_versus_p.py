@@ -92,9 +92,13 @@ def second_markers(ax, second, name, ps):
 
 
 def points(series, group, name):
-    """N -> [(p, mean, std, series)] sorted by p, over the series that have group/name."""
+    """N -> [(p, mean, std, series)] sorted by p, over the series that have group/name; an
+    ensemble of which one member alone has the group (an analysis skipped on the others) is no
+    mean and std, and is left out."""
     out = {}
     for s in series:
+        if s.averaged and group is not None and len(s.members(group)) < 2:
+            continue
         value = scalar(s, group, name)
         if value is not None:
             out.setdefault(s.n, []).append((s.p, value[0], value[1], s))
