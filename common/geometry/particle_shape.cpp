@@ -27,6 +27,10 @@ const ShapeFamily* findShapeFamily(std::string_view name) {
     return nullptr;
 }
 
+const ShapeFamily* writtenShapeFamily(const std::optional<std::string>& written) {
+    return findShapeFamily(written ? std::string_view(*written) : kFamilies[0].name);
+}
+
 std::string shapeFamilyNames() {
     std::string names;
     for (const ShapeFamily& family : kFamilies)

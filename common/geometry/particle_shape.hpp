@@ -78,6 +78,11 @@ struct ShapeSpec {
     /// unknown family (fromValues).
     template <class Value>
     static ShapeSpec read(const std::optional<std::string>& written, Value&& value);
+    /// read() where value(name) is a std::optional<double>: nothing where a parameter is
+    /// missing (a format whose shape may come from elsewhere).
+    template <class Value>
+    static std::optional<ShapeSpec> readIfGiven(const std::optional<std::string>& written,
+                                                Value&& value);
     /// What makes the parameters no shape of the family (e.g. "p = 0.4 (must be finite and
     /// >= 0.5)"), or nothing.
     std::optional<std::string> problem() const;
@@ -95,6 +100,8 @@ struct ShapeSpec {
 std::span<const ShapeFamily> shapeFamilies();
 /// The family called `name`, or nullptr.
 const ShapeFamily* findShapeFamily(std::string_view name);
+/// The family a file names (kShapeFamilyKey; nothing: the superball), or nullptr.
+const ShapeFamily* writtenShapeFamily(const std::optional<std::string>& written);
 /// The families' names, for messages: "superball".
 std::string shapeFamilyNames();
 
@@ -113,13 +120,21 @@ std::vector<ShapeField> shapeFields();
 
 template <class Value>
 ShapeSpec ShapeSpec::read(const std::optional<std::string>& written, Value&& value) {
-    const std::string_view name =
-        written ? std::string_view(*written) : shapeFamilies().front().name;
     std::vector<double> values;
-    if (const ShapeFamily* family = findShapeFamily(name))
+    const ShapeFamily* family = writtenShapeFamily(written);
+    if (family)
         for (const ShapeParameter& parameter : family->parameters)
             values.push_back(value(parameter.name));
-    return fromValues(name, values);
+    return fromValues(family ? family->name : std::string_view(*written), values);
+}
+
+template <class Value>
+std::optional<ShapeSpec> ShapeSpec::readIfGiven(const std::optional<std::string>& written,
+                                                Value&& value) {
+    if (const ShapeFamily* family = writtenShapeFamily(written))
+        for (const ShapeParameter& parameter : family->parameters)
+            if (!value(parameter.name)) return std::nullopt;
+    return read(written, [&](std::string_view name) { return *value(name); });
 }
 
 /// A body of a ShapeSpec at semi-axis R (the largest half-width of its bounding box).

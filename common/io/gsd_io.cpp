@@ -238,15 +238,10 @@ std::optional<ShapeSpec> loggedShape(FrameReader& frame) {
             type.resize(cut);
         if (findShapeFamily(type)) family = type;
     }
-    const ShapeFamily& known =
-        *findShapeFamily(family ? std::string_view(*family) : shapeFamilies().front().name);
-    std::vector<double> values;
-    for (const ShapeParameter& parameter : known.parameters) {
-        const auto value = frame.numbers(std::string(kLog) + std::string(parameter.name), 1, 1);
-        if (!value) return std::nullopt;
-        values.push_back(value->front());
-    }
-    return ShapeSpec::fromValues(known.name, values);
+    return ShapeSpec::readIfGiven(family, [&](std::string_view name) {
+        const auto value = frame.numbers(std::string(kLog) + std::string(name), 1, 1);
+        return value ? std::optional(value->front()) : std::nullopt;
+    });
 }
 
 /// The shape and the semi-axis: sbpack's scalars, else one Sphere shape shared by every type.

@@ -90,8 +90,7 @@ class TextHeader {
     /// Fails naming the first key missing: the shape's parameters, semi_axis, box_length and
     /// n_particles.
     void requireComplete(LineReader& reader) const {
-        const ShapeFamily& family =
-            *findShapeFamily(family_ ? std::string_view(*family_) : shapeFamilies().front().name);
+        const ShapeFamily& family = *writtenShapeFamily(family_);
         for (const ShapeParameter& parameter : family.parameters)
             if (!values_.at(std::string(parameter.name)))
                 reader.fail("missing header key '" + std::string(parameter.name) +
@@ -312,19 +311,11 @@ template <class Key, class Number>
 std::optional<ShapeSpec> xyzHeaderShape(const Key& key, const Number& number,
                                         const LineReader& reader) {
     const std::optional<std::string> family = key(kShapeFamilyKey);
-    const ShapeFamily* known =
-        findShapeFamily(family ? std::string_view(*family) : shapeFamilies().front().name);
-    if (!known)
+    if (!writtenShapeFamily(family))
         reader.failAt(2, fmt::format("{}={} is no shape family sbpack knows ({})", kShapeFamilyKey,
                                      *family, shapeFamilyNames()));
-    for (const ShapeParameter& parameter : known->parameters)
-        if (!number(std::string(parameter.name))) return std::nullopt;
-    try {
-        return ShapeSpec::read(family,
-                               [&](std::string_view name) { return *number(std::string(name)); });
-    } catch (const std::invalid_argument& e) {
-        reader.failAt(2, e.what());
-    }
+    return ShapeSpec::readIfGiven(family,
+                                  [&](std::string_view name) { return number(std::string(name)); });
 }
 
 } // namespace
