@@ -52,7 +52,8 @@ inline constexpr std::array<schema::Column<R>, 13> kTypeColumns{{
     {{"axis_fraction", A, F, "1",
       "fraction of the contact ends (non-rattlers) whose body-frame normal is nearest a <100> "
       "body axis: the cube's face (p > 1), the octahedron's vertex (p < 1) "
-      "(docs/contact-types.md; NaN if not resolved or if no contact joins two non-rattlers)",
+      "(docs/contact-types.md; NaN if not resolved, if no contact joins two non-rattlers, or for "
+      "a shape without the cube's symmetry)",
       Mean},
      typeFraction<kRegion, 0>},
     {{"edge_fraction", A, F, "1", "the same, nearest a <110> direction: an edge", Mean},

@@ -30,7 +30,7 @@ struct TransportParameters {
 /// Inputs, parameters and the estimates. Lengths in the packing's units, times in length^2 / D.
 struct TransportResult {
     TransportParameters parameters;
-    double p = 0.0;
+    std::optional<double> p;   ///< the superball's exponent; nothing for another shape
     double phi = 0.0;          ///< packing fraction N v1 / L^3 (solid fraction)
     double meanWidth = 0.0;    ///< w
     double meanPoreSize = 0.0; ///< <delta> of the pore-size result used
@@ -68,11 +68,13 @@ class Transport {
     /// Throws std::invalid_argument unless the diffusion coefficient is finite and positive.
     explicit Transport(TransportParameters parameters);
 
-    /// From a pore-size result (any method) and the packing's p and phi. Throws
-    /// std::invalid_argument for p < 0.5 or phi outside (0, 1); where the interpolated zeta_2
-    /// leaves (0, 1] (the interpolation was fitted for 0.85 <= p <= 1.5) zeta_2, F and k are
-    /// absent and permeabilityOmitted says why.
-    TransportResult compute(const PoreSizeDistributionResult& pores, double p, double phi) const;
+    /// From a pore-size result (any method), the superball's exponent p (ShapeSpec::
+    /// superballExponent: nothing for another shape) and phi. Throws std::invalid_argument for
+    /// p < 0.5 or phi outside (0, 1). Where there is no p (the interpolation is a fit over
+    /// superballs) or the interpolated zeta_2 leaves (0, 1] (it was fitted for 0.85 <= p <= 1.5),
+    /// zeta_2, F and k are absent and permeabilityOmitted says why.
+    TransportResult compute(const PoreSizeDistributionResult& pores, std::optional<double> p,
+                            double phi) const;
 
     const TransportParameters& parameters() const { return parameters_; }
 

@@ -12,7 +12,7 @@ using R = TransportResult;
 inline constexpr schema::FieldTable kTable{std::array<schema::Column<R>, 10>{{
     {{"zeta2", A, F, "1",
       "three-point parameter zeta_2 (Sec. V A interpolation); absent, with F and k, where it "
-      "leaves (0, 1] (fitted for 0.85 <= p <= 1.5)",
+      "leaves (0, 1] (fitted for 0.85 <= p <= 1.5) or the particles are not superballs",
       No, true},
      member<&R::zeta2>},
     {{"formation_factor", A, F, "1", "formation factor F (Eq. 18)", No, true},

@@ -3,10 +3,11 @@
 // a family and its parameters (ShapeSpec), and a body of that shape at a size (ParticleShape),
 // whose geometry (volume, mean width, radii, the pair solvers' ConvexBody, the inside test and
 // the nearest point) every analysis may use whatever the family. Code that holds for superballs
-// only (the form factor, the GPU's inside test, the transport fit) asks for the superball
-// (ParticleShape::superball); sbgen's superball-only code (its rates, generator/shapes/superball)
-// reads ShapeSpec::p. The superball is the one family so far; a second one adds its body here,
-// its branch to each method, and a refusal to superball().
+// only asks for the superball (ParticleShape::superball: the form factor, the GPU's inside test)
+// or its exponent, nothing for another family (ShapeSpec::superballExponent: the transport fit
+// in p, which then leaves k out); sbgen's superball-only code (its rates,
+// generator/shapes/superball) reads ShapeSpec::p. The superball is the one family so far; a second
+// one adds its body here, its branch to each method, and a refusal to superball().
 
 #include "geometry/superball.hpp"
 #include "geometry/superball_inside.hpp"
@@ -64,6 +65,12 @@ struct ShapeSpec {
     static ShapeSpec fromValues(std::string_view name, std::span<const double> values);
     /// Spheres: superballs of p = 1 (sbgen's exact sphere engine; orientations carry nothing).
     bool isSphere() const { return family == Family::superball && p == 1.0; }
+    /// The superball's exponent, nothing for another family: what code that holds for superballs
+    /// only asks (the transport fit in p), so that a new family leaves that code as it is.
+    std::optional<double> superballExponent() const {
+        if (family != Family::superball) return std::nullopt;
+        return p;
+    }
     /// The family's name and parameters.
     const ShapeFamily& info() const;
     /// The parameters' values, in the order of info().parameters.
@@ -155,6 +162,10 @@ class ParticleShape {
     /// Whether the body's three axes are equivalent under its symmetry (the cube's group), so that
     /// their cubatic order P4 (common/order) is defined: every superball but the sphere.
     bool hasCubicAxes() const { return !superball_.isSphere(); }
+    /// Whether the body is symmetric under the cube's group (the sphere too), so that its
+    /// contacts' regions <100>, <110>, <111> name equivalent places (docs/contact-types.md): every
+    /// superball.
+    bool hasCubicSymmetry() const { return true; }
     /// Whether the bodies stack face to face into columns that can span a small periodic box
     /// (bench/RESULTS.md, "Near-cubes after the jam check"): superballs from kNearCubeExponent.
     bool stacksInColumns() const { return superball_.p() >= kNearCubeExponent; }

@@ -1,3 +1,4 @@
+#include "geometry/particle_shape.hpp"
 #include "transport/transport.hpp"
 
 #include <gtest/gtest.h>
@@ -74,6 +75,12 @@ TEST(Transport, RejectsBadInputAndLeavesOutKWhereTheInterpolationEnds) {
     const TransportResult fitted = transport.compute(pores, 1.5, 0.7);
     EXPECT_TRUE(fitted.permeability.has_value());
     EXPECT_TRUE(fitted.permeabilityOmitted.empty());
+    // Another shape (ShapeSpec::superballExponent nothing): the fit in p does not apply.
+    const TransportResult other = transport.compute(pores, std::nullopt, 0.7);
+    EXPECT_FALSE(other.zeta2 || other.formationFactor || other.permeability);
+    EXPECT_NE(other.permeabilityOmitted.find("not superballs"), std::string::npos);
+    EXPECT_NEAR(other.principalRelaxationTime, 0.01, 1e-15);
+    EXPECT_EQ(ShapeSpec::superball(1.5).superballExponent(), 1.5);
 }
 
 } // namespace

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -112,6 +114,25 @@ TEST(ParticleShape, AxesAreCubicButTheSpheresAndColumnsAreNearCubes) {
     EXPECT_FALSE(shape(2.99).stacksInColumns());
     EXPECT_TRUE(shape(kNearCubeExponent).stacksInColumns());
     EXPECT_TRUE(shape(10.0).stacksInColumns());
+}
+
+// The contact types' question (docs/contact-types.md): a body that says it has the cube's
+// symmetry keeps its gauge under all 48 signed permutations of the body axes.
+TEST(ParticleShape, ABodyWithCubicSymmetryKeepsItsGaugeUnderTheCubesGroup) {
+    const Vector3d x(0.31, -0.12, 0.54);
+    for (const double p : {0.5, 0.8, 1.0, 1.5, 10.0}) {
+        const ParticleShape body(ShapeSpec::superball(p), 0.7);
+        ASSERT_TRUE(body.hasCubicSymmetry()) << p;
+        std::array<int, 3> axes{0, 1, 2};
+        do {
+            for (int signs = 0; signs < 8; ++signs) {
+                Vector3d y;
+                for (int k = 0; k < 3; ++k)
+                    y[k] = ((signs >> k) & 1 ? -1.0 : 1.0) * x[axes[k]];
+                EXPECT_NEAR(body.gauge(y), body.gauge(x), 1e-14) << p;
+            }
+        } while (std::next_permutation(axes.begin(), axes.end()));
+    }
 }
 
 // The analyses solve pairs of ParticleShape, sbgen of Superball: the one pair solver and the one

@@ -12,7 +12,11 @@ bool runContacts(FileContext& context, schema::Record& record) {
     const Stopwatch clock;
     ContactFigures c{ContactNetwork(context.settings().contacts).compute(context.packing()),
                      resolveContacts(context.packing(), context.settings().contacts.tolerance)};
-    c.types = contactTypeDistribution(typedContacts(context.packing(), c.network));
+    // The regions are the cube's symmetry directions (docs/contact-types.md): NaN for a shape
+    // without that symmetry, as where no contact joins two non-rattlers.
+    c.types = contactTypeDistribution(context.packing().shape().hasCubicSymmetry()
+                                          ? typedContacts(context.packing(), c.network)
+                                          : std::vector<TypedContact>());
     if (context.packing().contactForces)
         c.forces = forceDistribution(*context.packing().contactForces);
     c.seconds = clock.seconds();

@@ -10,7 +10,7 @@ bool runTransport(FileContext& context, schema::Record& record) {
     const Packing& packing = context.packing();
     const TransportResult t =
         Transport({}).compute(context.kept<PoreSizeDistributionResult>(Analysis::PoreSizes),
-                              packing.superball().p(), packing.packingFraction());
+                              packing.shapeSpec.superballExponent(), packing.packingFraction());
     // Outside the fitted range of the zeta_2 interpolation: tau and T1 alone, and a warning.
     if (!t.permeability)
         context.progress().warn("transport: k left out (tau and T1 written): " +
