@@ -12,7 +12,8 @@ namespace {
 constexpr ShapeParameter kSuperballParameters[] = {
     {"p", "1",
      "superball exponent (paper Eq. 1), >= 0.5: 1 the sphere, 0.5 the octahedron, "
-     "infinity the cube"}};
+     "infinity the cube",
+     1.0}};
 constexpr ShapeFamily kFamilies[] = {{"superball", kSuperballParameters}};
 
 } // namespace

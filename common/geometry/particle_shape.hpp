@@ -32,6 +32,8 @@ struct ShapeParameter {
     /// "1" dimensionless, "length" (the packing's, as the semi-axis).
     std::string_view units;
     std::string_view description;
+    /// The value a program takes where none is given (sbgen's option, Python's keyword).
+    double fallback = 0.0;
 };
 
 /// A shape family: its name and its parameters, in the order ShapeSpec::values gives them.

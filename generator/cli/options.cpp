@@ -4,9 +4,12 @@
 #include "cli/option_values.hpp"
 #include "cli/repeated_options.hpp"
 #include "io/atomic_file.hpp"
+#include "shapes/registry.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
 #include <map>
 #include <memory>
 #include <set>
@@ -64,6 +67,7 @@ class GeneratorCommandLine {
         app_.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
         app_.add_flag("--version", options_.version, "print the version and exit");
         app_.add_flag("--quiet", options_.quiet, "no progress lines on stderr");
+        addShapeOptions();
         addProtocolOptions();
         addFileOptions();
     }
@@ -76,12 +80,13 @@ class GeneratorCommandLine {
     /// A protocol option, its value named `placeholder` in the help: `set` parses it; noted, since
     /// --resume refuses them.
     template <class Set>
-    void protocol(const char* name, const char* placeholder, Set set, const char* help) {
+    void protocol(const std::string& name, const std::string& placeholder, Set set,
+                  const std::string& help) {
         app_.add_option_function<std::string>(
                 name,
                 [this, name, set](const std::string& v) {
                     protocolOptions_.insert(name);
-                    set(name, v);
+                    set(name.c_str(), v);
                 },
                 help)
             ->type_name(placeholder);
@@ -98,20 +103,66 @@ class GeneratorCommandLine {
                 help)
             ->type_name(placeholder);
     }
+    void addShapeOptions();
     void addProtocolOptions();
     void addFileOptions();
 
     CLI::App app_{kDescription, "sbgen"};
     GeneratorOptions options_;
     std::set<std::string> protocolOptions_;
+    std::optional<std::string> shapeFamily_;                ///< --shape
+    std::map<std::string, double, std::less<>> shapeGiven_; ///< the shape parameters given, by name
+
+  public:
+    /// The shape the options give: --shape's family (default the superball), each of its
+    /// parameters as given (--p) or its fallback; a parameter of another family is refused.
+    ShapeSpec shape() const;
 };
+
+void GeneratorCommandLine::addShapeOptions() {
+    // From the family table (common/geometry/particle_shape) and the registry's help
+    // (generator/shapes/registry): a new family adds no option here.
+    protocol(
+        "--shape", "FAMILY", [this](auto, const std::string& v) { shapeFamily_ = v; },
+        "the particles' shape family (default superball; known: " + shapeFamilyNames() +
+            "); each of\nits parameters is the option of its name");
+    std::set<std::string_view> defined;
+    for (const ShapeFamily& family : shapeFamilies())
+        for (const ShapeParameter& parameter : family.parameters) {
+            if (!defined.insert(parameter.name).second) continue;
+            std::string placeholder(parameter.name);
+            for (char& c : placeholder)
+                c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+            protocol(
+                "--" + std::string(parameter.name), placeholder,
+                [this, key = std::string(parameter.name)](auto n, const std::string& v) {
+                    shapeGiven_[key] = parseNumber(n, v);
+                },
+                shapeOptionHelp(family.name, parameter));
+        }
+}
+
+ShapeSpec GeneratorCommandLine::shape() const {
+    const ShapeFamily* family = writtenShapeFamily(shapeFamily_);
+    if (family == nullptr)
+        throw std::invalid_argument("option --shape: unknown shape family '" + *shapeFamily_ +
+                                    "' (the families: " + shapeFamilyNames() + ")");
+    const auto parameterOf = [&](std::string_view name) {
+        const auto it = std::ranges::find(family->parameters, name, &ShapeParameter::name);
+        return it == family->parameters.end() ? nullptr : &*it;
+    };
+    for (const auto& [name, value] : shapeGiven_)
+        if (parameterOf(name) == nullptr)
+            throw std::invalid_argument("option --" + name + ": not a parameter of the " +
+                                        std::string(family->name) + " shape");
+    return ShapeSpec::read(std::string(family->name), [&](std::string_view name) {
+        const auto given = shapeGiven_.find(name);
+        return given != shapeGiven_.end() ? given->second : parameterOf(name)->fallback;
+    });
+}
 
 void GeneratorCommandLine::addProtocolOptions() {
     ProtocolParameters& p = options_.protocol;
-    protocol(
-        "--p", "P", [&p](auto n, auto v) { p.shape = ShapeSpec::superball(parseNumber(n, v)); },
-        "superball exponent in (0.5, 1000] (default 1: spheres, exact fast path;\n"
-        "otherwise rotating superballs); practical up to 10, above it a warning");
     protocol(
         "--n", "N",
         [&p](auto n, auto v) {
@@ -254,7 +305,6 @@ std::string generatorUsage() {
 std::invalid_argument optionError(const ProtocolParameterError& e) {
     static const std::map<std::string, std::string> kOption = {
         {"n_particles", "--n"},
-        {"p", "--p"},
         {"phi_init", "--phi-init"},
         {"gamma_fast", "--gamma-fast"},
         {"gamma_slow", "--gamma-slow"},
@@ -270,8 +320,14 @@ std::invalid_argument optionError(const ProtocolParameterError& e) {
         {"large_fraction", "--large-fraction"},
         {"polydispersity", "--polydispersity"}};
     const auto it = kOption.find(e.parameter());
-    return std::invalid_argument("option " + (it == kOption.end() ? e.parameter() : it->second) +
-                                 ": " + e.problem());
+    const bool shapeParameter = std::ranges::any_of(shapeFamilies(), [&](const ShapeFamily& f) {
+        return std::ranges::find(f.parameters, e.parameter(), &ShapeParameter::name) !=
+               f.parameters.end();
+    });
+    const std::string option = it != kOption.end() ? it->second
+                               : shapeParameter    ? "--" + e.parameter()
+                                                   : e.parameter();
+    return std::invalid_argument("option " + option + ": " + e.problem());
 }
 
 GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args) {
@@ -297,6 +353,7 @@ GeneratorOptions parseGeneratorOptions(const std::vector<std::string>& args) {
     }
     refuseRepeatedOptions(commandLine.app());
     GeneratorOptions& o = commandLine.options();
+    if (!o.version && !o.resume) o.protocol.shape = commandLine.shape();
     if (!o.version) finish(o, commandLine.protocolOptions());
     return o;
 }

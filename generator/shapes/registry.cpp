@@ -61,6 +61,11 @@ MeasuredProtocol measuredProtocol(const ShapeSpec& shape) {
     return superballProtocol(shape.p);
 }
 
+std::string shapeOptionHelp(std::string_view /*family*/, const ShapeParameter& /*parameter*/) {
+    return "superball exponent in (0.5, 1000] (default 1: spheres, exact fast path;\n"
+           "otherwise rotating superballs); practical up to 10, above it a warning";
+}
+
 bool rotating(const ShapeSpec& shape) {
     return !shape.isSphere();
 }

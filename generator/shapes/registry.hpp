@@ -2,8 +2,9 @@
 // The shapes sbgen runs, registered once (docs/architecture.md, "What a new shape needs"): the
 // shape variant and its engines, the factory that picks a shape for a packing's exponent, and
 // the shapes' pair records in a checkpoint, and what sbgen has measured of each. A new shape is
-// one alternative of AnyShape, one branch of shapeFor and one of measuredProtocol; the protocol,
-// the random start and the checkpoint table name no shape.
+// one alternative of AnyShape, one branch of shapeFor, one of measuredProtocol and one of
+// shapeOptionHelp; the protocol, the random start, the checkpoint table and sbgen's options name
+// no shape.
 
 #include "engine/event_driven_md.hpp"
 #include "shapes/measured_protocol.hpp"
@@ -31,6 +32,10 @@ bool rotating(const ShapeSpec& shape);
 
 /// What sbgen has measured of `shape`: its default rates, cost and range.
 MeasuredProtocol measuredProtocol(const ShapeSpec& shape);
+
+/// sbgen's help for the option of `parameter` of the shape family `family` (--p): its range,
+/// default and what the engine makes of it.
+std::string shapeOptionHelp(std::string_view family, const ShapeParameter& parameter);
 
 /// The engine's shape for `shape`: the exact sphere for superballs of p = 1, the rotating
 /// superball of its p otherwise.

@@ -3,8 +3,8 @@
 The C++ core (the libraries of sbgen and sbanalyze) is the extension ``sbpack._sbpack``; this
 package adds the analyses as objects, a reader of results files and the figures (``sbpack.plot``).
 """
-from ._arguments import generate, name_argument_errors
-from ._sbpack import Packing, __version__, expected_collisions, shape_families
+from ._arguments import expected_collisions, generate, name_argument_errors
+from ._sbpack import Packing, __version__, shape_families
 from .analyses import analyze
 from .analysis_base import Analysis, Result
 from .analysis_classes import *  # noqa: F401,F403 (Contacts, ContactsResult, ...: __all__)

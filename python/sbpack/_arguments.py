@@ -49,14 +49,33 @@ def check_keywords(function, given, known):
             raise TypeError(f"{function}() got an unexpected keyword argument {name!r}{hint}")
 
 
-def generate(**options):
-    """Jams a packing as sbgen does with the same options and defaults (docs/python.md)."""
-    check_keywords("generate", options, _GENERATE_KEYWORDS)
-    return _GENERATE(**options)
+def _shape_keywords(shape):
+    """The parameters' names of the family `shape` (None: the superball; none for an unknown
+    one, which the extension refuses): the extension takes them as one dict, so that a new
+    family adds no keyword here."""
+    families = _sbpack.shape_families()
+    return families.get(shape if shape is not None else next(iter(families)), [])
 
 
-_GENERATE_KEYWORDS = _keywords(_GENERATE)
-generate.__doc__ = _GENERATE.__doc__
+def _by_shape(function, name):
+    """`function` of the extension with the shape's parameters by name (p=1.5; shape=NAME for
+    another family) and its other keywords checked by check_keywords."""
+    known = [k for k in _keywords(function) if k != "parameters"]
+
+    def wrapped(*, shape=None, **options):
+        names = _shape_keywords(shape)
+        check_keywords(name, options, known + list(names))
+        parameters = {k: options.pop(k) for k in names if k in options}
+        return function(shape=shape, parameters=parameters, **options)
+    wrapped.__name__ = name
+    # pybind11's signature line, with the shape's keywords as they are given
+    wrapped.__doc__ = function.__doc__.replace("parameters: dict = {}",
+                                               "**shape_parameters (the superball's p: float = 1.0)")
+    return _named(wrapped, name)
+
+
+generate = _by_shape(_GENERATE, "generate")
+expected_collisions = _by_shape(_sbpack.expected_collisions, "expected_collisions")
 
 
 def name_argument_errors():

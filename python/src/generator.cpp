@@ -8,12 +8,12 @@
 
 #include <pybind11/stl.h>
 
-#include <optional>
-
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace sbpack::python {
@@ -129,13 +129,31 @@ void checkProgress(const py::object& progress, double interval) {
             ": must be a finite number of seconds >= 0 (0: after every window)");
 }
 
+/// The shape of family `family` (None: the superball), each of its parameters as given in
+/// `given` (python/sbpack/_arguments.py passes the family's keywords there: p=1.5) or its
+/// fallback, as sbgen's options (--p).
+ShapeSpec generatedShape(const py::object& family, const py::dict& given) {
+    const auto written =
+        family.is_none() ? std::nullopt : std::optional(family.cast<std::string>());
+    const ShapeFamily* known = writtenShapeFamily(written);
+    if (known == nullptr)
+        throw py::value_error("shape = '" + *written +
+                              "': unknown shape family (the families: " + shapeFamilyNames() + ")");
+    return ShapeSpec::read(written, [&](std::string_view name) {
+        const py::str key(std::string(name).c_str());
+        if (given.contains(key)) return given[key].cast<double>();
+        return std::ranges::find(known->parameters, name, &ShapeParameter::name)->fallback;
+    });
+}
+
 /// The parameters that set the expected cost (expected_collisions's keywords). Options left None
 /// keep ProtocolParameters' defaults, which are sbgen's.
-ProtocolParameters costParameters(const py::int_& n, double p, Option gammaSlow, Option speed,
+ProtocolParameters costParameters(const py::int_& n, const py::object& shape,
+                                  const py::dict& shapeParameters, Option gammaSlow, Option speed,
                                   Option pressureSwitch, Option pressureFinal) {
     ProtocolParameters parameters;
     parameters.particles = particleCount(n);
-    parameters.shape = ShapeSpec::superball(p);
+    parameters.shape = generatedShape(shape, shapeParameters);
     if (gammaSlow) parameters.gammaSlow = gammaSlow;
     parameters.speed = speed.value_or(parameters.speed);
     parameters.pressureSwitch = pressureSwitch.value_or(parameters.pressureSwitch);
@@ -148,14 +166,15 @@ ProtocolParameters costParameters(const py::int_& n, double p, Option gammaSlow,
 void registerGenerator(py::module_& m) {
     m.def(
         "generate",
-        [](const py::int_& n, double p, std::uint64_t seed, Option phiInit, Option gammaFast,
-           Option gammaSlow, Option speed, Option pressureSwitch, Option pressureFinal,
-           Option window, Option costLimit, Option sizeRatio, Option largeFraction,
-           Option polydispersity, const py::object& progress, double progressInterval) {
+        [](const py::int_& n, const py::object& shape, const py::dict& shapeParameters,
+           std::uint64_t seed, Option phiInit, Option gammaFast, Option gammaSlow, Option speed,
+           Option pressureSwitch, Option pressureFinal, Option window, Option costLimit,
+           Option sizeRatio, Option largeFraction, Option polydispersity,
+           const py::object& progress, double progressInterval) {
             checkProgress(progress, progressInterval);
             // Options left None keep ProtocolParameters' defaults, which are sbgen's.
-            ProtocolParameters parameters =
-                costParameters(n, p, gammaSlow, speed, pressureSwitch, pressureFinal);
+            ProtocolParameters parameters = costParameters(n, shape, shapeParameters, gammaSlow,
+                                                           speed, pressureSwitch, pressureFinal);
             parameters.seed = seed;
             parameters.sizeRatio = sizeRatio.value_or(parameters.sizeRatio); // docs/mixtures.md
             parameters.largeFraction = largeFraction.value_or(parameters.largeFraction);
@@ -166,28 +185,31 @@ void registerGenerator(py::module_& m) {
             parameters.costLimit = costLimit.value_or(parameters.costLimit);
             return generate(parameters, progress, progressInterval);
         },
-        py::kw_only(), py::arg("n") = 1000, py::arg("p") = 1.0, py::arg("seed") = 1,
-        py::arg("phi_init") = py::none(), py::arg("gamma_fast") = py::none(),
-        py::arg("gamma_slow") = py::none(), py::arg("speed") = py::none(),
-        py::arg("pressure_switch") = py::none(), py::arg("pressure_final") = py::none(),
-        py::arg("window") = py::none(), py::arg("cost_limit") = py::none(),
-        py::arg("size_ratio") = py::none(), py::arg("large_fraction") = py::none(),
-        py::arg("polydispersity") = py::none(), py::arg("progress") = py::none(),
-        py::arg("progress_interval") = 2.0,
+        py::kw_only(), py::arg("n") = 1000, py::arg("shape") = py::none(),
+        py::arg("parameters") = py::dict(), py::arg("seed") = 1, py::arg("phi_init") = py::none(),
+        py::arg("gamma_fast") = py::none(), py::arg("gamma_slow") = py::none(),
+        py::arg("speed") = py::none(), py::arg("pressure_switch") = py::none(),
+        py::arg("pressure_final") = py::none(), py::arg("window") = py::none(),
+        py::arg("cost_limit") = py::none(), py::arg("size_ratio") = py::none(),
+        py::arg("large_fraction") = py::none(), py::arg("polydispersity") = py::none(),
+        py::arg("progress") = py::none(), py::arg("progress_interval") = 2.0,
         "Jams a packing as sbgen does with the same options and defaults (docs/python.md); "
+        "the shape by its family (shape=None: the superball) and its parameters by name (p=1.5, "
+        "as sbgen's --p; default 1: spheres); "
         "size_ratio, large_fraction and polydispersity make a mixture as sbgen's --size-ratio, "
         "--large-fraction and --polydispersity (docs/mixtures.md); progress(status) every "
         "progress_interval seconds; Ctrl-C stops at the end of the running window");
     m.def(
         "expected_collisions",
-        [](const py::int_& n, double p, Option gammaSlow, Option speed, Option pressureSwitch,
-           Option pressureFinal) {
-            const ProtocolParameters parameters =
-                costParameters(n, p, gammaSlow, speed, pressureSwitch, pressureFinal);
+        [](const py::int_& n, const py::object& shape, const py::dict& shapeParameters,
+           Option gammaSlow, Option speed, Option pressureSwitch, Option pressureFinal) {
+            const ProtocolParameters parameters = costParameters(
+                n, shape, shapeParameters, gammaSlow, speed, pressureSwitch, pressureFinal);
             validateAsKeywords(parameters);
             return expectedCost(parameters).collisions;
         },
-        py::kw_only(), py::arg("n") = 1000, py::arg("p") = 1.0, py::arg("gamma_slow") = py::none(),
+        py::kw_only(), py::arg("n") = 1000, py::arg("shape") = py::none(),
+        py::arg("parameters") = py::dict(), py::arg("gamma_slow") = py::none(),
         py::arg("speed") = py::none(), py::arg("pressure_switch") = py::none(),
         py::arg("pressure_final") = py::none(),
         "The collisions sbgen expects of this protocol (docs/design.md §3, \"Expected cost\"; "

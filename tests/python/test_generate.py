@@ -118,3 +118,20 @@ def test_speed_scales_the_default_slow_rate():
     assert fast.provenance["gamma_slow"] == 1e-3
     with pytest.raises(ValueError, match="speed"):
         sbpack.generate(**options, speed=10, gamma_slow=1e-3)
+
+
+def test_the_shape_is_given_by_its_family_and_parameters():
+    """Issue 67: shape= and the family's parameters by name, as sbgen's --shape and --p; the same
+    run whether the superball is named or not, an unknown family or parameter refused."""
+    options = dict(n=20, seed=3, gamma_slow=1e-2, pressure_switch=1e5, pressure_final=1e6)
+    named = sbpack.generate(**options, shape="superball", p=1.5)
+    assert np.array_equal(named.positions, sbpack.generate(**options, p=1.5).positions)
+    assert named.shape == {"shape": "superball", "p": 1.5}
+    assert sbpack.expected_collisions(n=1000, shape="superball", p=1.5) == \
+        sbpack.expected_collisions(n=1000, p=1.5)
+    with pytest.raises(ValueError, match=r"shape = 'cube': unknown shape family \(the families: "
+                                         r"superball\)"):
+        sbpack.generate(**options, shape="cube")
+    with pytest.raises(TypeError, match=r"^generate\(\) got an unexpected keyword argument 'pp'"
+                                        r"; did you mean p\?$"):
+        sbpack.generate(**options, pp=1.5)
