@@ -50,11 +50,10 @@ def check_keywords(function, given, known):
 
 
 def _shape_keywords(shape):
-    """The parameters' names of the family `shape` (None: the superball; none for an unknown
-    one, which the extension refuses): the extension takes them as one dict, so that a new
-    family adds no keyword here."""
+    """The parameters' names of the known family `shape` (None: the superball): the extension
+    takes them as one dict, so that a new family adds no keyword here."""
     families = _sbpack.shape_families()
-    return families.get(shape if shape is not None else next(iter(families)), [])
+    return families[shape if shape is not None else next(iter(families))]
 
 
 def _by_shape(function, name):
@@ -63,14 +62,17 @@ def _by_shape(function, name):
     known = [k for k in _keywords(function) if k != "parameters"]
 
     def wrapped(*, shape=None, **options):
+        if shape is not None and not isinstance(shape, str):
+            raise TypeError(f"{name}() shape must be a str or None, not {type(shape).__name__}")
+        if shape is not None and shape not in _sbpack.shape_families():
+            return function(shape=shape)  # the extension's ValueError names the families
         names = _shape_keywords(shape)
         check_keywords(name, options, known + list(names))
         parameters = {k: options.pop(k) for k in names if k in options}
         return function(shape=shape, parameters=parameters, **options)
     wrapped.__name__ = name
     # pybind11's signature line, with the shape's keywords as they are given
-    wrapped.__doc__ = function.__doc__.replace("parameters: dict = {}",
-                                               "**shape_parameters (the superball's p: float = 1.0)")
+    wrapped.__doc__ = function.__doc__.replace("parameters: dict = {}", "**shape_parameters")
     return _named(wrapped, name)
 
 

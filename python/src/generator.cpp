@@ -141,8 +141,13 @@ ShapeSpec generatedShape(const py::object& family, const py::dict& given) {
                               "': unknown shape family (the families: " + shapeFamilyNames() + ")");
     return ShapeSpec::read(written, [&](std::string_view name) {
         const py::str key(std::string(name).c_str());
-        if (given.contains(key)) return given[key].cast<double>();
-        return std::ranges::find(known->parameters, name, &ShapeParameter::name)->fallback;
+        if (!given.contains(key))
+            return std::ranges::find(known->parameters, name, &ShapeParameter::name)->fallback;
+        if (!py::isinstance<py::float_>(given[key]) && !py::isinstance<py::int_>(given[key]))
+            throw py::type_error(
+                std::string(name) + " must be a number, not " +
+                py::str(py::type::of(given[key]).attr("__name__")).cast<std::string>());
+        return given[key].cast<double>();
     });
 }
 

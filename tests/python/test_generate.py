@@ -131,7 +131,11 @@ def test_the_shape_is_given_by_its_family_and_parameters():
         sbpack.expected_collisions(n=1000, p=1.5)
     with pytest.raises(ValueError, match=r"shape = 'cube': unknown shape family \(the families: "
                                          r"superball\)"):
-        sbpack.generate(**options, shape="cube")
+        sbpack.generate(**options, shape="cube", p=2)
+    with pytest.raises(TypeError, match=r"^p must be a number, not str$"):
+        sbpack.generate(**options, p="1.5")
+    with pytest.raises(TypeError, match=r"shape must be a str or None, not list$"):
+        sbpack.generate(**options, shape=["superball"])
     with pytest.raises(TypeError, match=r"^generate\(\) got an unexpected keyword argument 'pp'"
                                         r"; did you mean p\?$"):
         sbpack.generate(**options, pp=1.5)
