@@ -337,7 +337,8 @@ void JammingProtocol::watchJam(std::uint64_t participants, double sustained) {
     if (check.chain) {
         status_.phase = Phase::Done;
         status_.jam = std::move(check);
-    } else if (stallCheck && check.jammed && sustained >= parameters_.pressureSwitch &&
+    } else if (stallCheck && check.jammed &&
+               StallWatch::raisable(sustained, parameters_.pressureSwitch) &&
                status_.stall.plateau(expectedDoubling())) {
         raiseGrowthRate(sustained);
     }
@@ -351,9 +352,10 @@ double JammingProtocol::expectedDoubling() const {
 void JammingProtocol::raiseGrowthRate(double sustained) {
     // A jammed network whose pressure no longer rises at this rate creeps: it makes room as fast
     // as the particles grow (bench/RESULTS.md, "Plateaus"). Twice the rate outruns the creep
-    // with the least change to the gaps the slow rate refines. Only past the switch pressure:
-    // below it (the pressure falls after the fast phase's overshoot) the packing still
-    // rearranges, and the check's tolerance (100 / P D) is loose.
+    // with the least change to the gaps the slow rate refines. Only where the rate no longer
+    // shapes the packing (StallWatch::raisable): below the switch pressure the pressure falls
+    // after the fast phase's overshoot while the packing still rearranges, and below 1e10 a
+    // creep is the slow rate's own climb, whose speed-up costs Z.
     status_.stallSpeed *= 2.0;
     std::visit([&](auto& engine) { engine.setGrowthRate(2.0 * engine.clock().rate); }, engine_);
     status_.stall.restart(sustained);

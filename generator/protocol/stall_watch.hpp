@@ -3,7 +3,8 @@
 // counts the windows since the sustained reduced pressure last doubled, and remembers the most
 // windows any doubling took. The jam is checked at 1, 2, 4, ... times kCheckWindows stalled
 // windows; a plateau whose check says jammed raises the growth rate once the stall has lasted
-// kRaiseRatio times the run's longest doubling, or the cost model's doubling if longer.
+// kRaiseRatio times the run's longest doubling, or the cost model's doubling if longer, where
+// the rate no longer shapes the contact network (raisable).
 
 #include <algorithm>
 #include <cstdint>
@@ -22,6 +23,17 @@ struct StallWatch {
     /// A stall this many times the run's longest doubling is a plateau (docs/design.md §3,
     /// "Plateaus": the doublings of p = 5 seed 2 took 70-520 windows, its plateau over 1900).
     static constexpr std::int64_t kRaiseRatio = 4;
+    /// The least sustained pressure at which a plateau is raised: below the plateaus whose raise
+    /// was measured to end like the unraised seeds (2.5e10-1.5e11, p = 5 and 10); lower down a
+    /// creep is the slow rate's own climb and a raise costs Z (bench/RESULTS.md, "Plateaus",
+    /// "The lower bound": p = 2 seed 1 raised at 1.8e6 ends 0.145 lower).
+    static constexpr double kLeastRaisedPressure = 1e10;
+
+    /// Whether a plateau at the sustained pressure `sustained` may be raised: at or above both
+    /// the switch pressure and kLeastRaisedPressure.
+    static bool raisable(double sustained, double pressureSwitch) {
+        return sustained >= std::max(pressureSwitch, kLeastRaisedPressure);
+    }
 
     /// Slow-phase windows since the sustained pressure last doubled (reached twice
     /// stallPressure).

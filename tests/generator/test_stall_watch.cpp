@@ -58,6 +58,15 @@ TEST(StallWatch, AStallIsCheckedAtPowersOfTwoAndIsAPlateauPastFourLongestDoublin
     EXPECT_FALSE(checksAtConstantPressure(spheres, 3200, 1440.0).back().second);
 }
 
+// docs/design.md §3, "Plateaus": raised only from 1e10 and the switch pressure on.
+TEST(StallWatch, APlateauIsRaisedOnlyWhereTheRateNoLongerShapesThePacking) {
+    EXPECT_FALSE(StallWatch::raisable(1.77e6, 1e6)); // p = 2 seed 1's creep: Z 0.145 lower
+    EXPECT_FALSE(StallWatch::raisable(9.9e9, 1e6));
+    EXPECT_TRUE(StallWatch::raisable(1e10, 1e6));
+    EXPECT_TRUE(StallWatch::raisable(2.5e10, 1e6));   // p = 5 seed 2's plateau
+    EXPECT_FALSE(StallWatch::raisable(2.5e10, 5e11)); // below a switch pressure above P*
+}
+
 TEST(StallWatch, ARestartBeginsANewStallFromItsPressure) {
     StallWatch watch{250, 1e8, 60};
     watch.restart(1.5e8);
