@@ -1,8 +1,8 @@
 #include "spectral/exact_spectral_density.hpp"
 
 #include "parallel/parallel.hpp"
+#include "spectral/form_factors.hpp"
 #include "spectral/spectral_density.hpp"
-#include "spectral/superball_form_factor.hpp"
 #include "structure/collective_density.hpp"
 
 #include <fmt/format.h>
@@ -14,6 +14,8 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <variant>
 
 namespace sbpack {
 
@@ -31,7 +33,7 @@ std::complex<double> phase(const PhaseTable& t, std::size_t row, int n) {
     return {t.c[k], n >= 0 ? -t.s[k] : t.s[k]};
 }
 
-/// Everything the superball path needs per particle: the body-frame map u = B n (u = k R, k
+/// Everything the series path needs per particle: the body-frame map u = B n (u = k R, k
 /// the body-frame wave vector of n: B = (2 pi R / L) R_j^T) and the three phase tables. A
 /// mixture's particle j of size s_j = R_j / R has m(k; s_j R) = s_j^3 m(s_j k; R): B carries
 /// s_j and `cubedSize` s_j^3 (empty for identical particles).
@@ -63,10 +65,11 @@ ParticleTables particleTables(const Packing& packing, int kmax) {
 
 /// sum_j m(R_j^T Q) exp(-i Q.r_j) for the kTile wave vectors modes[first..first + kTile)
 /// (padded by repeating the last), written to sums[first..].
-void tileSums(const SuperballFormFactor& form, const ParticleTables& t,
+template <class Form>
+void tileSums(const Form& form, const ParticleTables& t,
               const std::vector<std::array<int, 3>>& modes, std::size_t first, int order,
               std::vector<std::complex<double>>& sums) {
-    constexpr int T = SuperballFormFactor::kTile;
+    constexpr int T = Form::kTile;
     std::array<Eigen::Vector3d, T> n;
     for (int lane = 0; lane < T; ++lane) {
         const auto& m = modes[std::min(first + lane, modes.size() - 1)];
@@ -151,13 +154,15 @@ WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
     return out;
 }
 
-WaveVectorSpectrum superballWaveVectors(const Packing& packing, std::int64_t maxN2,
-                                        const Progress& progress) {
-    if (maxN2 < 1) throw std::invalid_argument("exact spectral density: no wave vector");
-    const SuperballFormFactor form(packing.superball());
+namespace {
+
+/// formFactorWaveVectors with the body's form factor `form`.
+template <class Form>
+WaveVectorSpectrum seriesWaveVectors(const Form& form, const Packing& packing, std::int64_t maxN2,
+                                     const Progress& progress) {
     WaveVectorSpectrum out{packing.boxLength, maxN2, halfSpaceWaveVectors(maxN2), {}};
     const ParticleTables tables = particleTables(packing, isqrt(maxN2));
-    constexpr int T = SuperballFormFactor::kTile;
+    constexpr int T = Form::kTile;
     const auto tiles = static_cast<std::int64_t>((out.size() + T - 1) / T);
     std::vector<int> orders(tiles);
     for (std::int64_t i = 0; i < tiles; ++i) { // the tile's largest |Q| sets its series order
@@ -182,6 +187,16 @@ WaveVectorSpectrum superballWaveVectors(const Packing& packing, std::int64_t max
     return out;
 }
 
+} // namespace
+
+WaveVectorSpectrum formFactorWaveVectors(const Packing& packing, std::int64_t maxN2,
+                                         const Progress& progress) {
+    if (maxN2 < 1) throw std::invalid_argument("exact spectral density: no wave vector");
+    return std::visit(
+        [&](const auto& form) { return seriesWaveVectors(form, packing, maxN2, progress); },
+        formFactorOf(packing.shape()));
+}
+
 ExactSpectralDensity::ExactSpectralDensity(ExactSpectralDensityParameters parameters)
     : parameters_(parameters) {
     if (!(parameters.maxQw > 0.0) || !std::isfinite(parameters.maxQw))
@@ -201,7 +216,7 @@ ExactSpectralDensityResult ExactSpectralDensity::compute(const Packing& packing,
     ExactSpectralDensityResult result;
     result.parameters = parameters_;
     result.boxLength = packing.boxLength;
-    const Superball shape = packing.superball();
+    const ParticleShape shape = packing.shape();
     result.meanWidth = shape.meanWidth();
     result.phi = packing.packingFraction();
     result.maxN2 = maxN2For(parameters_.maxQw, packing.boxLength, result.meanWidth);
@@ -214,15 +229,15 @@ ExactSpectralDensityResult ExactSpectralDensity::compute(const Packing& packing,
     // not, by each particle's own form factor.
     const bool series = !shape.isSphere() || packing.isMixture();
     const double reach = parameters_.maxQw / result.meanWidth * shape.circumradius();
-    if (series && reach > SuperballFormFactor::kSeriesLimit)
+    const double limit =
+        std::visit([](const auto& form) { return std::decay_t<decltype(form)>::kSeriesLimit; },
+                   formFactorOf(shape));
+    if (series && reach > limit)
         throw std::invalid_argument(
             "exact spectral density: qmax = " + fmt::format("{:g}", parameters_.maxQw) +
             " is beyond the form factor series' range for " + packing.shapeSpec.describe() +
-            " (Q w <= " +
-            std::to_string(SuperballFormFactor::kSeriesLimit * result.meanWidth /
-                           shape.circumradius()) +
-            ")");
-    result.modes = series ? superballWaveVectors(packing, result.maxN2, progress)
+            " (Q w <= " + std::to_string(limit * result.meanWidth / shape.circumradius()) + ")");
+    result.modes = series ? formFactorWaveVectors(packing, result.maxN2, progress)
                           : sphereWaveVectors(packing, result.maxN2, progress);
     result.runtimeSeconds = clock.seconds();
     return result;

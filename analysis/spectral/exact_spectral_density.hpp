@@ -44,14 +44,15 @@ ShellAverage shellAverage(const WaveVectorSpectrum& spectrum, int maxShell);
 WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
                                      const Progress& progress);
 
-/// Any p: |sum_j m(R_j^T Q) exp(-i Q.r_j)|^2 / V, 1 <= |n|^2 <= maxN2, with the form factor's
-/// series (SuperballFormFactor, accurate to 1e-16 v1 at these Q); a mixture's particle of size
+/// Any shape: |sum_j m(R_j^T Q) exp(-i Q.r_j)|^2 / V, 1 <= |n|^2 <= maxN2, with the series of
+/// the body's form factor (spectral/form_factors.hpp: SuperballFormFactor, accurate to 1e-16 v1
+/// at these Q); a mixture's particle of size
 /// s_j = R_j / R with its own, s_j^3 m(s_j R_j^T Q) (docs/mixtures.md). Parallel over tiles of wave
 /// vectors, each summed over the particles in order (the result does not depend on the number
 /// of threads). Throws std::invalid_argument unless maxN2 >= 1 and |Q| R_c stays within the
 /// series' range.
-WaveVectorSpectrum superballWaveVectors(const Packing& packing, std::int64_t maxN2,
-                                        const Progress& progress);
+WaveVectorSpectrum formFactorWaveVectors(const Packing& packing, std::int64_t maxN2,
+                                         const Progress& progress);
 
 struct ExactSpectralDensityParameters {
     /// Every wave vector with 0 < Q w <= maxQw (w the mean width).
@@ -78,7 +79,7 @@ class ExactSpectralDensity {
     static std::int64_t maxN2For(double maxQw, double boxLength, double meanWidth);
 
     /// Identical spheres by sphereWaveVectors, other shapes and mixtures by
-    /// superballWaveVectors. Throws
+    /// formFactorWaveVectors. Throws
     /// std::invalid_argument if no wave vector of the box has Q w <= maxQw, or if maxQw is beyond
     /// the form factor's series range for this shape (both messages name maxQw).
     ExactSpectralDensityResult compute(const Packing& packing, const Progress& progress) const;

@@ -152,7 +152,7 @@ TEST(ExactSpectralDensity, SuperballPathOfSpheresEqualsTheSpherePath) {
     const Packing spheres = testing::latticePacking(1.0, 4, 1.2, 0.1, 11);
     const std::int64_t maxN2 = 30;
     const WaveVectorSpectrum a = sphereWaveVectors(spheres, maxN2, quiet);
-    const WaveVectorSpectrum b = superballWaveVectors(spheres, maxN2, quiet);
+    const WaveVectorSpectrum b = formFactorWaveVectors(spheres, maxN2, quiet);
     ASSERT_EQ(a.size(), b.size());
     double peak = 0.0;
     for (const double c : a.chi)
