@@ -25,8 +25,8 @@ struct StallWatch {
     static constexpr std::int64_t kRaiseRatio = 4;
     /// The least sustained pressure at which a plateau is raised: below the plateaus whose raise
     /// was measured to end like the unraised seeds (2.5e10-1.5e11, p = 5 and 10); lower down a
-    /// creep is the slow rate's own climb and a raise costs Z (bench/RESULTS.md, "Plateaus",
-    /// "The lower bound": p = 2 seed 1 raised at 1.8e6 ends 0.145 lower).
+    /// creep is the slow rate's own climb and a raise costs Z (bench/RESULTS.md, "The plateau
+    /// rule's lower bound": p = 2 seed 1 raised at 1.8e6 ends 0.145 lower).
     static constexpr double kLeastRaisedPressure = 1e10;
 
     /// Whether a plateau at the sustained pressure `sustained` may be raised: at or above both
