@@ -75,6 +75,9 @@ class GeneratorCommandLine {
     CLI::App& app() { return app_; }
     GeneratorOptions& options() { return options_; }
     const std::set<std::string>& protocolOptions() const { return protocolOptions_; }
+    /// The shape the options give: --shape's family (default the superball), each of its
+    /// parameters as given (--p) or its fallback; a parameter of another family is refused.
+    ShapeSpec shape() const;
 
   private:
     /// A protocol option, its value named `placeholder` in the help: `set` parses it; noted, since
@@ -112,11 +115,6 @@ class GeneratorCommandLine {
     std::set<std::string> protocolOptions_;
     std::optional<std::string> shapeFamily_;                ///< --shape
     std::map<std::string, double, std::less<>> shapeGiven_; ///< the shape parameters given, by name
-
-  public:
-    /// The shape the options give: --shape's family (default the superball), each of its
-    /// parameters as given (--p) or its fallback; a parameter of another family is refused.
-    ShapeSpec shape() const;
 };
 
 void GeneratorCommandLine::addShapeOptions() {
