@@ -228,16 +228,18 @@ ExactSpectralDensityResult ExactSpectralDensity::compute(const Packing& packing,
     // Identical spheres by the collective density and one closed form; a mixture, spheres or
     // not, by each particle's own form factor.
     const bool series = !shape.isSphere() || packing.isMixture();
-    const double reach = parameters_.maxQw / result.meanWidth * shape.circumradius();
-    const double limit =
-        std::visit([](const auto& form) { return std::decay_t<decltype(form)>::kSeriesLimit; },
-                   formFactorOf(shape));
-    if (series && reach > limit)
-        throw std::invalid_argument(
-            "exact spectral density: qmax = " + fmt::format("{:g}", parameters_.maxQw) +
-            " is beyond the form factor series' range for " + packing.shapeSpec.describe() +
-            " (Q w <= " + std::to_string(limit * result.meanWidth / shape.circumradius()) + ")");
-    result.modes = series ? formFactorWaveVectors(packing, result.maxN2, progress)
+    // The series path's form factor, built once: its range checked, then summed.
+    const auto withinRange = [&](const auto& form) {
+        const double limit = std::decay_t<decltype(form)>::kSeriesLimit;
+        if (parameters_.maxQw / result.meanWidth * shape.circumradius() > limit)
+            throw std::invalid_argument(
+                "exact spectral density: qmax = " + fmt::format("{:g}", parameters_.maxQw) +
+                " is beyond the form factor series' range for " + packing.shapeSpec.describe() +
+                " (Q w <= " + std::to_string(limit * result.meanWidth / shape.circumradius()) +
+                ")");
+        return seriesWaveVectors(form, packing, result.maxN2, progress);
+    };
+    result.modes = series ? std::visit(withinRange, formFactorOf(shape))
                           : sphereWaveVectors(packing, result.maxN2, progress);
     result.runtimeSeconds = clock.seconds();
     return result;
