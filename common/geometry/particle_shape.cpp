@@ -28,6 +28,12 @@ const ShapeFamily* findShapeFamily(std::string_view name) {
     return nullptr;
 }
 
+const ShapeParameter* findShapeParameter(const ShapeFamily& family, std::string_view name) {
+    for (const ShapeParameter& parameter : family.parameters)
+        if (parameter.name == name) return &parameter;
+    return nullptr;
+}
+
 const ShapeFamily* writtenShapeFamily(const std::optional<std::string>& written) {
     return findShapeFamily(written ? std::string_view(*written) : kFamilies[0].name);
 }

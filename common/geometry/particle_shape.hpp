@@ -92,6 +92,10 @@ struct ShapeSpec {
     template <class Value>
     static std::optional<ShapeSpec> readIfGiven(const std::optional<std::string>& written,
                                                 Value&& value);
+    /// read() where value(name) is a std::optional<double>: the parameter's fallback where it is
+    /// missing (a program's options and keywords: sbgen's --p, Python's p=).
+    template <class Value>
+    static ShapeSpec readOrFallback(const std::optional<std::string>& written, Value&& value);
     /// What makes the parameters no shape of the family (e.g. "p = 0.4 (must be finite and
     /// >= 0.5)"), or nothing.
     std::optional<std::string> problem() const;
@@ -111,6 +115,8 @@ std::span<const ShapeFamily> shapeFamilies();
 const ShapeFamily* findShapeFamily(std::string_view name);
 /// The family a file names (kShapeFamilyKey; nothing: the superball), or nullptr.
 const ShapeFamily* writtenShapeFamily(const std::optional<std::string>& written);
+/// The parameter of `family` called `name`, or nullptr.
+const ShapeParameter* findShapeParameter(const ShapeFamily& family, std::string_view name);
 /// The families' names, for messages: "superball".
 std::string shapeFamilyNames();
 
@@ -144,6 +150,14 @@ std::optional<ShapeSpec> ShapeSpec::readIfGiven(const std::optional<std::string>
         for (const ShapeParameter& parameter : family->parameters)
             if (!value(parameter.name)) return std::nullopt;
     return read(written, [&](std::string_view name) { return *value(name); });
+}
+
+template <class Value>
+ShapeSpec ShapeSpec::readOrFallback(const std::optional<std::string>& written, Value&& value) {
+    const ShapeFamily* family = writtenShapeFamily(written); // read() asks only a known one's
+    return read(written, [&](std::string_view name) {
+        return value(name).value_or(findShapeParameter(*family, name)->fallback);
+    });
 }
 
 /// A body of a ShapeSpec at semi-axis R (the largest half-width of its bounding box).

@@ -145,17 +145,13 @@ ShapeSpec GeneratorCommandLine::shape() const {
     if (family == nullptr)
         throw std::invalid_argument("option --shape: unknown shape family '" + *shapeFamily_ +
                                     "' (the families: " + shapeFamilyNames() + ")");
-    const auto parameterOf = [&](std::string_view name) {
-        const auto it = std::ranges::find(family->parameters, name, &ShapeParameter::name);
-        return it == family->parameters.end() ? nullptr : &*it;
-    };
     for (const auto& [name, value] : shapeGiven_)
-        if (parameterOf(name) == nullptr)
+        if (findShapeParameter(*family, name) == nullptr)
             throw std::invalid_argument("option --" + name + ": not a parameter of the " +
                                         std::string(family->name) + " shape");
-    return ShapeSpec::read(std::string(family->name), [&](std::string_view name) {
+    return ShapeSpec::readOrFallback(shapeFamily_, [&](std::string_view name) {
         const auto given = shapeGiven_.find(name);
-        return given != shapeGiven_.end() ? given->second : parameterOf(name)->fallback;
+        return given != shapeGiven_.end() ? std::optional(given->second) : std::nullopt;
     });
 }
 
@@ -319,8 +315,7 @@ std::invalid_argument optionError(const ProtocolParameterError& e) {
         {"polydispersity", "--polydispersity"}};
     const auto it = kOption.find(e.parameter());
     const bool shapeParameter = std::ranges::any_of(shapeFamilies(), [&](const ShapeFamily& f) {
-        return std::ranges::find(f.parameters, e.parameter(), &ShapeParameter::name) !=
-               f.parameters.end();
+        return findShapeParameter(f, e.parameter()) != nullptr;
     });
     const std::string option = it != kOption.end() ? it->second
                                : shapeParameter    ? "--" + e.parameter()

@@ -8,7 +8,6 @@
 
 #include <pybind11/stl.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -135,14 +134,12 @@ void checkProgress(const py::object& progress, double interval) {
 ShapeSpec generatedShape(const py::object& family, const py::dict& given) {
     const auto written =
         family.is_none() ? std::nullopt : std::optional(family.cast<std::string>());
-    const ShapeFamily* known = writtenShapeFamily(written);
-    if (known == nullptr)
+    if (writtenShapeFamily(written) == nullptr)
         throw py::value_error("shape = '" + *written +
                               "': unknown shape family (the families: " + shapeFamilyNames() + ")");
-    return ShapeSpec::read(written, [&](std::string_view name) {
+    return ShapeSpec::readOrFallback(written, [&](std::string_view name) -> std::optional<double> {
         const py::str key(std::string(name).c_str());
-        if (!given.contains(key))
-            return std::ranges::find(known->parameters, name, &ShapeParameter::name)->fallback;
+        if (!given.contains(key)) return std::nullopt;
         if (!py::isinstance<py::float_>(given[key]) && !py::isinstance<py::int_>(given[key]))
             throw py::type_error(
                 std::string(name) + " must be a number, not " +
