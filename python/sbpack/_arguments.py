@@ -12,10 +12,10 @@ _GENERATE = _sbpack.generate
 
 def __init__(self, positions, orientations, box_length, *, semi_axis, semi_axes=None,
              source="arrays", shape=None, **parameters):
-    families = _sbpack.shape_families()  # the shape's parameters by name: p=1.5 for superballs
-    if shape is None or shape in families:  # an unknown family: the extension's ValueError
-        check_keywords("Packing.__init__", parameters,
-                       families[shape if shape is not None else next(iter(families))])
+    # the shape's parameters by name (p=1.5 for superballs); an unknown family: the extension's
+    # ValueError
+    if shape is None or shape in _sbpack.shape_families():
+        check_keywords("Packing.__init__", parameters, _shape_keywords(shape))
     _PACKING_INIT(self, positions, orientations, box_length, semi_axis=semi_axis,
                   semi_axes=semi_axes, source=source, shape=shape, parameters=parameters)
 
