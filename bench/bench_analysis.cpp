@@ -105,8 +105,9 @@ int main(int argc, char** argv) {
         const Progress progress(nullptr, nullptr);
         const double w = packing.shape().meanWidth();
         std::printf("packing %s: N = %zu, p = %g, phi = %.4f, L = %.4f, w = %.4f; threads %d\n",
-                    o.packing.c_str(), packing.size(), packing.shapeSpec.p,
-                    packing.packingFraction(), packing.boxLength, w, o.threads);
+                    o.packing.c_str(), packing.size(),
+                    packing.shapeSpec.superballExponent().value(), packing.packingFraction(),
+                    packing.boxLength, w, o.threads);
 
         SpectralDensityParameters chiParameters;
         chiParameters.fft.wisdomFile = o.wisdom;

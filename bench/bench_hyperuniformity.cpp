@@ -81,8 +81,8 @@ int main(int argc, char** argv) {
     const double w = packing.shape().meanWidth();
     const ExactSpectralDensityResult exact = ExactSpectralDensity({}).compute(packing, quiet);
     std::printf("%s: N = %zu, p = %g, exact chi at %zu wave vectors (Q w <= 3) in %.3f s\n\n",
-                argv[1], packing.size(), packing.shapeSpec.p, 2 * exact.modes.size(),
-                exact.runtimeSeconds);
+                argv[1], packing.size(), packing.shapeSpec.superballExponent().value(),
+                2 * exact.modes.size(), exact.runtimeSeconds);
     std::printf(
         "| M | voxels + FFT s | chi error / peak, RMS | max | alpha, voxel | a0 / w^3, voxel "
         "| H, voxel | alpha, exact+voxel | a0 / w^3, exact+voxel | H, exact+voxel | "

@@ -63,7 +63,7 @@ double cpuSeconds() {
 /// Gauss-Seidel sweeps push every overlapping pair apart until none overlaps.
 Packing disorderedSpheres(int count, double phi, std::uint64_t seed) {
     Packing packing;
-    packing.shapeSpec.p = 1.0;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(1.0);
     packing.semiAxis = 0.5;
     packing.boxLength = std::cbrt(count * std::numbers::pi / 6.0 / phi);
     const double length = packing.boxLength;
@@ -109,7 +109,7 @@ Packing disorderedSpheres(int count, double phi, std::uint64_t seed) {
 /// The same centres carrying superballs of exponent p inscribed in the spheres (circumradius
 /// 0.5, so still no overlap) with uniformly random orientations: a superball test case.
 Packing inscribedSuperballs(Packing packing, double p, std::uint64_t seed) {
-    packing.shapeSpec.p = p;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(p);
     packing.semiAxis = 0.5 / sbpack::Superball(p, 1.0).circumradius();
     std::mt19937_64 generator(seed);
     std::normal_distribution<double> gauss;
@@ -278,10 +278,10 @@ int errors(const Options& o, const Packing& packing) {
             sbpack::largestGap(voxel, exact), relative(shifted.mean, exact.mean),
             relative(shifted.secondMoment, exact.secondMoment), sbpack::largestGap(shifted, exact));
         if (m == list.back()) {
-            const auto t = sbpack::Transport({}).compute(voxel, packing.shapeSpec.p,
-                                                         packing.packingFraction());
-            const auto te = sbpack::Transport({}).compute(exact, packing.shapeSpec.p,
-                                                          packing.packingFraction());
+            const auto t = sbpack::Transport({}).compute(
+                voxel, packing.shapeSpec.superballExponent().value(), packing.packingFraction());
+            const auto te = sbpack::Transport({}).compute(
+                exact, packing.shapeSpec.superballExponent().value(), packing.packingFraction());
             std::printf("transport at M = %d (exact in brackets): zeta2 = %.5f, F = %.4f, k/w^2 = "
                         "%.3e (%.3e), tau D/w^2 = %.3e (%.3e), T1 D/w^2 = %.3e (%.3e)\n",
                         m, t.zeta2.value_or(NAN), t.formationFactor.value_or(NAN),

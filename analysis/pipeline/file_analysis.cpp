@@ -64,9 +64,14 @@ FileResults analyzeFile(const Packing& packing, const std::filesystem::path& inp
     if (settings.distribute == Distribution::Grids) context.distributeGrids(grids);
     FileResults results{input, fileRecord(packing, input, context), {}};
     if (packing.isMixture()) results.sizeRatio = packing.semiAxis / packing.smallestSemiAxis();
-    if (packing.isMixture() && settings.device.device == ComputeDevice::Cuda)
-        progress.warn("--device cuda: a mixture's grids are computed on the CPU (the GPU "
-                      "voxeliser reads one size; docs/mixtures.md)");
+    if (settings.device.device == ComputeDevice::Cuda && !context.gridsOnGpu())
+        progress.warn(packing.isMixture()
+                          ? "--device cuda: a mixture's grids are computed on the CPU (the GPU "
+                            "voxeliser reads one size; docs/mixtures.md)"
+                          : "--device cuda: the grids of " +
+                                std::string(packing.shape().familyName()) +
+                                "s are computed on the CPU (the GPU voxeliser's inside test is "
+                                "the superball's; docs/gpu.md)");
     const std::vector<Analysis> order = runOrder(settings.analyses);
     for (std::size_t i = 0; i < order.size(); ++i) {
         const AnalysisInfo& info = analysisInfo(order[i]);

@@ -43,10 +43,12 @@ class FileContext {
     /// Packing::analysisLengthUnit of the packing as read: 1 where 1 <= D < 2.
     double lengthUnit() const { return analysed_.lengthUnit(); }
     const RunSettings& settings() const { return settings_; }
-    /// Whether the voxel grids go to the GPU (--device cuda): not a mixture's, whose particles
-    /// the GPU voxeliser would read at one size (docs/mixtures.md; analyzeFile warns).
+    /// Whether the voxel grids go to the GPU (--device cuda): identical superballs only, what
+    /// the GPU voxeliser reads (grid/voxel_rows.hpp): not a mixture's (docs/mixtures.md), nor
+    /// another family's (docs/gpu.md); analyzeFile warns.
     bool gridsOnGpu() const {
-        return settings_.device.device == ComputeDevice::Cuda && !packing().isMixture();
+        return settings_.device.device == ComputeDevice::Cuda && !packing().isMixture() &&
+               packing().shapeSpec.superballExponent();
     }
     const Progress& progress() const { return progress_; }
     /// The mean width w in units of lengthUnit().

@@ -65,4 +65,9 @@ class SuperballFormFactor {
     std::vector<double> coefficients_; ///< kStride^3, zero where i + j + l > kMaxOrder
 };
 
+/// The superball's form factor, as spectral/form_factors.hpp asks each family's body for its own.
+inline SuperballFormFactor formFactorFor(const Superball& body) {
+    return SuperballFormFactor(body);
+}
+
 } // namespace sbpack

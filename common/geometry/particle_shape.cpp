@@ -2,28 +2,16 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <stdexcept>
 
 namespace sbpack {
 
-namespace {
-
-constexpr ShapeParameter kSuperballParameters[] = {
-    {"p", "1",
-     "superball exponent (paper Eq. 1), >= 0.5: 1 the sphere, 0.5 the octahedron, "
-     "infinity the cube",
-     1.0}};
-constexpr ShapeFamily kFamilies[] = {{"superball", kSuperballParameters}};
-
-} // namespace
-
 std::span<const ShapeFamily> shapeFamilies() {
-    return kFamilies;
+    return ShapeFamilies::info;
 }
 
 const ShapeFamily* findShapeFamily(std::string_view name) {
-    for (const ShapeFamily& family : kFamilies)
+    for (const ShapeFamily& family : ShapeFamilies::info)
         if (family.name == name) return &family;
     return nullptr;
 }
@@ -35,44 +23,51 @@ const ShapeParameter* findShapeParameter(const ShapeFamily& family, std::string_
 }
 
 const ShapeFamily* writtenShapeFamily(const std::optional<std::string>& written) {
-    return findShapeFamily(written ? std::string_view(*written) : kFamilies[0].name);
+    return findShapeFamily(written ? std::string_view(*written) : ShapeFamilies::info[0].name);
 }
 
 std::string shapeFamilyNames() {
     std::string names;
-    for (const ShapeFamily& family : kFamilies)
+    for (const ShapeFamily& family : ShapeFamilies::info)
         names += (names.empty() ? "" : ", ") + std::string(family.name);
     return names;
 }
 
+ShapeSpec::ShapeSpec() : family_(0) {
+    for (const ShapeParameter& parameter : ShapeFamilies::info[0].parameters)
+        values_.push_back(parameter.fallback);
+}
+
 ShapeSpec ShapeSpec::fromValues(std::string_view name, std::span<const double> values) {
-    if (findShapeFamily(name) == nullptr)
+    const ShapeFamily* family = findShapeFamily(name);
+    if (family == nullptr)
         throw std::invalid_argument(
             fmt::format("unknown shape family '{}' (known: {})", name, shapeFamilyNames()));
-    if (values.size() != std::size(kSuperballParameters))
+    if (values.size() != family->parameters.size()) {
+        std::string names;
+        for (const ShapeParameter& parameter : family->parameters)
+            names += (names.empty() ? "" : ", ") + std::string(parameter.name);
         throw std::invalid_argument(
-            fmt::format("the superball takes 1 parameter (p), not {}", values.size()));
-    return superball(values[0]);
+            fmt::format("the {} takes {} parameter{} ({}), not {}", name, family->parameters.size(),
+                        family->parameters.size() == 1 ? "" : "s", names, values.size()));
+    }
+    return ShapeSpec(static_cast<std::size_t>(family - ShapeFamilies::info.data()),
+                     std::vector<double>(values.begin(), values.end()));
 }
 
-const ShapeFamily& ShapeSpec::info() const {
-    return kFamilies[static_cast<int>(family)];
-}
-
-std::vector<double> ShapeSpec::values() const {
-    return {p};
+bool ShapeSpec::isSphere() const {
+    return withFamily([&]<class F>(std::type_identity<F>) { return F::isSphere(values_); });
 }
 
 std::vector<std::pair<std::string_view, double>> ShapeSpec::namedValues() const {
     std::vector<std::pair<std::string_view, double>> named;
-    const std::vector<double> all = values();
-    for (std::size_t k = 0; k < all.size(); ++k)
-        named.emplace_back(info().parameters[k].name, all[k]);
+    for (std::size_t k = 0; k < values_.size(); ++k)
+        named.emplace_back(info().parameters[k].name, values_[k]);
     return named;
 }
 
 std::optional<std::string_view> ShapeSpec::writtenFamily() const {
-    if (family == Family::superball) return std::nullopt;
+    if (family_ == 0 || family_ >= ShapeFamilies::size) return std::nullopt; // the first: unnamed
     return info().name;
 }
 
@@ -84,8 +79,8 @@ std::vector<ShapeField> shapeFields() {
                                                    "family)",
                                     .text = true,
                                     .optional = true}};
-    const bool several = std::size(kFamilies) > 1;
-    for (const ShapeFamily& family : kFamilies)
+    const bool several = ShapeFamilies::size > 1;
+    for (const ShapeFamily& family : ShapeFamilies::info)
         for (const ShapeParameter& parameter : family.parameters)
             fields.push_back({.name = parameter.name,
                               .units = parameter.units,
@@ -95,30 +90,46 @@ std::vector<ShapeField> shapeFields() {
 }
 
 std::optional<std::string> ShapeSpec::problem() const {
-    if (p >= 0.5 && std::isfinite(p)) return std::nullopt;
-    return fmt::format("p = {} (must be finite and >= 0.5)", p);
+    return withFamily([&]<class F>(std::type_identity<F>) { return F::problem(values_); });
 }
 
 Superquadric ShapeSpec::superquadric() const {
-    return {Vector3d::Ones(), 2.0 * p, 2.0 * p}; // paper Eq. 1: |x|^2p + |y|^2p + |z|^2p <= 1
+    return withFamily([&]<class F>(std::type_identity<F>) { return F::superquadric(values_); });
 }
 
 ShapeSpec ShapeSpec::fromSuperquadric(const Superquadric& q) {
-    const auto near = [](double a, double b) { return std::abs(a - b) <= 1e-12 * std::abs(b); };
-    if (near(q.axes.x(), 1.0) && near(q.axes.y(), 1.0) && near(q.axes.z(), 1.0) &&
-        near(q.northSouth, q.eastWest))
-        return superball(0.5 * q.eastWest);
+    std::optional<ShapeSpec> found;
+    std::string needs;
+    for (std::size_t k = 0; k < ShapeFamilies::size && !found; ++k)
+        ShapeFamilies::visit(k, [&]<class F>(std::type_identity<F>) {
+            if (std::optional<std::vector<double>> values = F::fromSuperquadric(q))
+                found = ShapeSpec(k, std::move(*values));
+            needs += "; " + std::string(F::superquadricForm);
+        });
+    if (found) return *found;
     throw std::invalid_argument(fmt::format(
         "semi-axes in proportion {}:{}:{} with blockiness {} (x, y) and {} (z) are no shape "
-        "sbpack knows ({}); a superball has three equal semi-axes and one blockiness 2p",
-        q.axes.x(), q.axes.y(), q.axes.z(), q.eastWest, q.northSouth, shapeFamilyNames()));
+        "sbpack knows ({}){}",
+        q.axes.x(), q.axes.y(), q.axes.z(), q.eastWest, q.northSouth, shapeFamilyNames(), needs));
 }
 
 std::string ShapeSpec::describe() const {
-    return fmt::format("p = {}", p);
+    std::string text;
+    for (const auto& [name, value] : namedValues())
+        text += fmt::format("{}{} = {}", text.empty() ? "" : ", ", name, value);
+    return text;
 }
 
 ParticleShape::ParticleShape(const ShapeSpec& spec, double semiAxis)
-    : superball_(spec.p, semiAxis) {}
+    : body_(ShapeFamilies::visit(spec.familyIndex(), [&]<class F>(std::type_identity<F>) {
+          return AnyBody(std::in_place_index<ShapeFamilies::indexOf<F>>,
+                         F::body(spec.values(), semiAxis));
+      })) {}
+
+const Superball& ParticleShape::superball() const {
+    if (const Superball* body = std::get_if<Superball>(&body_)) return *body;
+    throw std::invalid_argument(fmt::format(
+        "the particles are {}s: this quantity is defined for superballs only", familyName()));
+}
 
 } // namespace sbpack

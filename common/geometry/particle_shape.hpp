@@ -2,22 +2,21 @@
 // The particles' shape as Packing carries it (docs/architecture.md, "What a new shape needs"):
 // a family and its parameters (ShapeSpec), and a body of that shape at a size (ParticleShape),
 // whose geometry (volume, mean width, radii, the pair solvers' ConvexBody, the inside test and
-// the nearest point) every analysis may use whatever the family. Code that holds for superballs
+// the nearest point) every analysis may use whatever the family. Both dispatch over the families
+// of geometry/shape_families.hpp to each family's own files (geometry/shape_family.hpp says what
+// a family provides), so that a new family changes nothing here. Code that holds for superballs
 // only asks for the superball (ParticleShape::superball: the form factor, the GPU's inside test)
 // or its exponent, nothing for another family (ShapeSpec::superballExponent: the transport fit
-// in p, which then leaves k out); sbgen's superball-only code (its rates,
-// generator/shapes/superball) reads ShapeSpec::p. The superball is the one family so far; a second
-// one adds its body here, its branch to each method, and a refusal to superball().
+// in p, which then leaves k out; sbgen's superball engine).
 
-#include "geometry/superball.hpp"
-#include "geometry/superball_inside.hpp"
-#include "geometry/superball_projection.hpp"
+#include "geometry/shape_families.hpp"
 
 #include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace sbpack {
@@ -26,61 +25,37 @@ namespace sbpack {
 /// family; absent: the superball (every file written before the family had a name).
 inline constexpr const char* kShapeFamilyKey = "shape";
 
-/// One parameter of a shape family, under the name the packing file and the results carry.
-struct ShapeParameter {
-    std::string_view name;
-    /// "1" dimensionless, "length" (the packing's, as the semi-axis).
-    std::string_view units;
-    std::string_view description;
-    /// The value a program takes where none is given (sbgen's option, Python's keyword).
-    double fallback = 0.0;
-};
-
-/// A shape family: its name and its parameters, in the order ShapeSpec::values gives them.
-struct ShapeFamily {
-    std::string_view name;
-    std::span<const ShapeParameter> parameters;
-};
-
-/// A shape as the superquadric the exchange formats write (docs/cli.md, "Files"): OVITO's
-/// (|x/a|^(2/phi) + |y/b|^(2/phi))^(phi/theta) + |z/c|^(2/theta) <= 1, held here by the
-/// blockiness n = 2 / roundness that LAMMPS's superellipsoid takes, and the semi-axes over the
-/// particle's size (the largest is 1). The superball (paper Eq. 1) is a = b = c = 1, n = 2p
-/// both; an ellipsoid would be n = 2 both.
-struct Superquadric {
-    Vector3d axes = Vector3d::Ones();
-    double eastWest = 2.0;   ///< n of x and y: 2 / OVITO's roundness phi
-    double northSouth = 2.0; ///< n of z: 2 / OVITO's roundness theta
-};
-
 /// A shape family and its parameters, without a size. Files, results, ensembles and messages
-/// know a shape only through its identity here (family(), values(), problem(), describe()).
-struct ShapeSpec {
-    enum class Family { superball };
-    Family family = Family::superball;
-    /// The superball's exponent (paper Eq. 1); analyses read it through ParticleShape::superball.
-    double p = 1.0;
-
-    static ShapeSpec superball(double exponent) { return {Family::superball, exponent}; }
+/// know a shape only through its identity here (info(), values(), problem(), describe()).
+class ShapeSpec {
+  public:
+    /// The first family (the superball) at its parameters' fallbacks (p = 1: spheres).
+    ShapeSpec();
+    static ShapeSpec superball(double exponent) {
+        return ShapeSpec(ShapeFamilies::indexOf<SuperballFamily>, {exponent});
+    }
     /// The shape of family `name` (shapeFamilies()) with `values` in its parameters' order;
     /// throws std::invalid_argument for an unknown family or the wrong number of values.
     static ShapeSpec fromValues(std::string_view name, std::span<const double> values);
-    /// Spheres: superballs of p = 1 (sbgen's exact sphere engine; orientations carry nothing).
-    bool isSphere() const { return family == Family::superball && p == 1.0; }
+    /// The family's place in ShapeFamilies (geometry/shape_families.hpp).
+    std::size_t familyIndex() const { return family_; }
+    /// Spheres (the superball of p = 1: sbgen's exact sphere engine; orientations carry nothing).
+    bool isSphere() const;
     /// The superball's exponent, nothing for another family: what code that holds for superballs
-    /// only asks (the transport fit in p), so that a new family leaves that code as it is.
+    /// only asks (the transport fit in p, sbgen's superball engine), so that a new family leaves
+    /// that code as it is.
     std::optional<double> superballExponent() const {
-        if (family != Family::superball) return std::nullopt;
-        return p;
+        if (family_ != ShapeFamilies::indexOf<SuperballFamily>) return std::nullopt;
+        return values_[0];
     }
     /// The family's name and parameters.
-    const ShapeFamily& info() const;
+    const ShapeFamily& info() const { return ShapeFamilies::info[family_]; }
     /// The parameters' values, in the order of info().parameters.
-    std::vector<double> values() const;
+    const std::vector<double>& values() const { return values_; }
     /// Each parameter's name with its value, in the same order: what a file writes.
     std::vector<std::pair<std::string_view, double>> namedValues() const;
-    /// The family's name as a file writes it under kShapeFamilyKey: nothing for the superball,
-    /// so that every superball file is written as before.
+    /// The family's name as a file writes it under kShapeFamilyKey: nothing for the first family
+    /// (the superball), so that every superball file is written as before.
     std::optional<std::string_view> writtenFamily() const;
     /// The shape a file or record holds: the family named `written` (nothing: the superball),
     /// each of its parameters read by name with value(name). Throws std::invalid_argument for an
@@ -104,9 +79,19 @@ struct ShapeSpec {
     /// The shape whose superquadric `q` is (to 1e-12): what the exchange formats read. Throws
     /// std::invalid_argument, saying what each family needs, where no family has it.
     static ShapeSpec fromSuperquadric(const Superquadric& q);
-    /// The parameters for messages and tables: "p = 1.5".
+    /// The parameters for messages and tables, each "name = value": "p = 1.5".
     std::string describe() const;
     bool operator==(const ShapeSpec&) const = default;
+
+  private:
+    ShapeSpec(std::size_t family, std::vector<double> values)
+        : family_(family), values_(std::move(values)) {}
+    /// fn(std::type_identity<F>{}) for this shape's family F.
+    template <class Fn> decltype(auto) withFamily(Fn&& fn) const {
+        return ShapeFamilies::visit(family_, std::forward<Fn>(fn));
+    }
+    std::size_t family_;
+    std::vector<double> values_;
 };
 
 /// Every shape family, the superball first (a file without a family name holds superballs).
@@ -160,63 +145,126 @@ ShapeSpec ShapeSpec::readOrFallback(const std::optional<std::string>& written, V
     });
 }
 
-/// A body of a ShapeSpec at semi-axis R (the largest half-width of its bounding box).
+/// A body of a ShapeSpec at semi-axis R (the largest half-width of its bounding box): the
+/// family's Body, each question dispatched to it (geometry/shape_family, ShapeFamilyTraits).
 class ParticleShape {
+    using AnyBody = ShapeFamilies::AnyBody;
+    AnyBody body_;
+    explicit ParticleShape(AnyBody body) : body_(std::move(body)) {}
+    template <class Fn> decltype(auto) visit(Fn&& fn) const {
+        return std::visit(std::forward<Fn>(fn), body_);
+    }
+
   public:
-    /// Throws std::invalid_argument where the parameters are not the family's (Superball).
+    /// Throws std::invalid_argument where the parameters are not the family's.
     ParticleShape(const ShapeSpec& spec, double semiAxis);
 
-    double semiAxis() const { return superball_.semiAxis(); }
-    double diameter() const { return superball_.diameter(); }
-    double volume() const { return superball_.volume(); }
+    double semiAxis() const {
+        return visit([](const auto& b) { return b.semiAxis(); });
+    }
+    double diameter() const { return 2.0 * semiAxis(); }
+    double volume() const {
+        return visit([](const auto& b) { return b.volume(); });
+    }
     /// The mean width w (paper Sec. II D): the length unit of the paper's reduced distances.
-    double meanWidth() const { return superball_.meanWidth(); }
-    double circumradius() const { return superball_.circumradius(); }
-    double inradius() const { return superball_.inradius(); }
-    bool isSphere() const { return superball_.isSphere(); }
-    bool isOctahedron() const { return superball_.isOctahedron(); }
+    double meanWidth() const {
+        return visit([](const auto& b) { return b.meanWidth(); });
+    }
+    double circumradius() const {
+        return visit([](const auto& b) { return b.circumradius(); });
+    }
+    double inradius() const {
+        return visit([](const auto& b) { return b.inradius(); });
+    }
+    bool isSphere() const {
+        return visit([](const auto& b) { return b.isSphere(); });
+    }
+    /// Whether the body is the octahedron, whose pairs the solvers take over its face normals.
+    bool isOctahedron() const {
+        return visit([](const auto& b) {
+            if constexpr (requires { b.isOctahedron(); }) return b.isOctahedron();
+            return false;
+        });
+    }
     /// Whether the body's three axes are equivalent under its symmetry (the cube's group), so that
-    /// their cubatic order P4 (common/order) is defined: every superball but the sphere.
-    bool hasCubicAxes() const { return !superball_.isSphere(); }
-    /// Whether the body is symmetric under the cube's group (the sphere too), so that its
-    /// contacts' regions <100>, <110>, <111> name equivalent places (docs/contact-types.md): every
-    /// superball.
-    bool hasCubicSymmetry() const { return true; }
+    /// their cubatic order P4 (common/order) is defined.
+    bool hasCubicAxes() const {
+        return visit([](const auto& b) { return sbpack::hasCubicAxes(b); });
+    }
+    /// Whether the body is symmetric under the cube's group, so that its contacts' regions <100>,
+    /// <110>, <111> name equivalent places (docs/contact-types.md).
+    bool hasCubicSymmetry() const {
+        return visit([](const auto& b) { return sbpack::hasCubicSymmetry(b); });
+    }
     /// Whether the bodies stack face to face into columns that can span a small periodic box
-    /// (bench/RESULTS.md, "Near-cubes after the jam check"): superballs from kNearCubeExponent.
-    bool stacksInColumns() const { return superball_.p() >= kNearCubeExponent; }
+    /// (bench/RESULTS.md, "Near-cubes after the jam check").
+    bool stacksInColumns() const {
+        return visit([](const auto& b) { return sbpack::stacksInColumns(b); });
+    }
     /// The same shape at `factor` times the size.
-    ParticleShape scaled(double factor) const { return ParticleShape(superball_.scaled(factor)); }
+    ParticleShape scaled(double factor) const {
+        return visit([&](const auto& b) { return ParticleShape(AnyBody(b.scaled(factor))); });
+    }
 
     /// The body as the pair solvers and the curvature see it (pair/pair_geometry's ConvexBody,
     /// body frame): gauge, support function, support point, its Hessian, the surface curvature.
-    double gauge(const Vector3d& xBody) const { return superball_.gauge(xBody); }
-    double support(const Vector3d& nBody) const { return superball_.support(nBody); }
-    Vector3d supportPoint(const Vector3d& nBody) const { return superball_.supportPoint(nBody); }
+    double gauge(const Vector3d& xBody) const {
+        return visit([&](const auto& b) { return b.gauge(xBody); });
+    }
+    double support(const Vector3d& nBody) const {
+        return visit([&](const auto& b) { return b.support(nBody); });
+    }
+    Vector3d supportPoint(const Vector3d& nBody) const {
+        return visit([&](const auto& b) -> Vector3d { return b.supportPoint(nBody); });
+    }
     Matrix3d supportHessian(const Vector3d& nBody) const {
-        return superball_.supportHessian(nBody);
+        return visit([&](const auto& b) -> Matrix3d { return b.supportHessian(nBody); });
     }
     Matrix3d surfaceCurvature(const Vector3d& nBody) const {
-        return superball_.surfaceCurvature(nBody);
+        return visit([&](const auto& b) -> Matrix3d { return b.surfaceCurvature(nBody); });
     }
 
-    /// The inside test for many body-frame points (the voxels): the answer of gauge(x) < 1.
-    using InsideTest = SuperballInsideTest;
-    InsideTest insideTest() const { return InsideTest(superball_); }
+    /// The inside test for many body-frame points (the voxels): the answer of gauge(x) < 1, by
+    /// the family's own test.
+    class InsideTest {
+      public:
+        template <class Body>
+        explicit InsideTest(const Body& body) : test_(sbpack::insideTest(body)) {}
+        bool operator()(const Vector3d& xBody) const {
+            return std::visit([&](const auto& test) { return test(xBody); }, test_);
+        }
+
+      private:
+        template <class Bodies> struct TestsOf;
+        template <class... Bodies> struct TestsOf<std::variant<Bodies...>> {
+            using type =
+                std::variant<decltype(sbpack::insideTest(std::declval<const Bodies&>()))...>;
+        };
+        typename TestsOf<ShapeFamilies::AnyBody>::type test_;
+    };
+    InsideTest insideTest() const {
+        return visit([](const auto& b) { return InsideTest(b); });
+    }
     /// An increasing function of the gauge that is 1 on the surface (the superball's g^{2p},
     /// without a root): xBody is inside iff it is < 1 (the exact pore sizes' inner loop).
-    double gaugePower(const Vector3d& xBody) const { return sbpack::gaugePower(superball_, xBody); }
+    double gaugePower(const Vector3d& xBody) const {
+        return visit([&](const auto& b) { return sbpack::gaugePower(b, xBody); });
+    }
     /// The point of the body nearest to xBody, xBody itself inside (the exact pore sizes).
     Vector3d closestPoint(const Vector3d& xBody) const {
-        return sbpack::closestPoint(superball_, xBody);
+        return visit([&](const auto& b) -> Vector3d { return sbpack::closestPoint(b, xBody); });
     }
 
-    /// The superball, for code that holds for superballs only.
-    const Superball& superball() const { return superball_; }
-
-  private:
-    explicit ParticleShape(const Superball& superball) : superball_(superball) {}
-    Superball superball_;
+    /// The superball, for code that holds for superballs only; throws std::invalid_argument for
+    /// another family.
+    const Superball& superball() const;
+    /// fn(body) with the family's own body: for code that each family provides in its own files
+    /// (the form factor of analysis/spectral/form_factors.hpp).
+    template <class Fn> decltype(auto) visitBody(Fn&& fn) const {
+        return visit(std::forward<Fn>(fn));
+    }
+    /// The family's name, for messages.
+    std::string_view familyName() const { return ShapeFamilies::info[body_.index()].name; }
 };
 
 } // namespace sbpack

@@ -1,8 +1,7 @@
 #include "shapes/registry.hpp"
 
-#include "shapes/superball_protocol.hpp"
-
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -58,12 +57,25 @@ void restoreRows(EventDrivenMd<Shape>& engine, const std::vector<double>& rows,
 } // namespace
 
 MeasuredProtocol measuredProtocol(const ShapeSpec& shape) {
-    return superballProtocol(shape.p);
+    MeasuredProtocol measured;
+    const bool runs =
+        EngineFamilies::find(shape.familyIndex(), [&]<class E>(std::type_identity<E>) {
+            measured = E::measured(shape.values());
+        });
+    if (!runs)
+        measured.problem = {std::string(kShapeFamilyKey), "sbgen does not run " +
+                                                              std::string(shape.info().name) +
+                                                              "s (sbanalyze analyses them)"};
+    return measured;
 }
 
-std::string shapeOptionHelp(std::string_view /*family*/, const ShapeParameter& /*parameter*/) {
-    return "superball exponent in (0.5, 1000] (default 1: spheres, exact fast path;\n"
-           "otherwise rotating superballs); practical up to 10, above it a warning";
+std::string shapeOptionHelp(std::string_view family, const ShapeParameter& parameter) {
+    std::string help(parameter.description);
+    if (const ShapeFamily* known = findShapeFamily(family))
+        EngineFamilies::find(known - shapeFamilies().data(), [&]<class E>(std::type_identity<E>) {
+            help = E::optionHelp(parameter);
+        });
+    return help;
 }
 
 bool rotating(const ShapeSpec& shape) {
@@ -71,8 +83,12 @@ bool rotating(const ShapeSpec& shape) {
 }
 
 AnyShape shapeFor(const ShapeSpec& shape) {
-    if (!rotating(shape)) return SphereShape{};
-    return SuperballShape(shape.p);
+    std::optional<AnyShape> engineShape;
+    EngineFamilies::find(shape.familyIndex(), [&]<class E>(std::type_identity<E>) {
+        std::visit([&](const auto& one) { engineShape = one; }, E::shapeFor(shape.values()));
+    });
+    if (!engineShape) throw std::invalid_argument(measuredProtocol(shape).problem->message);
+    return *engineShape;
 }
 
 AnyEngine makeEngine(const ShapeSpec& shape, double boxLength, std::vector<ParticleState> state,

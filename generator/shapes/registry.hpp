@@ -1,24 +1,56 @@
 #pragma once
-// The shapes sbgen runs, registered once (docs/architecture.md, "What a new shape needs"): the
-// shape variant and its engines, the factory that picks a shape for a packing's exponent, and
-// the shapes' pair records in a checkpoint, and what sbgen has measured of each. A new shape is
-// one alternative of AnyShape, one branch of shapeFor, one of measuredProtocol and one of
-// shapeOptionHelp; the protocol, the random start, the checkpoint table and sbgen's options name
-// no shape.
+// The shape families sbgen runs, listed once (docs/architecture.md, "What a new shape needs"):
+// each an engine family in its own files (shapes/superball_engines is the model: the family of
+// geometry/shape_families.hpp, its engine shapes, its measurements and its options' help), one
+// entry of EngineFamilies here. From the list: the shape variant and its engines, the factory
+// that picks a shape, the shapes' pair records in a checkpoint and what sbgen has measured of
+// each. The protocol, the random start, the checkpoint table and sbgen's options name no shape.
 
 #include "engine/event_driven_md.hpp"
+#include "geometry/particle_shape.hpp"
 #include "shapes/measured_protocol.hpp"
-#include "shapes/sphere.hpp"
-#include "shapes/superball_shape.hpp"
+#include "shapes/superball_engines.hpp"
 
 #include <string>
+#include <type_traits>
 #include <variant>
 #include <vector>
 
 namespace sbpack {
 
-/// Every shape sbgen can run.
-using AnyShape = std::variant<SphereShape, SuperballShape>;
+/// The engine families, each with its Family (a ShapeFamilyTraits), its engine Shapes (a
+/// std::variant), shapeFor(values), measured(values) and optionHelp(parameter).
+template <class... E> struct EngineFamilyList {
+    /// fn(std::type_identity<E>{}) for the engine family of ShapeFamilies' family `index`;
+    /// false where sbgen runs no such family.
+    template <class Fn> static bool find(std::size_t index, Fn&& fn) {
+        bool found = false;
+        const auto tryOne = [&]<class One>(std::type_identity<One> one) {
+            if (found || ShapeFamilies::indexOf<typename One::Family> != index) return;
+            found = true;
+            fn(one);
+        };
+        (tryOne(std::type_identity<E>{}), ...);
+        return found;
+    }
+};
+
+/// Every family sbgen runs.
+using EngineFamilies = EngineFamilyList<SuperballEngines>;
+
+template <class... Variants> struct JoinedVariants;
+template <class... A> struct JoinedVariants<std::variant<A...>> {
+    using type = std::variant<A...>;
+};
+template <class... A, class... B, class... Rest>
+struct JoinedVariants<std::variant<A...>, std::variant<B...>, Rest...>
+    : JoinedVariants<std::variant<A..., B...>, Rest...> {};
+template <class List> struct ShapesOf;
+template <class... E> struct ShapesOf<EngineFamilyList<E...>> {
+    using type = typename JoinedVariants<typename E::Shapes...>::type;
+};
+/// Every shape sbgen can run: the engine families' shapes, in order.
+using AnyShape = ShapesOf<EngineFamilies>::type;
 
 template <class Shapes> struct EnginesOf;
 template <class... Shapes> struct EnginesOf<std::variant<Shapes...>> {
@@ -30,15 +62,16 @@ using AnyEngine = EnginesOf<AnyShape>::type;
 /// Whether the bodies rotate: all but spheres, which run on the exact sphere shape.
 bool rotating(const ShapeSpec& shape);
 
-/// What sbgen has measured of `shape`: its default rates, cost and range.
+/// What sbgen has measured of `shape`: its default rates, cost and range; for a family sbgen
+/// does not run, a problem that says so.
 MeasuredProtocol measuredProtocol(const ShapeSpec& shape);
 
 /// sbgen's help for the option of `parameter` of the shape family `family` (--p): its range,
 /// default and what the engine makes of it.
 std::string shapeOptionHelp(std::string_view family, const ShapeParameter& parameter);
 
-/// The engine's shape for `shape`: the exact sphere for superballs of p = 1, the rotating
-/// superball of its p otherwise.
+/// The engine's shape for `shape` (its engine family's shapeFor); throws std::invalid_argument
+/// for a family sbgen does not run (measuredProtocol's problem).
 AnyShape shapeFor(const ShapeSpec& shape);
 
 /// The engine of shapeFor(shape); `sizes` a mixture's (EventDrivenMd).

@@ -249,8 +249,8 @@ void registerPacking(py::module_& m) {
             if (const auto family = p.shapeSpec.writtenFamily())
                 text += " shape=" + std::string(*family);
             for (const auto& [name, value] : p.shapeSpec.namedValues())
-                text +=
-                    " " + std::string(name) + "=" + py::repr(py::float_(value)).cast<std::string>();
+                text.append(" ").append(name).append("=").append(
+                    py::repr(py::float_(value)).cast<std::string>());
             return text + " phi=" + py::repr(py::float_(p.packingFraction())).cast<std::string>() +
                    ">";
         });

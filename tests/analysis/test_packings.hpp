@@ -20,7 +20,7 @@ inline Packing latticePacking(double p, int cells, double spacing, double jitter
     std::uniform_real_distribution<double> uniform(-1.0, 1.0);
     std::normal_distribution<double> normal;
     Packing packing;
-    packing.shapeSpec.p = p;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(p);
     packing.semiAxis = 0.5;
     packing.boxLength = cells * spacing;
     for (int i = 0; i < cells; ++i)
@@ -42,7 +42,7 @@ inline Packing latticePacking(double p, int cells, double spacing, double jitter
 /// of edge (n (pi / 6) / phi)^(1/3)): a fixture that is not hyperuniform (S(0) > 0, alpha = 0).
 inline Packing randomSequentialAddition(int n, double phi, std::uint64_t seed) {
     Packing packing;
-    packing.shapeSpec.p = 1.0;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(1.0);
     packing.semiAxis = 0.5;
     packing.boxLength = std::cbrt(n * (std::numbers::pi / 6.0) / phi);
     std::mt19937_64 random(seed);
@@ -71,7 +71,7 @@ inline Packing randomSequentialAddition(int n, double phi, std::uint64_t seed) {
 inline Packing singleParticle(double p, double radius, double boxLength, const Vector3d& position,
                               const Quaterniond& orientation = Quaterniond::Identity()) {
     Packing packing;
-    packing.shapeSpec.p = p;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(p);
     packing.semiAxis = radius;
     packing.boxLength = boxLength;
     packing.positions = {position};

@@ -302,7 +302,7 @@ TEST(ExactPoreSize, ClosestPointIsCertifiedByTheSupportFunction) {
 void expectCellSearchEqualsBruteForce(double p, bool mixture) {
     std::mt19937_64 generator(17);
     Packing packing;
-    packing.shapeSpec.p = p;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(p);
     packing.semiAxis = 0.4;
     packing.boxLength = 4.0;
     std::uniform_real_distribution<double> uniform(0.0, packing.boxLength);
@@ -323,7 +323,8 @@ void expectCellSearchEqualsBruteForce(double p, bool mixture) {
                             packing.positions[j] + packing.boxLength * Vector3d(a, b, c);
                         const Vector3d body =
                             packing.orientations[j].toRotationMatrix().transpose() * (x - image);
-                        const Superball shape(packing.shapeSpec.p, packing.semiAxisOf(j));
+                        const Superball shape(packing.shapeSpec.superballExponent().value(),
+                                              packing.semiAxisOf(j));
                         expected = std::min(expected, (body - closestPoint(shape, body)).norm());
                     }
         ASSERT_NEAR(pores.poreSize(x), expected, 1e-14) << x.transpose();

@@ -26,7 +26,8 @@ int holderByDefinition(const Packing& packing, int m, int i, int j, int k) {
     const double a = packing.boxLength / m;
     const Vector3d centre((i + 0.5) * a, (j + 0.5) * a, (k + 0.5) * a);
     for (std::size_t n = 0; n < packing.size(); ++n) {
-        const Superball shape(packing.shapeSpec.p, packing.semiAxisOf(n)); // a mixture's own size
+        const Superball shape(packing.shapeSpec.superballExponent().value(),
+                              packing.semiAxisOf(n)); // a mixture's own size
         const Vector3d d = minimumImage(centre - packing.positions[n], packing.boxLength);
         if (shape.contains(packing.orientations[n].toRotationMatrix().transpose() * d))
             return static_cast<int>(n);
@@ -50,8 +51,9 @@ void expectMatchesDefinition(const Packing& packing, int m) {
                 wrong += mask[index] != (expected ? 1 : 0) || voxels.solid(i, j, k) != expected;
                 wrongLabels += labels[index] != static_cast<std::uint32_t>(holder + 1);
             }
-    EXPECT_EQ(wrong, 0) << "p = " << packing.shapeSpec.p << ", M = " << m;
-    EXPECT_EQ(wrongLabels, 0) << "particle labels, p = " << packing.shapeSpec.p << ", M = " << m;
+    EXPECT_EQ(wrong, 0) << "p = " << packing.shapeSpec.superballExponent().value() << ", M = " << m;
+    EXPECT_EQ(wrongLabels, 0) << "particle labels, p = "
+                              << packing.shapeSpec.superballExponent().value() << ", M = " << m;
     EXPECT_EQ(voxels.solidCount(), solid);
     EXPECT_DOUBLE_EQ(voxels.phiVoxel(), static_cast<double>(solid) / (double(m) * m * m));
 }

@@ -13,7 +13,7 @@ namespace sbpack::lattices {
 /// Spheres of diameter 1 (mean width w = 1) at the given centres, aligned.
 inline Packing pointPacking(const std::vector<Vector3d>& positions, double boxLength) {
     Packing packing;
-    packing.shapeSpec.p = 1.0;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(1.0);
     packing.semiAxis = 0.5;
     packing.boxLength = boxLength;
     for (const Vector3d& r : positions)

@@ -27,7 +27,7 @@ inline Packing randomSuperballs(double p, std::size_t n, std::uint64_t seed) {
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     std::normal_distribution<double> gauss(0.0, 1.0);
     Packing packing;
-    packing.shapeSpec.p = p;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(p);
     packing.semiAxis = 0.6180339887498949;
     packing.boxLength = 9.876543210987654;
     for (std::size_t i = 0; i < n; ++i) {

@@ -114,7 +114,7 @@ TEST(CellList, RejectsInvalidInput) {
 Packing latticePacking(double p, double semiAxis, double latticeConstant, int cells,
                        const std::vector<Vector3d>& basis) {
     Packing packing;
-    packing.shapeSpec.p = p;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(p);
     packing.semiAxis = semiAxis;
     packing.boxLength = cells * latticeConstant;
     for (int x = 0; x < cells; ++x)
@@ -225,7 +225,7 @@ TEST(ContactNetwork, RattlerRemovalIsIterated) {
     // counts ring (3, 2, 2, 2), tail (2, 2, 1). Only the tail end has fewer than 2 contacts, but
     // removing it exposes the next: the whole tail goes, the ring stays with 2 contacts each.
     Packing packing;
-    packing.shapeSpec.p = 1.0;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(1.0);
     packing.semiAxis = 0.5;
     packing.boxLength = 20.0;
     const Vector3d origin(10.0, 10.0, 10.0);

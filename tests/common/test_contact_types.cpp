@@ -233,7 +233,7 @@ TEST(ContactTypes, SpherePackingWithRandomOrientationsIsUniform) {
 /// An aligned simple-cubic lattice of superballs of exponent p touching face to face (5^3).
 Packing alignedSimpleCubic(double p) {
     Packing packing = lattices::cubicCrystal(5, 1.0, lattices::kSimpleCubic);
-    packing.shapeSpec.p = p;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(p);
     return packing;
 }
 
@@ -269,7 +269,7 @@ TEST(ContactTypes, RattlersContactsAreLeftOut) {
 /// about the box's centre, positions and orientations alike.
 Packing turnedCluster(double p, std::uint64_t orientationSeed, const Quaterniond& rotation) {
     Packing packing = lattices::cubicCrystal(3, 1.0, lattices::kSimpleCubic, Vector3d::Zero());
-    packing.shapeSpec.p = p;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(p);
     if (orientationSeed) packing = randomlyOriented(packing, orientationSeed);
     packing.boxLength = 12.0;
     const Vector3d centre = Vector3d::Constant(6.0);

@@ -57,7 +57,7 @@ TEST(GsdIo, SbpacksFileRoundTripsBitForBit) {
     const fs::path file = scratch("round.gsd");
     writeGsd(original, file);
     const Packing read = readPackingFile(file);
-    EXPECT_EQ(read.shapeSpec.p, original.shapeSpec.p);
+    EXPECT_EQ(read.shapeSpec, original.shapeSpec);
     EXPECT_EQ(read.semiAxis, original.semiAxis);
     EXPECT_EQ(read.boxLength, original.boxLength);
     EXPECT_EQ(read.reducedPressure, original.reducedPressure);
@@ -108,7 +108,7 @@ TEST(GsdIo, TheSchemasChunksAreThePackingInSinglePrecision) {
     const nlohmann::json shape = nlohmann::json::parse(std::string(shapes.data()));
     EXPECT_EQ(shape["type"], "ConvexPolyhedron");
     ASSERT_GE(shape["vertices"].size(), 200u);
-    const double a = packing.semiAxis, p = packing.shapeSpec.p;
+    const double a = packing.semiAxis, p = packing.shapeSpec.superballExponent().value();
     for (const auto& v : shape["vertices"]) {
         double sum = 0.0;
         for (int k = 0; k < 3; ++k)
@@ -142,7 +142,7 @@ TEST(GsdIo, AHoomdHardSphereFrameReadsAsSpheres) {
     writeHoomdFrame(file, {8.0F, 8.0F, 8.0F, 0.0F, 0.0F, 0.0F},
                     R"({"type": "Sphere", "diameter": 1.5})");
     const Packing packing = readPackingFile(file);
-    EXPECT_EQ(packing.shapeSpec.p, 1.0);
+    EXPECT_EQ(packing.shapeSpec.superballExponent().value(), 1.0);
     EXPECT_EQ(packing.semiAxis, 0.75);
     EXPECT_EQ(packing.boxLength, 8.0);
     ASSERT_EQ(packing.size(), 2u);

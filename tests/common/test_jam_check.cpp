@@ -19,7 +19,7 @@ const std::string kData = SBPACK_DATA_DIR;
 /// particles well apart from the column and from each other.
 Packing column(int loose) {
     Packing packing;
-    packing.shapeSpec.p = 3.0;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(3.0);
     packing.semiAxis = 0.5;
     packing.boxLength = 6.0;
     for (int k = 0; k < 6; ++k)
@@ -34,7 +34,7 @@ Packing column(int loose) {
 /// (spacing 2 D): every sphere has exactly 4 contacts, all in its layer's plane.
 Packing squareLayers() {
     Packing packing;
-    packing.shapeSpec.p = 1.0;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(1.0);
     packing.semiAxis = 0.5;
     packing.boxLength = 4.0;
     for (int layer = 0; layer < 2; ++layer)

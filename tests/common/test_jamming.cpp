@@ -128,7 +128,7 @@ TEST(RigidityMatrix, GapChangesAreTheDerivativesOfTheExactSignedDistance) {
     for (const double p : {0.85, 1.0, 1.5, 3.0}) {
         for (int trial = 0; trial < 10; ++trial) {
             Packing packing;
-            packing.shapeSpec.p = p;
+            packing.shapeSpec = sbpack::ShapeSpec::superball(p);
             packing.boxLength = 10.0;
             packing.orientations = {random.rotation(), random.rotation()};
             const Vector3d u = random.normalVector().normalized();
@@ -442,7 +442,7 @@ TEST(JammingCategories, AnOpeningFreesASphereButLeavesASlidingSuperballUndecided
     Packing packing = simpleCubic(4);
     const int loose = 5;
     for (const double p : {1.0, 1.5}) {
-        packing.shapeSpec.p = p;
+        packing.shapeSpec = sbpack::ShapeSpec::superball(p);
         const RigidityNetwork network = backboneNetwork(
             packing, withoutPlusXContacts(ContactNetwork({}).compute(packing), loose));
         const JammingResult local = test(network, JammingCategory::Local);

@@ -35,7 +35,7 @@ Packing superballs(double p, std::size_t n = 40) {
 }
 
 void expectSame(const Packing& read, const Packing& original) {
-    EXPECT_EQ(read.shapeSpec.p, original.shapeSpec.p);
+    EXPECT_EQ(read.shapeSpec, original.shapeSpec);
     EXPECT_EQ(read.semiAxis, original.semiAxis);
     EXPECT_EQ(read.boxLength, original.boxLength);
     ASSERT_EQ(read.size(), original.size());
@@ -85,7 +85,8 @@ TEST(LammpsIo, ADumpAsLammpsWritesOneReadsAsTheSameParticles) {
                        "1 1 0.25 0.5 0.5 9.9 1.2 1.2 1.2 1 0 0 0\n"
                        "ITEM: TIMESTEP\n2000\n");
     const Packing packing = readPackingFile(file);
-    EXPECT_EQ(packing.shapeSpec.p, 1.0); // no roundness columns: LAMMPS's ellipsoids, here spheres
+    EXPECT_EQ(packing.shapeSpec.superballExponent().value(),
+              1.0); // no roundness columns: LAMMPS's ellipsoids, here spheres
     EXPECT_EQ(packing.semiAxis, 0.6);
     EXPECT_EQ(packing.boxLength, 10.0);
     ASSERT_EQ(packing.size(), 2u);

@@ -33,7 +33,7 @@ namespace fs = std::filesystem;
 /// at the gaps given (in units of their own R_i + R_j), the rest far apart.
 Packing fourSpheres(double gap01, double gap23) {
     Packing packing;
-    packing.shapeSpec.p = 1.0;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(1.0);
     packing.boxLength = 10.0;
     packing.semiAxes = {0.5, 0.35, 0.35, 0.35};
     packing.semiAxis = 0.5;
@@ -198,7 +198,7 @@ TEST(Mixtures, AContactIsWithinTheToleranceOfItsOwnPair) {
 // (docs/mixtures.md, "The jam check of a mixture"): the verdict names the empty backbone.
 TEST(Mixtures, TheJamChecksVerdictOnAMixtureNamesItsBackbonesCount) {
     Packing row;
-    row.shapeSpec.p = 1.0;
+    row.shapeSpec = sbpack::ShapeSpec::superball(1.0);
     row.boxLength = 2.4;
     row.semiAxis = 0.5;
     row.semiAxes = {0.5, 0.35, 0.35};

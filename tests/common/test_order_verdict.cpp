@@ -93,7 +93,7 @@ std::vector<LatticeCase> superballLattices() {
     for (const auto& [name, p] : {std::pair{"1.5", 1.5}, std::pair{"4", 4.0}})
         for (bool perturbed : {false, true}) {
             Packing crystal = cubicCrystal(5, perturbed ? 1.0 + 2.0 * h + 1e-3 : 1.0, kSimpleCubic);
-            crystal.shapeSpec.p = p;
+            crystal.shapeSpec = sbpack::ShapeSpec::superball(p);
             cases.push_back({std::string("sc p = ") + name + (perturbed ? " displaced" : ""),
                              perturbed ? displaced(crystal, h, 7) : crystal});
         }

@@ -37,7 +37,7 @@ Packing makePacking(std::size_t n = 6) {
     std::uniform_real_distribution<double> uniform(0.0, 1.0);
     std::normal_distribution<double> gauss(0.0, 1.0);
     Packing packing;
-    packing.shapeSpec.p = 1.7;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(1.7);
     packing.semiAxis = 0.5;
     packing.boxLength = 10.0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -135,7 +135,7 @@ TEST_F(PackingIo, RoundTripIsBitExact) {
     writePacking(original, path);
     const Packing read = readPacking(path);
 
-    EXPECT_EQ(read.shapeSpec.p, original.shapeSpec.p);
+    EXPECT_EQ(read.shapeSpec, original.shapeSpec);
     EXPECT_EQ(read.semiAxis, original.semiAxis);
     EXPECT_EQ(read.boxLength, original.boxLength);
     ASSERT_EQ(read.size(), original.size());
@@ -617,7 +617,7 @@ TEST_F(PackingValidation, RejectsInfiniteVelocityAndInfiniteP) {
     expectError<InvalidPacking>([&] { validatePacking(packing, "src.h5"); },
                                 {"src.h5", "particle 4", "velocity", "non-finite"});
     packing = makePacking();
-    packing.shapeSpec.p = std::numeric_limits<double>::infinity();
+    packing.shapeSpec = sbpack::ShapeSpec::superball(std::numeric_limits<double>::infinity());
     expectError<InvalidPacking>([&] { validatePacking(packing, "src.h5"); }, {"p = inf"});
 }
 
@@ -644,7 +644,7 @@ TEST_F(TextIo, RoundTripIsBitExact) {
     const fs::path path = file("round_trip.txt");
     writeTextPacking(original, path);
     const Packing read = readTextPacking(path);
-    EXPECT_EQ(read.shapeSpec.p, original.shapeSpec.p);
+    EXPECT_EQ(read.shapeSpec, original.shapeSpec);
     EXPECT_EQ(read.semiAxis, original.semiAxis);
     EXPECT_EQ(read.boxLength, original.boxLength);
     ASSERT_EQ(read.size(), original.size());
@@ -692,7 +692,7 @@ TEST_F(TextIo, ReadsCommentsBlankLinesAndCarriageReturns) {
                                         "1 2 3 1 0 0 0\r\n-1 +2 3e0 0 1 0 0\n# trailing\n");
     const Packing read = readTextPacking(path);
     ASSERT_EQ(read.size(), 2u);
-    EXPECT_EQ(read.shapeSpec.p, 1.5);
+    EXPECT_EQ(read.shapeSpec.superballExponent().value(), 1.5);
     EXPECT_EQ(read.positions[1], Vector3d(9.0, 2.0, 3.0)); // wrapped
     EXPECT_EQ(read.orientations[1].x(), 1.0);
 }
@@ -836,13 +836,15 @@ TEST_F(TextIo, ExtendedXyzReadsBackBitForBit) {
     const fs::path path = file("round.xyz");
     writeExtendedXyz(packing, path);
     const Packing read = readPackingFile(path);
-    EXPECT_EQ(read.shapeSpec.p, packing.shapeSpec.p);
+    EXPECT_EQ(read.shapeSpec, packing.shapeSpec);
     // A p of many digits is the header's as written, not 1 / (1 / p) (which may miss it by an
     // ulp) nor rounded to 6 digits.
     Packing manyDigits = packing;
-    manyDigits.shapeSpec.p = 7.390019499834; // 1 / (1 / p) is 7.3900194998340005
+    manyDigits.shapeSpec =
+        sbpack::ShapeSpec::superball(7.390019499834); // 1 / (1 / p) is 7.3900194998340005
     writeExtendedXyz(manyDigits, path);
-    EXPECT_EQ(readPackingFile(path).shapeSpec.p, manyDigits.shapeSpec.p);
+    EXPECT_EQ(readPackingFile(path).shapeSpec.superballExponent().value(),
+              manyDigits.shapeSpec.superballExponent().value());
     EXPECT_EQ(read.semiAxis, packing.semiAxis);
     EXPECT_EQ(read.boxLength, packing.boxLength);
     ASSERT_EQ(read.size(), packing.size());
@@ -860,20 +862,25 @@ TEST_F(TextIo, ExtendedXyzInOvitosSpellingAndItsRefusals) {
     const std::string a = "A 1 1 1 0 0 0 1 0.5 0.5 0.5 0.8 0.8\n";
     const std::string b = "A 3 3 3 0 0 0.6 0.8 0.5 0.5 0.5 0.8 0.8\n";
     const Packing read = readExtendedXyz(textFile(ovito + a + b, "ovito.xyz"));
-    EXPECT_DOUBLE_EQ(read.shapeSpec.p, 1.25);
+    EXPECT_DOUBLE_EQ(read.shapeSpec.superballExponent().value(), 1.25);
     EXPECT_EQ(read.semiAxis, 0.5);
     EXPECT_NEAR(read.orientations[1].w(), 0.8, 1e-15);
     EXPECT_NEAR(read.orientations[1].z(), 0.6, 1e-15);
     const std::string spheres = "1\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=pos:R:3 p=1 "
                                 "semi_axis=0.5\n1 2 3\n";
-    EXPECT_EQ(readExtendedXyz(textFile(spheres, "spheres.xyz")).shapeSpec.p, 1.0);
+    EXPECT_EQ(
+        readExtendedXyz(textFile(spheres, "spheres.xyz")).shapeSpec.superballExponent().value(),
+        1.0);
     // OVITO 3.17's own export: SuperquadricRoundness in single precision, 10 digits.
     const std::string written = "1\nLattice=\"4.0 0.0 0.0 0.0 4.0 0.0 0.0 0.0 4.0\" pbc=\"T T T\" "
                                 "Properties=species:S:1:pos:R:3:orientation:R:4:"
                                 "aspherical_shape:R:3:SuperquadricRoundness:R:2\n"
                                 "Superball 1 2 3 0 0 0 1 0.7653366272 0.7653366272 0.7653366272 "
                                 "0.6666667008 0.6666667008\n";
-    EXPECT_EQ(readExtendedXyz(textFile(written, "ovito-written.xyz")).shapeSpec.p, 1.5);
+    EXPECT_EQ(readExtendedXyz(textFile(written, "ovito-written.xyz"))
+                  .shapeSpec.superballExponent()
+                  .value(),
+              1.5);
     const auto refused = [&](const std::string& body, const std::string& words) {
         expectError<PackingFileError>([&] { readExtendedXyz(textFile(body, "bad.xyz")); },
                                       {"bad.xyz", words});

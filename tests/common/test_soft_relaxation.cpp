@@ -101,7 +101,7 @@ TEST(SoftRelaxation, ItsForcesAreASelfStressOfTheContactAnalysesNetworkAndTheStr
 /// of 0.01 D (within a shell of 0.02 D: f = 0.01), alone in a large box.
 Packing threeSuperballs() {
     Packing packing;
-    packing.shapeSpec.p = 1.5;
+    packing.shapeSpec = sbpack::ShapeSpec::superball(1.5);
     packing.semiAxis = 0.5;
     packing.boxLength = 10.0;
     packing.orientations = {Quaterniond(0.9, 0.2, -0.3, 0.1).normalized(),

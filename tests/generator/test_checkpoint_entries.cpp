@@ -18,7 +18,7 @@ namespace {
 Packing shortSuperballCheckpoint() {
     ProtocolParameters p = testing::smallRun(1);
     p.particles = 27;
-    p.shape.p = 1.5;
+    p.shape = sbpack::ShapeSpec::superball(1.5);
     p.pressureSwitch = 1e2;
     p.pressureFinal = 1e4;
     p.pressureFinish = 1e3;

@@ -22,7 +22,7 @@ namespace {
 ProtocolParameters smallRun(double p, int particles) {
     ProtocolParameters parameters;
     parameters.particles = particles;
-    parameters.shape.p = p;
+    parameters.shape = sbpack::ShapeSpec::superball(p);
     parameters.pressureFinal = 1e8;
     if (p == 1.0) parameters.gammaSlow = 1e-3; // superballs keep their default, 1e-2
     return parameters;

@@ -27,7 +27,7 @@ using testing::smallRun;
 ProtocolParameters smallSuperballRun(std::uint64_t seed) {
     ProtocolParameters p = smallRun(seed);
     p.particles = 27;
-    p.shape.p = 1.5;
+    p.shape = sbpack::ShapeSpec::superball(1.5);
     p.pressureSwitch = 1e2;
     p.pressureFinal = 1e4;
     return p;
@@ -76,8 +76,8 @@ TEST(JammingProtocol, RejectsBadParametersNamingTheParameter) {
         }
     };
     expectBad([](auto& p) { p.particles = 1; }, "n_particles");
-    expectBad([](auto& p) { p.shape.p = 0.49; }, "p");
-    expectBad([](auto& p) { p.shape.p = NAN; }, "p");
+    expectBad([](auto& p) { p.shape = sbpack::ShapeSpec::superball(0.49); }, "p");
+    expectBad([](auto& p) { p.shape = sbpack::ShapeSpec::superball(NAN); }, "p");
     expectBad([](auto& p) { p.phiInit = 0.5; }, "phi_init");
     expectBad([](auto& p) { p.phiInit = 0.0; }, "phi_init");
     expectBad([](auto& p) { p.phiInit = 1e-300; }, "phi_init"); // once wrote L = 2.2e100
@@ -139,7 +139,7 @@ TEST(JammingProtocol, AStopRequestEndsTheWindowAndResumesExactly) {
     // the checkpoint written then resumes bit for bit (p = 1.5: the rotating engine).
     ProtocolParameters parameters = smallRun(11);
     parameters.particles = 27;
-    parameters.shape.p = 1.5;
+    parameters.shape = sbpack::ShapeSpec::superball(1.5);
     parameters.pressureSwitch = 1e2;
     parameters.pressureFinal = 1e4;
     JammingProtocol uninterrupted(parameters);
@@ -221,7 +221,7 @@ TEST(JammingProtocol, ARepeatedStopBeforeTheFirstWindowLeavesAResumableCheckpoin
     for (const double p : {1.0, 1.5}) {
         ProtocolParameters parameters = smallRun(11);
         parameters.particles = 27;
-        parameters.shape.p = p;
+        parameters.shape = sbpack::ShapeSpec::superball(p);
         StopRequest stop;
         stop.request(SIGTERM);
         stop.request(SIGTERM);
@@ -348,7 +348,7 @@ TEST(JammingProtocol, DefaultsSwitchAtTheirPressureAndUseTheSlowRateOfTheirShape
     EXPECT_EQ(spheres.slowGrowthRate(), 3e-3);
 
     ProtocolParameters superballs; // every default but the size and the end
-    superballs.shape.p = 1.5;
+    superballs.shape = sbpack::ShapeSpec::superball(1.5);
     superballs.particles = 27;
     superballs.pressureFinal = 1e7;
     EXPECT_EQ(superballs.slowGrowthRate(), paperSlowRate(1.5));
@@ -410,7 +410,7 @@ TEST(JammingProtocol, TheDefaultRatesAreTheMeasuredPaperRatesOfTheirP) {
     spheres.gammaFast = 0.05;
     EXPECT_EQ(spheres.fastGrowthRate(), 0.05);
     ProtocolParameters superballs;
-    superballs.shape.p = 1.1;
+    superballs.shape = sbpack::ShapeSpec::superball(1.1);
     EXPECT_EQ(superballs.slowGrowthRate(), paperSlowRate(1.1));
     superballs.gammaSlow = 2e-3;
     EXPECT_EQ(superballs.slowGrowthRate(), 2e-3);
@@ -421,7 +421,7 @@ TEST(JammingProtocol, TheDefaultRatesAreTheMeasuredPaperRatesOfTheirP) {
 TEST(JammingProtocol, TheSpeedKnobScalesTheDefaultSlowRateForEveryP) {
     for (const double p : {1.0, 1.3, 3.0}) {
         ProtocolParameters paper, faster;
-        paper.shape.p = faster.shape.p = p;
+        paper.shape = faster.shape = sbpack::ShapeSpec::superball(p);
         faster.speed = 10.0;
         EXPECT_DOUBLE_EQ(faster.slowGrowthRate(), 10.0 * paper.slowGrowthRate()) << p;
         EXPECT_EQ(faster.fastGrowthRate(), paper.fastGrowthRate()) << p;

@@ -82,7 +82,7 @@ TEST(Mixtures, TwoAlignedSuperballsOfTwoSizesMeetFaceToFace) {
 // ordered.
 TEST(Mixtures, ABinarySuperballRunJamsWithoutOverlap) {
     ProtocolParameters p = smallMixture(5);
-    p.shape.p = 1.5;
+    p.shape = sbpack::ShapeSpec::superball(1.5);
     JammingProtocol run(p);
     ASSERT_TRUE(run.run([](const ProtocolStatus&) {}));
     const Packing packing = run.checkpoint();

@@ -14,7 +14,7 @@ namespace {
 
 ProtocolParameters defaults(double p, int particles) {
     ProtocolParameters parameters;
-    parameters.shape.p = p;
+    parameters.shape = sbpack::ShapeSpec::superball(p);
     parameters.particles = particles;
     return parameters;
 }

@@ -69,7 +69,7 @@ class StiffJamming : public ::testing::TestWithParam<double> {};
 
 TEST_P(StiffJamming, AJamHasTheContactsOfOneAndARefusalNamesTheChain) {
     ProtocolParameters parameters;
-    parameters.shape.p = GetParam();
+    parameters.shape = sbpack::ShapeSpec::superball(GetParam());
     parameters.particles = 40;
     parameters.seed = 3;
     parameters.gammaSlow = 1e-2;
@@ -83,9 +83,9 @@ TEST_P(StiffJamming, AJamHasTheContactsOfOneAndARefusalNamesTheChain) {
     const Network net = countContacts(packing, status.jam->tolerance);
     std::printf("p = %g: %s; P = %.3g, %.2f contacts per particle, rattlers %.3f, smallest gap "
                 "%.2g D, %.2f fallbacks per collision\n",
-                parameters.shape.p, status.jam->jammed ? "jammed" : "refused",
-                status.reducedPressure, net.contactsPerParticle, net.rattlerFraction,
-                net.smallestGap,
+                parameters.shape.superballExponent().value(),
+                status.jam->jammed ? "jammed" : "refused", status.reducedPressure,
+                net.contactsPerParticle, net.rattlerFraction, net.smallestGap,
                 static_cast<double>(status.predictor.distanceFallbacks) /
                     static_cast<double>(status.collisions));
     EXPECT_GT(net.smallestGap, -1e-12); // no overlap
