@@ -104,10 +104,9 @@ int main(int argc, char** argv) {
         const Packing packing = readPacking(o.packing);
         const Progress progress(nullptr, nullptr);
         const double w = packing.shape().meanWidth();
-        std::printf("packing %s: N = %zu, p = %g, phi = %.4f, L = %.4f, w = %.4f; threads %d\n",
-                    o.packing.c_str(), packing.size(),
-                    packing.shapeSpec.superballExponent().value(), packing.packingFraction(),
-                    packing.boxLength, w, o.threads);
+        std::printf("packing %s: N = %zu, %s, phi = %.4f, L = %.4f, w = %.4f; threads %d\n",
+                    o.packing.c_str(), packing.size(), packing.shapeSpec.describe().c_str(),
+                    packing.packingFraction(), packing.boxLength, w, o.threads);
 
         SpectralDensityParameters chiParameters;
         chiParameters.fft.wisdomFile = o.wisdom;

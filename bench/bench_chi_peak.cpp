@@ -30,8 +30,8 @@ int main(int argc, char** argv) {
     const Progress quiet;
     const double w = packing.shape().meanWidth();
     const double shellQw = 2.0 * std::numbers::pi / packing.boxLength * w;
-    std::printf("%s: N = %zu, p = %g, box wave number 2 pi w / L = %.4f\n\n", argv[1],
-                packing.size(), packing.shapeSpec.superballExponent().value(), shellQw);
+    std::printf("%s: N = %zu, %s, box wave number 2 pi w / L = %.4f\n\n", argv[1], packing.size(),
+                packing.shapeSpec.describe().c_str(), shellQw);
     std::printf("| M | binning | Q_peak w | chi_peak / w^3 |\n|---|---|---|---|\n");
     for (const int m : bench::parseGrids(argc > 2 ? argv[2] : "200,300")) {
         const bench::VoxelSpectrumRun run = bench::voxelSpectrumRun(packing, m, quiet);

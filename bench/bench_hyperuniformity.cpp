@@ -80,9 +80,9 @@ int main(int argc, char** argv) {
     const Progress quiet;
     const double w = packing.shape().meanWidth();
     const ExactSpectralDensityResult exact = ExactSpectralDensity({}).compute(packing, quiet);
-    std::printf("%s: N = %zu, p = %g, exact chi at %zu wave vectors (Q w <= 3) in %.3f s\n\n",
-                argv[1], packing.size(), packing.shapeSpec.superballExponent().value(),
-                2 * exact.modes.size(), exact.runtimeSeconds);
+    std::printf("%s: N = %zu, %s, exact chi at %zu wave vectors (Q w <= 3) in %.3f s\n\n", argv[1],
+                packing.size(), packing.shapeSpec.describe().c_str(), 2 * exact.modes.size(),
+                exact.runtimeSeconds);
     std::printf(
         "| M | voxels + FFT s | chi error / peak, RMS | max | alpha, voxel | a0 / w^3, voxel "
         "| H, voxel | alpha, exact+voxel | a0 / w^3, exact+voxel | H, exact+voxel | "

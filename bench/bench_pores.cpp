@@ -279,9 +279,9 @@ int errors(const Options& o, const Packing& packing) {
             relative(shifted.secondMoment, exact.secondMoment), sbpack::largestGap(shifted, exact));
         if (m == list.back()) {
             const auto t = sbpack::Transport({}).compute(
-                voxel, packing.shapeSpec.superballExponent().value(), packing.packingFraction());
+                voxel, packing.shapeSpec.superballExponent(), packing.packingFraction());
             const auto te = sbpack::Transport({}).compute(
-                exact, packing.shapeSpec.superballExponent().value(), packing.packingFraction());
+                exact, packing.shapeSpec.superballExponent(), packing.packingFraction());
             std::printf("transport at M = %d (exact in brackets): zeta2 = %.5f, F = %.4f, k/w^2 = "
                         "%.3e (%.3e), tau D/w^2 = %.3e (%.3e), T1 D/w^2 = %.3e (%.3e)\n",
                         m, t.zeta2.value_or(NAN), t.formationFactor.value_or(NAN),

@@ -54,7 +54,7 @@ constexpr Field kFile[] = {
     {"box_length", A, F, "length", "cubic box edge L", Mean},
     {"semi_axis", A, F, "length", "semi-axis R (major-axis length D = 2 R)"},
     {"phi", A, F, "1", "packing fraction N v1 / L^3", Mean},
-    {"mean_width", A, F, "length", "mean width w of one superball", Mean},
+    {"mean_width", A, F, "length", "mean width w of one particle (the largest of a mixture)", Mean},
 };
 
 // After the shape's fields, which the members share (shapeFields).

@@ -19,8 +19,17 @@ namespace sbpack {
 /// Every form factor the series path can sum.
 using AnyFormFactor = std::variant<SuperballFormFactor>;
 
+/// Whether `shape`'s family has a form factor here (else the exact chi_V leaves it out).
+inline bool hasFormFactor(const ParticleShape& shape) {
+    return shape.visitBody([](const auto& body) {
+        return requires {
+            AnyFormFactor(formFactorFor(body));
+        };
+    });
+}
+
 /// The form factor of `shape`'s body, at its size; throws std::invalid_argument for a family
-/// without one.
+/// without one (hasFormFactor).
 inline AnyFormFactor formFactorOf(const ParticleShape& shape) {
     return shape.visitBody([&](const auto& body) -> AnyFormFactor {
         if constexpr (requires { AnyFormFactor(formFactorFor(body)); })

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace sbpack {
@@ -67,8 +68,8 @@ std::vector<std::pair<std::string_view, double>> ShapeSpec::namedValues() const 
 }
 
 std::optional<std::string_view> ShapeSpec::writtenFamily() const {
-    if (family_ == 0 || family_ >= ShapeFamilies::size) return std::nullopt; // the first: unnamed
-    return info().name;
+    if (family_ == 0) return std::nullopt; // the first family is the unnamed one
+    return ShapeFamilies::info.at(family_).name;
 }
 
 std::vector<ShapeField> shapeFields() {
@@ -80,12 +81,16 @@ std::vector<ShapeField> shapeFields() {
                                     .text = true,
                                     .optional = true}};
     const bool several = ShapeFamilies::size > 1;
+    const auto listed = [&](std::string_view name) {
+        return std::ranges::any_of(fields, [&](const ShapeField& f) { return f.name == name; });
+    };
     for (const ShapeFamily& family : ShapeFamilies::info)
         for (const ShapeParameter& parameter : family.parameters)
-            fields.push_back({.name = parameter.name,
-                              .units = parameter.units,
-                              .description = parameter.description,
-                              .optional = several});
+            if (!listed(parameter.name)) // a name two families share is one field
+                fields.push_back({.name = parameter.name,
+                                  .units = parameter.units,
+                                  .description = parameter.description,
+                                  .optional = several});
     return fields;
 }
 
@@ -114,6 +119,7 @@ ShapeSpec ShapeSpec::fromSuperquadric(const Superquadric& q) {
 }
 
 std::string ShapeSpec::describe() const {
+    if (values_.empty()) return std::string(info().name);
     std::string text;
     for (const auto& [name, value] : namedValues())
         text += fmt::format("{}{} = {}", text.empty() ? "" : ", ", name, value);

@@ -5,9 +5,9 @@
 // the nearest point) every analysis may use whatever the family. Both dispatch over the families
 // of geometry/shape_families.hpp to each family's own files (geometry/shape_family.hpp says what
 // a family provides), so that a new family changes nothing here. Code that holds for superballs
-// only asks for the superball (ParticleShape::superball: the form factor, the GPU's inside test)
-// or its exponent, nothing for another family (ShapeSpec::superballExponent: the transport fit
-// in p, which then leaves k out; sbgen's superball engine).
+// only asks for the superball (ParticleShape::superball: the GPU's voxel geometry) or its
+// exponent, nothing for another family (ShapeSpec::superballExponent: the transport fit in p,
+// which then leaves k out; FileContext::gridsOnGpu, which keeps other families on the CPU).
 
 #include "geometry/shape_families.hpp"
 
@@ -42,8 +42,8 @@ class ShapeSpec {
     /// Spheres (the superball of p = 1: sbgen's exact sphere engine; orientations carry nothing).
     bool isSphere() const;
     /// The superball's exponent, nothing for another family: what code that holds for superballs
-    /// only asks (the transport fit in p, sbgen's superball engine), so that a new family leaves
-    /// that code as it is.
+    /// only asks (the transport fit in p, the GPU's grids), so that a new family leaves that code
+    /// as it is.
     std::optional<double> superballExponent() const {
         if (family_ != ShapeFamilies::indexOf<SuperballFamily>) return std::nullopt;
         return values_[0];
@@ -79,7 +79,8 @@ class ShapeSpec {
     /// The shape whose superquadric `q` is (to 1e-12): what the exchange formats read. Throws
     /// std::invalid_argument, saying what each family needs, where no family has it.
     static ShapeSpec fromSuperquadric(const Superquadric& q);
-    /// The parameters for messages and tables, each "name = value": "p = 1.5".
+    /// The parameters for messages and tables, each "name = value": "p = 1.5" (a family without
+    /// parameters: its name).
     std::string describe() const;
     bool operator==(const ShapeSpec&) const = default;
 

@@ -47,10 +47,30 @@ struct Superquadric {
     double northSouth = 2.0; ///< n of z: 2 / OVITO's roundness theta
 };
 
+/// What the pair solvers need of a body (centrally symmetric and convex, in its own frame): its
+/// support function h, support point and the Hessian of h (docs/design.md §2), its gauge, its
+/// semi-axis, the body scaled by a factor (B of a mixture's pair), whether it is a sphere (solved
+/// in closed form), and its surface's curvature at the support point (jamming/gap_hessian). A
+/// body that may be the octahedron (the superball at p = 0.5) says so by isOctahedron(), and its
+/// pairs are solved exactly over the polytope's face normals. Superball (sbgen's engine) and
+/// ParticleShape (the analyses, any family) are two; pair/pair_geometry solves their pairs.
+template <class Body>
+concept ConvexBody = requires(const Body& body, const Eigen::Vector3d& v, double factor) {
+    { body.support(v) } -> std::convertible_to<double>;
+    { body.supportPoint(v) } -> std::convertible_to<Eigen::Vector3d>;
+    { body.supportHessian(v) } -> std::convertible_to<Eigen::Matrix3d>;
+    { body.gauge(v) } -> std::convertible_to<double>;
+    { body.semiAxis() } -> std::convertible_to<double>;
+    { body.scaled(factor) } -> std::same_as<Body>;
+    { body.isSphere() } -> std::same_as<bool>;
+    { body.surfaceCurvature(v) } -> std::convertible_to<Eigen::Matrix3d>;
+};
+
 /// What a family F provides (geometry/superball_family is the model). Its parameters' values come
-/// as a span in the order of F::parameters, checked by F::problem before F::body sees them. Of
-/// its Body (body frame, semi-axis the largest half-width of its bounding box) the pair solvers
-/// ask pair/pair_geometry's ConvexBody; the analyses ask, as free functions found beside it:
+/// as a span in the order of F::parameters, checked by F::problem before F::body sees them. Its
+/// Body (body frame, semi-axis the largest half-width of its bounding box) is a ConvexBody (the
+/// pair solvers, the curvature) with its volume, mean width (paper Sec. II D), circumradius and
+/// inradius; the analyses ask further, as free functions found beside it:
 /// hasCubicAxes (the cubatic order P4 is defined), hasCubicSymmetry (the contact regions <100>,
 /// <110>, <111> name equivalent places), stacksInColumns (the jam check's advice on columns),
 /// insideTest (a callable for many points: the voxels), gaugePower (an increasing function of the
@@ -69,6 +89,11 @@ concept ShapeFamilyTraits = requires(std::span<const double> values, double semi
     { F::superquadric(values) } -> std::same_as<Superquadric>;
     /// The values whose superquadric is q (to 1e-12), or nothing.
     { F::fromSuperquadric(q) } -> std::same_as<std::optional<std::vector<double>>>;
+    requires ConvexBody<typename F::Body>;
+    { body.volume() } -> std::convertible_to<double>;
+    { body.meanWidth() } -> std::convertible_to<double>;
+    { body.circumradius() } -> std::convertible_to<double>;
+    { body.inradius() } -> std::convertible_to<double>;
     { hasCubicAxes(body) } -> std::same_as<bool>;
     { hasCubicSymmetry(body) } -> std::same_as<bool>;
     { stacksInColumns(body) } -> std::same_as<bool>;

@@ -13,28 +13,10 @@
 
 #include "geometry/particle_shape.hpp"
 
-#include <concepts>
-
 namespace sbpack {
 
-/// What the pair solvers need of a body (centrally symmetric and convex, in its own frame): its
-/// support function h, support point and the Hessian of h (docs/design.md §2), its gauge, its
-/// semi-axis, the body scaled by a factor (B of a mixture's pair), whether it is a sphere (solved
-/// in closed form), and its surface's curvature at the support point (jamming/gap_hessian). A
-/// body that may be the octahedron (the superball at p = 0.5) says so by isOctahedron(), and its
-/// pairs are solved exactly over the polytope's face normals. Superball (sbgen's engine) and
-/// ParticleShape (the analyses, any family) are two.
-template <class Body>
-concept ConvexBody = requires(const Body& body, const Vector3d& v, double factor) {
-    { body.support(v) } -> std::convertible_to<double>;
-    { body.supportPoint(v) } -> std::convertible_to<Vector3d>;
-    { body.supportHessian(v) } -> std::convertible_to<Matrix3d>;
-    { body.gauge(v) } -> std::convertible_to<double>;
-    { body.semiAxis() } -> std::convertible_to<double>;
-    { body.scaled(factor) } -> std::same_as<Body>;
-    { body.isSphere() } -> std::same_as<bool>;
-    { body.surfaceCurvature(v) } -> std::convertible_to<Matrix3d>;
-};
+// ConvexBody, what the pair solvers need of a body, is geometry/shape_family.hpp's: every
+// family's body is one.
 
 /// Iteration limits and tolerances of the pair solvers, in one place.
 struct PairTolerances {

@@ -118,7 +118,7 @@ class GeneratorCommandLine {
 };
 
 void GeneratorCommandLine::addShapeOptions() {
-    // From the family table (common/geometry/particle_shape) and the registry's help
+    // From the family list (common/geometry/shape_families.hpp) and the registry's help
     // (generator/shapes/registry): a new family adds no option here.
     protocol(
         "--shape", "FAMILY", [this](auto, const std::string& v) { shapeFamily_ = v; },

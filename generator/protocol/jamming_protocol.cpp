@@ -1,7 +1,6 @@
 #include "protocol/jamming_protocol.hpp"
 
 #include "contacts/contact_network.hpp"
-#include "geometry/superball.hpp"
 #include "initial/random_start.hpp"
 #include "protocol/checkpoint_entries.hpp"
 #include "protocol/protocol_advice.hpp"
@@ -65,14 +64,15 @@ AnyEngine freshEngine(const ProtocolParameters& parameters, const PlacementWatch
 /// overlaps.
 AnyEngine resumedEngine(const Packing& packing, const std::string& source,
                         const CheckpointFields& fields) {
+    const bool rotates = rotating(packing.shapeSpec);
     if (packing.velocities.size() != packing.size() ||
-        (rotating(packing.shapeSpec) && packing.angularVelocities.size() != packing.size()))
+        (rotates && packing.angularVelocities.size() != packing.size()))
         throw std::invalid_argument("'" + source + "': checkpoint without velocities");
     refuseOverlaps(packing, source);
     std::vector<ParticleState> state(packing.size());
     for (std::size_t i = 0; i < packing.size(); ++i) {
         state[i] = {packing.positions[i], packing.velocities[i], packing.orientations[i]};
-        if (rotating(packing.shapeSpec)) state[i].angularVelocity = packing.angularVelocities[i];
+        if (rotates) state[i].angularVelocity = packing.angularVelocities[i];
     }
     AnyEngine engine = makeEngine(packing.shapeSpec, packing.boxLength, std::move(state),
                                   fields.clock, packing.relativeSizes());
@@ -388,12 +388,12 @@ Packing JammingProtocol::checkpoint() const {
             for (const double size : engine.sizes())
                 packing.semiAxes.push_back(packing.semiAxis * size);
             packing.boxLength = engine.boxLength();
+            const bool rotates = rotating(parameters_.shape);
             for (const ParticleState& s : engine.particles()) {
                 packing.positions.push_back(s.position);
                 packing.orientations.push_back(s.orientation);
                 packing.velocities.push_back(s.velocity);
-                if (rotating(parameters_.shape))
-                    packing.angularVelocities.push_back(s.angularVelocity);
+                if (rotates) packing.angularVelocities.push_back(s.angularVelocity);
             }
         },
         engine_);

@@ -79,7 +79,8 @@ std::string shapeOptionHelp(std::string_view family, const ShapeParameter& param
 }
 
 bool rotating(const ShapeSpec& shape) {
-    return !shape.isSphere();
+    return std::visit([](const auto& s) { return std::decay_t<decltype(s)>::kRotates; },
+                      shapeFor(shape));
 }
 
 AnyShape shapeFor(const ShapeSpec& shape) {

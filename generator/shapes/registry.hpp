@@ -21,6 +21,8 @@ namespace sbpack {
 /// The engine families, each with its Family (a ShapeFamilyTraits), its engine Shapes (a
 /// std::variant), shapeFor(values), measured(values) and optionHelp(parameter).
 template <class... E> struct EngineFamilyList {
+    static_assert(((ShapeFamilies::indexOf<typename E::Family> < ShapeFamilies::size) && ...),
+                  "an engine family's Family is one of ShapeFamilies");
     /// fn(std::type_identity<E>{}) for the engine family of ShapeFamilies' family `index`;
     /// false where sbgen runs no such family.
     template <class Fn> static bool find(std::size_t index, Fn&& fn) {
@@ -59,7 +61,8 @@ template <class... Shapes> struct EnginesOf<std::variant<Shapes...>> {
 /// Every engine sbgen can run, one per shape.
 using AnyEngine = EnginesOf<AnyShape>::type;
 
-/// Whether the bodies rotate: all but spheres, which run on the exact sphere shape.
+/// Whether the bodies rotate: the engine shape's kRotates (all but spheres, which run on the
+/// exact sphere shape); throws as shapeFor.
 bool rotating(const ShapeSpec& shape);
 
 /// What sbgen has measured of `shape`: its default rates, cost and range; for a family sbgen

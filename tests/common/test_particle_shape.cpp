@@ -1,7 +1,9 @@
 // The shape description (common/geometry/particle_shape, docs/architecture.md "What a new shape
 // needs"): a family's identity by name, and a body of it whose geometry is the superball's.
 #include "geometry/particle_shape.hpp"
+#include "geometry/shape_families.hpp"
 #include "jamming/gap_hessian.hpp"
+#include "message_of.hpp"
 #include "pair/pair_geometry.hpp"
 
 #include <Eigen/Geometry>
@@ -17,15 +19,6 @@
 
 namespace sbpack {
 namespace {
-
-std::string messageOf(auto&& call) {
-    try {
-        call();
-    } catch (const std::invalid_argument& e) {
-        return e.what();
-    }
-    return "(no exception)";
-}
 
 TEST(ShapeSpec, TheSuperballIsNamedWithItsExponent) {
     const ShapeSpec shape = ShapeSpec::superball(1.5);
@@ -165,6 +158,21 @@ TEST(ParticleShape, ThePairSolversSeeTheSameBodyAsTheSuperballs) {
                 EXPECT_EQ(cx.leverA, cy.leverA) << p;
             }
     }
+}
+
+// The build's own list: the superball first (a file without a family name holds superballs), and
+// a ShapeSpec is its family's index with the family's values; the default is the first family at
+// its parameters' fallbacks.
+TEST(ShapeFamilyList, TheBuildsFamiliesStartWithTheSuperball) {
+    static_assert(ShapeFamilies::indexOf<SuperballFamily> == 0);
+    EXPECT_EQ(ShapeSpec(), ShapeSpec::superball(1.0));
+    EXPECT_EQ(ShapeSpec::superball(1.5).familyIndex(), 0u);
+    EXPECT_FALSE(ShapeSpec::superball(1.5).writtenFamily());
+    EXPECT_EQ(ShapeSpec::superball(1.5).superballExponent(), 1.5);
+    const ParticleShape body(ShapeSpec::superball(1.5), 0.5);
+    EXPECT_EQ(body.familyName(), "superball");
+    EXPECT_EQ(body.visitBody([](const auto& b) { return b.semiAxis(); }), 0.5);
+    EXPECT_EQ(body.superball().p(), 1.5);
 }
 
 } // namespace

@@ -3,6 +3,7 @@
 #include "pipeline/stages/stages.hpp"
 #include "schema/record.hpp"
 #include "spectral/exact_spectral_density.hpp"
+#include "spectral/form_factors.hpp"
 
 #include "packing/packing.hpp"
 
@@ -16,10 +17,19 @@ namespace sbpack::stages {
 DiscreteSpectrum spectrumOf(FileContext& context, const DiscreteSpectrum& voxel) {
     const double qmax = context.settings().hyperuniformity.chiExactQw;
     if (qmax == 0.0) return voxel;
+    const Packing& packing = context.packing();
+    const bool identicalSpheres = packing.shape().isSphere() && !packing.isMixture();
+    if (!identicalSpheres && !hasFormFactor(packing.shape())) {
+        context.progress().warn(fmt::format(
+            "exact chi: no form factor of {}s (spectral/form_factors.hpp); the voxel spectrum "
+            "alone at small Q",
+            packing.shape().familyName()));
+        return voxel;
+    }
     ExactSpectralDensityParameters parameters;
     parameters.maxQw = qmax;
     const ExactSpectralDensityResult exact =
-        ExactSpectralDensity(parameters).compute(context.packing(), context.progress());
+        ExactSpectralDensity(parameters).compute(packing, context.progress());
     context.progress().stageDone(
         "exact chi", exact.runtimeSeconds,
         fmt::format("{} wave vectors up to Q w = {}", 2 * exact.modes.size(), describe(qmax, 3)));
