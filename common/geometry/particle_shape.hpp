@@ -151,7 +151,7 @@ ShapeSpec ShapeSpec::readOrFallback(const std::optional<std::string>& written, V
 class ParticleShape {
     using AnyBody = ShapeFamilies::AnyBody;
     AnyBody body_;
-    explicit ParticleShape(AnyBody body) : body_(std::move(body)) {}
+    explicit ParticleShape(AnyBody body) : body_(body) {}
     template <class Fn> decltype(auto) visit(Fn&& fn) const {
         return std::visit(std::forward<Fn>(fn), body_);
     }
