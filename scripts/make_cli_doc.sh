@@ -179,7 +179,8 @@ This file is generated; edit its head in `scripts/make_cli_doc.sh` and run
 - **Extended XYZ** (`.xyz`, written by `convert`; read by `info`, the analysis and `convert`:
   one frame, sbpack's export or OVITO's, a cubic `Lattice`, the shape from the keys `p=` (the
   shape's parameters by name, with `shape=` for a family other than the superball) and
-  `semi_axis=` or the columns below; it carries no reduced pressure, so the contacts take
+  `semi_axis=` or the columns below, which must then agree with the keys; it carries no
+  reduced pressure, so the contacts take
   `--tolerance`): OVITO reads positions, `orientation` (its
   quaternion order `x y z w`) and `aspherical_shape` directly (a mixture's: each particle's
   own semi-axis, `semi_axis=` their largest; docs/mixtures.md); map the two

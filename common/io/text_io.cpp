@@ -318,6 +318,17 @@ std::optional<ShapeSpec> xyzHeaderShape(const Key& key, const Number& number,
                                   [&](std::string_view name) { return number(std::string(name)); });
 }
 
+/// Refuses aspherical_shape columns whose proportions are not those of the header's shape.
+void refuseOtherProportions(const ShapeSpec& header, const Vector3d& proportions,
+                            const LineReader& reader) {
+    const Vector3d own = header.superquadric().axes;
+    if ((proportions - own).cwiseAbs().maxCoeff() <= 1e-12) return;
+    reader.failAt(2, fmt::format("aspherical_shape's proportions {}:{}:{} are not those of the "
+                                 "header's shape, {} ({}:{}:{})",
+                                 proportions.x(), proportions.y(), proportions.z(),
+                                 header.describe(), own.x(), own.y(), own.z()));
+}
+
 } // namespace
 
 Packing readExtendedXyz(const fs::path& file) {
@@ -382,8 +393,9 @@ Packing readExtendedXyz(const fs::path& file) {
     if (static_cast<long long>(packing.positions.size()) != count)
         reader.fail("the header says " + std::to_string(count) + " particles but the file has " +
                     std::to_string(packing.positions.size()));
-    // The header's parameters as written; only a shape from the roundness column is inverted
-    // and repaired.
+    // The header's parameters as written, its proportions those of the particles' axes where
+    // they are given; only a shape from the roundness column is inverted and repaired.
+    if (headerShape) refuseOtherProportions(*headerShape, axes.proportions(), reader);
     if (!headerShape && !phi.has())
         reader.failAt(2, "no shape: give the header's parameters (p=...) or the "
                          "superquadric_roundness column");

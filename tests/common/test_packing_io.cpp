@@ -895,6 +895,11 @@ TEST_F(TextIo, ExtendedXyzInOvitosSpellingAndItsRefusals) {
     refused(ovito + a + "A 3 3 3 0 0 0.6 0.8 0.5 0.5 0.5 0.7 0.7\n",
             "differ in superquadric_roundness");
     refused(ovito + a, "the header says 2 particles but the file has 1");
+    // The header names the shape; axes in other proportions are another shape, not read as it.
+    refused("1\nLattice=\"4 0 0 0 4 0 0 0 4\" Properties=pos:R:3:orientation:R:4:"
+            "aspherical_shape:R:3 p=1.5\n1 2 3 0 0 0 1 0.5 0.5 0.25\n",
+            "aspherical_shape's proportions 1:1:0.5 are not those of the header's shape, p = 1.5 "
+            "(1:1:1)");
     refused(ovito + "A 1 1 1 0 0 0 1\n", "8 columns, Properties gives 13");
 }
 
