@@ -126,9 +126,13 @@ ShellAverage shellAverage(const WaveVectorSpectrum& spectrum, int maxShell) {
     return shells.average();
 }
 
+bool sumsFormFactors(const Packing& packing) {
+    return !packing.shape().isSphere() || packing.isMixture();
+}
+
 WaveVectorSpectrum sphereWaveVectors(const Packing& packing, std::int64_t maxN2,
                                      const Progress& progress) {
-    if (!packing.shape().isSphere() || packing.isMixture())
+    if (sumsFormFactors(packing))
         throw std::invalid_argument("exact spectral density: the particles are not identical "
                                     "spheres (" +
                                     packing.shapeSpec.describe() + ")");
@@ -225,9 +229,7 @@ ExactSpectralDensityResult ExactSpectralDensity::compute(const Packing& packing,
         throw std::invalid_argument("exact spectral density: no wave vector with Q w <= qmax = " +
                                     fmt::format("{:g}", parameters_.maxQw) +
                                     "; the box's smallest is Q w = " + std::to_string(qMinW));
-    // Identical spheres by the collective density and one closed form; a mixture, spheres or
-    // not, by each particle's own form factor.
-    const bool series = !shape.isSphere() || packing.isMixture();
+    const bool series = sumsFormFactors(packing);
     // The series path's form factor, built once: its range checked, then summed.
     const auto withinRange = [&](const auto& form) {
         const double limit = std::decay_t<decltype(form)>::kSeriesLimit;

@@ -38,6 +38,11 @@ std::vector<std::array<int, 3>> halfSpaceWaveVectors(std::int64_t maxN2);
 /// the spectrum does not reach that far.
 ShellAverage shellAverage(const WaveVectorSpectrum& spectrum, int maxShell);
 
+/// Whether the exact chi_V of `packing` sums each particle's form factor
+/// (formFactorWaveVectors): every packing but one of identical spheres, which takes the collective
+/// density and one closed form (sphereWaveVectors).
+bool sumsFormFactors(const Packing& packing);
+
 /// Identical spheres: |sum_j exp(-i Q.r_j)|^2 m_sphere(Q)^2 / V, 1 <= |n|^2 <= maxN2, by the
 /// collective density kernel. Throws std::invalid_argument unless the particles are identical
 /// spheres and maxN2 >= 1.

@@ -7,6 +7,18 @@
 
 namespace sbpack {
 
+namespace {
+
+/// The items' names, for messages: "superball, ball".
+template <class Named> std::string namesOf(std::span<const Named> items) {
+    std::string names;
+    for (const Named& item : items)
+        names += (names.empty() ? "" : ", ") + std::string(item.name);
+    return names;
+}
+
+} // namespace
+
 std::span<const ShapeFamily> shapeFamilies() {
     return ShapeFamilies::info;
 }
@@ -28,10 +40,7 @@ const ShapeFamily* writtenShapeFamily(const std::optional<std::string>& written)
 }
 
 std::string shapeFamilyNames() {
-    std::string names;
-    for (const ShapeFamily& family : ShapeFamilies::info)
-        names += (names.empty() ? "" : ", ") + std::string(family.name);
-    return names;
+    return namesOf(shapeFamilies());
 }
 
 ShapeSpec::ShapeSpec() : family_(0) {
@@ -44,14 +53,10 @@ ShapeSpec ShapeSpec::fromValues(std::string_view name, std::span<const double> v
     if (family == nullptr)
         throw std::invalid_argument(
             fmt::format("unknown shape family '{}' (known: {})", name, shapeFamilyNames()));
-    if (values.size() != family->parameters.size()) {
-        std::string names;
-        for (const ShapeParameter& parameter : family->parameters)
-            names += (names.empty() ? "" : ", ") + std::string(parameter.name);
-        throw std::invalid_argument(
-            fmt::format("the {} takes {} parameter{} ({}), not {}", name, family->parameters.size(),
-                        family->parameters.size() == 1 ? "" : "s", names, values.size()));
-    }
+    if (values.size() != family->parameters.size())
+        throw std::invalid_argument(fmt::format(
+            "the {} takes {} parameter{} ({}), not {}", name, family->parameters.size(),
+            family->parameters.size() == 1 ? "" : "s", namesOf(family->parameters), values.size()));
     return ShapeSpec(static_cast<std::size_t>(family - ShapeFamilies::info.data()),
                      std::vector<double>(values.begin(), values.end()));
 }

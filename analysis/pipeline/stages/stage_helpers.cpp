@@ -18,8 +18,7 @@ DiscreteSpectrum spectrumOf(FileContext& context, const DiscreteSpectrum& voxel)
     const double qmax = context.settings().hyperuniformity.chiExactQw;
     if (qmax == 0.0) return voxel;
     const Packing& packing = context.packing();
-    const bool identicalSpheres = packing.shape().isSphere() && !packing.isMixture();
-    if (!identicalSpheres && !hasFormFactor(packing.shape())) {
+    if (sumsFormFactors(packing) && !hasFormFactor(packing.shape())) {
         context.progress().warn(fmt::format(
             "exact chi: no form factor of {}s (spectral/form_factors.hpp); the voxel spectrum "
             "alone at small Q",
